@@ -1,0 +1,69 @@
+//! Command-line definitions (clap). Thin: every option is validated in the command modules.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+#[derive(Parser, Debug)]
+#[command(name = "caisson", version, about = "Dynamic sliding of caisson breakwaters under breaking and non-breaking waves")]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Run a scenario through the dynamic model and summarise the response.
+    Run(RunArgs),
+    /// Sweep the rise time of the scenario's triangular pulse: amplification Ψ and sliding vs t_r/T0.
+    Spectrum(SpectrumArgs),
+    /// Wave loads for the scenario's waves: Goda, Sainflou, impact, safety factors, histories.
+    Loads(LoadsArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    /// Scenario file (TOML).
+    pub scenario: PathBuf,
+    /// Print the summary as JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// Write summary.json, history.csv, springs.csv and SVG plots into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct SpectrumArgs {
+    /// Scenario file (TOML) with a `[load] kind = "triangle"` table.
+    pub scenario: PathBuf,
+    /// Range of t_r/T0 as FROM:TO:COUNT (logarithmically spaced).
+    #[arg(long, value_name = "FROM:TO:COUNT", default_value = "0.05:5:60")]
+    pub tr_over_t0: String,
+    /// Print the table as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Write spectrum.csv, spectrum.json and spectrum.svg into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct LoadsArgs {
+    /// Scenario file (TOML) with `[caisson]`, `[water]` and `[waves]` tables.
+    pub scenario: PathBuf,
+    /// Print the quantities as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Also generate the force time history of a train of waves (needs --out).
+    #[arg(long)]
+    pub history: bool,
+    /// Number of waves in the generated history.
+    #[arg(long, default_value_t = 5)]
+    pub waves: usize,
+    /// Seed of the random generator (rise times).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Directory for the history CSV and SVG.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}

@@ -1,0 +1,188 @@
+//! The interface spring: no-tension vertical spring plus elastic-Coulomb horizontal friction
+//! (seed Eqs. 27-28, read as its Fig. 4: PHYSICS.md §10 item 12).
+//!
+//! With u_y,i the spring's vertical displacement (negative = compression) and u_x its
+//! horizontal displacement:
+//!
+//! ```text
+//! N_i   = max(0, −k_y,i u_y,i)                       normal force, compression positive (Eq. 27)
+//! k_x,i = k̄_x,i N_i / N̄_i = κ N_i,   κ = K_x / W'    shear stiffness ∝ current normal force
+//! F_i   = κ N_i (u_x − s_i)                          while sticking, |u_x − s_i| ≤ e_s
+//! F_i   = ± κ N_i e_d = ± μ_d N_i                    while slipping (s_i follows u_x)
+//! e_s   = μ_s N̄_i / k̄_x,i = μ_s W'/K_x  (= the seed's ū_x),   e_d = μ_d W'/K_x
+//! ```
+//!
+//! Because the stiffness is proportional to N, the stick/slip test |F| ≤ μ N reduces to a test
+//! on the elastic displacement e = u_x − s alone. A sticking spring (committed state) may reach
+//! e_s before it slips; once slipping, its capacity is μ_d N until the slip stops (the elastic
+//! trial falls back within e_d), when it sticks again with capacity μ_s N. A lifted spring
+//! (N = 0) carries nothing and re-contacts with zero shear (s_i = u_x).
+//!
+//! Trial → commit → revert: [`SpringLaw::trial`] computes the response from the committed
+//! [`SpringState`] without changing it; committing is copying [`SpringResponse::state`].
+
+/// Committed state of one spring: the slip position and whether it was slipping.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct SpringState {
+    /// s_i, plastic (slip) position, m.
+    pub slip_m: f64,
+    /// The spring was slipping at the end of the last committed step.
+    pub sliding: bool,
+}
+
+/// Constitutive constants shared by all springs of a foundation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpringLaw {
+    /// k_y,i, N/m.
+    pub ky_n_per_m: f64,
+    /// κ = k̄_x,i / N̄_i, 1/m.
+    pub kappa_per_m: f64,
+    /// e_s = μ_s N̄/k̄, m.
+    pub stick_limit_m: f64,
+    /// e_d = μ_d N̄/k̄, m.
+    pub slip_offset_m: f64,
+}
+
+/// Response of a spring to a trial displacement.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SpringResponse {
+    /// N_i, normal force, N, compression positive.
+    pub normal_n: f64,
+    /// F_i, shear force resisting u_x, N (positive when it pushes the caisson seaward).
+    pub shear_n: f64,
+    /// ∂F/∂u_x, N/m.
+    pub dshear_dux: f64,
+    /// ∂F/∂u_y,i, N/m.
+    pub dshear_duy: f64,
+    /// ∂N/∂u_y,i, N/m (−k_y in contact, 0 when lifted).
+    pub dnormal_duy: f64,
+    /// ∂s/∂u_x (0 sticking, 1 slipping or lifted).
+    pub dslip_dux: f64,
+    /// The trial state (commit by copying it).
+    pub state: SpringState,
+}
+
+impl SpringLaw {
+    /// Build from totals: `kx`, `ky` (N/m), weight in water `w` (N), `n` springs, μ_s, μ_d.
+    pub fn new(kx_total: f64, ky_total: f64, w_n: f64, n: usize, mu_s: f64, mu_d: f64) -> Self {
+        let kbar = kx_total / n as f64;
+        let nbar = w_n / n as f64;
+        SpringLaw {
+            ky_n_per_m: ky_total / n as f64,
+            kappa_per_m: kbar / nbar,
+            stick_limit_m: mu_s * nbar / kbar,
+            slip_offset_m: mu_d * nbar / kbar,
+        }
+    }
+
+    /// Response to the trial displacements (`ux`, `uy`) from the committed state `c`.
+    #[inline]
+    pub fn trial(&self, c: SpringState, ux: f64, uy: f64) -> SpringResponse {
+        if uy >= 0.0 {
+            return SpringResponse {
+                dslip_dux: 1.0,
+                state: SpringState { slip_m: ux, sliding: false },
+                ..SpringResponse::default()
+            };
+        }
+        let n = -self.ky_n_per_m * uy;
+        let dn = -self.ky_n_per_m;
+        let kn = self.kappa_per_m * n;
+        let e = ux - c.slip_m;
+        let limit = if c.sliding { self.slip_offset_m } else { self.stick_limit_m };
+        if e.abs() <= limit {
+            SpringResponse {
+                normal_n: n,
+                shear_n: kn * e,
+                dshear_dux: kn,
+                dshear_duy: self.kappa_per_m * e * dn,
+                dnormal_duy: dn,
+                dslip_dux: 0.0,
+                state: SpringState { slip_m: c.slip_m, sliding: false },
+            }
+        } else {
+            let g = self.slip_offset_m.copysign(e);
+            SpringResponse {
+                normal_n: n,
+                shear_n: kn * g,
+                dshear_dux: 0.0,
+                dshear_duy: self.kappa_per_m * g * dn,
+                dnormal_duy: dn,
+                dslip_dux: 1.0,
+                state: SpringState { slip_m: ux - g, sliding: true },
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn law() -> SpringLaw {
+        // Seed Table 6 scale: K_x 1.5e8, K_y 1.4e8 N/m, W' 8240 N, 10 springs, μ 0.6/0.4.
+        SpringLaw::new(1.5e8, 1.4e8, 8240.0, 10, 0.6, 0.4)
+    }
+
+    #[test]
+    fn friction_caps_are_mu_times_normal() {
+        let l = law();
+        let c = SpringState::default();
+        let uy = -1e-5;
+        let n = -l.ky_n_per_m * uy;
+        // Just below the static limit: sticking with F = μ_s N (to rounding).
+        let r = l.trial(c, 0.999999 * l.stick_limit_m, uy);
+        assert!(!r.state.sliding && (r.shear_n / (0.6 * n) - 1.0).abs() < 1e-5);
+        // Beyond: slipping at μ_d N, slip position moves.
+        let r = l.trial(c, 2.0 * l.stick_limit_m, uy);
+        assert!(r.state.sliding && (r.shear_n / (0.4 * n) - 1.0).abs() < 1e-12);
+        assert!((r.state.slip_m - (2.0 * l.stick_limit_m - l.slip_offset_m)).abs() < 1e-15);
+        // Lifted: nothing, and re-contact with zero shear.
+        let r = l.trial(c, 1e-3, 1e-6);
+        assert_eq!((r.normal_n, r.shear_n, r.state.slip_m), (0.0, 0.0, 1e-3));
+        // No tension.
+        assert_eq!(l.trial(c, 0.0, 1e-3).normal_n, 0.0);
+    }
+
+    #[test]
+    fn sliding_spring_sticks_again_on_reversal() {
+        let l = law();
+        let c = SpringState { slip_m: 0.01, sliding: true };
+        // Trial elastic displacement smaller than e_d (reversal): sticks, slip position kept.
+        let r = l.trial(c, 0.01 + 0.5 * l.slip_offset_m, -1e-5);
+        assert!(!r.state.sliding && r.state.slip_m == 0.01);
+    }
+
+    proptest! {
+        /// The tangent equals a central finite difference of the force, for every committed
+        /// state, away from the kinks (points whose ±h neighbours are in another branch are
+        /// skipped). h = 1e-6 of the stick limit. Each branch is linear in u_x and in u_y, so
+        /// the FD truncation error is zero and the tolerance (1e-6 of the stiffness scale
+        /// K_x/n = 1.5e7 N/m) only covers rounding; a wrong tangent term is off by > 1e6 N/m.
+        #[test]
+        fn tangent_matches_finite_difference(
+            ex in -3.0f64..3.0, uy_rel in -2.0f64..0.5, slip in -1e-3f64..1e-3, sliding in any::<bool>()
+        ) {
+            let l = law();
+            let c = SpringState { slip_m: slip, sliding };
+            let ux = slip + ex * l.stick_limit_m;
+            let uy = uy_rel * 8240.0 / 10.0 / l.ky_n_per_m;
+            let r = l.trial(c, ux, uy);
+            let h = 1e-6 * l.stick_limit_m;
+            let (px, mx) = (l.trial(c, ux + h, uy), l.trial(c, ux - h, uy));
+            let (py, my) = (l.trial(c, ux, uy + h), l.trial(c, ux, uy - h));
+            let same = |a: &SpringResponse| a.state.sliding == r.state.sliding && (a.normal_n > 0.0) == (r.normal_n > 0.0);
+            prop_assume!(same(&px) && same(&mx) && same(&py) && same(&my));
+            let scale = 1.5e7 * 1e-6;
+            let fd_x = (px.shear_n - mx.shear_n) / (2.0 * h);
+            let fd_y = (py.shear_n - my.shear_n) / (2.0 * h);
+            let fd_n = (py.normal_n - my.normal_n) / (2.0 * h);
+            prop_assert!((fd_x - r.dshear_dux).abs() <= scale, "dF/dux {} vs {}", fd_x, r.dshear_dux);
+            prop_assert!((fd_y - r.dshear_duy).abs() <= scale, "dF/duy {} vs {}", fd_y, r.dshear_duy);
+            prop_assert!((fd_n - r.dnormal_duy).abs() <= scale, "dN/duy {} vs {}", fd_n, r.dnormal_duy);
+            let fd_s = (px.state.slip_m - mx.state.slip_m) / (2.0 * h);
+            prop_assert!((fd_s - r.dslip_dux).abs() < 1e-5);
+        }
+    }
+}

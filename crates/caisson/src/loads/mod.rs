@@ -1,0 +1,69 @@
+//! Wave-force time histories acting on the caisson, and the pressure models behind them.
+//!
+//! # Conventions (used everywhere in the crate)
+//!
+//! * x is positive **shoreward**, y is positive **upward** (uplift positive).
+//! * Moments and the rotation θ are about the **centre of the caisson base**, positive
+//!   **clockwise when looking alongshore with the sea on the left**: the sense in which a shoreward
+//!   wave force overturns the caisson (the seaward toe lifts). A horizontal force `fx` acting at a
+//!   height `y_l` above the base gives `m = fx · y_l`; an upward force `fy` acting a distance
+//!   `x_l` from the heel (the shoreward rear corner) gives `m = fy · (x_l − B/2)`.
+//! * Forces returned by a [`LoadHistory`] are **totals on the caisson** (N and N·m), already
+//!   multiplied by the alongshore length where the underlying model is per metre.
+//!
+//! The engine (`dynamics`) only sees the [`LoadHistory`] trait; new load models plug in there.
+
+pub mod pulse;
+pub mod series;
+
+/// Wave forces on the caisson at one instant (SI, totals; sign conventions in the module docs).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct WaveForce {
+    /// Horizontal force, N, positive shoreward.
+    pub fx_n: f64,
+    /// Vertical force (uplift), N, positive upward.
+    pub fy_n: f64,
+    /// Moment about the centre of the base, N·m, positive clockwise (shoreward overturning).
+    pub m_nm: f64,
+}
+
+impl WaveForce {
+    pub const ZERO: WaveForce = WaveForce { fx_n: 0.0, fy_n: 0.0, m_nm: 0.0 };
+
+    /// Force from a horizontal component acting `lever_m` above the base and an uplift acting
+    /// `uplift_from_heel_m` from the heel of a base of width `width_m`.
+    pub fn from_levers(fx_n: f64, lever_m: f64, fy_n: f64, uplift_from_heel_m: f64, width_m: f64) -> Self {
+        WaveForce { fx_n, fy_n, m_nm: fx_n * lever_m + fy_n * (uplift_from_heel_m - 0.5 * width_m) }
+    }
+
+    pub fn scaled(self, k: f64) -> Self {
+        WaveForce { fx_n: self.fx_n * k, fy_n: self.fy_n * k, m_nm: self.m_nm * k }
+    }
+}
+
+impl std::ops::Add for WaveForce {
+    type Output = WaveForce;
+    fn add(self, o: WaveForce) -> WaveForce {
+        WaveForce { fx_n: self.fx_n + o.fx_n, fy_n: self.fy_n + o.fy_n, m_nm: self.m_nm + o.m_nm }
+    }
+}
+
+/// A force time history. `at` must be cheap and must not allocate: the engine calls it once per
+/// time step (and per sub-step).
+pub trait LoadHistory: Send + Sync {
+    /// Wave forces at time `t_s` (s, measured from the start of the simulation).
+    fn at(&self, t_s: f64) -> WaveForce;
+    /// Time after which the load is identically zero, if any (used for default durations).
+    fn end_time_s(&self) -> Option<f64> {
+        None
+    }
+}
+
+impl<T: LoadHistory + ?Sized> LoadHistory for Box<T> {
+    fn at(&self, t_s: f64) -> WaveForce {
+        (**self).at(t_s)
+    }
+    fn end_time_s(&self) -> Option<f64> {
+        (**self).end_time_s()
+    }
+}

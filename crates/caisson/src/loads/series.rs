@@ -1,0 +1,149 @@
+//! A measured or computed force time series (flume, CFD), linearly interpolated.
+//!
+//! CSV header: `time_s,fx_kn,fy_kn,moment_knm` (moment of the wave forces about the centre of the
+//! base, positive clockwise = shoreward overturning), or `time_s,fx_kn,fy_kn,horizontal_lever_m,
+//! uplift_lever_m` (height of the horizontal resultant above the base; distance of the uplift
+//! resultant from the heel). Forces are totals on the caisson in kN. Time must be strictly
+//! increasing. Before the first sample and after the last, the first and last values are held.
+
+use super::{LoadHistory, WaveForce};
+use thiserror::Error;
+
+/// Errors reading a force series. Line numbers are 1-based lines of the CSV file.
+#[derive(Debug, Error, PartialEq)]
+pub enum SeriesError {
+    #[error("the header is `{found}`; expected `time_s,fx_kn,fy_kn,moment_knm` or `time_s,fx_kn,fy_kn,horizontal_lever_m,uplift_lever_m`")]
+    BadHeader { found: String },
+    #[error("line {line}: column `{column}` has `{value}`; expected a finite number")]
+    BadNumber { line: usize, column: String, value: String },
+    #[error("line {line}: expected {expected} columns, found {found}")]
+    WrongColumnCount { line: usize, expected: usize, found: usize },
+    #[error("line {line}: time_s = {value} is not greater than the previous time {previous}; times must be strictly increasing")]
+    Unsorted { line: usize, value: f64, previous: f64 },
+    #[error("the series has {rows} data rows; at least 2 are needed")]
+    TooShort { rows: usize },
+    #[error("{0}")]
+    Csv(String),
+}
+
+/// Sampled force series, stored in SI totals.
+#[derive(Debug, Clone)]
+pub struct ForceSeries {
+    t_s: Vec<f64>,
+    f: Vec<WaveForce>,
+}
+
+impl ForceSeries {
+    /// Parse CSV text. `width_m` is the base width, needed only for the lever-arm form.
+    pub fn from_csv_str(text: &str, width_m: f64) -> Result<Self, SeriesError> {
+        let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
+        let headers = rdr.headers().map_err(|e| SeriesError::Csv(e.to_string()))?.clone();
+        let names: Vec<&str> = headers.iter().collect();
+        let levers = match names.as_slice() {
+            ["time_s", "fx_kn", "fy_kn", "moment_knm"] => false,
+            ["time_s", "fx_kn", "fy_kn", "horizontal_lever_m", "uplift_lever_m"] => true,
+            _ => return Err(SeriesError::BadHeader { found: names.join(",") }),
+        };
+        let ncol = names.len();
+        let mut t_s = Vec::new();
+        let mut f = Vec::new();
+        for (k, rec) in rdr.records().enumerate() {
+            let line = k + 2;
+            let rec = rec.map_err(|e| SeriesError::Csv(format!("line {line}: {e}")))?;
+            if rec.len() != ncol {
+                return Err(SeriesError::WrongColumnCount { line, expected: ncol, found: rec.len() });
+            }
+            let mut v = [0.0; 5];
+            for (j, field) in rec.iter().enumerate() {
+                v[j] = field
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite())
+                    .ok_or_else(|| SeriesError::BadNumber { line, column: names[j].to_string(), value: field.to_string() })?;
+            }
+            if let Some(&prev) = t_s.last() {
+                if v[0] <= prev {
+                    return Err(SeriesError::Unsorted { line, value: v[0], previous: prev });
+                }
+            }
+            t_s.push(v[0]);
+            let force = if levers {
+                WaveForce::from_levers(v[1] * 1e3, v[3], v[2] * 1e3, v[4], width_m)
+            } else {
+                WaveForce { fx_n: v[1] * 1e3, fy_n: v[2] * 1e3, m_nm: v[3] * 1e3 }
+            };
+            f.push(force);
+        }
+        if t_s.len() < 2 {
+            return Err(SeriesError::TooShort { rows: t_s.len() });
+        }
+        Ok(ForceSeries { t_s, f })
+    }
+
+    /// Build directly from samples (SI). Times must be strictly increasing.
+    pub fn from_samples(t_s: Vec<f64>, f: Vec<WaveForce>) -> Self {
+        assert_eq!(t_s.len(), f.len());
+        ForceSeries { t_s, f }
+    }
+
+    pub fn first_time_s(&self) -> f64 {
+        self.t_s[0]
+    }
+    pub fn last_time_s(&self) -> f64 {
+        *self.t_s.last().unwrap()
+    }
+}
+
+impl LoadHistory for ForceSeries {
+    fn at(&self, t_s: f64) -> WaveForce {
+        let n = self.t_s.len();
+        if t_s <= self.t_s[0] {
+            return self.f[0];
+        }
+        if t_s >= self.t_s[n - 1] {
+            return self.f[n - 1];
+        }
+        // Binary search: index of the first sample strictly after t.
+        let j = self.t_s.partition_point(|&x| x <= t_s);
+        let (t0, t1) = (self.t_s[j - 1], self.t_s[j]);
+        let w = (t_s - t0) / (t1 - t0);
+        self.f[j - 1].scaled(1.0 - w) + self.f[j].scaled(w)
+    }
+    fn end_time_s(&self) -> Option<f64> {
+        Some(self.last_time_s())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolates_linearly_and_holds_ends() {
+        let s = ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,moment_knm\n0,0,0,0\n1,2,1,4\n", 1.0).unwrap();
+        let f = s.at(0.25);
+        assert!((f.fx_n - 500.0).abs() < 1e-9 && (f.fy_n - 250.0).abs() < 1e-9 && (f.m_nm - 1000.0).abs() < 1e-9);
+        assert_eq!(s.at(5.0).fx_n, 2000.0);
+    }
+
+    #[test]
+    fn lever_form_gives_clockwise_moment() {
+        // 1 kN at 0.5 m, 1 kN uplift at 2B/3 from the heel of B = 0.9 m: M = 0.5 + 0.15 kN·m.
+        let s = ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,horizontal_lever_m,uplift_lever_m\n0,1,1,0.5,0.6\n1,1,1,0.5,0.6\n", 0.9).unwrap();
+        assert!((s.at(0.5).m_nm - 650.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn rejects_unsorted_time_with_line_number() {
+        let e = ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,moment_knm\n0,0,0,0\n1,0,0,0\n0.5,0,0,0\n", 1.0).unwrap_err();
+        assert_eq!(e, SeriesError::Unsorted { line: 4, value: 0.5, previous: 1.0 });
+    }
+
+    #[test]
+    fn rejects_bad_number_and_header() {
+        let e = ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,moment_knm\n0,abc,0,0\n1,0,0,0\n", 1.0).unwrap_err();
+        assert!(matches!(e, SeriesError::BadNumber { line: 2, .. }));
+        let e = ForceSeries::from_csv_str("t,fx,fy,m\n0,0,0,0\n", 1.0).unwrap_err();
+        assert!(matches!(e, SeriesError::BadHeader { .. }));
+    }
+}
