@@ -1,0 +1,115 @@
+//! Goda's (2000) surf-zone wave heights for random waves, with Kweon & Goda (1996) nonlinear
+//! shoaling (PHYSICS.md §3.3; verified against the `breakwater` package, BW).
+//!
+//! ```text
+//! H1/3  = min{ β0 H0' + β1 h,   β_max H0',   K_s H0' }          (h/L0 < 0.2; else K_s H0')
+//! H_max = min{ β0* H0' + β1* h, β_max* H0',  1.8 K_s H0' }     (h/L0 < 0.2; else 1.8 K_s H0')
+//! β0  = 0.028 (H0'/L0)^−0.38 exp(20 tan^1.5 θ)     β0*  = 0.052 (H0'/L0)^−0.38 exp(20 tan^1.5 θ)
+//! β1  = 0.52 exp(4.2 tan θ)                         β1*  = 0.63 exp(3.8 tan θ)
+//! β_max = max{0.92, 0.32 (H0'/L0)^−0.29 exp(2.4 tan θ)}
+//! β_max*= max{1.65, 0.53 (H0'/L0)^−0.29 exp(2.4 tan θ)}
+//! K_s ≈ K_si + 0.0015 (h/L0)^−2.87 (H0'/L0)^1.27              (Kweon & Goda 1996)
+//! ```
+//!
+//! H0' is the equivalent deep-water significant height, L0 = g T1/3²/(2π), θ the seabed slope.
+//! The design H_max for Goda's pressure formula is evaluated at h_b = h + 5 H1/3 tan θ
+//! ([`design_heights`]).
+
+use super::dispersion::{deep_water_wavelength_m, linear_shoaling_coefficient};
+
+/// Surf-zone heights at one depth.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SurfZoneHeights {
+    /// Significant height H1/3, m.
+    pub h13_m: f64,
+    /// Maximum height H_max, m.
+    pub hmax_m: f64,
+    /// Nonlinear shoaling coefficient K_s used, -.
+    pub shoaling: f64,
+}
+
+/// Kweon & Goda (1996) nonlinear shoaling coefficient K_s (PHYSICS.md §3.3).
+#[inline]
+pub fn kweon_goda_shoaling(depth_m: f64, period_s: f64, h0_prime_m: f64) -> f64 {
+    let l0 = deep_water_wavelength_m(period_s);
+    linear_shoaling_coefficient(period_s, depth_m) + 0.0015 * (depth_m / l0).powf(-2.87) * (h0_prime_m / l0).powf(1.27)
+}
+
+/// Goda's H1/3 and H_max at depth `depth_m` for deep-water H0' `h0_prime_m`, period T1/3
+/// `period_s` and seabed slope tan θ `slope` (≥ 0).
+pub fn goda_surf_zone(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) -> SurfZoneHeights {
+    let l0 = deep_water_wavelength_m(period_s);
+    let ks = kweon_goda_shoaling(depth_m, period_s, h0_prime_m);
+    let shoaled = ks * h0_prime_m;
+    if depth_m / l0 >= 0.2 {
+        return SurfZoneHeights { h13_m: shoaled, hmax_m: 1.8 * shoaled, shoaling: ks };
+    }
+    let s = slope.max(0.0);
+    let steep = h0_prime_m / l0;
+    let e20 = (20.0 * s.powf(1.5)).exp();
+    let beta0 = 0.028 * steep.powf(-0.38) * e20;
+    let beta1 = 0.52 * (4.2 * s).exp();
+    let beta_max = (0.32 * steep.powf(-0.29) * (2.4 * s).exp()).max(0.92);
+    let beta0s = 0.052 * steep.powf(-0.38) * e20;
+    let beta1s = 0.63 * (3.8 * s).exp();
+    let beta_maxs = (0.53 * steep.powf(-0.29) * (2.4 * s).exp()).max(1.65);
+    let h13_m = (beta0 * h0_prime_m + beta1 * depth_m).min(beta_max * h0_prime_m).min(shoaled);
+    let hmax_m = (beta0s * h0_prime_m + beta1s * depth_m).min(beta_maxs * h0_prime_m).min(1.8 * shoaled);
+    SurfZoneHeights { h13_m, hmax_m, shoaling: ks }
+}
+
+/// Design heights for Goda's pressure formula (PHYSICS.md §1.3, §3.3): H1/3 at the site depth
+/// `depth_m`, and H_max at h_b = h + 5 H1/3 tan θ. Returns (H1/3 at h, H_max at h_b, h_b), m.
+pub fn design_heights(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) -> (f64, f64, f64) {
+    let at_site = goda_surf_zone(h0_prime_m, period_s, depth_m, slope);
+    let hb = depth_m + 5.0 * at_site.h13_m * slope.max(0.0);
+    let at_hb = goda_surf_zone(h0_prime_m, period_s, hb, slope);
+    (at_site.h13_m, at_hb.hmax_m, hb)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outside_surf_zone_is_shoaling_only() {
+        // h/L0 ≥ 0.2: H1/3 = K_s H0', H_max = 1.8 K_s H0' exactly, with K_s = K_si + the
+        // Kweon-Goda term 0.0015 (h/L0)^-2.87 (H0'/L0)^1.27.
+        let (t, h0) = (8.0, 2.0);
+        let l0 = deep_water_wavelength_m(t);
+        let h = 0.3 * l0;
+        let r = goda_surf_zone(h0, t, h, 0.01);
+        assert_eq!(r.h13_m, r.shoaling * h0);
+        assert_eq!(r.hmax_m, 1.8 * r.shoaling * h0);
+        let expected = linear_shoaling_coefficient(t, h) + 0.0015 * 0.3f64.powf(-2.87) * (h0 / l0).powf(1.27);
+        assert!((r.shoaling - expected).abs() < 1e-14, "K_s = {}", r.shoaling);
+    }
+
+    #[test]
+    fn surf_zone_heights_are_the_smallest_of_goda_s_three_terms() {
+        // PHYSICS.md §3.3 example by hand: H0' = 3 m, T = 10 s, tan θ = 0.02, h = 5 m.
+        let (t, h0, s, h) = (10.0f64, 3.0f64, 0.02f64, 5.0f64);
+        let l0 = deep_water_wavelength_m(t);
+        let st = h0 / l0;
+        let ks = kweon_goda_shoaling(h, t, h0);
+        let e20 = (20.0 * s.powf(1.5)).exp();
+        let h13 = (0.028 * st.powf(-0.38) * e20 * h0 + 0.52 * (4.2 * s).exp() * h)
+            .min((0.32 * st.powf(-0.29) * (2.4 * s).exp()).max(0.92) * h0)
+            .min(ks * h0);
+        let r = goda_surf_zone(h0, t, h, s);
+        assert!((r.h13_m - h13).abs() < 1e-12, "{} vs {h13}", r.h13_m);
+        // At 5 m depth the 3 m wave is depth-limited: H1/3 below the shoaled height, H_max ≥ H1/3.
+        assert!(r.h13_m < ks * h0 && r.hmax_m > r.h13_m, "{r:?}");
+        // In very shallow water the linear term governs and H1/3 → β0 H0' + β1 h grows with h.
+        let a = goda_surf_zone(h0, t, 1.0, s).h13_m;
+        let b = goda_surf_zone(h0, t, 1.5, s).h13_m;
+        assert!(b > a && a < 1.0, "{a} {b}");
+    }
+
+    #[test]
+    fn design_depth_is_five_heights_seaward() {
+        let (h13, hmax, hb) = design_heights(3.0, 10.0, 8.0, 0.02);
+        assert!((hb - (8.0 + 5.0 * h13 * 0.02)).abs() < 1e-12);
+        assert!(hmax > h13);
+    }
+}
