@@ -1,1 +1,402 @@
-//! Newmark integrator.
+//! Time integration: Newmark-β with Newton-Raphson and a consistent tangent (seed §3.1;
+//! PHYSICS.md §9.1, after Chopra 2001 §5.7 and Ch. 15).
+//!
+//! Equation of motion for q = (u_x, u_y, θ) of the base centre (see [`crate::structure`]):
+//!
+//! ```text
+//! M q̈ + C q̇ + f_S(q, q̇) = p(t) + (0, −W', 0)
+//! ```
+//!
+//! M is the caisson mass matrix plus the added mass of the water, C the linear dashpots
+//! ([`crate::foundation`]), f_S the interface springs (and, in the `elastic` damping mode, their
+//! dashpots), p the wave forces and W' the weight in water (PHYSICS.md §10 item 6).
+//!
+//! Each step t → t + h is explicit in its phases: **load** p(t + h) → **predictor** δ = 0 →
+//! **Newton corrector** on the displacement increment δ = q_{n+1} − q_n, with
+//!
+//! ```text
+//! q̈_{n+1} = δ/(β h²) − q̇_n/(β h) − (1/(2β) − 1) q̈_n
+//! q̇_{n+1} = q̇_n + h [(1 − γ) q̈_n + γ q̈_{n+1}]
+//! r = p − M q̈ − C q̇ − f_S,     K̂ = M/(β h²) + γ C/(β h) + ∂f_S/∂q,   K̂ Δδ = r
+//! ```
+//!
+//! until max(|r_x|, |r_y|, |r_θ|/B) ≤ tol · W' → **commit** (copy the trial spring states). A step
+//! that does not converge in `max_iterations` is reverted (nothing was committed) and split in two
+//! halves, recursively, at most `max_substep_levels` times; then the run fails with
+//! [`SolveError::NonConvergence`] carrying the time and the residual. A non-finite residual
+//! counts as non-convergence. No step is ever accepted unconverged.
+//!
+//! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
+//! when it is built.
+
+use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
+use crate::loads::{LoadHistory, WaveForce};
+use crate::scenario::SolverParams;
+use crate::structure::Caisson;
+use nalgebra::{Matrix3, Vector3};
+use thiserror::Error;
+
+/// Why a run stopped.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum SolveError {
+    #[error("Newton-Raphson did not converge at t = {t_s:.6} s after {iterations} iterations and {levels} step halvings (residual {residual:.3e} N); try a smaller [solver] dt_s or a larger [solver] max_substep_levels")]
+    NonConvergence { t_s: f64, iterations: usize, levels: usize, residual: f64 },
+}
+
+/// The assembled, immutable model: matrices, spring positions and law.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// Total mass matrix (caisson + added mass), about the base centre.
+    pub mass: Matrix3<f64>,
+    /// Linear dashpots (diagonal).
+    pub damping: Matrix3<f64>,
+    /// Spring positions x_i, m (shoreward from the base centre).
+    pub x_m: Vec<f64>,
+    pub law: SpringLaw,
+    /// Per-spring horizontal dashpot in the `elastic` mode, N·s/m (0 in the `total` mode).
+    pub spring_dashpot_ns_per_m: f64,
+    /// Per-spring vertical dashpot in the `springs` vertical-damping form, N·s/m (0 otherwise).
+    pub spring_vertical_dashpot_ns_per_m: f64,
+    /// W', N.
+    pub weight_n: f64,
+    pub mu_static: f64,
+    pub mu_dynamic: f64,
+    /// B, m (scales the moment residual).
+    pub width_m: f64,
+    /// Total stiffnesses K_x, K_y, N/m.
+    pub kx_n_per_m: f64,
+    pub ky_n_per_m: f64,
+}
+
+impl Model {
+    pub fn new(c: &Caisson, f: &Foundation) -> Self {
+        let mut m = Matrix3::from(c.mass_matrix()).transpose();
+        let a = f.added_mass;
+        m[(0, 0)] += a.translation_kg;
+        m[(2, 2)] += a.rotation_kg_m2;
+        if c.mass_matrix == crate::structure::MassMatrix::Coupled {
+            m[(0, 2)] += a.coupling_kg_m;
+            m[(2, 0)] += a.coupling_kg_m;
+        }
+        let x_m = f.spring_positions(c.width_m);
+        let cc = f.stiffness.damping_ns_per_m;
+        let cv = f.vertical_damping_factor * cc;
+        let (c_y, c_theta, c_spring_y) = match f.vertical_damping {
+            VerticalDamping::Seed => (cv, cv, 0.0),
+            VerticalDamping::Springs => (0.0, 0.0, cv / f.springs as f64),
+        };
+        let (c_x, c_spring) = match f.damping_mode {
+            DampingMode::Total => (cc, 0.0),
+            DampingMode::Elastic => (0.0, cc / f.springs as f64),
+        };
+        Model {
+            mass: m,
+            damping: Matrix3::from_diagonal(&Vector3::new(c_x, c_y, c_theta)),
+            law: SpringLaw::new(f.stiffness.kx_n_per_m, f.stiffness.ky_n_per_m, c.weight_in_water_n, f.springs, f.mu_static, f.mu_dynamic),
+            x_m,
+            spring_dashpot_ns_per_m: c_spring,
+            spring_vertical_dashpot_ns_per_m: c_spring_y,
+            weight_n: c.weight_in_water_n,
+            mu_static: f.mu_static,
+            mu_dynamic: f.mu_dynamic,
+            width_m: c.width_m,
+            kx_n_per_m: f.stiffness.kx_n_per_m,
+            ky_n_per_m: f.stiffness.ky_n_per_m,
+        }
+    }
+
+    /// Horizontal mass m_x (caisson + added), kg.
+    pub fn horizontal_mass_kg(&self) -> f64 {
+        self.mass[(0, 0)]
+    }
+
+    /// Undamped natural period of the horizontal mode alone, T0 = 2π sqrt(m_x / K_x), s.
+    pub fn natural_period_s(&self) -> f64 {
+        2.0 * std::f64::consts::PI * (self.horizontal_mass_kg() / self.kx_n_per_m).sqrt()
+    }
+
+    /// Static settlement under self-weight, W'/K_y, m (downward positive).
+    pub fn static_settlement_m(&self) -> f64 {
+        self.weight_n / self.ky_n_per_m
+    }
+}
+
+/// Committed state: a plain snapshot (no scratch).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct State {
+    pub t_s: f64,
+    /// q = (u_x m, u_y m, θ rad) of the base centre.
+    pub u: [f64; 3],
+    pub v: [f64; 3],
+    pub a: [f64; 3],
+    pub springs: Vec<SpringState>,
+}
+
+/// Base reactions of the foundation on the caisson at one instant.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Reaction {
+    /// Horizontal reaction (springs + horizontal dashpot), N, positive when it resists a
+    /// shoreward push (i.e. the force the caisson exerts on the foundation, shoreward +).
+    pub horizontal_n: f64,
+    /// Sum of the spring normal forces, N (compression +).
+    pub normal_n: f64,
+    /// Moment of the normal forces about the base centre, N·m, clockwise +.
+    pub moment_nm: f64,
+    /// Springs slipping.
+    pub sliding_springs: usize,
+    /// Springs in contact.
+    pub contact_springs: usize,
+}
+
+/// What an observer sees after each committed (sub)step.
+pub struct StepView<'a> {
+    pub t_s: f64,
+    pub state: &'a State,
+    pub load: WaveForce,
+    pub reaction: Reaction,
+    pub springs: &'a [SpringResponse],
+    pub iterations: usize,
+}
+
+/// Receives every committed step (peaks, decimated histories). Must not allocate per call in
+/// production observers.
+pub trait Observer {
+    fn observe(&mut self, view: &StepView<'_>);
+}
+
+impl Observer for () {
+    fn observe(&mut self, _: &StepView<'_>) {}
+}
+
+/// Solver statistics.
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct SolverStats {
+    /// Committed steps (sub-steps included).
+    pub steps: u64,
+    pub newton_iterations: u64,
+    /// Times a step was halved.
+    pub substeps: u64,
+    /// Largest converged residual, N.
+    pub max_residual: f64,
+    /// Deepest halving level used.
+    pub max_substep_level: usize,
+}
+
+/// A running simulation: model, solver controls, committed state and scratch.
+pub struct Simulation {
+    pub model: Model,
+    pub solver: SolverParams,
+    state: State,
+    trial: Vec<SpringResponse>,
+    reaction: Reaction,
+    pub stats: SolverStats,
+    gravity: Vector3<f64>,
+}
+
+struct Converged {
+    u: [f64; 3],
+    v: [f64; 3],
+    a: [f64; 3],
+    iterations: usize,
+    residual: f64,
+}
+
+impl Simulation {
+    /// Start from static equilibrium under self-weight: u = (0, −W'/K_y, 0), every spring at rest
+    /// with N̄ = W'/n, and q̈(0) from the equation of motion with the load at t = 0.
+    pub fn new<L: LoadHistory + ?Sized>(model: Model, solver: SolverParams, load: &L) -> Self {
+        let n = model.x_m.len();
+        let state = State {
+            t_s: 0.0,
+            u: [0.0, -model.static_settlement_m(), 0.0],
+            v: [0.0; 3],
+            a: [0.0; 3],
+            springs: vec![SpringState::default(); n],
+        };
+        let gravity = Vector3::new(0.0, -model.weight_n, 0.0);
+        let mut sim = Simulation { model, solver, state, trial: vec![SpringResponse::default(); n], reaction: Reaction::default(), stats: SolverStats::default(), gravity };
+        let p0 = sim.load_vector(load.at(0.0));
+        let (f, _) = sim.assemble(sim.state.u, [0.0; 3], solver.dt_s);
+        let rhs = p0 - f;
+        let a0 = sim.model.mass.lu().solve(&rhs).unwrap_or_else(Vector3::zeros);
+        sim.state.a = [a0[0], a0[1], a0[2]];
+        for (c, r) in sim.state.springs.iter_mut().zip(&sim.trial) {
+            *c = r.state;
+        }
+        sim
+    }
+
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+    pub fn reaction(&self) -> Reaction {
+        self.reaction
+    }
+    pub fn springs(&self) -> &[SpringResponse] {
+        &self.trial
+    }
+
+    #[inline]
+    fn load_vector(&self, w: WaveForce) -> Vector3<f64> {
+        Vector3::new(w.fx_n, w.fy_n, w.m_nm) + self.gravity
+    }
+
+    /// Resisting force f_S (springs, and their dashpots in the elastic mode) and its tangent at
+    /// trial displacement `u` and velocity `v`, from the committed spring states. Fills
+    /// `self.trial` and `self.reaction`.
+    #[inline]
+    fn assemble(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> (Vector3<f64>, Matrix3<f64>) {
+        let law = self.model.law;
+        let cd = self.model.spring_dashpot_ns_per_m;
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        let dv_du = self.solver.gamma / (self.solver.beta * h);
+        let mut f = Vector3::zeros();
+        let mut k = Matrix3::zeros();
+        let mut reaction = Reaction::default();
+        for ((x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
+            let x = *x;
+            let r = law.trial(*c, u[0], u[1] - u[2] * x);
+            let mut fx = r.shear_n;
+            let mut kxx = r.dshear_dux;
+            if cd > 0.0 && r.normal_n > 0.0 {
+                let slip_rate = (r.state.slip_m - c.slip_m) / h;
+                fx += cd * (v[0] - slip_rate);
+                kxx += cd * (dv_du - r.dslip_dux / h);
+            }
+            let kxy = r.dshear_duy;
+            let dn = r.dnormal_duy;
+            if cdy > 0.0 && r.normal_n > 0.0 {
+                // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
+                // local vertical coordinate u_y − θ x.
+                let fd = cdy * (v[1] - v[2] * x);
+                let kd = cdy * dv_du;
+                f[1] += fd;
+                f[2] -= x * fd;
+                k[(1, 1)] += kd;
+                k[(1, 2)] -= x * kd;
+                k[(2, 1)] -= x * kd;
+                k[(2, 2)] += x * x * kd;
+            }
+            f[0] += fx;
+            f[1] -= r.normal_n;
+            f[2] += x * r.normal_n;
+            k[(0, 0)] += kxx;
+            k[(0, 1)] += kxy;
+            k[(0, 2)] -= x * kxy;
+            k[(1, 1)] -= dn;
+            k[(1, 2)] += x * dn;
+            k[(2, 1)] += x * dn;
+            k[(2, 2)] -= x * x * dn;
+            reaction.horizontal_n += fx;
+            reaction.normal_n += r.normal_n;
+            reaction.moment_nm += x * r.normal_n;
+            reaction.contact_springs += (r.normal_n > 0.0) as usize;
+            reaction.sliding_springs += (r.state.sliding && r.normal_n > 0.0) as usize;
+            *out = r;
+        }
+        reaction.horizontal_n += self.model.damping[(0, 0)] * v[0];
+        self.reaction = reaction;
+        (f, k)
+    }
+
+    /// Newton-Raphson for one step of length `h` to load `p`. Commits nothing.
+    fn try_step(&mut self, h: f64, p: Vector3<f64>) -> Result<Converged, (usize, f64)> {
+        let (beta, gamma) = (self.solver.beta, self.solver.gamma);
+        let c1 = 1.0 / (beta * h * h);
+        let c2 = 1.0 / (beta * h);
+        let c3 = 0.5 / beta - 1.0;
+        let un = Vector3::from(self.state.u);
+        let vn = Vector3::from(self.state.v);
+        let an = Vector3::from(self.state.a);
+        let m = self.model.mass;
+        let c = self.model.damping;
+        let k_dyn = m * c1 + c * (gamma * c2);
+        let tol = self.solver.tolerance * self.model.weight_n;
+        let inv_b = 1.0 / self.model.width_m;
+        let mut delta = Vector3::zeros();
+        let mut norm = f64::INFINITY;
+        for it in 0..=self.solver.max_iterations {
+            let a = delta * c1 - vn * c2 - an * c3;
+            let v = vn + (an * (1.0 - gamma) + a * gamma) * h;
+            let u = un + delta;
+            let (fs, kt) = self.assemble([u[0], u[1], u[2]], [v[0], v[1], v[2]], h);
+            let r = p - m * a - c * v - fs;
+            norm = r[0].abs().max(r[1].abs()).max(r[2].abs() * inv_b);
+            if !norm.is_finite() {
+                return Err((it, norm));
+            }
+            if norm <= tol {
+                return Ok(Converged { u: u.into(), v: v.into(), a: a.into(), iterations: it, residual: norm });
+            }
+            if it == self.solver.max_iterations {
+                break;
+            }
+            match (k_dyn + kt).lu().solve(&r) {
+                Some(d) => delta += d,
+                None => return Err((it, norm)),
+            }
+        }
+        Err((self.solver.max_iterations, norm))
+    }
+
+    fn commit(&mut self, h: f64, c: Converged) {
+        self.state.t_s += h;
+        self.state.u = c.u;
+        self.state.v = c.v;
+        self.state.a = c.a;
+        for (s, r) in self.state.springs.iter_mut().zip(&self.trial) {
+            *s = r.state;
+        }
+        self.stats.steps += 1;
+        self.stats.newton_iterations += c.iterations as u64;
+        self.stats.max_residual = self.stats.max_residual.max(c.residual);
+    }
+
+    /// Advance by `h` seconds, halving on failure (recursively, up to the allowed levels).
+    fn advance<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, h: f64, level: usize, load: &L, obs: &mut O) -> Result<(), SolveError> {
+        let t1 = self.state.t_s + h;
+        let w = load.at(t1);
+        match self.try_step(h, self.load_vector(w)) {
+            Ok(c) => {
+                let it = c.iterations;
+                self.commit(h, c);
+                // `assemble` left the trial of the converged iterate in `self.trial`/`reaction`.
+                obs.observe(&StepView { t_s: self.state.t_s, state: &self.state, load: w, reaction: self.reaction, springs: &self.trial, iterations: it });
+                Ok(())
+            }
+            Err((iterations, residual)) => {
+                if level >= self.solver.max_substep_levels {
+                    return Err(SolveError::NonConvergence { t_s: t1, iterations, levels: level, residual });
+                }
+                self.stats.substeps += 1;
+                self.stats.max_substep_level = self.stats.max_substep_level.max(level + 1);
+                self.advance(0.5 * h, level + 1, load, obs)?;
+                self.advance(0.5 * h, level + 1, load, obs)
+            }
+        }
+    }
+
+    /// Advance one time step of `solver.dt_s`.
+    #[inline]
+    pub fn step<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, load: &L, obs: &mut O) -> Result<(), SolveError> {
+        self.advance(self.solver.dt_s, 0, load, obs)
+    }
+
+    /// Run until `t_end_s` (the last step is shortened to land on it).
+    pub fn run_until<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, load: &L, obs: &mut O) -> Result<(), SolveError> {
+        let dt = self.solver.dt_s;
+        let n = ((t_end_s - self.state.t_s) / dt - 1e-9).ceil().max(0.0) as u64;
+        let t0 = self.state.t_s;
+        for i in 0..n {
+            // Step to an absolute grid time to avoid drift from repeated additions.
+            let target = (t0 + (i + 1) as f64 * dt).min(t_end_s);
+            let h = target - self.state.t_s;
+            if h <= 0.0 {
+                continue;
+            }
+            self.advance(h, 0, load, obs)?;
+            self.state.t_s = target;
+        }
+        Ok(())
+    }
+}

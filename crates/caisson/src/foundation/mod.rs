@@ -11,8 +11,8 @@
 //! share u_x (PHYSICS.md §10 items 5, 7, 11).
 //!
 //! Damping (seed Eqs. 24-25): C on u_x, `vertical_damping_factor`·C (10 C) on u_y and on θ.
-//! Where the horizontal dashpot acts is a [`DampingMode`] (PHYSICS.md §10 item 30); the
-//! rotational dashpot is a [`RotationalDamping`] (§10 item 10).
+//! Where the horizontal dashpot acts is a [`DampingMode`] (PHYSICS.md §10 item 30); how the
+//! vertical and rotational dashpots are formed is a [`VerticalDamping`] (§10 item 10).
 
 pub mod hydro;
 pub mod soil;
@@ -35,13 +35,17 @@ pub enum DampingMode {
     Elastic,
 }
 
-/// How the rotational dashpot is formed (PHYSICS.md §10 item 10).
+/// How the vertical and rotational dashpots are formed (PHYSICS.md §10 item 10).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum RotationalDamping {
-    /// The seed's number: c_θ = factor·C used as N·m·s/rad (option A, reproduction).
+pub enum VerticalDamping {
+    /// The seed's Eq. 24-25: global dashpots factor·C on u_y and factor·C on θ, the latter's
+    /// number used as N·m·s/rad (option A, reproduction). They act on the base centre and keep
+    /// acting when springs lift off.
     Seed,
-    /// Dashpots with the vertical springs: c_θ = (factor·C/n) Σ x_i² (option B, consistent).
+    /// A dashpot factor·C/n beside each vertical spring, on its vertical velocity u̇_y − θ̇ x_i,
+    /// active only while the spring is in contact (option B, consistent): with all springs in
+    /// contact, c_y = factor·C and c_θ = (factor·C/n) Σ x_i².
     Springs,
 }
 
@@ -56,7 +60,7 @@ pub struct Foundation {
     /// Factor on C for the vertical and rotational dashpots (seed: 10).
     pub vertical_damping_factor: f64,
     pub damping_mode: DampingMode,
-    pub rotational_damping: RotationalDamping,
+    pub vertical_damping: VerticalDamping,
     /// Added mass of the water in front of the wall (zero when switched off).
     pub added_mass: AddedMass,
 }

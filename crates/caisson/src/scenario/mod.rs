@@ -103,7 +103,7 @@ pub struct FoundationTable {
     pub damping_kns_per_m: Option<f64>,
     pub vertical_damping_factor: Option<f64>,
     pub damping_mode: Option<String>,
-    pub rotational_damping: Option<String>,
+    pub vertical_damping: Option<String>,
     pub added_mass: Option<bool>,
     pub added_mass_depth_m: Option<f64>,
 }

@@ -1,7 +1,7 @@
 //! Validation of a parsed [`ScenarioFile`] into typed SI parameters for the dynamic engine.
 
 use super::{ScenarioError, ScenarioFile};
-use crate::foundation::{AddedMass, DampingMode, Foundation, FoundationStiffness, RotationalDamping, Soil};
+use crate::foundation::{AddedMass, DampingMode, Foundation, FoundationStiffness, VerticalDamping, Soil};
 use crate::loads::pulse::{StaticRamp, TrianglePulse};
 use crate::loads::series::ForceSeries;
 use crate::loads::{LoadHistory, WaveForce};
@@ -277,9 +277,9 @@ fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundati
         Some(s) => choice("[foundation] damping_mode", s, &[("total", DampingMode::Total), ("elastic", DampingMode::Elastic)])?,
         None => DampingMode::Total,
     };
-    let rotational_damping = match &t.rotational_damping {
-        Some(s) => choice("[foundation] rotational_damping", s, &[("seed", RotationalDamping::Seed), ("springs", RotationalDamping::Springs)])?,
-        None => RotationalDamping::Seed,
+    let vertical_damping = match &t.vertical_damping {
+        Some(s) => choice("[foundation] vertical_damping", s, &[("seed", VerticalDamping::Seed), ("springs", VerticalDamping::Springs)])?,
+        None => VerticalDamping::Seed,
     };
     let added_mass = if t.added_mass.unwrap_or(true) {
         let d = match t.added_mass_depth_m {
@@ -296,7 +296,7 @@ fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundati
         AddedMass::default()
     };
     Ok((
-        Foundation { springs, mu_static, mu_dynamic, stiffness, vertical_damping_factor, damping_mode, rotational_damping, added_mass },
+        Foundation { springs, mu_static, mu_dynamic, stiffness, vertical_damping_factor, damping_mode, vertical_damping, added_mass },
         soil,
     ))
 }

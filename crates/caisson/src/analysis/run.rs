@@ -1,0 +1,323 @@
+//! A single run: build the model from a scenario, integrate, and collect the results the user
+//! asks for (peaks always; decimated histories on request).
+//!
+//! Definitions of the reported quantities:
+//!
+//! * **Permanent sliding**: at the end of the run, the normal-force-weighted mean slip position
+//!   of the springs in contact, Σ N_i s_i / Σ N_i. Under zero horizontal load this is exactly the
+//!   displacement at which the caisson rests (the stuck springs' elastic forces cancel), so it is
+//!   free of any residual elastic vibration. If no spring is in contact, u_x.
+//! * **Effective horizontal reaction**: the horizontal force the foundation carries (springs +
+//!   horizontal dashpot); its peak is the "effective design load" of the seed.
+//! * **Static sliding resistance** (seed Eq. 9): μ_s (W' − F_y(t)).
+//! * **Slip event**: a step at which the caisson goes from no spring slipping to at least one.
+
+use crate::dynamics::{Model, Observer, Simulation, SolveError, SolverStats, StepView};
+use crate::loads::LoadHistory;
+use crate::scenario::{Scenario, SolverParams};
+use crate::structure::Caisson;
+use crate::foundation::Foundation;
+
+/// At most this many slip-event times are kept (all are counted).
+pub const MAX_SLIP_TIMES: usize = 10_000;
+
+/// Foundation quantities reported with every run.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct FoundationSummary {
+    pub kx_n_per_m: f64,
+    pub ky_n_per_m: f64,
+    pub damping_ns_per_m: f64,
+    /// Caisson mass in air, kg.
+    pub mass_kg: f64,
+    /// Hydrodynamic added mass on u_x, kg.
+    pub added_mass_kg: f64,
+    /// T0 = 2π sqrt((m + m_hyd)/K_x), s.
+    pub natural_period_s: f64,
+    /// W'/K_y, m.
+    pub static_settlement_m: f64,
+    /// μ_s W', N.
+    pub static_sliding_resistance_n: f64,
+}
+
+impl FoundationSummary {
+    pub fn new(c: &Caisson, f: &Foundation, m: &Model) -> Self {
+        FoundationSummary {
+            kx_n_per_m: f.stiffness.kx_n_per_m,
+            ky_n_per_m: f.stiffness.ky_n_per_m,
+            damping_ns_per_m: f.stiffness.damping_ns_per_m,
+            mass_kg: c.mass_kg,
+            added_mass_kg: f.added_mass.translation_kg,
+            natural_period_s: m.natural_period_s(),
+            static_settlement_m: m.static_settlement_m(),
+            static_sliding_resistance_n: f.mu_static * c.weight_in_water_n,
+        }
+    }
+}
+
+/// Peaks and counts of one run (SI).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct RunSummary {
+    pub permanent_sliding_m: f64,
+    pub max_horizontal_displacement_m: f64,
+    pub max_rotation_rad: f64,
+    pub max_horizontal_reaction_n: f64,
+    pub time_of_max_horizontal_reaction_s: f64,
+    pub slip_events: u64,
+    pub slip_event_times_s: Vec<f64>,
+    /// Largest spring normal force over the run, N.
+    pub max_spring_normal_n: f64,
+    /// Smallest spring normal force over the run, N (0 = a spring lifted off).
+    pub min_spring_normal_n: f64,
+    /// Largest spring shear force magnitude, N.
+    pub max_spring_shear_n: f64,
+    /// Final state.
+    pub final_displacement_m: f64,
+    pub final_settlement_m: f64,
+    pub final_rotation_rad: f64,
+    pub duration_s: f64,
+    pub foundation: FoundationSummary,
+    pub solver: SolverStats,
+}
+
+/// Peak tracker (observer). Allocation-free per step once `slip_times` has its capacity.
+#[derive(Debug, Clone)]
+pub struct Peaks {
+    pub max_ux: f64,
+    pub max_theta: f64,
+    pub max_rx: f64,
+    pub t_max_rx: f64,
+    pub slip_events: u64,
+    pub slip_times: Vec<f64>,
+    pub max_n: f64,
+    pub min_n: f64,
+    pub max_shear: f64,
+    was_sliding: bool,
+}
+
+impl Default for Peaks {
+    fn default() -> Self {
+        Peaks {
+            max_ux: 0.0,
+            max_theta: 0.0,
+            max_rx: 0.0,
+            t_max_rx: 0.0,
+            slip_events: 0,
+            slip_times: Vec::with_capacity(256),
+            max_n: 0.0,
+            min_n: f64::INFINITY,
+            max_shear: 0.0,
+            was_sliding: false,
+        }
+    }
+}
+
+impl Observer for Peaks {
+    #[inline]
+    fn observe(&mut self, s: &StepView<'_>) {
+        let u = &s.state.u;
+        self.max_ux = self.max_ux.max(u[0].abs());
+        self.max_theta = self.max_theta.max(u[2].abs());
+        let rx = s.reaction.horizontal_n.abs();
+        if rx > self.max_rx {
+            self.max_rx = rx;
+            self.t_max_rx = s.t_s;
+        }
+        let sliding = s.reaction.sliding_springs > 0;
+        if sliding && !self.was_sliding {
+            self.slip_events += 1;
+            if self.slip_times.len() < MAX_SLIP_TIMES {
+                self.slip_times.push(s.t_s);
+            }
+        }
+        self.was_sliding = sliding;
+        for r in s.springs {
+            self.max_n = self.max_n.max(r.normal_n);
+            self.min_n = self.min_n.min(r.normal_n);
+            self.max_shear = self.max_shear.max(r.shear_n.abs());
+        }
+    }
+}
+
+/// Decimated time histories (SI). Column-per-quantity vectors of equal length.
+#[derive(Debug, Clone, Default)]
+pub struct History {
+    pub t_s: Vec<f64>,
+    pub ux_m: Vec<f64>,
+    pub uy_m: Vec<f64>,
+    pub theta_rad: Vec<f64>,
+    pub vx_m_per_s: Vec<f64>,
+    pub fx_n: Vec<f64>,
+    pub fy_n: Vec<f64>,
+    pub m_nm: Vec<f64>,
+    pub reaction_x_n: Vec<f64>,
+    pub reaction_y_n: Vec<f64>,
+    pub reaction_m_nm: Vec<f64>,
+    /// μ_s (W' − F_y(t)), N.
+    pub sliding_resistance_n: Vec<f64>,
+    pub sliding_springs: Vec<u32>,
+    /// Spring positions, m.
+    pub spring_x_m: Vec<f64>,
+    /// Per sample, n normal forces then n shear forces (row-major: sample × 2n).
+    pub spring_forces_n: Vec<f64>,
+    /// Per sample, n vertical spring displacements (u_y − θ x_i), m.
+    pub spring_uy_m: Vec<f64>,
+    interval_s: f64,
+    next_s: f64,
+    weight_n: f64,
+    mu_static: f64,
+}
+
+impl History {
+    pub fn new(interval_s: f64, expected_samples: usize, spring_x_m: Vec<f64>, weight_n: f64, mu_static: f64) -> Self {
+        let n = spring_x_m.len();
+        let cap = expected_samples + 2;
+        let v = || Vec::with_capacity(cap);
+        History {
+            t_s: v(),
+            ux_m: v(),
+            uy_m: v(),
+            theta_rad: v(),
+            vx_m_per_s: v(),
+            fx_n: v(),
+            fy_n: v(),
+            m_nm: v(),
+            reaction_x_n: v(),
+            reaction_y_n: v(),
+            reaction_m_nm: v(),
+            sliding_resistance_n: v(),
+            sliding_springs: Vec::with_capacity(cap),
+            spring_forces_n: Vec::with_capacity(cap * 2 * n),
+            spring_uy_m: Vec::with_capacity(cap * n),
+            spring_x_m,
+            interval_s,
+            next_s: 0.0,
+            weight_n,
+            mu_static,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.t_s.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.t_s.is_empty()
+    }
+    pub fn springs(&self) -> usize {
+        self.spring_x_m.len()
+    }
+}
+
+impl Observer for History {
+    fn observe(&mut self, s: &StepView<'_>) {
+        if s.t_s + 1e-12 < self.next_s {
+            return;
+        }
+        while self.next_s <= s.t_s + 1e-12 {
+            self.next_s += self.interval_s;
+        }
+        let u = &s.state.u;
+        self.t_s.push(s.t_s);
+        self.ux_m.push(u[0]);
+        self.uy_m.push(u[1]);
+        self.theta_rad.push(u[2]);
+        self.vx_m_per_s.push(s.state.v[0]);
+        self.fx_n.push(s.load.fx_n);
+        self.fy_n.push(s.load.fy_n);
+        self.m_nm.push(s.load.m_nm);
+        self.reaction_x_n.push(s.reaction.horizontal_n);
+        self.reaction_y_n.push(s.reaction.normal_n);
+        self.reaction_m_nm.push(s.reaction.moment_nm);
+        self.sliding_resistance_n.push(self.mu_static * (self.weight_n - s.load.fy_n));
+        self.sliding_springs.push(s.reaction.sliding_springs as u32);
+        self.spring_forces_n.extend(s.springs.iter().map(|r| r.normal_n));
+        self.spring_forces_n.extend(s.springs.iter().map(|r| r.shear_n));
+        self.spring_uy_m.extend(self.spring_x_m.iter().map(|x| u[1] - u[2] * x));
+    }
+}
+
+/// Both observers at once.
+struct Both<'a>(&'a mut Peaks, Option<&'a mut History>);
+
+impl Observer for Both<'_> {
+    #[inline]
+    fn observe(&mut self, s: &StepView<'_>) {
+        self.0.observe(s);
+        if let Some(h) = self.1.as_deref_mut() {
+            h.observe(s);
+        }
+    }
+}
+
+/// The results of [`run`].
+#[derive(Debug, Clone)]
+pub struct RunResult {
+    pub summary: RunSummary,
+    pub history: Option<History>,
+}
+
+/// Permanent sliding from the committed state (see the module docs).
+pub fn permanent_sliding_m(sim: &Simulation) -> f64 {
+    let (mut sn, mut sns) = (0.0, 0.0);
+    for (r, c) in sim.springs().iter().zip(&sim.state().springs) {
+        sn += r.normal_n;
+        sns += r.normal_n * c.slip_m;
+    }
+    if sn > 0.0 {
+        sns / sn
+    } else {
+        sim.state().u[0]
+    }
+}
+
+/// Integrate `load` on the scenario's caisson and foundation for `duration_s`.
+pub fn run_with<L: LoadHistory + ?Sized>(
+    caisson: &Caisson,
+    foundation: &Foundation,
+    solver: SolverParams,
+    load: &L,
+    duration_s: f64,
+    record_history: bool,
+) -> Result<RunResult, SolveError> {
+    let model = Model::new(caisson, foundation);
+    let fsum = FoundationSummary::new(caisson, foundation, &model);
+    let mut history = record_history.then(|| {
+        let samples = (duration_s / solver.output_interval_s).ceil() as usize + 1;
+        History::new(solver.output_interval_s, samples, model.x_m.clone(), model.weight_n, model.mu_static)
+    });
+    let mut sim = Simulation::new(model, solver, load);
+    let mut peaks = Peaks::default();
+    {
+        // Record the initial (static equilibrium) state.
+        let view = StepView { t_s: 0.0, state: sim.state(), load: load.at(0.0), reaction: sim.reaction(), springs: sim.springs(), iterations: 0 };
+        if let Some(h) = history.as_mut() {
+            h.observe(&view);
+        }
+    }
+    sim.run_until(duration_s, load, &mut Both(&mut peaks, history.as_mut()))?;
+    let st = sim.state();
+    let summary = RunSummary {
+        permanent_sliding_m: permanent_sliding_m(&sim),
+        max_horizontal_displacement_m: peaks.max_ux,
+        max_rotation_rad: peaks.max_theta,
+        max_horizontal_reaction_n: peaks.max_rx,
+        time_of_max_horizontal_reaction_s: peaks.t_max_rx,
+        slip_events: peaks.slip_events,
+        slip_event_times_s: peaks.slip_times,
+        max_spring_normal_n: peaks.max_n,
+        min_spring_normal_n: if peaks.min_n.is_finite() { peaks.min_n } else { 0.0 },
+        max_spring_shear_n: peaks.max_shear,
+        final_displacement_m: st.u[0],
+        final_settlement_m: -st.u[1],
+        final_rotation_rad: st.u[2],
+        duration_s,
+        foundation: fsum,
+        solver: sim.stats,
+    };
+    Ok(RunResult { summary, history })
+}
+
+/// Run a validated scenario with its `[load]`.
+pub fn run(s: &Scenario, record_history: bool) -> Result<RunResult, SolveError> {
+    let load = s.load.as_ref().expect("run needs a [load] table; the CLI checks this");
+    run_with(&s.caisson, &s.foundation, s.solver, load, s.duration_s, record_history)
+}

@@ -1,0 +1,73 @@
+//! Shock spectrum of the caisson (seed §5.2, Figs. 7-8): sweep the rise time of a symmetric
+//! triangular pulse (seed Eq. 37) over t_r/T0 and record the amplification Ψ = max|u_x|/(F/K_x)
+//! (seed Eq. 38, PHYSICS.md §10 item 28) and the permanent sliding, with the closed forms beside
+//! them (undamped SDOF Ψ, §9.2; exact rigid block and Shimosako 1999, §6.3).
+//!
+//! T0 = 2π sqrt(m_x/K_x), m_x the caisson mass plus the horizontal added mass. The closed-form
+//! slides use the same mass m_x, A = |P_max| + μ_d U_max and B = μ_d W'. Points run in parallel
+//! (rayon) and are gathered by index, so results do not depend on the thread count.
+//!
+//! Each run uses dt = min(scenario dt, T0/200, t_r/20) and lasts 4 t_r + 10 T0.
+
+use super::closed_form::{rigid_block_sliding_m, shimosako_sliding_m, shock_spectrum_psi};
+use super::run::run_with;
+use crate::dynamics::{Model, SolveError};
+use crate::foundation::Foundation;
+use crate::loads::pulse::TrianglePulse;
+use crate::scenario::SolverParams;
+use crate::structure::Caisson;
+use rayon::prelude::*;
+
+/// One point of the spectrum.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct SpectrumPoint {
+    pub tr_over_t0: f64,
+    pub rise_time_s: f64,
+    /// Ψ from the dynamic model.
+    pub psi: f64,
+    /// Ψ of the undamped SDOF (closed form).
+    pub psi_closed_form: f64,
+    pub permanent_sliding_m: f64,
+    /// Shimosako & Takahashi (1999) closed form (corrected seed Eq. 8).
+    pub shimosako_sliding_m: f64,
+    /// Exact rigid-block slide.
+    pub rigid_block_sliding_m: f64,
+    pub max_horizontal_reaction_n: f64,
+}
+
+/// Log-spaced ratios from `from` to `to` (inclusive), `count` ≥ 2 points.
+pub fn log_space(from: f64, to: f64, count: usize) -> Vec<f64> {
+    let (a, b) = (from.ln(), to.ln());
+    (0..count).map(|i| (a + (b - a) * i as f64 / (count - 1) as f64).exp()).collect()
+}
+
+/// Sweep `ratios` of t_r/T0 for the pulse `base` (its rise time is replaced).
+pub fn sweep(caisson: &Caisson, foundation: &Foundation, solver: SolverParams, base: TrianglePulse, ratios: &[f64]) -> Result<Vec<SpectrumPoint>, SolveError> {
+    let model = Model::new(caisson, foundation);
+    let t0 = model.natural_period_s();
+    let m_x = model.horizontal_mass_kg();
+    let ust = base.peak.fx_n.abs() / model.kx_n_per_m;
+    let mu = foundation.mu_dynamic;
+    let a = base.peak.fx_n.abs() + mu * base.peak.fy_n;
+    let b = mu * caisson.weight_in_water_n;
+    ratios
+        .par_iter()
+        .map(|&ratio| {
+            let tr = ratio * t0;
+            let pulse = TrianglePulse { peak: base.peak, rise_s: tr, start_s: 0.0 };
+            let dt = solver.dt_s.min(t0 / 200.0).min(tr / 20.0);
+            let s = SolverParams { dt_s: dt, output_interval_s: dt, ..solver };
+            let r = run_with(caisson, foundation, s, &pulse, 4.0 * tr + 10.0 * t0, false)?;
+            Ok(SpectrumPoint {
+                tr_over_t0: ratio,
+                rise_time_s: tr,
+                psi: if ust > 0.0 { r.summary.max_horizontal_displacement_m / ust } else { 0.0 },
+                psi_closed_form: shock_spectrum_psi(ratio),
+                permanent_sliding_m: r.summary.permanent_sliding_m,
+                shimosako_sliding_m: shimosako_sliding_m(a, b, m_x, 2.0 * tr),
+                rigid_block_sliding_m: rigid_block_sliding_m(a, b, m_x, 2.0 * tr),
+                max_horizontal_reaction_n: r.summary.max_horizontal_reaction_n,
+            })
+        })
+        .collect()
+}

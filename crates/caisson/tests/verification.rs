@@ -1,0 +1,236 @@
+//! Verification of the dynamic engine against closed forms (PHYSICS.md §6.3 rigid block, §9.2
+//! shock spectrum), the seed's static push (§5.1, Fig. 6), Table 6, and convergence in dt.
+
+use caisson::analysis::closed_form::{rigid_block_sliding_m, shock_spectrum_psi};
+use caisson::analysis::run::{run, run_with};
+use caisson::analysis::spectrum::sweep;
+use caisson::dynamics::Model;
+use caisson::loads::pulse::TrianglePulse;
+use caisson::loads::WaveForce;
+use caisson::scenario::{parse_str, validate, LoadSpec, Scenario};
+use std::path::Path;
+
+fn scenario(text: &str) -> Scenario {
+    let f = parse_str(text, Path::new("test.toml")).expect("parse");
+    validate(&f, Path::new(".")).expect("validate")
+}
+
+/// The seed's Table 5 caisson (PHYSICS.md §8.2) with a triangle load.
+const TABLE5: &str = r#"
+[caisson]
+width_m = 0.78
+length_m = 1.0
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = 8.24
+[foundation]
+e100_kpa = 3.5e5
+poisson = 0.33
+density_kg_per_m3 = 2300
+"#;
+
+#[test]
+fn table6_from_table5_inputs() {
+    let s = scenario(TABLE5);
+    let k = s.foundation.stiffness;
+    // PHYSICS.md §8.2: K_y 1.404e5 kN/m, K_x 1.511e5 kN/m, M 1463.96 kg, C 598 kN·s/m
+    // (Eq. 22; Table 6's 480 is the known slip). Tolerance 1 % as the issue asks.
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    assert!(rel(k.ky_n_per_m, 1.404e8) < 0.01, "K_y {}", k.ky_n_per_m);
+    assert!(rel(k.kx_n_per_m, 1.511e8) < 0.01, "K_x {}", k.kx_n_per_m);
+    assert!(rel(s.caisson.mass_kg, 1463.96) < 0.01, "M {}", s.caisson.mass_kg);
+    assert!(rel(k.damping_ns_per_m, 5.98e5) < 0.01, "C {}", k.damping_ns_per_m);
+    // T0 rounds to the table's 0.02 s with every reading (§8.2 item 6): within 0.0195-0.0235 s.
+    let t0 = Model::new(&s.caisson, &s.foundation).natural_period_s();
+    assert!((0.0195..0.0235).contains(&t0), "T0 {t0}");
+}
+
+/// Shock spectrum, undamped, no sliding (μ = 10), force at the base, diagonal mass: the
+/// horizontal mode is an exact SDOF. Ψ within 0.5 % of the closed form for t_r/T0 from 0.05
+/// to 5 (the issue's tolerance; the sweep uses dt ≤ T0/200, whose Newmark period error is
+/// ≈ (ω dt)²/12 = 8e-5).
+#[test]
+fn shock_spectrum_undamped_matches_closed_form() {
+    let s = scenario(
+        r#"
+[caisson]
+width_m = 0.78
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = 8.24
+mass_matrix = "diagonal"
+[foundation]
+e100_kpa = 3.5e5
+damping_kns_per_m = 0.0
+mu_static = 10.0
+mu_dynamic = 10.0
+[load]
+kind = "triangle"
+peak_horizontal_kn = 2.0
+rise_time_s = 0.01
+horizontal_lever_m = 0.0
+"#,
+    );
+    let Some(LoadSpec::Triangle(base)) = s.load.clone() else { panic!() };
+    let ratios = [0.05, 0.1, 0.2, 0.3, 0.452, 0.6, 0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.3, 5.0];
+    let pts = sweep(&s.caisson, &s.foundation, s.solver, base, &ratios).unwrap();
+    for p in pts {
+        let err = (p.psi / p.psi_closed_form - 1.0).abs();
+        assert!(err < 0.005, "t_r/T0 = {}: Ψ {} vs closed form {} ({:.3} %)", p.tr_over_t0, p.psi, p.psi_closed_form, 100.0 * err);
+        assert_eq!(p.permanent_sliding_m.abs() < 1e-12, true, "no sliding expected");
+    }
+}
+
+/// A very stiff foundation (100 × Table 6) with μ_s = μ_d = 0.6, no damping, force and uplift
+/// through the base centre (no rocking): the caisson is the rigid block of PHYSICS.md §6.3.
+fn rigid_block(ratio_a_over_b: f64, uplift_over_w: f64) -> (f64, f64) {
+    let w = 8.24;
+    let mu = 0.6;
+    let p = mu * (ratio_a_over_b * w - uplift_over_w * w); // A = P + μU = ratio·μW
+    let tr = 0.1;
+    let text = format!(
+        r#"
+[caisson]
+width_m = 0.78
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = {w}
+mass_matrix = "diagonal"
+[foundation]
+kx_kn_per_m = 1.5e7
+ky_kn_per_m = 1.4e7
+damping_kns_per_m = 0.0
+mu_static = {mu}
+mu_dynamic = {mu}
+[load]
+kind = "triangle"
+peak_horizontal_kn = {p}
+peak_uplift_kn = {u}
+rise_time_s = {tr}
+horizontal_lever_m = 0.0
+uplift_lever_m = 0.39
+duration_s = 1.5
+[solver]
+dt_s = 2e-5
+"#,
+        u = uplift_over_w * w
+    );
+    let s = scenario(&text);
+    let m = Model::new(&s.caisson, &s.foundation).horizontal_mass_kg();
+    let exact = rigid_block_sliding_m(ratio_a_over_b * mu * w * 1e3, mu * w * 1e3, m, 2.0 * tr);
+    let r = run(&s, false).unwrap();
+    (r.summary.permanent_sliding_m, exact)
+}
+
+/// Within 1 % of the exact closed forms in both regimes (A/B = 1.5 stops before the pulse ends,
+/// A/B = 3 after), with and without uplift. The residual difference is the elastic compliance
+/// (e_s = μW'/K_x ≈ 3e-7 m) and the stick-slip transitions resolved to dt.
+#[test]
+fn rigid_block_sliding_matches_closed_form() {
+    for (ratio, uplift) in [(1.5, 0.0), (3.0, 0.0), (1.5, 0.3), (3.0, 0.3)] {
+        let (s, exact) = rigid_block(ratio, uplift);
+        let err = (s / exact - 1.0).abs();
+        assert!(err < 0.01, "A/B = {ratio}, U/W = {uplift}: {s} m vs exact {exact} m ({:.3} %)", 100.0 * err);
+    }
+}
+
+/// Quasi-static push at the still-water level (seed §5.1, Fig. 6, d = 0.4 m): reactions linear
+/// across the base while in contact, the seaward springs unload first, and sliding starts at
+/// F = μ_s (W' − U) within 1 %.
+///
+/// Quasi-static means a ramp slow against every relaxation time of the model. The seed's global
+/// dashpots (10 C on θ as N·m·s/rad) make rocking relax over ~1 s, and once the seaward springs
+/// lift, rotation about the heel moves the base centre vertically into the global vertical
+/// dashpot, which adds to ΣN (measured: onset 0.5 % late even with a 20 s ramp). The consistent
+/// per-spring dashpots (`vertical_damping = "springs"`, PHYSICS.md §10 item 10 option B) with a
+/// 20 s ramp converge to the static onset (measured 0.1 %).
+#[test]
+fn static_push_reproduces_fig6_behaviour() {
+    for uplift_kn in [0.0, 2.0] {
+        let text = format!(
+            r#"
+[caisson]
+width_m = 0.78
+height_m = 1.12
+base_depth_m = 0.4
+weight_in_water_kn = 8.24
+[foundation]
+springs = 4
+e100_kpa = 3.5e5
+vertical_damping = "springs"
+[load]
+kind = "static"
+peak_horizontal_kn = 6.0
+peak_uplift_kn = {uplift_kn}
+horizontal_lever_m = 0.4
+ramp_time_s = 20.0
+duration_s = 19.5
+[solver]
+output_interval_s = 1e-3
+"#
+        );
+        let s = scenario(&text);
+        let r = run(&s, true).unwrap();
+        let h = r.history.unwrap();
+        let n = h.springs();
+        let first_slip = (0..h.len()).find(|&k| h.sliding_springs[k] > 0).expect("the push must slide the caisson");
+        let f = h.fx_n[first_slip];
+        let expected = 0.6 * (8240.0 - h.fy_n[first_slip]);
+        assert!((f / expected - 1.0).abs() < 0.01, "U = {uplift_kn} kN: sliding starts at {f} N, expected {expected} N");
+        // Before sliding, at every sample: N increases from the seaward to the shoreward end,
+        // and the springs in contact lie on a line (rigid base), both to 1e-6 of W' (the start
+        // of the ramp excites a dynamic transient of a few 1e-6 N, see the coupled mass).
+        let mut lifted_order = Vec::new();
+        for k in 1..first_slip {
+            let nk = &h.spring_forces_n[k * 2 * n..k * 2 * n + n];
+            for i in 1..n {
+                assert!(nk[i] >= nk[i - 1] - 1e-6 * 8240.0, "sample {k}: N not increasing shoreward: {nk:?}");
+            }
+            let contact: Vec<usize> = (0..n).filter(|&i| nk[i] > 0.0).collect();
+            if contact.len() >= 3 {
+                let (i0, i1) = (contact[0], contact[1]);
+                let slope = (nk[i1] - nk[i0]) / (h.spring_x_m[i1] - h.spring_x_m[i0]);
+                for &i in &contact[2..] {
+                    let pred = nk[i0] + slope * (h.spring_x_m[i] - h.spring_x_m[i0]);
+                    assert!((nk[i] - pred).abs() < 1e-6 * 8240.0, "sample {k}: reactions not linear: {nk:?}");
+                }
+            }
+            for i in 0..n {
+                if nk[i] == 0.0 && !lifted_order.contains(&i) {
+                    lifted_order.push(i);
+                }
+            }
+        }
+        // The seaward spring (index 0) is the first to lift off.
+        assert_eq!(lifted_order.first(), Some(&0), "lift-off order {lifted_order:?}");
+    }
+}
+
+/// Halving the default time step changes the permanent sliding of a sliding case by < 0.5 %.
+#[test]
+fn sliding_converges_in_dt() {
+    let base = format!(
+        "{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\nhorizontal_lever_m = 0.3\nduration_s = 0.6\n"
+    );
+    let s1 = scenario(&base);
+    let mut s2 = s1.clone();
+    s2.solver.dt_s *= 0.5;
+    let a = run(&s1, false).unwrap().summary.permanent_sliding_m;
+    let b = run(&s2, false).unwrap().summary.permanent_sliding_m;
+    assert!(a > 1e-4, "the case must slide: {a} m");
+    assert!((a / b - 1.0).abs() < 0.005, "dt 1e-4: {a} m, dt 5e-5: {b} m");
+}
+
+/// With sliding disabled the run reports no slip event and a zero permanent slide, and the
+/// static settlement is W'/K_y.
+#[test]
+fn no_sliding_below_resistance_and_settlement() {
+    let text = format!("{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 1.0\nrise_time_s = 0.05\nduration_s = 0.3\n");
+    let s = scenario(&text);
+    let r = run(&s, false).unwrap().summary;
+    assert_eq!(r.slip_events, 0);
+    assert!(r.permanent_sliding_m.abs() < 1e-9);
+    let ky = s.foundation.stiffness.ky_n_per_m;
+    assert!((r.foundation.static_settlement_m - 8240.0 / ky).abs() < 1e-15);
+    let _ = (shock_spectrum_psi(1.0), TrianglePulse::shape(0.0, 1.0), WaveForce::ZERO, run_with::<TrianglePulse>);
+}
