@@ -1,1 +1,110 @@
-pub fn run(_a: crate::cli::SpectrumArgs) -> anyhow::Result<()> { Ok(()) }
+//! `caisson spectrum SCENARIO.toml [--tr-over-t0 FROM:TO:COUNT] [--json] [--out DIR]`: the shock
+//! spectrum of the scenario's caisson under its triangular pulse (seed §5.2, Figs. 7-8).
+
+use crate::cli::SpectrumArgs;
+use crate::cmd_run::check_finite;
+use crate::input_err;
+use crate::output::{ensure_dir, write_atomic};
+use crate::plot::{panels, Panel, Series};
+use anyhow::{Context, Result};
+use caisson::analysis::spectrum::{log_space, sweep, SpectrumPoint};
+use caisson::scenario::{self, LoadSpec};
+use serde_json::json;
+
+/// Parse `FROM:TO:COUNT` (0 < FROM < TO, 2 ≤ COUNT ≤ 2000).
+pub fn parse_range(s: &str) -> Result<(f64, f64, usize)> {
+    let bad = || input_err(format!("--tr-over-t0 = \"{s}\": expected FROM:TO:COUNT with 0 < FROM < TO and COUNT a whole number from 2 to 2000, e.g. 0.05:5:60"));
+    let parts: Vec<&str> = s.split(':').collect();
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let from: f64 = parts[0].trim().parse().map_err(|_| bad())?;
+    let to: f64 = parts[1].trim().parse().map_err(|_| bad())?;
+    let count: usize = parts[2].trim().parse().map_err(|_| bad())?;
+    if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from && (2..=2000).contains(&count)) {
+        return Err(bad());
+    }
+    Ok((from, to, count))
+}
+
+fn point_json(p: &SpectrumPoint) -> serde_json::Value {
+    json!({
+        "tr_over_t0": p.tr_over_t0,
+        "rise_time_s": p.rise_time_s,
+        "psi": p.psi,
+        "psi_closed_form": p.psi_closed_form,
+        "permanent_sliding_m": p.permanent_sliding_m,
+        "shimosako_sliding_m": p.shimosako_sliding_m,
+        "rigid_block_sliding_m": p.rigid_block_sliding_m,
+        "max_horizontal_reaction_kn": p.max_horizontal_reaction_n / 1e3,
+    })
+}
+
+pub fn run(args: SpectrumArgs) -> Result<()> {
+    let (from, to, count) = parse_range(&args.tr_over_t0)?;
+    let sc = scenario::load(&args.scenario).map_err(input_err)?;
+    let Some(LoadSpec::Triangle(base)) = sc.load.clone() else {
+        return Err(input_err(format!("{}: `caisson spectrum` needs `[load] kind = \"triangle\"` (its peak forces are swept over rise times)", args.scenario.display())));
+    };
+    if let Some(dir) = &args.out {
+        if dir.exists() && !dir.is_dir() {
+            return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
+        }
+    }
+    let ratios = log_space(from, to, count);
+    let pts = sweep(&sc.caisson, &sc.foundation, sc.solver, base, &ratios).context("the spectrum sweep failed")?;
+    let model = caisson::dynamics::Model::new(&sc.caisson, &sc.foundation);
+    let json = json!({
+        "natural_period_s": model.natural_period_s(),
+        "peak_horizontal_kn": base.peak.fx_n / 1e3,
+        "peak_uplift_kn": base.peak.fy_n / 1e3,
+        "static_sliding_resistance_kn": sc.foundation.mu_static * sc.caisson.weight_in_water_n / 1e3,
+        "points": pts.iter().map(point_json).collect::<Vec<_>>(),
+    });
+    check_finite(&json, "spectrum")?;
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&json)?);
+    } else {
+        println!(
+            "T0 = {:.4} s, F_max = {:.3} kN, U_max = {:.3} kN, static sliding resistance μ_s W' = {:.3} kN",
+            model.natural_period_s(),
+            base.peak.fx_n / 1e3,
+            base.peak.fy_n / 1e3,
+            sc.foundation.mu_static * sc.caisson.weight_in_water_n / 1e3
+        );
+        println!("{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}", "tr/T0", "tr (s)", "Ψ", "Ψ closed", "slide (mm)", "Shimosako", "rigid blk", "R_x (kN)");
+        for p in &pts {
+            println!(
+                "{:>9.4} {:>10.5} {:>8.4} {:>10.4} {:>12.4} {:>12.4} {:>12.4} {:>10.3}",
+                p.tr_over_t0, p.rise_time_s, p.psi, p.psi_closed_form, p.permanent_sliding_m * 1e3, p.shimosako_sliding_m * 1e3, p.rigid_block_sliding_m * 1e3, p.max_horizontal_reaction_n / 1e3
+            );
+        }
+        println!("Ψ closed: undamped SDOF (PHYSICS.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
+    }
+    if let Some(dir) = &args.out {
+        ensure_dir(dir)?;
+        let mut w = csv::Writer::from_writer(Vec::new());
+        w.write_record(["tr_over_t0", "rise_time_s", "psi", "psi_closed_form", "permanent_sliding_m", "shimosako_sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn"])?;
+        for p in &pts {
+            w.write_record(&[p.tr_over_t0, p.rise_time_s, p.psi, p.psi_closed_form, p.permanent_sliding_m, p.shimosako_sliding_m, p.rigid_block_sliding_m, p.max_horizontal_reaction_n / 1e3].map(|v| format!("{v:e}")))?;
+        }
+        write_atomic(&dir.join("spectrum.csv"), &w.into_inner()?)?;
+        write_atomic(&dir.join("spectrum.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;
+        let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
+        panels(&dir.join("spectrum.svg"), "Shock spectrum: triangular pulse (seed Figs. 7-8)", "t_r / T0", &[
+            Panel { y_label: "Ψ = max u_x / (F/K_x)".into(), series: vec![
+                Series::markers("dynamic model", col(|p| p.psi)),
+                Series::dashed("undamped SDOF, closed form", col(|p| p.psi_closed_form)),
+            ]},
+            Panel { y_label: "permanent sliding (mm)".into(), series: vec![
+                Series::markers("dynamic model", col(|p| p.permanent_sliding_m * 1e3)),
+                Series::line("Shimosako (1999) closed form", col(|p| p.shimosako_sliding_m * 1e3)),
+                Series::dashed("exact rigid block", col(|p| p.rigid_block_sliding_m * 1e3)),
+            ]},
+        ])?;
+        if !args.json {
+            println!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
+        }
+    }
+    Ok(())
+}
