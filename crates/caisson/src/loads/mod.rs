@@ -13,8 +13,18 @@
 //!
 //! The engine (`dynamics`) only sees the [`LoadHistory`] trait; new load models plug in there.
 
+pub mod goda;
+pub mod history;
+pub mod impact;
+pub mod model;
+pub mod profile;
 pub mod pulse;
+pub mod regime;
+pub mod risetime;
+pub mod safety;
+pub mod sainflou;
 pub mod series;
+pub mod shapes;
 
 /// Wave forces on the caisson at one instant (SI, totals; sign conventions in the module docs).
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]

@@ -1,0 +1,243 @@
+//! Force time histories of trains of waves: F_x, F_y and the moment, consistently (seed Eqs. 29
+//! and 31 and the Table 2 shapes of [`super::shapes`]; PHYSICS.md §6.1, §10 items 16-18).
+//!
+//! Each wave is a [`WaveEvent`]: its start time, period, the three load components (totals on the
+//! caisson, already multiplied by the alongshore length) and, for an impulsive wave, its
+//! [`Impulse`] timing. A component carries its horizontal force with its moment (force × height of
+//! the resultant above the base) and its vertical force with its moment (force × (distance from
+//! the heel − B/2)), so that a weighted sum of components gives forces and the moment about the
+//! centre of the base together (sign conventions of [`super`]):
+//!
+//! * `quasi`: α_qs F_qs+ (Goda P and U with their lever arms, scaled by α_qs of the regime);
+//! * `trough`: F_qs− as positive magnitudes (minus the Sainflou trough force and suction), so that
+//!   F_qs− sin(2πτ/T) < 0 for τ in (T/2, T) (PHYSICS.md §10 item 16);
+//! * `impact`: F_x,max (seed Eq. 30) and F_y,max (Eq. 32) with the lever arms of PHYSICS.md §4.3.
+//!
+//! A [`WaveTrain`] is a list of events ordered by start time; `at(t)` finds the wave by binary
+//! search and evaluates its shape. Nothing is allocated after construction. Between events (if the
+//! caller leaves gaps) and after the last one the load is zero.
+
+use super::shapes::{weights, Impulse};
+use super::{LoadHistory, WaveForce};
+use thiserror::Error;
+
+/// One load component: horizontal and vertical parts, each with its moment about the base centre
+/// (totals, N and N·m).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct LoadComponent {
+    /// Horizontal part: `fx_n` and `m_nm` = fx · lever (`fy_n` = 0).
+    pub x: WaveForce,
+    /// Vertical part: `fy_n` and `m_nm` = fy · (distance from the heel − B/2) (`fx_n` = 0).
+    pub y: WaveForce,
+}
+
+impl LoadComponent {
+    /// From forces and lever arms: `fx_n` acting `lever_m` above the base, `fy_n` acting
+    /// `uplift_from_heel_m` from the heel of a base `width_m` wide.
+    pub fn from_levers(fx_n: f64, lever_m: f64, fy_n: f64, uplift_from_heel_m: f64, width_m: f64) -> Self {
+        LoadComponent {
+            x: WaveForce::from_levers(fx_n, lever_m, 0.0, 0.0, width_m),
+            y: WaveForce::from_levers(0.0, 0.0, fy_n, uplift_from_heel_m, width_m),
+        }
+    }
+
+    /// Both parts together.
+    pub fn total(&self) -> WaveForce {
+        self.x + self.y
+    }
+
+    fn scaled(&self, k: f64) -> LoadComponent {
+        LoadComponent { x: self.x.scaled(k), y: self.y.scaled(k) }
+    }
+}
+
+/// One wave of a train.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct WaveEvent {
+    /// Start time of the wave, s.
+    pub start_s: f64,
+    /// Period T, s.
+    pub period_s: f64,
+    /// α_qs F_qs+ (Goda), totals.
+    pub quasi: LoadComponent,
+    /// F_qs− magnitudes (Sainflou trough force and suction, positive), totals.
+    pub trough: LoadComponent,
+    /// F_x,max and F_y,max, totals (zero for a pulsating wave).
+    pub impact: LoadComponent,
+    /// `None`: pulsating (Eq. 29 shape). `Some`: impulsive, with shape and timing.
+    pub impulse: Option<Impulse>,
+}
+
+impl WaveEvent {
+    /// Build an event. `quasi_plus` is F_qs+ (unscaled) and `alpha_qs` its reduction factor
+    /// (PHYSICS.md §10 item 17); `trough_magnitude` is F_qs− (positive). For an impulsive wave,
+    /// t_r is clamped to T/4 and t_d to [t_r, T/2] here (t_d = 2 t_r for the symmetric shapes).
+    pub fn new(
+        start_s: f64,
+        period_s: f64,
+        quasi_plus: LoadComponent,
+        alpha_qs: f64,
+        trough_magnitude: LoadComponent,
+        impact: LoadComponent,
+        impulse: Option<Impulse>,
+    ) -> Self {
+        let impulse = impulse.map(|i| {
+            let rise_s = i.rise_s.min(0.25 * period_s);
+            let duration_s = if i.shape.uses_duration() { i.duration_s.clamp(rise_s, 0.5 * period_s) } else { 2.0 * rise_s };
+            Impulse { shape: i.shape, rise_s, duration_s }
+        });
+        WaveEvent {
+            start_s,
+            period_s,
+            quasi: quasi_plus.scaled(alpha_qs),
+            trough: trough_magnitude,
+            impact: if impulse.is_some() { impact } else { LoadComponent::default() },
+            impulse,
+        }
+    }
+
+    /// End of the wave, s.
+    pub fn end_s(&self) -> f64 {
+        self.start_s + self.period_s
+    }
+
+    /// Forces at local time `tau_s` (0 ≤ τ < T; zero outside).
+    #[inline]
+    pub fn at_local(&self, tau_s: f64) -> WaveForce {
+        let peaks = [self.impact.x.fx_n, self.quasi.x.fx_n, self.impact.y.fy_n, self.quasi.y.fy_n];
+        let w = weights(tau_s, self.period_s, self.impulse.as_ref(), peaks);
+        self.impact.x.scaled(w.impact_x)
+            + self.quasi.x.scaled(w.quasi_x)
+            + self.impact.y.scaled(w.impact_y)
+            + self.quasi.y.scaled(w.quasi_y)
+            + self.trough.total().scaled(w.trough)
+    }
+}
+
+/// Errors building a wave train.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TrainError {
+    #[error("wave {index}: {what} = {value} must be a finite number{need}")]
+    BadNumber { index: usize, what: &'static str, value: f64, need: &'static str },
+    #[error("wave {index} starts at {start_s} s, before the previous wave ends at {previous_end_s} s")]
+    Overlap { index: usize, start_s: f64, previous_end_s: f64 },
+}
+
+/// A train of waves ordered in time: the [`LoadHistory`] of the wave-load models.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WaveTrain {
+    events: Vec<WaveEvent>,
+}
+
+impl WaveTrain {
+    /// Check and wrap events: finite numbers, periods > 0, starts ≥ the previous wave's end
+    /// (a relative tolerance of 1e-12 absorbs round-off in summed periods).
+    pub fn new(events: Vec<WaveEvent>) -> Result<Self, TrainError> {
+        let mut prev_end = f64::NEG_INFINITY;
+        for (index, e) in events.iter().enumerate() {
+            if !e.start_s.is_finite() {
+                return Err(TrainError::BadNumber { index, what: "start_s", value: e.start_s, need: "" });
+            }
+            if !(e.period_s > 0.0 && e.period_s.is_finite()) {
+                return Err(TrainError::BadNumber { index, what: "period_s", value: e.period_s, need: " > 0" });
+            }
+            for (what, v) in [
+                ("impact fx", e.impact.x.fx_n),
+                ("impact fy", e.impact.y.fy_n),
+                ("quasi-static fx", e.quasi.x.fx_n),
+                ("quasi-static fy", e.quasi.y.fy_n),
+                ("trough fx", e.trough.x.fx_n),
+                ("trough fy", e.trough.y.fy_n),
+                ("impact moment", e.impact.total().m_nm),
+                ("quasi-static moment", e.quasi.total().m_nm),
+                ("trough moment", e.trough.total().m_nm),
+            ] {
+                if !v.is_finite() {
+                    return Err(TrainError::BadNumber { index, what, value: v, need: "" });
+                }
+            }
+            if let Some(i) = e.impulse {
+                if !(i.rise_s > 0.0 && i.rise_s.is_finite()) {
+                    return Err(TrainError::BadNumber { index, what: "rise time", value: i.rise_s, need: " > 0" });
+                }
+            }
+            if e.start_s < prev_end - 1e-12 * prev_end.abs().max(1.0) {
+                return Err(TrainError::Overlap { index, start_s: e.start_s, previous_end_s: prev_end });
+            }
+            prev_end = e.end_s();
+        }
+        Ok(WaveTrain { events })
+    }
+
+    pub fn events(&self) -> &[WaveEvent] {
+        &self.events
+    }
+
+    /// End of the last wave, s (0 for an empty train).
+    pub fn duration_s(&self) -> f64 {
+        self.events.last().map_or(0.0, |e| e.end_s())
+    }
+}
+
+impl LoadHistory for WaveTrain {
+    #[inline]
+    fn at(&self, t_s: f64) -> WaveForce {
+        let j = self.events.partition_point(|e| e.start_s <= t_s);
+        if j == 0 {
+            return WaveForce::ZERO;
+        }
+        let e = &self.events[j - 1];
+        e.at_local(t_s - e.start_s)
+    }
+    fn end_time_s(&self) -> Option<f64> {
+        Some(self.duration_s())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::loads::shapes::LoadShape;
+
+    fn comp(fx: f64, fy: f64) -> LoadComponent {
+        LoadComponent::from_levers(fx, 0.3, fy, 0.52, 0.78)
+    }
+
+    #[test]
+    fn moment_follows_levers() {
+        let c = comp(1000.0, 200.0);
+        let t = c.total();
+        assert!((t.m_nm - (1000.0 * 0.3 + 200.0 * (0.52 - 0.39))).abs() < 1e-12);
+    }
+
+    #[test]
+    fn train_finds_each_wave_and_is_zero_outside() {
+        let mk = |start| WaveEvent::new(start, 2.0, comp(100.0, 10.0), 1.0, comp(50.0, 5.0), LoadComponent::default(), None);
+        let train = WaveTrain::new(vec![mk(0.0), mk(2.0), mk(5.0)]).unwrap();
+        // Quarter period of each wave: the sine peak, α_qs F_qs+.
+        for t0 in [0.0, 2.0, 5.0] {
+            assert!((train.at(t0 + 0.5).fx_n - 100.0).abs() < 1e-9);
+            assert!((train.at(t0 + 1.5).fx_n + 50.0).abs() < 1e-9);
+        }
+        assert_eq!(train.at(-1.0), WaveForce::ZERO);
+        assert_eq!(train.at(4.5), WaveForce::ZERO);
+        assert_eq!(train.at(7.0), WaveForce::ZERO);
+        assert_eq!(train.end_time_s(), Some(7.0));
+    }
+
+    #[test]
+    fn overlapping_or_bad_waves_are_rejected() {
+        let mk = |start, t| WaveEvent::new(start, t, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), LoadComponent::default(), None);
+        assert!(matches!(WaveTrain::new(vec![mk(0.0, 2.0), mk(1.0, 2.0)]), Err(TrainError::Overlap { index: 1, .. })));
+        assert!(matches!(WaveTrain::new(vec![mk(0.0, 0.0)]), Err(TrainError::BadNumber { .. })));
+        assert!(matches!(WaveTrain::new(vec![mk(f64::NAN, 1.0)]), Err(TrainError::BadNumber { .. })));
+    }
+
+    #[test]
+    fn rise_and_duration_are_clamped() {
+        let imp = Impulse { shape: LoadShape::Oumeraci2001, rise_s: 2.0, duration_s: 9.0 };
+        let e = WaveEvent::new(0.0, 3.0, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), comp(5.0, 1.0), Some(imp));
+        let i = e.impulse.unwrap();
+        assert_eq!((i.rise_s, i.duration_s), (0.75, 1.5));
+    }
+}

@@ -1,0 +1,328 @@
+//! The wave-load model of one site: every pressure model evaluated for a wave, and the wave
+//! trains built from per-wave records (seed §4; PHYSICS.md §1-§6.1).
+//!
+//! For a wave of incident height H and period T at a site (toe depth h_s, wall depth d, base depth
+//! h', crest freeboard h_c, base width B, seabed slope, berm width):
+//!
+//! 1. H is limited at the toe by Miche, H_toe = min(H, H_b,Miche(h_s)) (seed §4.2.1).
+//! 2. Regime: breaking criterion at the wall, or forced ([`super::regime`]).
+//! 3. Goda (F_qs+, [`super::goda`]) with H_D = H_toe, L at h_s, h_b = h_s + 5 H_toe tan θ, and
+//!    Takahashi's α_I if a berm width is given.
+//! 4. Sainflou (F_qs−, [`super::sainflou`]) at h = h_s (default) or h = d.
+//! 5. Impact (F_x,max, F_y,max, [`super::impact`]) with d_b and H_br from the breaking criterion.
+//! 6. F* = F_x,max / P and the rise-time distribution ([`super::risetime`]).
+//!
+//! [`WaveLoadModel::evaluate`] returns all of it per metre ([`WaveLoads`]). The histories take
+//! per-wave [`WaveRecord`]s (H, T, regime, t_r): [`WaveLoadModel::train`] turns a list of records
+//! into a [`WaveTrain`] (totals: per-metre values × the alongshore length), one wave after the
+//! other. [`WaveLoadModel::regular_records`] makes the records of N regular waves with rise times
+//! drawn from the seeded generator, one standard-normal draw per wave (so wave j always uses the
+//! j-th draw whatever the regime of the others).
+
+use super::goda::{goda, GodaInput, GodaResult};
+use super::history::{LoadComponent, TrainError, WaveEvent, WaveTrain};
+use super::impact::{impact, ImpactInput, ImpactResult};
+use super::regime::{decide, Regime, RegimeChoice, RegimeDecision, RegimeError};
+use super::risetime::{LoadRng, RiseTimeDistribution, RiseTimeParams};
+use super::safety::{safety_factors, SafetyFactors, SafetyInput};
+use super::sainflou::{sainflou, SainflouInput, SainflouResult};
+use super::shapes::{Impulse, LoadShape};
+use crate::waves::breaking::{miche_breaker_height_m, BreakerCriterion};
+use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m};
+use rand::Rng;
+use rand_distr::StandardNormal;
+use thiserror::Error;
+
+/// Which depth the Sainflou standing wave forms in (PHYSICS.md §10 item 21).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SainflouDepth {
+    /// h = h_s, the toe depth (default; the depth Goda uses).
+    Toe,
+    /// h = d, the depth in front of the wall.
+    Wall,
+}
+
+/// The site and the caisson as the wave loads see them (SI).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct WaveSite {
+    /// ρ_w, kg/m³.
+    pub rho_w: f64,
+    /// h_s, depth at the toe of the mound, m.
+    pub depth_at_toe_m: f64,
+    /// d, depth in front of the wall (above the berm), m.
+    pub depth_at_wall_m: f64,
+    /// h', depth of the caisson base, m.
+    pub base_depth_m: f64,
+    /// h_c, crest freeboard (caisson height − base depth), m.
+    pub crest_freeboard_m: f64,
+    /// B, base width, m.
+    pub width_m: f64,
+    /// Alongshore length, m (per-metre loads × this = totals).
+    pub length_m: f64,
+    /// tan θ of the seabed seaward of the structure.
+    pub seabed_slope: f64,
+    /// B_M, berm width, m (enables Takahashi's α_I).
+    pub berm_width_m: Option<f64>,
+}
+
+/// Model options (defaults as in the seed / PHYSICS.md).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WaveLoadOptions {
+    pub regime: RegimeChoice,
+    /// Breaking criterion for d_b, H_br and the regime (default Miche).
+    pub criterion: BreakerCriterion,
+    /// α_max of Eq. 30 (default 1/1.8, regular waves).
+    pub alpha_max: f64,
+    /// a_imp of Eq. 30 (default 1).
+    pub a_imp: f64,
+    /// α_qs in Eq. 29 (default 0.8).
+    pub alpha_qs_nonbreaking: f64,
+    /// α_qs in Eq. 31 (default 1.0).
+    pub alpha_qs_breaking: f64,
+    pub rise_time: RiseTimeParams,
+    /// Time shape of breaking waves (default Eq. 31).
+    pub load_shape: LoadShape,
+    /// t_d / t_r for the shapes that use t_d (default 2).
+    pub duration_ratio: f64,
+    pub sainflou_depth: SainflouDepth,
+    /// β, wave angle to the normal, rad (Goda only; 15° rule applied there).
+    pub angle_rad: f64,
+    /// Goda's λ1, λ2, λ3.
+    pub lambda: [f64; 3],
+}
+
+impl Default for WaveLoadOptions {
+    fn default() -> Self {
+        WaveLoadOptions {
+            regime: RegimeChoice::Auto,
+            criterion: BreakerCriterion::Miche,
+            alpha_max: 1.0 / 1.8,
+            a_imp: 1.0,
+            alpha_qs_nonbreaking: 0.8,
+            alpha_qs_breaking: 1.0,
+            rise_time: RiseTimeParams::default(),
+            load_shape: LoadShape::Seed,
+            duration_ratio: 2.0,
+            sainflou_depth: SainflouDepth::Toe,
+            angle_rad: 0.0,
+            lambda: [1.0; 3],
+        }
+    }
+}
+
+/// Everything about one wave, per metre of breakwater (SI).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct WaveLoads {
+    /// Incident height, m.
+    pub height_incident_m: f64,
+    /// Height at the toe after the Miche limit, m.
+    pub height_m: f64,
+    /// Miche breaker height at the toe depth, m.
+    pub toe_breaker_height_m: f64,
+    /// True if the incident height was limited at the toe.
+    pub limited_at_toe: bool,
+    pub period_s: f64,
+    /// L at the toe depth, m.
+    pub toe_wavelength_m: f64,
+    /// L0, m.
+    pub deep_water_wavelength_m: f64,
+    /// h_b = h_s + 5 H tan θ, m.
+    pub depth_5h_seaward_m: f64,
+    /// Depth used for Sainflou, m.
+    pub sainflou_depth_m: f64,
+    pub regime: RegimeDecision,
+    pub goda: GodaResult,
+    pub sainflou: SainflouResult,
+    pub impact: ImpactResult,
+    /// F* = F_x,max / P.
+    pub f_star: f64,
+    /// Rise-time distribution; `None` if non-impulsive (F* ≤ 1).
+    pub rise_time: Option<RiseTimeDistribution>,
+}
+
+/// One wave of a train, as the campaign generator describes it.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct WaveRecord {
+    /// Incident height H, m.
+    pub height_m: f64,
+    /// Period T, s.
+    pub period_s: f64,
+    pub regime: Regime,
+    /// Rise time t_r, s. `None`: the median of the rise-time model. Ignored for a non-breaking or
+    /// non-impulsive wave.
+    pub rise_time_s: Option<f64>,
+}
+
+/// Errors of the model (bad records).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum WaveLoadError {
+    #[error("wave {index}: {source}")]
+    Regime { index: usize, source: RegimeError },
+    #[error("wave {index}: {what} = {value} must be a finite number > 0")]
+    BadWave { index: usize, what: &'static str, value: f64 },
+    #[error(transparent)]
+    Train(#[from] TrainError),
+}
+
+/// A site with its options: evaluates loads and builds histories.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WaveLoadModel {
+    pub site: WaveSite,
+    pub options: WaveLoadOptions,
+}
+
+impl WaveLoadModel {
+    /// All loads for a wave of incident height `height_m` and period `period_s`, with the regime
+    /// chosen by the model options (error if a forced regime contradicts the criterion).
+    pub fn evaluate(&self, height_m: f64, period_s: f64) -> Result<WaveLoads, RegimeError> {
+        self.evaluate_with(height_m, period_s, self.options.regime)
+    }
+
+    /// As [`Self::evaluate`] with an explicit regime choice.
+    pub fn evaluate_with(&self, height_m: f64, period_s: f64, choice: RegimeChoice) -> Result<WaveLoads, RegimeError> {
+        let s = &self.site;
+        let o = &self.options;
+        let l_toe = wavelength_m(period_s, s.depth_at_toe_m);
+        let hb_toe = miche_breaker_height_m(s.depth_at_toe_m, period_s);
+        let h = height_m.min(hb_toe);
+        let regime = decide(choice, h, period_s, s.depth_at_wall_m, o.criterion)?;
+        let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
+        let goda = goda(&GodaInput {
+            height_m: h,
+            wavelength_m: l_toe,
+            depth_m: s.depth_at_toe_m,
+            depth_5h_seaward_m: depth_5h,
+            wall_depth_m: s.depth_at_wall_m,
+            base_depth_m: s.base_depth_m,
+            crest_freeboard_m: s.crest_freeboard_m,
+            width_m: s.width_m,
+            angle_rad: o.angle_rad,
+            berm_width_m: s.berm_width_m,
+            lambda: o.lambda,
+            rho_w: s.rho_w,
+        });
+        let (sf_depth, sf_l) = match o.sainflou_depth {
+            SainflouDepth::Toe => (s.depth_at_toe_m, l_toe),
+            SainflouDepth::Wall => (s.depth_at_wall_m, wavelength_m(period_s, s.depth_at_wall_m)),
+        };
+        let sainflou = sainflou(&SainflouInput {
+            height_m: h,
+            wavelength_m: sf_l,
+            depth_m: sf_depth,
+            base_depth_m: s.base_depth_m,
+            crest_freeboard_m: s.crest_freeboard_m,
+            width_m: s.width_m,
+            rho_w: s.rho_w,
+        });
+        let impact = impact(&ImpactInput {
+            height_m: h,
+            period_s,
+            toe_wavelength_m: l_toe,
+            wall_depth_m: s.depth_at_wall_m,
+            base_depth_m: s.base_depth_m,
+            crest_freeboard_m: s.crest_freeboard_m,
+            width_m: s.width_m,
+            criterion: o.criterion,
+            alpha_max: o.alpha_max,
+            a_imp: o.a_imp,
+            rho_w: s.rho_w,
+        });
+        let f_star = if goda.horizontal_force_n_per_m > 0.0 { impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m } else { 0.0 };
+        Ok(WaveLoads {
+            height_incident_m: height_m,
+            height_m: h,
+            toe_breaker_height_m: hb_toe,
+            limited_at_toe: height_m > hb_toe,
+            period_s,
+            toe_wavelength_m: l_toe,
+            deep_water_wavelength_m: deep_water_wavelength_m(period_s),
+            depth_5h_seaward_m: depth_5h,
+            sainflou_depth_m: sf_depth,
+            regime,
+            goda,
+            sainflou,
+            impact,
+            f_star,
+            rise_time: o.rise_time.distribution(f_star, period_s),
+        })
+    }
+
+    /// Goda's static checks for the loads of one wave (per metre). `weight_in_water_n` is the
+    /// caisson's total weight in water, `mu` the friction coefficient; the centre of gravity is
+    /// taken at B/2 from the heel (symmetric caisson, seed Eq. 11).
+    pub fn safety(&self, loads: &WaveLoads, weight_in_water_n: f64, mu: f64) -> SafetyFactors {
+        let g = &loads.goda;
+        safety_factors(&SafetyInput {
+            weight_in_water_n_per_m: weight_in_water_n / self.site.length_m,
+            cog_from_heel_m: 0.5 * self.site.width_m,
+            width_m: self.site.width_m,
+            mu,
+            horizontal_force_n_per_m: g.horizontal_force_n_per_m,
+            horizontal_moment_base_nm_per_m: g.horizontal_moment_base_nm_per_m,
+            uplift_force_n_per_m: g.uplift_force_n_per_m,
+            uplift_moment_heel_nm_per_m: g.uplift_moment_heel_nm_per_m,
+        })
+    }
+
+    /// The load event of one wave starting at `start_s` (totals). `rise_time_s` as in
+    /// [`WaveRecord`].
+    pub fn event(&self, loads: &WaveLoads, rise_time_s: Option<f64>, start_s: f64) -> WaveEvent {
+        let s = &self.site;
+        let (l, b) = (s.length_m, s.width_m);
+        let g = &loads.goda;
+        let sf = &loads.sainflou;
+        let im = &loads.impact;
+        let quasi = LoadComponent::from_levers(g.horizontal_force_n_per_m * l, g.horizontal_lever_m, g.uplift_force_n_per_m * l, g.uplift_from_heel_m, b);
+        let trough = LoadComponent::from_levers(-sf.trough_force_n_per_m * l, sf.trough_lever_m, -sf.suction_uplift_n_per_m * l, sf.suction_from_heel_m, b);
+        let impact = LoadComponent::from_levers(im.horizontal_force_n_per_m * l, im.horizontal_lever_m, im.uplift_force_n_per_m * l, im.uplift_from_heel_m, b);
+        let breaking = loads.regime.regime == Regime::Breaking;
+        let impulse = match (breaking, loads.rise_time) {
+            (true, Some(dist)) => {
+                let rise_s = rise_time_s.unwrap_or_else(|| dist.median_clamped_s());
+                Some(Impulse { shape: self.options.load_shape, rise_s, duration_s: self.options.duration_ratio * rise_s.min(0.25 * loads.period_s) })
+            }
+            _ => None,
+        };
+        let alpha_qs = if breaking { self.options.alpha_qs_breaking } else { self.options.alpha_qs_nonbreaking };
+        WaveEvent::new(start_s, loads.period_s, quasi, alpha_qs, trough, impact, impulse)
+    }
+
+    /// A train of waves from per-wave records, one after the other from t = 0.
+    pub fn train(&self, records: &[WaveRecord]) -> Result<WaveTrain, WaveLoadError> {
+        let mut events = Vec::with_capacity(records.len());
+        let mut t = 0.0;
+        for (index, r) in records.iter().enumerate() {
+            for (what, v) in [("height_m", r.height_m), ("period_s", r.period_s)] {
+                if !(v > 0.0 && v.is_finite()) {
+                    return Err(WaveLoadError::BadWave { index, what, value: v });
+                }
+            }
+            if let Some(tr) = r.rise_time_s {
+                if !(tr > 0.0 && tr.is_finite()) {
+                    return Err(WaveLoadError::BadWave { index, what: "rise_time_s", value: tr });
+                }
+            }
+            let loads = self.evaluate_with(r.height_m, r.period_s, RegimeChoice::Forced(r.regime)).map_err(|source| WaveLoadError::Regime { index, source })?;
+            events.push(self.event(&loads, r.rise_time_s, t));
+            t += r.period_s;
+        }
+        Ok(WaveTrain::new(events)?)
+    }
+
+    /// Records of `n` regular waves (H, T) in the regime of `loads`, with rise times drawn from
+    /// the rise-time distribution (one standard-normal draw from `rng` per wave, clamped to T/4).
+    pub fn regular_records(&self, loads: &WaveLoads, n: usize, rng: &mut LoadRng) -> Vec<WaveRecord> {
+        (0..n)
+            .map(|_| {
+                let z: f64 = rng.sample(StandardNormal);
+                WaveRecord {
+                    height_m: loads.height_incident_m,
+                    period_s: loads.period_s,
+                    regime: loads.regime.regime,
+                    rise_time_s: loads.rise_time.map(|d| d.at_deviate(z)),
+                }
+            })
+            .collect()
+    }
+}
