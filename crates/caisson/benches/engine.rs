@@ -1,1 +1,68 @@
-fn main(){}
+//! Engine benchmarks: one time step with 10 springs, and a 15-wave test (45.6 s of loading,
+//! 15 waves of 3.04 s, at dt = 1e-4 s) on the seed's Table 5 caisson.
+//!
+//! Run: `cargo bench -p caisson --bench engine`. Figures are recorded in BENCHMARKS.md.
+
+use caisson::analysis::run::run_with;
+use caisson::dynamics::{Model, Simulation};
+use caisson::loads::{LoadHistory, WaveForce};
+use caisson::scenario::{parse_str, validate, Scenario};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use std::path::Path;
+
+/// A regular non-breaking wave train in the shape of seed Eq. 29: 0.8 × Goda on the crest
+/// half, Sainflou on the trough half (PARI H = 0.569 m values, PHYSICS.md §11 and §2.4).
+struct RegularTrain;
+
+impl LoadHistory for RegularTrain {
+    #[inline]
+    fn at(&self, t: f64) -> WaveForce {
+        let period = 3.04;
+        let phase = (t / period).fract();
+        let s = (2.0 * std::f64::consts::PI * phase).sin();
+        if phase < 0.5 {
+            WaveForce { fx_n: 0.8 * 4939.0 * s, fy_n: 0.8 * 1525.0 * s, m_nm: 0.8 * (2727.0 + 1525.0 * 0.13) * s }
+        } else {
+            WaveForce { fx_n: 2391.0 * s, fy_n: 1602.0 * s, m_nm: (737.0 + 1602.0 * 0.13) * s }
+        }
+    }
+}
+
+fn table5() -> Scenario {
+    let text = r#"
+[caisson]
+width_m = 0.78
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = 7.5
+[foundation]
+e100_kpa = 3.5e5
+springs = 10
+"#;
+    validate(&parse_str(text, Path::new("bench.toml")).unwrap(), Path::new(".")).unwrap()
+}
+
+fn bench(c: &mut Criterion) {
+    let s = table5();
+    let load = RegularTrain;
+    // One step, measured on a running simulation (state advances: a representative mix of
+    // sticking and sliding steps over the first wave).
+    c.bench_function("step_10_springs", |b| {
+        let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+        b.iter(|| {
+            if sim.state().t_s > 3.0 {
+                sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+            }
+            sim.step(black_box(&load), &mut ()).unwrap();
+        })
+    });
+    let mut g = c.benchmark_group("fifteen_waves");
+    g.sample_size(10);
+    g.bench_function("45.6s_dt1e-4", |b| {
+        b.iter(|| run_with(&s.caisson, &s.foundation, s.solver, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
