@@ -1,7 +1,21 @@
-//! `[waves]`: the incident waves (wave-loads issue). Owned by the `waves`/`loads` work; the
-//! dynamic engine does not read it yet.
+//! `[waves]` (and the wave keys of `[water]`): the incident waves and the options of the wave-load
+//! models, validated into a [`WaveScenario`] (a [`WaveLoadModel`] plus the design wave).
+//!
+//! Every key, with unit, default and allowed range, is documented in `docs/waves.md`. The caisson
+//! geometry comes from `[caisson]`: base depth h' = `base_depth_m`, crest freeboard
+//! h_c = `height_m − base_depth_m`, width B, alongshore length.
 
+use super::{ScenarioError, ScenarioFile};
+use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveSite};
+use crate::loads::regime::{Regime, RegimeChoice};
+use crate::loads::risetime::{RiseTimeModel, RiseTimeParams};
+use crate::loads::shapes::LoadShape;
+use crate::structure::Caisson;
+use crate::waves::breaking::{BreakerCriterion, GODA_BREAKER_A, MCCOWAN_GAMMA, MICHE_STEEPNESS};
+use crate::waves::dispersion::deep_water_wavelength_m;
 use serde::Deserialize;
+
+type R<T> = Result<T, ScenarioError>;
 
 /// `[waves]` as written in the scenario file.
 #[derive(Debug, Clone, Deserialize, Default)]
@@ -9,10 +23,277 @@ use serde::Deserialize;
 pub struct WavesTable {
     /// `"regular"`.
     pub kind: String,
-    /// Wave height H at the structure (regular waves), m.
+    /// Incident wave height H (regular waves), m.
     pub height_m: Option<f64>,
     /// Wave period T, s.
     pub period_s: Option<f64>,
     /// Angle between the wave direction and the normal to the breakwater, degrees. Default 0.
     pub angle_deg: Option<f64>,
+    /// `"auto"` (default), `"breaking"` or `"non-breaking"`.
+    pub regime: Option<String>,
+    /// `"miche"` (default), `"goda"` or `"mccowan"`.
+    pub breaker_criterion: Option<String>,
+    /// α_max of seed Eq. 30. Default 1/1.8 (regular waves).
+    pub alpha_max: Option<f64>,
+    /// a_imp of seed Eq. 30. Default 1.
+    pub a_imp: Option<f64>,
+    /// α_qs of seed Eq. 29. Default 0.8.
+    pub alpha_qs_nonbreaking: Option<f64>,
+    /// α_qs of seed Eq. 31. Default 1.0.
+    pub alpha_qs_breaking: Option<f64>,
+    /// `"median"` (default) or `"literal"` reading of seed Eq. 34.
+    pub rise_time_model: Option<String>,
+    /// Time shape of breaking waves: `"seed"` (Eq. 31, default) or a Table 2 shape.
+    pub load_shape: Option<String>,
+    /// t_d / t_r for the shapes with a separate duration. Default 2.
+    pub duration_ratio: Option<f64>,
+    /// `"toe"` (default) or `"wall"`: the depth of the Sainflou standing wave.
+    pub sainflou_depth: Option<String>,
+}
+
+/// The validated wave scenario: the load model of the site and the design (regular) wave.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WaveScenario {
+    pub model: WaveLoadModel,
+    /// Incident wave height H, m.
+    pub height_m: f64,
+    /// Period T, s.
+    pub period_s: f64,
+}
+
+fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
+    let above = if lo_open { v > lo } else { v >= lo };
+    if v.is_finite() && above && v <= hi {
+        Ok(v)
+    } else {
+        let low = if lo_open { format!("> {lo}") } else { format!("≥ {lo}") };
+        Err(ScenarioError::range(key, v, format!("must be a finite number {low} and ≤ {hi} ({unit})")))
+    }
+}
+
+fn pick<T: Copy>(key: &str, v: Option<&String>, default: T, options: &[(&str, T)]) -> R<T> {
+    let Some(v) = v else { return Ok(default) };
+    options.iter().find(|(n, _)| *n == v.as_str()).map(|(_, t)| *t).ok_or_else(|| {
+        let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        ScenarioError::range(key, format!("\"{v}\""), format!("must be one of {}", names.join(", ")))
+    })
+}
+
+fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
+    v.ok_or_else(|| ScenarioError::missing(key, hint))
+}
+
+/// Validate `[water]` (depths, slope, berm) and `[waves]` against the validated caisson.
+pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario> {
+    let w = &file.water;
+    let t = file.waves.as_ref().ok_or_else(|| ScenarioError::missing("[waves]", "add a [waves] table with kind = \"regular\", height_m and period_s"))?;
+    let rho_w = match w.density_kg_per_m3 {
+        Some(v) => number("[water] density_kg_per_m3", v, 500.0, 2000.0, false, "kg/m³")?,
+        None => 1000.0,
+    };
+    let hs = number("[water] depth_at_toe_m", required("[water] depth_at_toe_m", w.depth_at_toe_m, "h_s, the water depth at the toe of the mound, m")?, 0.0, 1e4, true, "m")?;
+    let d = required("[water] depth_at_wall_m", w.depth_at_wall_m, "d, the water depth in front of the wall above the berm, m (= depth_at_toe_m without a mound)")?;
+    if !(d.is_finite() && d > 0.0 && d <= hs) {
+        return Err(ScenarioError::range("[water] depth_at_wall_m", d, format!("must be > 0 and at most depth_at_toe_m = {hs} m (the berm cannot be below the seabed)")));
+    }
+    let hp = caisson.base_depth_m;
+    if hp < d {
+        return Err(ScenarioError::range(
+            "[caisson] base_depth_m",
+            hp,
+            format!("must be at least [water] depth_at_wall_m = {d} m: the caisson base sits on or in the mound, not above the water depth in front of the wall"),
+        ));
+    }
+    if hp > hs {
+        return Err(ScenarioError::range("[caisson] base_depth_m", hp, format!("must be at most [water] depth_at_toe_m = {hs} m: the base cannot be below the seabed at the toe")));
+    }
+    let slope = match w.seabed_slope {
+        Some(v) => number("[water] seabed_slope", v, 0.0, 0.5, false, "tan θ, 0 for a flat bed")?,
+        None => 0.0,
+    };
+    let berm = match w.berm_width_m {
+        Some(v) => Some(number("[water] berm_width_m", v, 0.0, 1e4, false, "m")?),
+        None => None,
+    };
+
+    let kind = pick("[waves] kind", Some(&t.kind), 0, &[("regular", 0)])?;
+    debug_assert_eq!(kind, 0);
+    let period_s = number("[waves] period_s", required("[waves] period_s", t.period_s, "the wave period T, s")?, 0.0, 1e3, true, "s")?;
+    let height_m = number("[waves] height_m", required("[waves] height_m", t.height_m, "the incident wave height H, m")?, 0.0, 1e3, true, "m")?;
+    let l0 = deep_water_wavelength_m(period_s);
+    if height_m >= MICHE_STEEPNESS * l0 {
+        return Err(ScenarioError::range(
+            "[waves] height_m",
+            height_m,
+            format!("must be below the deep-water breaking limit 0.142 L0 = {:.4} m for period_s = {period_s} s (no wave is steeper)", MICHE_STEEPNESS * l0),
+        ));
+    }
+    let angle_deg = match t.angle_deg {
+        Some(v) if v.is_finite() && v.abs() < 90.0 => v,
+        Some(v) => return Err(ScenarioError::range("[waves] angle_deg", v, "must be a finite number strictly between -90 and 90 (degrees from the normal to the breakwater)")),
+        None => 0.0,
+    };
+    let regime = pick(
+        "[waves] regime",
+        t.regime.as_ref(),
+        RegimeChoice::Auto,
+        &[("auto", RegimeChoice::Auto), ("breaking", RegimeChoice::Forced(Regime::Breaking)), ("non-breaking", RegimeChoice::Forced(Regime::NonBreaking))],
+    )?;
+    let criterion = pick(
+        "[waves] breaker_criterion",
+        t.breaker_criterion.as_ref(),
+        BreakerCriterion::Miche,
+        &[
+            ("miche", BreakerCriterion::Miche),
+            ("goda", BreakerCriterion::Goda { a: GODA_BREAKER_A, slope }),
+            ("mccowan", BreakerCriterion::McCowan { gamma: MCCOWAN_GAMMA }),
+        ],
+    )?;
+    let d_opt = WaveLoadOptions::default();
+    let opt = |key: &str, v: Option<f64>, default: f64, lo: f64, hi: f64, lo_open: bool| -> R<f64> {
+        v.map_or(Ok(default), |v| number(&format!("[waves] {key}"), v, lo, hi, lo_open, "-"))
+    };
+    let load_shape = pick("[waves] load_shape", t.load_shape.as_ref(), LoadShape::Seed, &LoadShape::ALL)?;
+    if t.duration_ratio.is_some() && !load_shape.uses_duration() {
+        return Err(ScenarioError::Conflict {
+            message: format!(
+                "`[waves] duration_ratio` is not used with load_shape = \"{}\" (its duration is 2 t_r); remove it or choose \"goda-1994\", \"oumeraci-kortenhaus-1994\" or \"oumeraci-2001\"",
+                load_shape.name()
+            ),
+        });
+    }
+    let options = WaveLoadOptions {
+        regime,
+        criterion,
+        alpha_max: opt("alpha_max", t.alpha_max, d_opt.alpha_max, 0.0, 10.0, true)?,
+        a_imp: opt("a_imp", t.a_imp, d_opt.a_imp, 0.0, 10.0, false)?,
+        alpha_qs_nonbreaking: opt("alpha_qs_nonbreaking", t.alpha_qs_nonbreaking, d_opt.alpha_qs_nonbreaking, 0.0, 2.0, false)?,
+        alpha_qs_breaking: opt("alpha_qs_breaking", t.alpha_qs_breaking, d_opt.alpha_qs_breaking, 0.0, 2.0, false)?,
+        rise_time: RiseTimeParams {
+            model: pick("[waves] rise_time_model", t.rise_time_model.as_ref(), RiseTimeModel::Median, &[("median", RiseTimeModel::Median), ("literal", RiseTimeModel::Literal)])?,
+            ..RiseTimeParams::default()
+        },
+        load_shape,
+        duration_ratio: opt("duration_ratio", t.duration_ratio, d_opt.duration_ratio, 1.0, 20.0, true)?,
+        sainflou_depth: pick("[waves] sainflou_depth", t.sainflou_depth.as_ref(), SainflouDepth::Toe, &[("toe", SainflouDepth::Toe), ("wall", SainflouDepth::Wall)])?,
+        angle_rad: angle_deg.to_radians(),
+        lambda: d_opt.lambda,
+    };
+    let site = WaveSite {
+        rho_w,
+        depth_at_toe_m: hs,
+        depth_at_wall_m: d,
+        base_depth_m: hp,
+        crest_freeboard_m: caisson.height_m - hp,
+        width_m: caisson.width_m,
+        length_m: caisson.length_m,
+        seabed_slope: slope,
+        berm_width_m: berm,
+    };
+    let model = WaveLoadModel { site, options };
+    // A forced regime must agree with the breaking criterion (non-breaking above the limit).
+    model.evaluate(height_m, period_s).map_err(|e| {
+        ScenarioError::range(
+            "[waves] regime",
+            "\"non-breaking\"",
+            format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
+        )
+    })?;
+    Ok(WaveScenario { model, height_m, period_s })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::{parse_str, validate};
+    use std::path::Path;
+
+    const PARI: &str = r#"
+[caisson]
+width_m = 0.78
+length_m = 1.0
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = 16.17
+[foundation]
+e100_kpa = 3.5e5
+[water]
+depth_at_toe_m = 1.14
+depth_at_wall_m = 0.4
+[waves]
+kind = "regular"
+height_m = 0.428
+period_s = 3.04
+"#;
+
+    fn run(text: &str) -> R<WaveScenario> {
+        let f = parse_str(text, Path::new("t.toml"))?;
+        let s = validate(&f, Path::new("."))?;
+        validate_waves(&f, &s.caisson)
+    }
+
+    fn key_of(text: &str) -> String {
+        match run(text) {
+            Err(e) => e.key().map(str::to_string).unwrap_or_else(|| format!("{e}")),
+            Ok(_) => panic!("expected an error for\n{text}"),
+        }
+    }
+
+    #[test]
+    fn pari_breaking_scenario_validates() {
+        let w = run(PARI).unwrap();
+        assert_eq!(w.model.site.crest_freeboard_m, 1.12 - 0.8);
+        assert_eq!(w.height_m, 0.428);
+        assert_eq!(w.model.options.load_shape, LoadShape::Seed);
+    }
+
+    #[test]
+    fn bad_inputs_name_their_key() {
+        let cases = [
+            ("height_m = 0.428", "height_m = -0.1", "[waves] height_m"),
+            ("height_m = 0.428", "height_m = nan", "[waves] height_m"),
+            ("height_m = 0.428", "height_m = 5.0", "[waves] height_m"),
+            ("period_s = 3.04", "period_s = 0.0", "[waves] period_s"),
+            ("period_s = 3.04", "period_s = inf", "[waves] period_s"),
+            ("depth_at_wall_m = 0.4", "depth_at_wall_m = 1.5", "[water] depth_at_wall_m"),
+            ("depth_at_wall_m = 0.4", "depth_at_wall_m = 0.9", "[caisson] base_depth_m"),
+            ("depth_at_toe_m = 1.14", "depth_at_toe_m = 0.3", "[water] depth_at_wall_m"),
+            ("depth_at_toe_m = 1.14", "depth_at_toe_m = 0.7", "[caisson] base_depth_m"),
+            ("depth_at_wall_m = 0.4", "depth_at_wall_m = 0.4\nberm_width_m = -1.0", "[water] berm_width_m"),
+            ("depth_at_wall_m = 0.4", "depth_at_wall_m = 0.4\nseabed_slope = -0.1", "[water] seabed_slope"),
+            ("period_s = 3.04", "period_s = 3.04\nregime = \"non-breaking\"", "[waves] regime"),
+            ("period_s = 3.04", "period_s = 3.04\nregime = \"sometimes\"", "[waves] regime"),
+            ("period_s = 3.04", "period_s = 3.04\nload_shape = \"church\"", "[waves] load_shape"),
+            ("period_s = 3.04", "period_s = 3.04\nalpha_max = 0", "[waves] alpha_max"),
+            ("period_s = 3.04", "period_s = 3.04\nangle_deg = 90", "[waves] angle_deg"),
+            ("kind = \"regular\"", "kind = \"jonswap\"", "[waves] kind"),
+            ("height_m = 0.428\n", "", "[waves] height_m"),
+            ("depth_at_toe_m = 1.14\n", "", "[water] depth_at_toe_m"),
+        ];
+        for (from, to, key) in cases {
+            let text = PARI.replace(from, to);
+            assert_eq!(key_of(&text), key, "{to}");
+        }
+        let no_waves = &PARI[..PARI.find("[waves]").unwrap()];
+        assert_eq!(key_of(no_waves), "[waves]");
+        // Unknown key and a key that does nothing with the chosen shape.
+        assert!(matches!(run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nfoo = 1")), Err(ScenarioError::Syntax { .. })));
+        assert!(matches!(run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nduration_ratio = 3")), Err(ScenarioError::Conflict { .. })));
+    }
+
+    #[test]
+    fn options_are_read() {
+        let text = PARI.replace(
+            "period_s = 3.04",
+            "period_s = 3.04\nregime = \"breaking\"\nload_shape = \"oumeraci-2001\"\nduration_ratio = 4\nrise_time_model = \"literal\"\nsainflou_depth = \"wall\"\nalpha_qs_breaking = 0.8\nbreaker_criterion = \"goda\"",
+        );
+        let o = run(&text).unwrap().model.options;
+        assert_eq!(o.load_shape, LoadShape::Oumeraci2001);
+        assert_eq!(o.duration_ratio, 4.0);
+        assert_eq!(o.rise_time.model, RiseTimeModel::Literal);
+        assert_eq!(o.sainflou_depth, SainflouDepth::Wall);
+        assert_eq!(o.alpha_qs_breaking, 0.8);
+        assert_eq!(o.regime, RegimeChoice::Forced(Regime::Breaking));
+        assert!(matches!(o.criterion, BreakerCriterion::Goda { .. }));
+    }
 }
