@@ -1,8 +1,307 @@
-//! `caisson loads`: wave loads for the scenario's waves (owned by the wave-loads work).
+//! `caisson loads SCENARIO.toml [--json] [--history --waves N --seed S] [--out DIR]`: the wave
+//! loads of the scenario's `[waves]` on its caisson (Goda, Sainflou, impact, safety factors),
+//! and optionally the force time history of a train of N waves (CSV + SVG, as in seed Figs. 9-10).
+//!
+//! JSON keys are listed in `docs/waves.md`. Files written with `--out DIR`: `loads.json`; with
+//! `--history` also `wave_loads.csv` (`time_s,fx_kn,fy_kn,moment_knm`, totals, the format
+//! `[load] kind = "series"` reads) and `wave_loads.svg`.
 
 use crate::cli::LoadsArgs;
+use crate::input_err;
+use crate::output::{ensure_dir, write_atomic};
+use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
+use caisson::loads::history::{LoadComponent, WaveEvent, WaveTrain};
+use caisson::loads::model::{WaveLoads, WaveRecord};
+use caisson::loads::regime::Regime;
+use caisson::loads::risetime::{load_rng, RiseTimeModel};
+use caisson::loads::safety::SafetyFactors;
+use caisson::loads::shapes::LoadShape;
+use caisson::loads::LoadHistory;
+use caisson::scenario::waves::{validate_waves, WaveScenario};
+use caisson::scenario::{self, Scenario};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::Path;
 
-pub fn run(_args: LoadsArgs) -> Result<()> {
-    anyhow::bail!(crate::InputError("`caisson loads` is not implemented yet".into()))
+/// Most waves a generated history may hold.
+const MAX_WAVES: usize = 100_000;
+
+pub fn run(args: LoadsArgs) -> Result<()> {
+    if args.history && args.out.is_none() {
+        return Err(input_err("--history writes files: give the output directory with --out DIR"));
+    }
+    if args.waves == 0 || args.waves > MAX_WAVES {
+        return Err(input_err(format!("--waves {}: must be a whole number from 1 to {MAX_WAVES}", args.waves)));
+    }
+    let file = scenario::read_file(&args.scenario).map_err(input_err)?;
+    let dir = args.scenario.parent().unwrap_or(Path::new("."));
+    let sc = scenario::validate(&file, dir).map_err(input_err)?;
+    let ws = validate_waves(&file, &sc.caisson).map_err(input_err)?;
+    let loads = ws.model.evaluate(ws.height_m, ws.period_s).map_err(input_err)?;
+    let safety = ws.model.safety(&loads, sc.caisson.weight_in_water_n, sc.foundation.mu_static);
+
+    let history = if args.history {
+        let records = ws.model.regular_records(&loads, args.waves, &mut load_rng(args.seed));
+        let train = ws.model.train(&records).map_err(input_err)?;
+        Some((records, train))
+    } else {
+        None
+    };
+    let mut doc = loads_json(&sc, &ws, &loads, &safety);
+    if let Some((records, _)) = &history {
+        doc["history"] = json!({
+            "waves": args.waves,
+            "seed": args.seed,
+            "rise_times_s": records.iter().map(|r| r.rise_time_s).collect::<Vec<_>>(),
+            "csv": "wave_loads.csv",
+            "svg": "wave_loads.svg",
+        });
+    }
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&doc)?);
+    } else {
+        print!("{}", loads_text(&sc, &ws, &loads, &safety));
+    }
+    if let Some(out) = &args.out {
+        ensure_dir(out)?;
+        write_atomic(&out.join("loads.json"), serde_json::to_string_pretty(&doc)?.as_bytes())?;
+        if let Some((records, train)) = &history {
+            write_history(out, &ws, &loads, records, train)?;
+            if !args.json {
+                println!("\nWrote {}, {} and {}", out.join("loads.json").display(), out.join("wave_loads.csv").display(), out.join("wave_loads.svg").display());
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The JSON document (per metre of breakwater; kN, kPa, m).
+pub fn loads_json(sc: &Scenario, ws: &WaveScenario, l: &WaveLoads, sf: &SafetyFactors) -> Value {
+    let site = &ws.model.site;
+    let o = &ws.model.options;
+    let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
+    let kn = |x: f64| x / 1e3;
+    let impulsive = l.regime.regime == Regime::Breaking && l.rise_time.is_some();
+    json!({
+        "wave": {
+            "kind": "regular",
+            "incident_height_m": l.height_incident_m,
+            "height_at_toe_m": l.height_m,
+            "limited_at_toe": l.limited_at_toe,
+            "toe_breaker_height_m": l.toe_breaker_height_m,
+            "period_s": l.period_s,
+            "angle_deg": o.angle_rad.to_degrees(),
+            "toe_wavelength_m": l.toe_wavelength_m,
+            "deep_water_wavelength_m": l.deep_water_wavelength_m,
+        },
+        "site": {
+            "water_density_kg_per_m3": site.rho_w,
+            "depth_at_toe_m": site.depth_at_toe_m,
+            "depth_at_wall_m": site.depth_at_wall_m,
+            "base_depth_m": site.base_depth_m,
+            "crest_freeboard_m": site.crest_freeboard_m,
+            "width_m": site.width_m,
+            "length_m": site.length_m,
+            "seabed_slope": site.seabed_slope,
+            "berm_width_m": site.berm_width_m,
+            "depth_5h_seaward_m": l.depth_5h_seaward_m,
+        },
+        "regime": {
+            "regime": l.regime.regime.name(),
+            "forced": l.regime.forced,
+            "breaker_criterion": o.criterion.name(),
+            "breaker_height_at_wall_m": l.regime.breaker_height_at_wall_m,
+        },
+        "goda": {
+            "alpha1": g.alpha1,
+            "alpha2": g.alpha2,
+            "alpha3": g.alpha3,
+            "alpha_i": g.alpha_i,
+            "alpha_star": g.alpha_star,
+            "eta_star_m": g.eta_star_m,
+            "p1_kpa": kn(g.p1_pa),
+            "p2_kpa": kn(g.p2_pa),
+            "p3_kpa": kn(g.p3_pa),
+            "p4_kpa": kn(g.p4_pa),
+            "pu_kpa": kn(g.pu_pa),
+            "horizontal_force_kn_per_m": kn(g.horizontal_force_n_per_m),
+            "horizontal_moment_base_kn_m_per_m": kn(g.horizontal_moment_base_nm_per_m),
+            "horizontal_lever_m": g.horizontal_lever_m,
+            "uplift_force_kn_per_m": kn(g.uplift_force_n_per_m),
+            "uplift_moment_heel_kn_m_per_m": kn(g.uplift_moment_heel_nm_per_m),
+            "uplift_from_heel_m": g.uplift_from_heel_m,
+        },
+        "sainflou": {
+            "depth_m": l.sainflou_depth_m,
+            "h0_m": s.h0_m,
+            "pb_kpa": kn(s.pb_pa),
+            "crest_force_kn_per_m": kn(s.crest_force_n_per_m),
+            "crest_moment_base_kn_m_per_m": kn(s.crest_moment_base_nm_per_m),
+            "trough_base_pressure_kpa": kn(s.trough_base_pressure_pa),
+            "trough_force_kn_per_m": kn(s.trough_force_n_per_m),
+            "trough_moment_base_kn_m_per_m": kn(s.trough_moment_base_nm_per_m),
+            "trough_lever_m": s.trough_lever_m,
+            "suction_uplift_kn_per_m": kn(s.suction_uplift_n_per_m),
+            "suction_moment_heel_kn_m_per_m": kn(s.suction_moment_heel_nm_per_m),
+        },
+        "impact": {
+            "applied": impulsive,
+            "breaking_depth_m": i.breaking_depth_m,
+            "breaker_height_m": i.breaker_height_m,
+            "reduction": i.reduction,
+            "alpha_max": o.alpha_max,
+            "a_imp": o.a_imp,
+            "horizontal_force_kn_per_m": kn(i.horizontal_force_n_per_m),
+            "p1_kpa": kn(i.p1_pa),
+            "horizontal_moment_base_kn_m_per_m": kn(i.horizontal_moment_base_nm_per_m),
+            "horizontal_lever_m": i.horizontal_lever_m,
+            "uplift_force_kn_per_m": kn(i.uplift_force_n_per_m),
+            "uplift_moment_heel_kn_m_per_m": kn(i.uplift_moment_heel_nm_per_m),
+            "uplift_from_heel_m": i.uplift_from_heel_m,
+        },
+        "rise_time": {
+            "model": o.rise_time.model,
+            "f_star": l.f_star,
+            "impulsive": l.rise_time.is_some(),
+            "median_s": l.rise_time.map(|d| d.median_clamped_s()),
+            "log_std": l.rise_time.map(|d| d.log_std),
+            "max_s": 0.25 * l.period_s,
+        },
+        "time_history": {
+            "load_shape": if l.regime.regime == Regime::Breaking { o.load_shape.name() } else { "eq29" },
+            "alpha_qs": if l.regime.regime == Regime::Breaking { o.alpha_qs_breaking } else { o.alpha_qs_nonbreaking },
+            "duration_ratio": o.duration_ratio,
+        },
+        "safety": {
+            "mu": sc.foundation.mu_static,
+            "weight_in_water_kn_per_m": kn(sc.caisson.weight_in_water_n / site.length_m),
+            "sliding": sf.sliding,
+            "overturning": sf.overturning,
+            "heel_pressure_kpa": sf.heel_pressure_pa.map(kn),
+            "resultant_from_heel_m": sf.resultant_from_heel_m,
+        },
+    })
+}
+
+fn opt(v: Option<f64>, digits: usize) -> String {
+    v.map_or_else(|| "–".to_string(), |x| format!("{x:.digits$}"))
+}
+
+/// The human-readable report.
+pub fn loads_text(sc: &Scenario, ws: &WaveScenario, l: &WaveLoads, sf: &SafetyFactors) -> String {
+    let site = &ws.model.site;
+    let o = &ws.model.options;
+    let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
+    let mut t = String::new();
+    let _ = writeln!(t, "Site     h_s = {:.3} m at the toe, d = {:.3} m at the wall, base h' = {:.3} m, crest h_c = {:.3} m, B = {:.3} m, l = {:.3} m",
+        site.depth_at_toe_m, site.depth_at_wall_m, site.base_depth_m, site.crest_freeboard_m, site.width_m, site.length_m);
+    let _ = writeln!(t, "Wave     H = {:.3} m (at the toe {:.3} m{}), T = {:.3} s, β = {:.1}°, L(h_s) = {:.4} m, L0 = {:.4} m",
+        l.height_incident_m, l.height_m, if l.limited_at_toe { ", Miche-limited" } else { "" }, l.period_s, o.angle_rad.to_degrees(), l.toe_wavelength_m, l.deep_water_wavelength_m);
+    let breaking = l.regime.regime == Regime::Breaking;
+    let why = match (l.regime.forced, breaking) {
+        (true, _) => "forced",
+        (false, true) => "auto: H ≥ H_br",
+        (false, false) => "auto: H < H_br",
+    };
+    let _ = writeln!(t, "Regime   {} ({why}; {} breaker height at the wall H_br = {:.4} m)", l.regime.regime.name(), o.criterion.name(), l.regime.breaker_height_at_wall_m);
+    let _ = writeln!(t);
+    let _ = writeln!(t, "Goda (per metre)          α1 = {:.4}  α2 = {:.4}  α3 = {:.4}  α* = {:.4}{}", g.alpha1, g.alpha2, g.alpha3, g.alpha_star,
+        g.alpha_i.map_or(String::new(), |a| format!("  (α_I = {a:.4})")));
+    let _ = writeln!(t, "  η* = {:.4} m   p1 = {:.4} kPa   p3 = {:.4} kPa   p4 = {:.4} kPa   pu = {:.4} kPa",
+        g.eta_star_m, g.p1_pa / 1e3, g.p3_pa / 1e3, g.p4_pa / 1e3, g.pu_pa / 1e3);
+    let _ = writeln!(t, "  P = {:.4} kN/m at {:.4} m above the base (M_P = {:.4} kN·m/m)   U = {:.4} kN/m (M_U = {:.4} kN·m/m about the heel)",
+        g.horizontal_force_n_per_m / 1e3, g.horizontal_lever_m, g.horizontal_moment_base_nm_per_m / 1e3, g.uplift_force_n_per_m / 1e3, g.uplift_moment_heel_nm_per_m / 1e3);
+    let _ = writeln!(t, "Sainflou (h = {:.3} m)     h0 = {:.4} m   crest F = {:.4} kN/m   trough F = {:.4} kN/m at {:.4} m (M = {:.4} kN·m/m)",
+        l.sainflou_depth_m, s.h0_m, s.crest_force_n_per_m / 1e3, s.trough_force_n_per_m / 1e3, s.trough_lever_m, s.trough_moment_base_nm_per_m / 1e3);
+    let _ = writeln!(t, "  p_t(h') = {:.4} kPa   suction U_t = {:.4} kN/m", s.trough_base_pressure_pa / 1e3, s.suction_uplift_n_per_m / 1e3);
+    let _ = writeln!(t, "Impact (seed Eq. 30, 32)  d_b = {} m   H_br = {:.4} m   1 − |d_b − d|/d = {:.4}{}", opt(i.breaking_depth_m, 4), i.breaker_height_m, i.reduction,
+        if breaking { "" } else { "   (not applied: non-breaking)" });
+    let _ = writeln!(t, "  F_x,max = {:.4} kN/m at {:.4} m above the base   F_y,max = {:.4} kN/m", i.horizontal_force_n_per_m / 1e3, i.horizontal_lever_m, i.uplift_force_n_per_m / 1e3);
+    match l.rise_time {
+        _ if !breaking => {
+            let _ = writeln!(t, "  F* = {:.4} (no impact and no rise time: non-breaking wave, seed Eq. 29)", l.f_star);
+        }
+        Some(d) => {
+            let _ = writeln!(t, "  F* = {:.4}: impulsive, median t_r = {:.4} s, σ(ln t_r) = {:.4} ({} reading, t_r ≤ T/4)", l.f_star, d.median_clamped_s(), d.log_std, match o.rise_time.model {
+                RiseTimeModel::Median => "median",
+                RiseTimeModel::Literal => "literal",
+            });
+        }
+        None => {
+            let _ = writeln!(t, "  F* = {:.4} ≤ 1: non-impulsive (pulsating loads only)", l.f_star);
+        }
+    }
+    let _ = writeln!(t);
+    let _ = writeln!(t, "Safety (Goda loads, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa",
+        sc.foundation.mu_static, sc.caisson.weight_in_water_n / 1e3 / site.length_m, opt(sf.sliding, 3), opt(sf.overturning, 3), opt(sf.heel_pressure_pa.map(|p| p / 1e3), 3));
+    t
+}
+
+/// Sample times of one wave: a uniform grid of T/400 plus 80 points over the impulse and its
+/// break points, so that linear interpolation of the CSV reproduces the history closely.
+fn wave_times(e: &WaveEvent, out: &mut Vec<f64>) {
+    let n = 400;
+    for k in 0..n {
+        out.push(e.start_s + e.period_s * k as f64 / n as f64);
+    }
+    out.push(e.start_s + 0.5 * e.period_s);
+    if let Some(i) = e.impulse {
+        let span = i.duration_s.max(2.0 * i.rise_s);
+        for k in 0..=80 {
+            out.push(e.start_s + span * k as f64 / 80.0);
+        }
+        out.extend([e.start_s + i.rise_s, e.start_s + 2.0 * i.rise_s, e.start_s + i.duration_s]);
+    }
+}
+
+fn write_history(out: &Path, ws: &WaveScenario, loads: &WaveLoads, records: &[WaveRecord], train: &WaveTrain) -> Result<()> {
+    let mut times = Vec::new();
+    for e in train.events() {
+        wave_times(e, &mut times);
+    }
+    times.push(train.duration_s());
+    times.sort_by(f64::total_cmp);
+    times.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * b.abs().max(1.0));
+    let mut csv = String::from("time_s,fx_kn,fy_kn,moment_knm\n");
+    let mut fx = Vec::with_capacity(times.len());
+    let mut fy = Vec::with_capacity(times.len());
+    let mut m = Vec::with_capacity(times.len());
+    for &t in &times {
+        let f = train.at(t);
+        let _ = writeln!(csv, "{t},{},{},{}", f.fx_n / 1e3, f.fy_n / 1e3, f.m_nm / 1e3);
+        fx.push((t, f.fx_n / 1e3));
+        fy.push((t, f.fy_n / 1e3));
+        m.push((t, f.m_nm / 1e3));
+    }
+    write_atomic(&out.join("wave_loads.csv"), csv.as_bytes())?;
+    // Reference: the pulsating part alone (the same waves without their impacts).
+    let pulsating = WaveTrain::new(train.events().iter().map(|e| WaveEvent { impulse: None, impact: LoadComponent::default(), ..*e }).collect())
+        .map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
+    let reference = |pick: fn(caisson::loads::WaveForce) -> f64| -> Vec<(f64, f64)> { times.iter().map(|&t| (t, pick(pulsating.at(t)) / 1e3)).collect() };
+    let shape = ws.model.options.load_shape;
+    let label = match (loads.regime.regime, shape) {
+        (Regime::NonBreaking, _) => "seed Eq. 29".to_string(),
+        (Regime::Breaking, LoadShape::Seed) => "seed Eq. 31".to_string(),
+        (Regime::Breaking, s) => format!("{} (seed Table 2)", s.name()),
+    };
+    let ref_label = "pulsating part (α_qs F_qs+, F_qs−)";
+    let title = format!(
+        "Wave loads: H = {:.3} m, T = {:.2} s, {}, {} waves (totals for l = {} m)",
+        loads.height_incident_m,
+        loads.period_s,
+        loads.regime.regime.name(),
+        records.len(),
+        ws.model.site.length_m
+    );
+    panels(
+        &out.join("wave_loads.svg"),
+        &title,
+        "time (s)",
+        &[
+            Panel { y_label: "F_x (kN)".into(), series: vec![Series::line(label.clone(), fx), Series::dashed(ref_label, reference(|f| f.fx_n))] },
+            Panel { y_label: "F_y (kN)".into(), series: vec![Series::line(label.clone(), fy), Series::dashed(ref_label, reference(|f| f.fy_n))] },
+            Panel { y_label: "M (kN·m)".into(), series: vec![Series::line(label, m), Series::dashed(ref_label, reference(|f| f.m_nm))] },
+        ],
+    )
 }
