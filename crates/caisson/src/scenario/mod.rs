@@ -19,8 +19,8 @@ use thiserror::Error;
 pub enum ScenarioError {
     #[error("cannot read scenario file {path}: {message}")]
     Read { path: PathBuf, message: String },
-    #[error("{path} line {line}, column {column}: {message}")]
-    Syntax { path: PathBuf, line: usize, column: usize, message: String },
+    #[error("{path} line {line}, column {column}: {message}{}", if source_line.is_empty() { String::new() } else { format!(" (in `{source_line}`)") })]
+    Syntax { path: PathBuf, line: usize, column: usize, message: String, source_line: String },
     #[error("missing key `{key}`: {hint}")]
     Missing { key: String, hint: String },
     #[error("`{key}` = {value}: {allowed}")]
@@ -67,13 +67,13 @@ pub struct ScenarioFile {
 #[serde(deny_unknown_fields)]
 pub struct CaissonTable {
     /// B, base width in the wave direction, m.
-    pub width_m: f64,
+    pub width_m: Option<f64>,
     /// Alongshore length, m (per-metre forces and stiffnesses are multiplied by it). Default 1.0.
     pub length_m: Option<f64>,
     /// Height of the caisson, m.
-    pub height_m: f64,
+    pub height_m: Option<f64>,
     /// Depth of the base below still water, m (h' = d + e).
-    pub base_depth_m: f64,
+    pub base_depth_m: Option<f64>,
     /// Weight in water, kN (total). Given alone, the mass follows from the displaced water.
     pub weight_in_water_kn: Option<f64>,
     /// Mass in air, kg (total). Given alone, the weight in water follows.
@@ -129,7 +129,7 @@ pub struct WaterTable {
 #[serde(deny_unknown_fields)]
 pub struct LoadTable {
     /// `"triangle"`, `"static"` or `"series"`.
-    pub kind: String,
+    pub kind: Option<String>,
     pub peak_horizontal_kn: Option<f64>,
     pub rise_time_s: Option<f64>,
     pub peak_uplift_kn: Option<f64>,
@@ -166,7 +166,8 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
                 (line, column)
             })
             .unwrap_or((0, 0));
-        ScenarioError::Syntax { path: path.to_path_buf(), line, column, message: e.message().trim().to_string() }
+        let source_line = if line > 0 { text.lines().nth(line - 1).unwrap_or("").trim().to_string() } else { String::new() };
+        ScenarioError::Syntax { path: path.to_path_buf(), line, column, message: e.message().trim().to_string(), source_line }
     })
 }
 

@@ -149,13 +149,16 @@ pub fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
 
 fn validate_caisson(f: &ScenarioFile, rho_w: f64) -> R<Caisson> {
     let c = &f.caisson;
-    let width_m = positive("[caisson] width_m", c.width_m, "m")?;
+    let width_m = positive("[caisson] width_m", c.width_m.ok_or_else(|| ScenarioError::missing("[caisson] width_m", "B, the base width in the wave direction, m (a finite number > 0)"))?, "m")?;
     let length_m = match c.length_m {
         Some(v) => positive("[caisson] length_m", v, "m")?,
         None => 1.0,
     };
-    let height_m = positive("[caisson] height_m", c.height_m, "m")?;
-    let base_depth_m = finite("[caisson] base_depth_m", c.base_depth_m)?;
+    let height_m = positive("[caisson] height_m", c.height_m.ok_or_else(|| ScenarioError::missing("[caisson] height_m", "the caisson height, base to crest, m (a finite number > 0)"))?, "m")?;
+    let base_depth_m = finite(
+        "[caisson] base_depth_m",
+        c.base_depth_m.ok_or_else(|| ScenarioError::missing("[caisson] base_depth_m", "h', the depth of the base below still water, m (from 0 to height_m)"))?,
+    )?;
     if base_depth_m < 0.0 || base_depth_m > height_m {
         return Err(ScenarioError::range(
             "[caisson] base_depth_m",
@@ -303,7 +306,8 @@ fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundati
 
 fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec, f64)> {
     let t = f.load.as_ref().expect("checked by caller");
-    let kind = choice("[load] kind", &t.kind, &[("triangle", 0), ("static", 1), ("series", 2)])?;
+    let kind_name = t.kind.as_deref().ok_or_else(|| ScenarioError::missing("[load] kind", "one of \"triangle\", \"static\", \"series\""))?;
+    let kind = choice("[load] kind", kind_name, &[("triangle", 0), ("static", 1), ("series", 2)])?;
     let relevant: &[&str] = match kind {
         0 => &["peak_horizontal_kn", "rise_time_s", "peak_uplift_kn", "horizontal_lever_m", "uplift_lever_m", "start_time_s"],
         1 => &["peak_horizontal_kn", "ramp_time_s", "peak_uplift_kn", "horizontal_lever_m", "uplift_lever_m"],
@@ -322,7 +326,7 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
     for (key, present) in given {
         if present && !relevant.contains(&key) {
             return Err(ScenarioError::Conflict {
-                message: format!("`[load] {key}` is not used with kind = \"{}\"; remove it (keys for this kind: {})", t.kind, relevant.join(", ")),
+                message: format!("`[load] {key}` is not used with kind = \"{}\"; remove it (keys for this kind: {})", kind_name, relevant.join(", ")),
             });
         }
     }
