@@ -85,8 +85,12 @@ pub fn eq30_reduction(breaking_depth_m: Option<f64>, wall_depth_m: f64) -> f64 {
 
 /// Impact force, uplift and lever arms (module docs).
 pub fn impact(i: &ImpactInput) -> ImpactResult {
+    impact_with_breaking(i, i.criterion.breaker_height_m(i.wall_depth_m, i.period_s))
+}
+
+/// As [`impact`] with the breaker height at the wall H_br (m) already computed.
+pub fn impact_with_breaking(i: &ImpactInput, hbr: f64) -> ImpactResult {
     let db = i.criterion.breaking_depth_m(i.height_m, i.period_s);
-    let hbr = i.criterion.breaker_height_m(i.wall_depth_m, i.period_s);
     let reduction = eq30_reduction(db, i.wall_depth_m);
     let fx = i.a_imp * i.alpha_max * i.rho_w * G_M_PER_S2 * i.height_m * i.toe_wavelength_m * reduction;
     let ds = i.base_depth_m;

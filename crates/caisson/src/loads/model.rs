@@ -21,14 +21,15 @@
 
 use super::goda::{goda, GodaInput, GodaResult};
 use super::history::{LoadComponent, TrainError, WaveEvent, WaveTrain};
-use super::impact::{impact, ImpactInput, ImpactResult};
-use super::regime::{decide, Regime, RegimeChoice, RegimeDecision, RegimeError};
+use super::impact::{impact_with_breaking, ImpactInput, ImpactResult};
+use super::regime::{decide_with_limit, Regime, RegimeChoice, RegimeDecision, RegimeError};
 use super::risetime::{LoadRng, RiseTimeDistribution, RiseTimeParams};
 use super::safety::{safety_factors, SafetyFactors, SafetyInput};
 use super::sainflou::{sainflou, SainflouInput, SainflouResult};
 use super::shapes::{Impulse, LoadShape};
-use crate::waves::breaking::{miche_breaker_height_m, BreakerCriterion};
-use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m};
+use crate::waves::breaking::{miche_breaker_height_from_wavenumber_m, miche_breaker_height_m, BreakerCriterion};
+use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m, wavenumber};
+use std::f64::consts::PI;
 use rand::Rng;
 use rand_distr::StandardNormal;
 use thiserror::Error;
@@ -183,10 +184,16 @@ impl WaveLoadModel {
     pub fn evaluate_with(&self, height_m: f64, period_s: f64, choice: RegimeChoice) -> Result<WaveLoads, RegimeError> {
         let s = &self.site;
         let o = &self.options;
-        let l_toe = wavelength_m(period_s, s.depth_at_toe_m);
-        let hb_toe = miche_breaker_height_m(s.depth_at_toe_m, period_s);
+        // Two dispersion solves: at the toe (L, Miche limit) and at the wall (Miche H_br).
+        let k_toe = wavenumber(period_s, s.depth_at_toe_m);
+        let l_toe = 2.0 * PI / k_toe;
+        let hb_toe = miche_breaker_height_from_wavenumber_m(k_toe, period_s);
         let h = height_m.min(hb_toe);
-        let regime = decide(choice, h, period_s, s.depth_at_wall_m, o.criterion)?;
+        let hbr = match o.criterion {
+            BreakerCriterion::Miche => miche_breaker_height_m(s.depth_at_wall_m, period_s),
+            c => c.breaker_height_m(s.depth_at_wall_m, period_s),
+        };
+        let regime = decide_with_limit(choice, h, hbr, s.depth_at_wall_m, o.criterion)?;
         let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
         let goda = goda(&GodaInput {
             height_m: h,
@@ -215,7 +222,7 @@ impl WaveLoadModel {
             width_m: s.width_m,
             rho_w: s.rho_w,
         });
-        let impact = impact(&ImpactInput {
+        let impact = impact_with_breaking(&ImpactInput {
             height_m: h,
             period_s,
             toe_wavelength_m: l_toe,
@@ -227,7 +234,7 @@ impl WaveLoadModel {
             alpha_max: o.alpha_max,
             a_imp: o.a_imp,
             rho_w: s.rho_w,
-        });
+        }, hbr);
         let f_star = if goda.horizontal_force_n_per_m > 0.0 { impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m } else { 0.0 };
         Ok(WaveLoads {
             height_incident_m: height_m,

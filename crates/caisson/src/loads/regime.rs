@@ -62,7 +62,11 @@ pub struct RegimeError {
 /// Decide the regime of a wave of height `height_m` (at the toe) and period `period_s` in front
 /// of a wall in depth `wall_depth_m` (module docs).
 pub fn decide(choice: RegimeChoice, height_m: f64, period_s: f64, wall_depth_m: f64, criterion: BreakerCriterion) -> Result<RegimeDecision, RegimeError> {
-    let hbr = criterion.breaker_height_m(wall_depth_m, period_s);
+    decide_with_limit(choice, height_m, criterion.breaker_height_m(wall_depth_m, period_s), wall_depth_m, criterion)
+}
+
+/// As [`decide`] with the breaker height at the wall H_br (m) already computed.
+pub fn decide_with_limit(choice: RegimeChoice, height_m: f64, hbr: f64, wall_depth_m: f64, criterion: BreakerCriterion) -> Result<RegimeDecision, RegimeError> {
     let breaks = height_m >= hbr;
     match choice {
         RegimeChoice::Auto => Ok(RegimeDecision {

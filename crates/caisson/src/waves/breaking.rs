@@ -73,8 +73,14 @@ impl BreakerCriterion {
 /// Miche breaker height H_b = 0.142 L tanh(2π h/L) (m) at depth `depth_m` (PHYSICS.md §3.1).
 #[inline]
 pub fn miche_breaker_height_m(depth_m: f64, period_s: f64) -> f64 {
-    let k = wavenumber(period_s, depth_m);
-    MICHE_STEEPNESS * 2.0 * PI / k * (k * depth_m).tanh()
+    miche_breaker_height_from_wavenumber_m(wavenumber(period_s, depth_m), period_s)
+}
+
+/// Miche breaker height from the wave number k at the depth (rad/m): 0.142 · 2π k0 / k², the
+/// same as 0.142 L tanh(kh) since tanh(kh) = k0/k (saves a dispersion solve when k is known).
+#[inline]
+pub fn miche_breaker_height_from_wavenumber_m(k: f64, period_s: f64) -> f64 {
+    MICHE_STEEPNESS * 2.0 * PI * deep_water_wavenumber(period_s) / (k * k)
 }
 
 /// Miche breaking depth d_b (m) of a wave of height `height_m`, in closed form (module docs).
