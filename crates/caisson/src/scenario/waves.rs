@@ -116,8 +116,7 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
         None => None,
     };
 
-    let kind = pick("[waves] kind", Some(&t.kind), 0, &[("regular", 0)])?;
-    debug_assert_eq!(kind, 0);
+    pick("[waves] kind", Some(&t.kind), (), &[("regular", ())])?;
     let period_s = number("[waves] period_s", required("[waves] period_s", t.period_s, "the wave period T, s")?, 0.0, 1e3, true, "s")?;
     let height_m = number("[waves] height_m", required("[waves] height_m", t.height_m, "the incident wave height H, m")?, 0.0, 1e3, true, "m")?;
     let l0 = deep_water_wavelength_m(period_s);
