@@ -81,7 +81,7 @@ impl Profile {
     /// that e.g. the seabed pressure continues down a caisson face embedded in the mound).
     pub fn clipped(&self, z_top: f64, z_bottom: f64) -> Profile {
         let mut out = Profile::default();
-        if !(z_bottom > z_top) || self.n == 0 {
+        if z_bottom.partial_cmp(&z_top) != Some(std::cmp::Ordering::Greater) || self.n == 0 {
             return out;
         }
         out.push(z_top, self.at(z_top));
