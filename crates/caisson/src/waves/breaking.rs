@@ -3,7 +3,7 @@
 //!
 //! * **Miche (1944)**, PHYSICS.md §3.1: H_b / L_b = 0.142 tanh(2π h_b / L_b), L_b the linear
 //!   wavelength at h_b. Because tanh(k h) = k0/k by the dispersion relation (k0 = ω²/g), this is
-//!   H_b = 0.142 · 2π k0 / k(h_b)², so the inversion has a closed form [D]:
+//!   H_b = 0.142 · 2π k0 / k(h_b)², so the inversion has a closed form (PHYSICS.md label D, derived):
 //!   k_b = √(0.142 · 2π k0 / H), d_b = artanh(k0/k_b) / k_b, defined for H < 0.142 L0 (the
 //!   deep-water limit). [`breaking_depth_bisect`] gives the same root by bisection (the left side
 //!   increases monotonically with depth, §3.1); the tests check the two agree to 1e-12.
