@@ -26,12 +26,22 @@
 //! [`SolveError::NonConvergence`] carrying the time and the residual. A non-finite residual
 //! counts as non-convergence. No step is ever accepted unconverged.
 //!
+//! **Adaptive stepping** ([`Stepping::Adaptive`]): the local displacement error of a Newmark step
+//! is estimated after Zienkiewicz & Xie (1991), e_{n+1} = (β − 1/6) h² (q̈_{n+1} − q̈_n)
+//! (rotation counted as θ·B/2). A converged step with ‖e‖∞ > tol is rejected and retried shorter;
+//! the next step is h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h), within [dt_min, dt_max]. No
+//! step straddles a breakpoint of the load ([`LoadHistory::next_breakpoint_s`]: the start, peak
+//! and end of an impulse), so a short impact cannot be stepped over. Small steps then fall where
+//! the acceleration changes (impacts, slip onsets), large ones through the slowly varying
+//! pulsating load. A step that fails to converge is halved as in the fixed mode (at most
+//! `max_substep_levels` times in a row).
+//!
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
 
 use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
 use crate::loads::{LoadHistory, WaveForce};
-use crate::scenario::SolverParams;
+use crate::scenario::{AdaptiveParams, SolverParams, Stepping};
 use crate::structure::Caisson;
 use nalgebra::{Matrix3, Vector3};
 use thiserror::Error;
@@ -180,6 +190,13 @@ pub struct SolverStats {
     pub max_residual: f64,
     /// Deepest halving level used.
     pub max_substep_level: usize,
+    /// Adaptive stepping: steps rejected by the error estimate.
+    pub rejected_steps: u64,
+    /// Adaptive stepping: steps accepted at dt_min with an error estimate above the tolerance.
+    pub forced_min_steps: u64,
+    /// Shortest and longest accepted steps, s.
+    pub min_step_s: f64,
+    pub max_step_s: f64,
 }
 
 /// A running simulation: model, solver controls, committed state and scratch.
@@ -191,6 +208,8 @@ pub struct Simulation {
     reaction: Reaction,
     pub stats: SolverStats,
     gravity: Vector3<f64>,
+    /// Adaptive stepping: the next step to try, s.
+    h_next: f64,
 }
 
 struct Converged {
@@ -214,7 +233,7 @@ impl Simulation {
             springs: vec![SpringState::default(); n],
         };
         let gravity = Vector3::new(0.0, -model.weight_n, 0.0);
-        let mut sim = Simulation { model, solver, state, trial: vec![SpringResponse::default(); n], reaction: Reaction::default(), stats: SolverStats::default(), gravity };
+        let mut sim = Simulation { model, solver, state, trial: vec![SpringResponse::default(); n], reaction: Reaction::default(), stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() }, gravity, h_next: solver.dt_s };
         let p0 = sim.load_vector(load.at(0.0));
         let (f, _) = sim.assemble(sim.state.u, [0.0; 3], solver.dt_s);
         let rhs = p0 - f;
@@ -250,19 +269,17 @@ impl Simulation {
         let cd = self.model.spring_dashpot_ns_per_m;
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let dv_du = self.solver.gamma / (self.solver.beta * h);
+        let cd_over_h = cd / h;
+        let ux_n = self.state.u[0];
         let mut f = Vector3::zeros();
         let mut k = Matrix3::zeros();
         let mut reaction = Reaction::default();
         for ((x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
             let x = *x;
-            let r = law.trial(*c, u[0], u[1] - u[2] * x);
-            let mut fx = r.shear_n;
-            let mut kxx = r.dshear_dux;
-            if cd > 0.0 && r.normal_n > 0.0 {
-                let slip_rate = (r.state.slip_m - c.slip_m) / h;
-                fx += cd * (v[0] - slip_rate);
-                kxx += cd * (dv_du - r.dslip_dux / h);
-            }
+            // Elastic mode: the dashpot sits beside the spring, on its elastic displacement.
+            let r = law.trial_with_dashpot(*c, u[0], u[1] - u[2] * x, ux_n - c.slip_m, cd_over_h);
+            let fx = r.shear_n;
+            let kxx = r.dshear_dux;
             let kxy = r.dshear_duy;
             let dn = r.dnormal_duy;
             if cdy > 0.0 && r.normal_n > 0.0 {
@@ -348,6 +365,8 @@ impl Simulation {
             *s = r.state;
         }
         self.stats.steps += 1;
+        self.stats.min_step_s = self.stats.min_step_s.min(h);
+        self.stats.max_step_s = self.stats.max_step_s.max(h);
         self.stats.newton_iterations += c.iterations as u64;
         self.stats.max_residual = self.stats.max_residual.max(c.residual);
     }
@@ -382,8 +401,75 @@ impl Simulation {
         self.advance(self.solver.dt_s, 0, load, obs)
     }
 
-    /// Run until `t_end_s` (the last step is shortened to land on it).
+    /// Run until `t_end_s` (the last step is shortened to land on it), with the stepping of
+    /// `solver.stepping`.
     pub fn run_until<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, load: &L, obs: &mut O) -> Result<(), SolveError> {
+        match self.solver.stepping {
+            Stepping::Fixed => self.run_fixed(t_end_s, load, obs),
+            Stepping::Adaptive(p) => self.run_adaptive(t_end_s, p, load, obs),
+        }
+    }
+
+    /// Adaptive stepping to `t_end_s` (module docs).
+    fn run_adaptive<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, p: AdaptiveParams, load: &L, obs: &mut O) -> Result<(), SolveError> {
+        let c_err = (self.solver.beta - 1.0 / 6.0).abs();
+        let half_b = 0.5 * self.model.width_m;
+        let mut level = 0usize;
+        // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
+        while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
+            let t = self.state.t_s;
+            // After a Newton failure the halved step may go below dt_min.
+            let planned = if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
+            let mut h = planned.min(t_end_s - t);
+            let bp = load.next_breakpoint_s(t);
+            if bp - t > p.dt_min_s && bp < t + h {
+                h = bp - t;
+            }
+            // Do not leave a sliver shorter than dt_min before t_end.
+            if t_end_s - (t + h) < p.dt_min_s {
+                h = t_end_s - t;
+            }
+            let truncated = h < planned;
+            let t1 = t + h;
+            let w = load.at(t1);
+            match self.try_step(h, self.load_vector(w)) {
+                Ok(c) => {
+                    let an = self.state.a;
+                    let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * half_b];
+                    let err = c_err * h * h * da[0].max(da[1]).max(da[2]);
+                    let ratio = if err > 0.0 { 0.9 * (p.tolerance_m / err).cbrt() } else { f64::INFINITY };
+                    if err > p.tolerance_m && h > p.dt_min_s {
+                        self.stats.rejected_steps += 1;
+                        self.h_next = (h * ratio.clamp(0.1, 0.9)).max(p.dt_min_s);
+                        continue;
+                    }
+                    if err > p.tolerance_m {
+                        self.stats.forced_min_steps += 1;
+                    }
+                    let it = c.iterations;
+                    self.commit(h, c);
+                    self.state.t_s = t1;
+                    obs.observe(&StepView { t_s: t1, state: &self.state, load: w, reaction: self.reaction, springs: &self.trial, iterations: it });
+                    let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
+                    self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
+                    level = 0;
+                }
+                Err((iterations, residual)) => {
+                    if level >= self.solver.max_substep_levels {
+                        return Err(SolveError::NonConvergence { t_s: t1, iterations, levels: level, residual });
+                    }
+                    level += 1;
+                    self.stats.substeps += 1;
+                    self.stats.max_substep_level = self.stats.max_substep_level.max(level);
+                    self.h_next = (0.5 * h).max(p.dt_min_s * 0.5f64.powi(level as i32));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Fixed steps of `solver.dt_s` to `t_end_s`.
+    fn run_fixed<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, load: &L, obs: &mut O) -> Result<(), SolveError> {
         let dt = self.solver.dt_s;
         let n = ((t_end_s - self.state.t_s) / dt - 1e-9).ceil().max(0.0) as u64;
         let t0 = self.state.t_s;

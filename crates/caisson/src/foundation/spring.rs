@@ -18,6 +18,19 @@
 //! trial falls back within e_d), when it sticks again with capacity μ_s N. A lifted spring
 //! (N = 0) carries nothing and re-contacts with zero shear (s_i = u_x).
 //!
+//! **Dashpot with the spring (`damping_mode = "elastic"`, PHYSICS.md §10 item 30)**: the
+//! horizontal dashpot c_d acts in parallel with the elastic spring and both in series with the
+//! slider (a Kelvin element on a friction slider). Over a step of length h from the committed
+//! elastic displacement e_n, with the dashpot rate (e − e_n)/h:
+//!
+//! ```text
+//! stick:  F = κ N e + c_d (e − e_n)/h,  e = u_x − s_n,  while |F| ≤ μ N (μ_s, or μ_d if slipping)
+//! slip:   F = ± μ_d N,  e = (F + c_d e_n/h) / (κ N + c_d/h),  s = u_x − e
+//! ```
+//!
+//! so friction caps the whole force the foundation transmits, dashpot included. With c_d = 0 this
+//! is the law above.
+//!
 //! Trial → commit → revert: [`SpringLaw::trial`] computes the response from the committed
 //! [`SpringState`] without changing it; committing is copying [`SpringResponse::state`].
 
@@ -78,6 +91,13 @@ impl SpringLaw {
     /// Response to the trial displacements (`ux`, `uy`) from the committed state `c`.
     #[inline]
     pub fn trial(&self, c: SpringState, ux: f64, uy: f64) -> SpringResponse {
+        self.trial_with_dashpot(c, ux, uy, 0.0, 0.0)
+    }
+
+    /// As [`Self::trial`] with a dashpot `c_over_h` = c_d/h (N/m) beside the elastic spring,
+    /// `e_prev_m` the committed elastic displacement e_n (module docs).
+    #[inline]
+    pub fn trial_with_dashpot(&self, c: SpringState, ux: f64, uy: f64, e_prev_m: f64, c_over_h: f64) -> SpringResponse {
         if uy >= 0.0 {
             return SpringResponse {
                 dslip_dux: 1.0,
@@ -90,18 +110,21 @@ impl SpringLaw {
         let kn = self.kappa_per_m * n;
         let e = ux - c.slip_m;
         let limit = if c.sliding { self.slip_offset_m } else { self.stick_limit_m };
-        if e.abs() <= limit {
+        let f_trial = kn * e + c_over_h * (e - e_prev_m);
+        if f_trial.abs() <= kn * limit {
             SpringResponse {
                 normal_n: n,
-                shear_n: kn * e,
-                dshear_dux: kn,
+                shear_n: f_trial,
+                dshear_dux: kn + c_over_h,
                 dshear_duy: self.kappa_per_m * e * dn,
                 dnormal_duy: dn,
                 dslip_dux: 0.0,
                 state: SpringState { slip_m: c.slip_m, sliding: false },
             }
         } else {
-            let g = self.slip_offset_m.copysign(e);
+            let g = self.slip_offset_m.copysign(f_trial);
+            // Elastic part after the slip: g itself without a dashpot.
+            let e_slip = if c_over_h > 0.0 { (kn * g + c_over_h * e_prev_m) / (kn + c_over_h) } else { g };
             SpringResponse {
                 normal_n: n,
                 shear_n: kn * g,
@@ -109,7 +132,7 @@ impl SpringLaw {
                 dshear_duy: self.kappa_per_m * g * dn,
                 dnormal_duy: dn,
                 dslip_dux: 1.0,
-                state: SpringState { slip_m: ux - g, sliding: true },
+                state: SpringState { slip_m: ux - e_slip, sliding: true },
             }
         }
     }

@@ -101,6 +101,14 @@ impl WaveEvent {
         self.start_s + self.period_s
     }
 
+    /// Local times (from the start of the wave) at which the load may have a kink or a jump: the
+    /// start, the impulse's peak, 2 t_r and t_d, the zero crossing T/2 and the end.
+    #[inline]
+    pub fn breakpoints_local(&self) -> [f64; 6] {
+        let (r, d) = self.impulse.map_or((0.0, 0.0), |i| (i.rise_s, i.duration_s));
+        [0.0, r, 2.0 * r, d, 0.5 * self.period_s, self.period_s]
+    }
+
     /// Forces at local time `tau_s` (0 ≤ τ < T; zero outside).
     #[inline]
     pub fn at_local(&self, tau_s: f64) -> WaveForce {
@@ -191,6 +199,17 @@ impl LoadHistory for WaveTrain {
     }
     fn end_time_s(&self) -> Option<f64> {
         Some(self.duration_s())
+    }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        let j = self.events.partition_point(|e| e.start_s <= t_s);
+        if j == 0 {
+            return self.events.first().map_or(f64::INFINITY, |e| e.start_s);
+        }
+        let e = &self.events[j - 1];
+        let tau = t_s - e.start_s;
+        let local = super::first_after(tau, &e.breakpoints_local());
+        let next_start = self.events.get(j).map_or(f64::INFINITY, |n| n.start_s);
+        (e.start_s + local).min(next_start)
     }
 }
 

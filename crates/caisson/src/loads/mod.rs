@@ -13,6 +13,7 @@
 //!
 //! The engine (`dynamics`) only sees the [`LoadHistory`] trait; new load models plug in there.
 
+pub mod generator;
 pub mod goda;
 pub mod history;
 pub mod impact;
@@ -67,6 +68,12 @@ pub trait LoadHistory: Send + Sync {
     fn end_time_s(&self) -> Option<f64> {
         None
     }
+    /// The first time strictly after `t_s` at which the load has a kink or a jump (the start,
+    /// peak and end of an impulse, a sample of a series), or infinity. The adaptive stepper lands
+    /// on these times so that no step straddles the onset of a short impulse.
+    fn next_breakpoint_s(&self, _t_s: f64) -> f64 {
+        f64::INFINITY
+    }
 }
 
 impl<T: LoadHistory + ?Sized> LoadHistory for Box<T> {
@@ -76,4 +83,13 @@ impl<T: LoadHistory + ?Sized> LoadHistory for Box<T> {
     fn end_time_s(&self) -> Option<f64> {
         (**self).end_time_s()
     }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        (**self).next_breakpoint_s(t_s)
+    }
+}
+
+/// The first of `times` strictly after `t_s`, or infinity (`times` in any order).
+#[inline]
+pub(crate) fn first_after(t_s: f64, times: &[f64]) -> f64 {
+    times.iter().copied().filter(|&b| b > t_s).fold(f64::INFINITY, f64::min)
 }

@@ -41,6 +41,10 @@ impl LoadHistory for TrianglePulse {
     fn end_time_s(&self) -> Option<f64> {
         Some(self.start_s + 2.0 * self.rise_s)
     }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        let s = self.start_s;
+        super::first_after(t_s, &[s, s + self.rise_s, s + 2.0 * self.rise_s])
+    }
 }
 
 /// Force ramped linearly from zero at t = 0 to `peak` at `ramp_s`, then held.
@@ -55,6 +59,9 @@ impl LoadHistory for StaticRamp {
     #[inline]
     fn at(&self, t_s: f64) -> WaveForce {
         self.peak.scaled((t_s / self.ramp_s).clamp(0.0, 1.0))
+    }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        super::first_after(t_s, &[0.0, self.ramp_s])
     }
 }
 

@@ -112,6 +112,10 @@ impl LoadHistory for ForceSeries {
     fn end_time_s(&self) -> Option<f64> {
         Some(self.last_time_s())
     }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        let j = self.t_s.partition_point(|&x| x <= t_s);
+        self.t_s.get(j).copied().unwrap_or(f64::INFINITY)
+    }
 }
 
 #[cfg(test)]

@@ -11,11 +11,38 @@ use std::path::Path;
 
 type R<T> = Result<T, ScenarioError>;
 
+/// How the step length is chosen (see [`crate::dynamics`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Stepping {
+    /// Every step is `dt_s` (halved only when Newton-Raphson fails).
+    Fixed,
+    /// Local error control (Zienkiewicz & Xie 1991), landing on the load's breakpoints.
+    Adaptive(AdaptiveParams),
+}
+
+/// Controls of the adaptive stepper.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdaptiveParams {
+    /// Smallest step, s: a step this short is accepted whatever its error estimate.
+    pub dt_min_s: f64,
+    /// Largest step, s.
+    pub dt_max_s: f64,
+    /// Allowed local displacement error per step, m (rotation counted as θ·B/2).
+    pub tolerance_m: f64,
+}
+
+impl Default for AdaptiveParams {
+    fn default() -> Self {
+        AdaptiveParams { dt_min_s: 1e-6, dt_max_s: 5e-3, tolerance_m: 1e-8 }
+    }
+}
+
 /// Newmark and Newton-Raphson controls (PHYSICS.md §9.1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverParams {
-    /// Time step, s.
+    /// Time step (fixed stepping) or first step (adaptive stepping), s.
     pub dt_s: f64,
+    pub stepping: Stepping,
     /// Newmark γ (default ½) and β (default ¼): average acceleration.
     pub gamma: f64,
     pub beta: f64,
@@ -33,6 +60,7 @@ impl Default for SolverParams {
     fn default() -> Self {
         SolverParams {
             dt_s: 1e-4,
+            stepping: Stepping::Fixed,
             gamma: 0.5,
             beta: 0.25,
             max_iterations: 30,
@@ -65,6 +93,13 @@ impl LoadHistory for LoadSpec {
             LoadSpec::Triangle(l) => l.end_time_s(),
             LoadSpec::Static(l) => l.end_time_s(),
             LoadSpec::Series(l) => l.end_time_s(),
+        }
+    }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        match self {
+            LoadSpec::Triangle(l) => l.next_breakpoint_s(t_s),
+            LoadSpec::Static(l) => l.next_breakpoint_s(t_s),
+            LoadSpec::Series(l) => l.next_breakpoint_s(t_s),
         }
     }
 }
@@ -137,7 +172,12 @@ pub fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
             let (l, d) = validate_load(f, &caisson, base_dir)?;
             (Some(l), d)
         }
-        None => (None, 1.0),
+        // A wave-train scenario: its waves (default 15) of its period.
+        // (A bad period or count is reported by the [waves] validation, not here.)
+        None => (None, f.waves.as_ref().map_or(1.0, |w| {
+            let t = w.period_s.filter(|t| t.is_finite() && *t > 0.0 && *t <= 1e3).unwrap_or(1.0);
+            t * w.waves.unwrap_or(15).clamp(1, 1_000_000) as f64
+        })),
     };
     let duration_s = match f.load.as_ref().and_then(|l| l.duration_s) {
         Some(v) => positive("[load] duration_s", v, "s")?,
@@ -392,8 +432,34 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
         Some(v) => within("[solver] beta", v, 0.5 * gamma, 0.5, "-; unconditional stability needs 2·beta ≥ gamma")?,
         None => d.beta,
     };
+    let stepping_default = if f.load.is_none() && f.waves.is_some() { "adaptive" } else { "fixed" };
+    let adaptive = choice("[solver] stepping", t.stepping.as_deref().unwrap_or(stepping_default), &[("fixed", false), ("adaptive", true)])?;
+    let stepping = if adaptive {
+        let a = AdaptiveParams::default();
+        let dt_max_s = match t.dt_max_s {
+            Some(v) => within("[solver] dt_max_s", v, dt_s, 1.0, "s, from dt_s to 1 s")?,
+            None => a.dt_max_s.max(dt_s),
+        };
+        let dt_min_s = match t.dt_min_s {
+            Some(v) => within("[solver] dt_min_s", v, 1e-9, dt_s, "s, from 1e-9 s to dt_s")?,
+            None => a.dt_min_s.min(dt_s),
+        };
+        let tolerance_m = match t.error_tolerance_m {
+            Some(v) => within("[solver] error_tolerance_m", v, 1e-12, 1e-3, "m of local displacement error per step")?,
+            None => a.tolerance_m,
+        };
+        Stepping::Adaptive(AdaptiveParams { dt_min_s, dt_max_s, tolerance_m })
+    } else {
+        for (key, given) in [("dt_min_s", t.dt_min_s.is_some()), ("dt_max_s", t.dt_max_s.is_some()), ("error_tolerance_m", t.error_tolerance_m.is_some())] {
+            if given {
+                return Err(ScenarioError::Conflict { message: format!("`[solver] {key}` is only used with stepping = \"adaptive\"; remove it or set stepping = \"adaptive\"") });
+            }
+        }
+        Stepping::Fixed
+    };
     Ok(SolverParams {
         dt_s,
+        stepping,
         gamma,
         beta,
         max_iterations: match t.max_iterations {
