@@ -1,6 +1,8 @@
-//! Drivers: a single run and the shock spectrum. (Wave campaigns, lifetime Monte Carlo and
-//! fragility come with their issues.)
+//! Drivers: a single run, the shock spectrum, wave-train realizations and campaigns. (Lifetime
+//! Monte Carlo and fragility come with their issue.)
 
+pub mod campaign;
 pub mod closed_form;
 pub mod run;
 pub mod spectrum;
+pub mod train;

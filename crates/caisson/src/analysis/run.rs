@@ -235,8 +235,8 @@ impl Observer for History {
     }
 }
 
-/// Both observers at once.
-struct Both<'a>(&'a mut Peaks, Option<&'a mut History>);
+/// Both observers at once (the run and the wave-train drivers).
+pub(crate) struct Both<'a>(pub(crate) &'a mut Peaks, pub(crate) Option<&'a mut History>);
 
 impl Observer for Both<'_> {
     #[inline]

@@ -180,6 +180,19 @@ impl WaveLoadModel {
         self.evaluate_with(height_m, period_s, self.options.regime)
     }
 
+    /// H_br: the breaker height at the wall depth d by the model's criterion, m.
+    pub fn breaker_height_at_wall_m(&self, period_s: f64) -> f64 {
+        match self.options.criterion {
+            BreakerCriterion::Miche => miche_breaker_height_m(self.site.depth_at_wall_m, period_s),
+            c => c.breaker_height_m(self.site.depth_at_wall_m, period_s),
+        }
+    }
+
+    /// The Miche breaker height at the toe depth h_s (the limit of the incident height), m.
+    pub fn toe_breaker_height_m(&self, period_s: f64) -> f64 {
+        miche_breaker_height_from_wavenumber_m(wavenumber(period_s, self.site.depth_at_toe_m), period_s)
+    }
+
     /// As [`Self::evaluate`] with an explicit regime choice.
     pub fn evaluate_with(&self, height_m: f64, period_s: f64, choice: RegimeChoice) -> Result<WaveLoads, RegimeError> {
         let s = &self.site;
@@ -189,10 +202,7 @@ impl WaveLoadModel {
         let l_toe = 2.0 * PI / k_toe;
         let hb_toe = miche_breaker_height_from_wavenumber_m(k_toe, period_s);
         let h = height_m.min(hb_toe);
-        let hbr = match o.criterion {
-            BreakerCriterion::Miche => miche_breaker_height_m(s.depth_at_wall_m, period_s),
-            c => c.breaker_height_m(s.depth_at_wall_m, period_s),
-        };
+        let hbr = self.breaker_height_at_wall_m(period_s);
         let regime = decide_with_limit(choice, h, hbr, s.depth_at_wall_m, o.criterion)?;
         let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
         let goda = goda(&GodaInput {

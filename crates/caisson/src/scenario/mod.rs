@@ -5,10 +5,11 @@
 //! keys are rejected. Validation errors name the key, the value and what is allowed
 //! ([`ScenarioError`]).
 
+pub mod campaign;
 mod validate;
 pub mod waves;
 
-pub use validate::{validate, LoadSpec, Scenario, SolverParams};
+pub use validate::{validate, AdaptiveParams, LoadSpec, Scenario, SolverParams, Stepping};
 
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -60,6 +61,7 @@ pub struct ScenarioFile {
     #[serde(default)]
     pub solver: SolverTable,
     pub waves: Option<waves::WavesTable>,
+    pub campaign: Option<campaign::CampaignTable>,
 }
 
 /// `[caisson]`: geometry and mass (PHYSICS.md §8.2).
@@ -152,6 +154,11 @@ pub struct SolverTable {
     pub max_substep_levels: Option<i64>,
     pub tolerance: Option<f64>,
     pub output_interval_s: Option<f64>,
+    /// `"fixed"` or `"adaptive"`. Default: adaptive for a `[waves]` scenario, fixed for `[load]`.
+    pub stepping: Option<String>,
+    pub dt_min_s: Option<f64>,
+    pub dt_max_s: Option<f64>,
+    pub error_tolerance_m: Option<f64>,
 }
 
 /// Parse scenario text. `path` is used in messages only.

@@ -6,6 +6,7 @@
 //! h_c = `height_m − base_depth_m`, width B, alongshore length.
 
 use super::{ScenarioError, ScenarioFile};
+use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
 use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveSite};
 use crate::loads::regime::{Regime, RegimeChoice};
 use crate::loads::risetime::{RiseTimeModel, RiseTimeParams};
@@ -49,16 +50,37 @@ pub struct WavesTable {
     pub duration_ratio: Option<f64>,
     /// `"toe"` (default) or `"wall"`: the depth of the Sainflou standing wave.
     pub sainflou_depth: Option<String>,
+    /// Significant wave height H1/3 at the toe (irregular waves), m.
+    pub significant_height_m: Option<f64>,
+    /// Waves per realization N_z. Default 15.
+    pub waves: Option<i64>,
+    /// Realizations (independent wave trains). Default 10.
+    pub realizations: Option<i64>,
+    /// Regular waves: `"normal"` (default), `"uniform"` or `"none"` (PHYSICS.md §10 item 26).
+    pub height_variability: Option<String>,
+    /// COV of the normal variability, or half-width of the uniform one, as a fraction of H.
+    /// Default 0.2.
+    pub height_variability_fraction: Option<f64>,
+    /// Truncation of the normal variability, in standard deviations. Default 2.
+    pub height_truncation_sigmas: Option<f64>,
+    /// Seed of the random generator (heights and rise times). Default 1.
+    pub seed: Option<i64>,
+    /// Friction coefficient of the rigid-block (Shimosako) reference. Default `[foundation] mu_static`.
+    pub rigid_block_mu: Option<f64>,
 }
 
-/// The validated wave scenario: the load model of the site and the design (regular) wave.
+/// The validated wave scenario: the load model of the site, the design wave and its trains.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WaveScenario {
     pub model: WaveLoadModel,
-    /// Incident wave height H, m.
+    /// Incident wave height H (regular) or significant height H1/3 (irregular), m.
     pub height_m: f64,
-    /// Period T, s.
+    /// Period T (or T1/3), s.
     pub period_s: f64,
+    /// The wave trains (waves per realization, realizations, height variability, seed).
+    pub train: TrainSpec,
+    /// Friction coefficient of the rigid-block (Shimosako) reference; `None`: the foundation's μ_s.
+    pub rigid_block_mu: Option<f64>,
 }
 
 fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
@@ -116,13 +138,34 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
         None => None,
     };
 
-    pick("[waves] kind", Some(&t.kind), (), &[("regular", ())])?;
-    let period_s = number("[waves] period_s", required("[waves] period_s", t.period_s, "the wave period T, s")?, 0.0, 1e3, true, "s")?;
-    let height_m = number("[waves] height_m", required("[waves] height_m", t.height_m, "the incident wave height H, m")?, 0.0, 1e3, true, "m")?;
+    let irregular = pick("[waves] kind", Some(&t.kind), false, &[("regular", false), ("irregular", true)])?;
+    let period_s = number("[waves] period_s", required("[waves] period_s", t.period_s, "the wave period T (T1/3 for irregular waves), s")?, 0.0, 1e3, true, "s")?;
+    let conflict = |key: &str, kind: &str| ScenarioError::Conflict {
+        message: format!("`[waves] {key}` is not used with kind = \"{kind}\"; remove it"),
+    };
+    let (height_key, height_m) = if irregular {
+        for (key, given) in [
+            ("height_m", t.height_m.is_some()),
+            ("height_variability", t.height_variability.is_some()),
+            ("height_variability_fraction", t.height_variability_fraction.is_some()),
+            ("height_truncation_sigmas", t.height_truncation_sigmas.is_some()),
+        ] {
+            if given {
+                return Err(conflict(key, "irregular"));
+            }
+        }
+        let h = required("[waves] significant_height_m", t.significant_height_m, "the significant wave height H1/3 at the toe, m")?;
+        ("[waves] significant_height_m", number("[waves] significant_height_m", h, 0.0, 1e3, true, "m")?)
+    } else {
+        if t.significant_height_m.is_some() {
+            return Err(conflict("significant_height_m", "regular"));
+        }
+        ("[waves] height_m", number("[waves] height_m", required("[waves] height_m", t.height_m, "the incident wave height H, m")?, 0.0, 1e3, true, "m")?)
+    };
     let l0 = deep_water_wavelength_m(period_s);
     if height_m >= MICHE_STEEPNESS * l0 {
         return Err(ScenarioError::range(
-            "[waves] height_m",
+            height_key,
             height_m,
             format!("must be below the deep-water breaking limit 0.142 L0 = {:.4} m for period_s = {period_s} s (no wave is steeper)", MICHE_STEEPNESS * l0),
         ));
@@ -190,6 +233,50 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
         berm_width_m: berm,
     };
     let model = WaveLoadModel { site, options };
+    let count = |key: &str, v: Option<i64>, default: usize| -> R<usize> {
+        match v {
+            None => Ok(default),
+            Some(n) if (1..=1_000_000).contains(&n) => Ok(n as usize),
+            Some(n) => Err(ScenarioError::range(key, n, "must be a whole number from 1 to 1000000")),
+        }
+    };
+    let waves = count("[waves] waves", t.waves, 15)?;
+    let realizations = count("[waves] realizations", t.realizations, 10)?;
+    let seed = match t.seed {
+        None => 1,
+        Some(s) if s >= 0 => s as u64,
+        Some(s) => return Err(ScenarioError::range("[waves] seed", s, "must be a whole number ≥ 0")),
+    };
+    let kind = if irregular {
+        TrainKind::Irregular { significant_height_m: height_m }
+    } else {
+        let name = t.height_variability.as_ref();
+        let which = pick("[waves] height_variability", name, 0, &[("normal", 0), ("uniform", 1), ("none", 2)])?;
+        if which == 2 && (t.height_variability_fraction.is_some() || t.height_truncation_sigmas.is_some()) {
+            return Err(ScenarioError::Conflict { message: "`[waves] height_variability_fraction` and `height_truncation_sigmas` are not used with height_variability = \"none\"; remove them".into() });
+        }
+        if which == 1 && t.height_truncation_sigmas.is_some() {
+            return Err(ScenarioError::Conflict { message: "`[waves] height_truncation_sigmas` is only used with height_variability = \"normal\"; remove it".into() });
+        }
+        let c = opt("height_variability_fraction", t.height_variability_fraction, 0.2, 0.0, 0.9, false)?;
+        let k = opt("height_truncation_sigmas", t.height_truncation_sigmas, 2.0, 0.5, 10.0, false)?;
+        let variability = match which {
+            0 => {
+                if c * k >= 1.0 {
+                    return Err(ScenarioError::range(
+                        "[waves] height_variability_fraction",
+                        c,
+                        format!("times height_truncation_sigmas = {k} must be below 1, or a drawn height could be zero or negative"),
+                    ));
+                }
+                HeightVariability::Normal { cov: c, truncation_sigmas: k }
+            }
+            1 => HeightVariability::Uniform { half_width: c },
+            _ => HeightVariability::None,
+        };
+        TrainKind::Regular { height_m, variability }
+    };
+    let train = TrainSpec { kind, period_s, waves, realizations, seed };
     // A forced regime must agree with the breaking criterion (non-breaking above the limit).
     model.evaluate(height_m, period_s).map_err(|e| {
         ScenarioError::range(
@@ -198,7 +285,8 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
             format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
         )
     })?;
-    Ok(WaveScenario { model, height_m, period_s })
+    let rigid_block_mu = t.rigid_block_mu.map(|v| number("[waves] rigid_block_mu", v, 0.0, 2.0, true, "-")).transpose()?;
+    Ok(WaveScenario { model, height_m, period_s, train, rigid_block_mu })
 }
 
 #[cfg(test)]

@@ -1,0 +1,183 @@
+//! Wave trains of one test condition: N_z waves per realization, with the height variability of
+//! the seed's PARI simulations or Rayleigh heights, the regime of each wave and its rise time
+//! (seed §6 "Comparison of predictions"; PHYSICS.md §5.3, §6.4 step 5, §10 item 26).
+//!
+//! * **Regular** waves of nominal height H and period T. Each wave's height is H (1 + δ):
+//!   - `Normal` (default): δ = c z, z standard normal truncated at ±k (rejection), c = 0.2, k = 2
+//!     (PHYSICS.md §10 item 26: "about 20 % of the nominal height" read as a COV);
+//!   - `Uniform`: δ uniform on [−c, c] (the other reading, ±20 %);
+//!   - `None`: δ = 0 (the monochromatic test as specified).
+//! * **Irregular** waves: Rayleigh heights from the significant height H1/3,
+//!   P(H > x) = exp[−2 (x/H1/3)²], i.e. H = H1/3 √(−ln U / 2) with U uniform on (0, 1]
+//!   (PHYSICS.md §6.4 step 5); every wave has the period T1/3. A height below 10⁻³ H1/3 is raised to
+//!   it (a wave must have a height; such a wave carries no load that matters).
+//!
+//! The regime of each wave follows the model's choice: `auto` decides per wave by the breaking
+//! criterion at the wall; a forced `breaking` applies to every wave; a forced `non-breaking`
+//! applies to every wave, and a drawn height at or above the breaker height at the wall H_br is
+//! **limited** to just below H_br (a standing wave cannot be higher in that depth) and counted.
+//! The rise time of an impulsive wave is drawn from the seed's log-normal model (Eqs. 34-36).
+//!
+//! Random numbers: one ChaCha8 generator per realization, seeded with the scenario's seed and the
+//! realization index as the stream, so that a realization's waves do not depend on which thread
+//! runs it or on the other realizations. Per wave, in this order: the height draw(s), then one
+//! standard-normal draw for the rise time (always drawn, so that wave j uses the same numbers
+//! whatever the regime of the others). The same seed and realization give the same train under
+//! every condition of a campaign (common random numbers: differences between conditions are not
+//! blurred by different draws).
+
+use super::model::{WaveLoadModel, WaveRecord};
+use super::regime::{Regime, RegimeChoice, RegimeError};
+use super::risetime::LoadRng;
+use rand::{Rng, SeedableRng};
+use rand_distr::StandardNormal;
+
+/// Variability of the individual heights of a regular-wave test.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum HeightVariability {
+    /// H (1 + c z), z ~ N(0, 1) truncated at ±`truncation_sigmas`.
+    Normal { cov: f64, truncation_sigmas: f64 },
+    /// H (1 + δ), δ ~ U[−half_width, half_width].
+    Uniform { half_width: f64 },
+    /// Every wave has the nominal height.
+    None,
+}
+
+impl Default for HeightVariability {
+    fn default() -> Self {
+        HeightVariability::Normal { cov: 0.2, truncation_sigmas: 2.0 }
+    }
+}
+
+/// How the individual heights are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum TrainKind {
+    /// Nominal height H (m) with the given variability.
+    Regular { height_m: f64, variability: HeightVariability },
+    /// Rayleigh heights of significant height H1/3 (m).
+    Irregular { significant_height_m: f64 },
+}
+
+/// A test condition's wave trains.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct TrainSpec {
+    pub kind: TrainKind,
+    /// Period of every wave, s (T, or T1/3 for irregular waves).
+    pub period_s: f64,
+    /// Waves per realization N_z.
+    pub waves: usize,
+    /// Number of realizations.
+    pub realizations: usize,
+    pub seed: u64,
+}
+
+impl TrainSpec {
+    /// The nominal (regular) or significant (irregular) height, m.
+    pub fn height_m(&self) -> f64 {
+        match self.kind {
+            TrainKind::Regular { height_m, .. } => height_m,
+            TrainKind::Irregular { significant_height_m } => significant_height_m,
+        }
+    }
+
+    /// The same spec with another nominal / significant height.
+    pub fn with_height(mut self, h: f64) -> Self {
+        match &mut self.kind {
+            TrainKind::Regular { height_m, .. } => *height_m = h,
+            TrainKind::Irregular { significant_height_m } => *significant_height_m = h,
+        }
+        self
+    }
+}
+
+/// The waves of one realization.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct RealizationWaves {
+    pub records: Vec<WaveRecord>,
+    /// Waves of a forced non-breaking train whose drawn height was limited to H_br.
+    pub limited_waves: usize,
+}
+
+/// The generator of realization `index` (see the module docs).
+pub fn realization_rng(seed: u64, index: usize) -> LoadRng {
+    let mut rng = LoadRng::seed_from_u64(seed);
+    rng.set_stream(index as u64);
+    rng
+}
+
+/// A standard normal truncated at ±k (rejection; k ≥ 0.5 keeps the acceptance above 38 %).
+fn truncated_normal(rng: &mut LoadRng, k: f64) -> f64 {
+    loop {
+        let z: f64 = rng.sample(StandardNormal);
+        if z.abs() <= k {
+            return z;
+        }
+    }
+}
+
+/// The waves of realization `index` of `spec` at the site of `model`, regime chosen by `choice`.
+pub fn realization_waves(model: &WaveLoadModel, spec: &TrainSpec, choice: RegimeChoice, index: usize) -> Result<RealizationWaves, RegimeError> {
+    let mut rng = realization_rng(spec.seed, index);
+    let mut records = Vec::with_capacity(spec.waves);
+    let mut limited_waves = 0;
+    let t = spec.period_s;
+    for _ in 0..spec.waves {
+        let mut h = match spec.kind {
+            TrainKind::Regular { height_m, variability } => match variability {
+                HeightVariability::Normal { cov, truncation_sigmas } => height_m * (1.0 + cov * truncated_normal(&mut rng, truncation_sigmas)),
+                HeightVariability::Uniform { half_width } => height_m * (1.0 + half_width * (2.0 * rng.gen::<f64>() - 1.0)),
+                HeightVariability::None => height_m,
+            },
+            TrainKind::Irregular { significant_height_m } => {
+                let u = 1.0 - rng.gen::<f64>();
+                significant_height_m * (-0.5 * u.ln()).sqrt().max(1e-3)
+            }
+        };
+        let z: f64 = rng.sample(StandardNormal);
+        if choice == RegimeChoice::Forced(Regime::NonBreaking) {
+            let hbr = model.breaker_height_at_wall_m(t);
+            // The comparison is made on the toe height (Miche-limited), as in the model.
+            if h.min(model.toe_breaker_height_m(t)) >= hbr {
+                h = hbr * (1.0 - 1e-9);
+                limited_waves += 1;
+            }
+        }
+        let loads = model.evaluate_with(h, t, choice)?;
+        records.push(WaveRecord {
+            height_m: h,
+            period_s: t,
+            regime: loads.regime.regime,
+            rise_time_s: loads.rise_time.map(|d| d.at_deviate(z)),
+        });
+    }
+    Ok(RealizationWaves { records, limited_waves })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn truncated_normal_stays_within_its_bounds_and_is_centred() {
+        let mut rng = realization_rng(7, 0);
+        let n = 20_000;
+        let mut sum = 0.0;
+        for _ in 0..n {
+            let z = truncated_normal(&mut rng, 2.0);
+            assert!(z.abs() <= 2.0);
+            sum += z;
+        }
+        // Mean 0, sd of the truncated normal 0.880: 5 standard errors = 5·0.88/√n = 0.031.
+        assert!((sum / n as f64).abs() < 0.031);
+    }
+
+    #[test]
+    fn streams_differ_and_repeat() {
+        let a: Vec<u64> = (0..4).map(|_| realization_rng(1, 0).gen()).collect();
+        assert!(a.iter().all(|&x| x == a[0]));
+        let b: u64 = realization_rng(1, 1).gen();
+        assert_ne!(a[0], b);
+    }
+}
