@@ -18,6 +18,8 @@ pub enum Command {
     Spectrum(SpectrumArgs),
     /// Wave loads for the scenario's waves: Goda, Sainflou, impact, safety factors, histories.
     Loads(LoadsArgs),
+    /// Run a grid of test conditions (heights × weights × regimes), many wave trains each.
+    Campaign(CampaignArgs),
 }
 
 #[derive(Args, Debug)]
@@ -30,6 +32,27 @@ pub struct RunArgs {
     /// Write summary.json, history.csv, springs.csv and SVG plots into this directory.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+    /// Worker threads for wave-train realizations (0: one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+}
+
+#[derive(Args, Debug)]
+pub struct CampaignArgs {
+    /// Campaign file (TOML): a wave scenario with a `[campaign]` table.
+    pub campaign: PathBuf,
+    /// Print the results as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Write campaign.json, campaign.csv and SVG plots into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Worker threads (0: one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Override the foundation's damping_mode for every condition ("total" or "elastic").
+    #[arg(long, value_name = "MODE")]
+    pub damping_mode: Option<String>,
 }
 
 #[derive(Args, Debug)]

@@ -174,13 +174,18 @@ pub fn write_plots(dir: &std::path::Path, h: &History, title: &str) -> Result<()
 
 pub fn run(args: RunArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
-    if sc.load.is_none() {
-        return Err(input_err(format!("{}: `caisson run` needs a [load] table (kind = \"triangle\", \"static\" or \"series\")", args.scenario.display())));
-    }
     if let Some(dir) = &args.out {
         if dir.exists() && !dir.is_dir() {
             return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
         }
+    }
+    if sc.load.is_none() {
+        let file = scenario::read_file(&args.scenario).map_err(input_err)?;
+        if file.waves.is_none() {
+            return Err(input_err(format!("{}: `caisson run` needs a [load] table (kind = \"triangle\", \"static\" or \"series\") or a [waves] table (wave trains)", args.scenario.display())));
+        }
+        crate::train_out::set_threads(args.threads)?;
+        return crate::train_out::run_waves(&args.scenario, &sc, args.json, args.out.as_deref());
     }
     let result = engine::run(&sc, args.out.is_some()).context("the dynamic run failed")?;
     let x = caisson::foundation::Foundation::spring_positions(&sc.foundation, sc.caisson.width_m);

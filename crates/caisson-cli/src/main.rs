@@ -4,11 +4,13 @@
 //! (non-convergence) or an I/O error while writing results.
 
 mod cli;
+mod cmd_campaign;
 mod cmd_loads;
 mod cmd_run;
 mod cmd_spectrum;
 mod output;
 mod plot;
+mod train_out;
 
 use clap::Parser;
 use std::process::ExitCode;
@@ -42,6 +44,7 @@ fn main() -> ExitCode {
         cli::Command::Run(a) => cmd_run::run(a),
         cli::Command::Spectrum(a) => cmd_spectrum::run(a),
         cli::Command::Loads(a) => cmd_loads::run(a),
+        cli::Command::Campaign(a) => cmd_campaign::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -15,17 +15,23 @@ pub struct Series {
     pub dashed: bool,
     /// Draw markers instead of a line.
     pub markers: bool,
+    /// Vertical bars (low, high) at each point (min-max ranges); drawn with markers.
+    pub ranges: Option<Vec<(f64, f64)>>,
 }
 
 impl Series {
     pub fn line(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        Series { label: label.into(), points, dashed: false, markers: false }
+        Series { label: label.into(), points, dashed: false, markers: false, ranges: None }
     }
     pub fn dashed(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        Series { label: label.into(), points, dashed: true, markers: false }
+        Series { label: label.into(), points, dashed: true, markers: false, ranges: None }
     }
     pub fn markers(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        Series { label: label.into(), points, dashed: false, markers: true }
+        Series { label: label.into(), points, dashed: false, markers: true, ranges: None }
+    }
+    /// Markers at `points` with a vertical bar from low to high at each.
+    pub fn ranges(label: impl Into<String>, points: Vec<(f64, f64)>, ranges: Vec<(f64, f64)>) -> Self {
+        Series { label: label.into(), points, dashed: false, markers: true, ranges: Some(ranges) }
     }
 }
 
@@ -52,6 +58,11 @@ fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {
             if a.is_finite() && b.is_finite() {
                 x = (x.0.min(a), x.1.max(a));
                 y = (y.0.min(b), y.1.max(b));
+            }
+        }
+        for &(lo, hi) in s.ranges.iter().flatten() {
+            if lo.is_finite() && hi.is_finite() {
+                y = (y.0.min(lo), y.1.max(hi));
             }
         }
     }
@@ -96,6 +107,11 @@ pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Resu
                 let color = if s.dashed { RGBColor(90, 90, 90) } else { COLORS[k % COLORS.len()] };
                 let style = ShapeStyle { color: color.to_rgba(), filled: s.markers, stroke_width: if s.dashed { 1 } else { 2 } };
                 let label = s.label.clone();
+                if let Some(r) = &s.ranges {
+                    chart
+                        .draw_series(s.points.iter().zip(r).map(|(&(x, _), &(lo, hi))| PathElement::new(vec![(x, lo), (x, hi)], style)))
+                        .map_err(|e| anyhow::anyhow!("{e}"))?;
+                }
                 let anno = if s.markers {
                     chart
                         .draw_series(s.points.iter().map(|&(x, y)| Circle::new((x, y), 3, style)))
