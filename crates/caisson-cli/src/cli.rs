@@ -20,6 +20,8 @@ pub enum Command {
     Loads(LoadsArgs),
     /// Run a grid of test conditions (heights × weights × regimes), many wave trains each.
     Campaign(CampaignArgs),
+    /// Regenerate the validation report (validation.md and figures) against the seed paper.
+    Validation(ValidationArgs),
 }
 
 #[derive(Args, Debug)]
@@ -35,6 +37,13 @@ pub struct RunArgs {
     /// Worker threads for wave-train realizations (0: one per core). Results do not depend on it.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
+}
+
+#[derive(Args, Debug)]
+pub struct ValidationArgs {
+    /// Directory for validation.md (figures go to DIR/figures).
+    #[arg(long, value_name = "DIR", default_value = "docs")]
+    pub out: PathBuf,
 }
 
 #[derive(Args, Debug)]

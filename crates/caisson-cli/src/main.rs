@@ -8,6 +8,7 @@ mod cmd_campaign;
 mod cmd_loads;
 mod cmd_run;
 mod cmd_spectrum;
+mod cmd_validation;
 mod output;
 mod plot;
 mod train_out;
@@ -45,6 +46,7 @@ fn main() -> ExitCode {
         cli::Command::Spectrum(a) => cmd_spectrum::run(a),
         cli::Command::Loads(a) => cmd_loads::run(a),
         cli::Command::Campaign(a) => cmd_campaign::run(a),
+        cli::Command::Validation(a) => cmd_validation::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

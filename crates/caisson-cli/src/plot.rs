@@ -74,6 +74,10 @@ fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     }
     if x.1 - x.0 <= 0.0 {
         x = (x.0 - 0.5, x.1 + 0.5);
+    } else if panel.series.iter().any(|s| s.markers) {
+        // Keep markers at the ends inside the frame.
+        let pad = 0.03 * (x.1 - x.0);
+        x = (x.0 - pad, x.1 + pad);
     }
     let pad = if y.1 - y.0 > 0.0 { 0.06 * (y.1 - y.0) } else { 0.5 * y.0.abs().max(1e-9) };
     (x, (y.0 - pad, y.1 + pad))

@@ -29,9 +29,11 @@ pub enum DampingMode {
     /// On the caisson's total horizontal velocity, in parallel with the friction slider (seed
     /// Eq. 15 as written).
     Total,
-    /// In series with the slider: each contact spring's dashpot (C/n) acts on the rate of its
-    /// elastic deformation u̇_x − ṡ_i, so that a sliding caisson is resisted by friction, not by
-    /// the dashpot. A lifted spring carries no damping.
+    /// In series with the slider: each contact spring's dashpot (C/n) acts beside its elastic
+    /// spring, on the rate of its elastic deformation, and friction caps the force of both (a
+    /// Kelvin element on the slider, [`spring`]), so that a sliding caisson is resisted by
+    /// friction, not by the dashpot. A lifted spring carries no damping. The validation report
+    /// (`docs/validation.md`) compares both placements; `Total` stays the default.
     Elastic,
 }
 
