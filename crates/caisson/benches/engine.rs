@@ -1,12 +1,12 @@
 //! Engine benchmarks: one time step with 10 springs, and a 15-wave test (45.6 s of loading,
-//! 15 waves of 3.04 s, at dt = 1e-4 s) on the seed's Table 5 caisson.
+//! 15 waves of 3.04 s, at dt = 1e-4 s and with the adaptive stepper) on the seed's Table 5 caisson.
 //!
 //! Run: `cargo bench -p caisson --bench engine`. Figures are recorded in BENCHMARKS.md.
 
 use caisson::analysis::run::run_with;
 use caisson::dynamics::{Model, Simulation};
 use caisson::loads::{LoadHistory, WaveForce};
-use caisson::scenario::{parse_str, validate, Scenario};
+use caisson::scenario::{parse_str, validate, AdaptiveParams, Scenario, SolverParams, Stepping};
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::path::Path;
 
@@ -60,6 +60,11 @@ fn bench(c: &mut Criterion) {
     g.sample_size(10);
     g.bench_function("45.6s_dt1e-4", |b| {
         b.iter(|| run_with(&s.caisson, &s.foundation, s.solver, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
+    });
+    // The same test with the adaptive stepper at its defaults (the wave-train default).
+    let adaptive = SolverParams { stepping: Stepping::Adaptive(AdaptiveParams::default()), ..s.solver };
+    g.bench_function("45.6s_adaptive", |b| {
+        b.iter(|| run_with(&s.caisson, &s.foundation, adaptive, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
     });
     g.finish();
 }

@@ -42,3 +42,18 @@ fn time_loop_does_not_allocate() {
     assert!(peaks.slip_events >= 1 && peaks.min_n == 0.0, "the test must exercise sliding and lift-off");
     assert_eq!(after - before, 0, "allocations in the time loop");
 }
+
+/// The adaptive stepper (rejections, breakpoints, step-size changes) allocates nothing either.
+#[test]
+fn adaptive_time_loop_does_not_allocate() {
+    let text = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 15.0\nrise_time_s = 0.05\n[solver]\nstepping = \"adaptive\"\n";
+    let s = validate(&parse_str(text, Path::new("t.toml")).unwrap(), Path::new(".")).unwrap();
+    let load = TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
+    let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+    let mut peaks = caisson::analysis::run::Peaks::default();
+    let before = ALLOCS.load(Ordering::SeqCst);
+    sim.run_until(0.6, &load, &mut peaks).unwrap();
+    let after = ALLOCS.load(Ordering::SeqCst);
+    assert!(peaks.slip_events >= 1 && sim.stats.rejected_steps > 0, "the test must exercise sliding and step rejection");
+    assert_eq!(after - before, 0, "allocations in the adaptive time loop");
+}
