@@ -234,15 +234,28 @@ impl Simulation {
         };
         let gravity = Vector3::new(0.0, -model.weight_n, 0.0);
         let mut sim = Simulation { model, solver, state, trial: vec![SpringResponse::default(); n], reaction: Reaction::default(), stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() }, gravity, h_next: solver.dt_s };
-        let p0 = sim.load_vector(load.at(0.0));
-        let (f, _) = sim.assemble(sim.state.u, [0.0; 3], solver.dt_s);
+        sim.reset(load);
+        sim
+    }
+
+    /// Back to static equilibrium at t = 0 under `load` (as [`Self::new`]), keeping the model, the
+    /// buffers and the accumulated statistics. Allocates nothing: for runs of many independent
+    /// waves on one caisson.
+    pub fn reset<L: LoadHistory + ?Sized>(&mut self, load: &L) {
+        self.state.t_s = 0.0;
+        self.state.u = [0.0, -self.model.static_settlement_m(), 0.0];
+        self.state.v = [0.0; 3];
+        self.state.a = [0.0; 3];
+        self.state.springs.iter_mut().for_each(|s| *s = SpringState::default());
+        self.h_next = self.solver.dt_s;
+        let p0 = self.load_vector(load.at(0.0));
+        let (f, _) = self.assemble(self.state.u, [0.0; 3], self.solver.dt_s);
         let rhs = p0 - f;
-        let a0 = sim.model.mass.lu().solve(&rhs).unwrap_or_else(Vector3::zeros);
-        sim.state.a = [a0[0], a0[1], a0[2]];
-        for (c, r) in sim.state.springs.iter_mut().zip(&sim.trial) {
+        let a0 = self.model.mass.lu().solve(&rhs).unwrap_or_else(Vector3::zeros);
+        self.state.a = [a0[0], a0[1], a0[2]];
+        for (c, r) in self.state.springs.iter_mut().zip(&self.trial) {
             *c = r.state;
         }
-        sim
     }
 
     pub fn state(&self) -> &State {

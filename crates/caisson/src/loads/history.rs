@@ -96,6 +96,12 @@ impl WaveEvent {
         }
     }
 
+    /// The same wave with every force and moment multiplied by `k` (an estimation error of the
+    /// wave force, PHYSICS.md §6.4 step 4).
+    pub fn scaled(&self, k: f64) -> WaveEvent {
+        WaveEvent { quasi: self.quasi.scaled(k), trough: self.trough.scaled(k), impact: self.impact.scaled(k), ..*self }
+    }
+
     /// End of the wave, s.
     pub fn end_s(&self) -> f64 {
         self.start_s + self.period_s

@@ -1,0 +1,356 @@
+//! Performance-based design: the sliding of a caisson over its service life by Monte Carlo, with
+//! the dynamic model for every wave that can slide it (Shimosako & Takahashi 1999; Goda & Takagi
+//! 2000; PHYSICS.md §6.4), and the storms of a fragility analysis (PHYSICS.md §7).
+//!
+//! **One life** (`life_years` storms, one per year, PHYSICS.md §6.4 steps 1-7):
+//!
+//! 1. annual maximum deep-water significant height H0 from an extreme-value distribution,
+//!    by inversion of a uniform U: Weibull F(H) = 1 − exp[−((H − B)/A)^k] (H ≥ B), or Gumbel
+//!    F(H) = exp[−exp(−(H − B)/A)]; times the deep-water estimation error;
+//! 2. period T1/3 = a H0^b (Goda & Takagi: a = 3.3, b = 0.63) and N = duration / T1/3 waves;
+//! 3. tide at the peak ζ = (R/2)(1 + cos φ), φ uniform: every depth (toe, wall, base) grows by ζ,
+//!    the crest freeboard shrinks by ζ, and the weight in water falls by ρ_w g B l ζ (the caisson
+//!    is more submerged); the foundation stiffness and the added mass stay at their still-water
+//!    values (a simplification);
+//! 4. H1/3 and H_max at the structure by Goda's surf-zone formulas at the toe depth
+//!    ([`crate::waves::surf_zone`]), times the transformation error;
+//! 5. N Rayleigh heights of that H1/3, each limited to H_max (Goda's random-wave breaking), each
+//!    with a rise time from the seed's log-normal model;
+//! 6. per wave: the loads of [`crate::loads::model::WaveLoadModel`] (regime by the breaking
+//!    criterion) times the wave-force error; friction coefficients times the friction error;
+//!    the wave is run through the dynamic model from rest (static equilibrium) and its permanent
+//!    sliding added; the rigid block (Shimosako model, [`super::train::RigidBlock`]) beside it.
+//!
+//! Estimation errors are multipliers 1 + bias + COV·z, z standard normal truncated at ±k
+//! (Kim & Takayama 2003, doubly truncated; PHYSICS.md §6.4 step 4), drawn once per storm.
+//!
+//! **The screen** skips waves that provably cannot slide the caisson. A wave can slide it only
+//! if its effective load exceeds the friction resistance, P_eff > μ_s (W' − U_eff), with
+//! P_eff = max(Ψ_i F_x,max, Ψ_q α_qs F_qs+) and U_eff likewise, Ψ the dynamic amplification:
+//! Ψ_i = 2 on impulsive components (the largest amplification of a single rising-and-falling
+//! pulse on a linear oscillator from rest, reached by a step; Chopra §4.7-4.11) and
+//! Ψ_q = 1 + T0/(π t_q) on the pulsating component, the bound of a load that rises over
+//! t_q = T/4 (Chopra §4.8, ramp load). The test is made per storm on a grid of 64 heights from 0
+//! to H_max plus the breaker height at the wall; a wave is simulated if the grid cell of its height
+//! or a neighbouring cell can slide. The friction used is the smaller of μ_s and the rigid block's
+//! μ, so a screened wave slides neither model. The share of waves screened is reported;
+//! `screen = false` runs every wave (and gives the same result, `tests/lifetime.rs`).
+//!
+//! **Random numbers**: one ChaCha8 stream per life (seed, stream = life index); per storm in
+//! order: U for H0, four truncated normals for the errors, U for the tide phase; per wave: U
+//! for the height, one standard normal for the rise time. Lives are independent, so results
+//! do not depend on the thread count, and a life can be recomputed alone (checkpoint/resume).
+
+use super::run::permanent_sliding_m;
+use super::train::RigidBlock;
+use crate::dynamics::{Model, Simulation, SolveError};
+use crate::foundation::Foundation;
+use crate::loads::generator::realization_rng;
+use crate::loads::history::{WaveEvent, WaveTrain};
+use crate::loads::model::{WaveLoadModel, WaveLoads};
+use crate::loads::regime::RegimeChoice;
+use crate::loads::risetime::LoadRng;
+use crate::scenario::SolverParams;
+use crate::structure::Caisson;
+use crate::waves::surf_zone::goda_surf_zone;
+use crate::G_M_PER_S2;
+use rand::Rng;
+use rand_distr::StandardNormal;
+use std::f64::consts::PI;
+
+/// Annual maxima of the deep-water significant height.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum StormDistribution {
+    /// F(H) = 1 − exp[−((H − location)/scale)^shape], H ≥ location.
+    Weibull { scale_m: f64, shape: f64, location_m: f64 },
+    /// F(H) = exp[−exp(−(H − location)/scale)].
+    Gumbel { location_m: f64, scale_m: f64 },
+}
+
+impl StormDistribution {
+    /// The height of non-exceedance probability `p` in (0, 1).
+    pub fn quantile_m(&self, p: f64) -> f64 {
+        match *self {
+            StormDistribution::Weibull { scale_m, shape, location_m } => location_m + scale_m * (-(1.0 - p).ln()).powf(1.0 / shape),
+            StormDistribution::Gumbel { location_m, scale_m } => location_m - scale_m * (-p.ln()).ln(),
+        }
+    }
+}
+
+/// An estimation error: the multiplier 1 + bias + cov·z, z ~ N(0,1) truncated at ±k.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct ErrorModel {
+    pub bias: f64,
+    pub cov: f64,
+    pub truncation_sigmas: f64,
+}
+
+impl ErrorModel {
+    pub const NONE: ErrorModel = ErrorModel { bias: 0.0, cov: 0.0, truncation_sigmas: 2.0 };
+
+    fn draw(&self, rng: &mut LoadRng) -> f64 {
+        let z = loop {
+            let z: f64 = rng.sample(StandardNormal);
+            if z.abs() <= self.truncation_sigmas {
+                break z;
+            }
+        };
+        (1.0 + self.bias + self.cov * z).max(0.0)
+    }
+}
+
+/// The four estimation errors of PHYSICS.md §6.4 step 4.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Errors {
+    pub deep_water_height: ErrorModel,
+    pub transformation: ErrorModel,
+    pub wave_force: ErrorModel,
+    pub friction: ErrorModel,
+}
+
+impl Default for Errors {
+    /// Takayama & Ikeda (1992) via Shimosako & Takahashi (1999), truncated at ±2σ.
+    fn default() -> Self {
+        Errors {
+            deep_water_height: ErrorModel { bias: 0.0, cov: 0.10, truncation_sigmas: 2.0 },
+            transformation: ErrorModel { bias: -0.13, cov: 0.09, truncation_sigmas: 2.0 },
+            wave_force: ErrorModel { bias: -0.09, cov: 0.10, truncation_sigmas: 2.0 },
+            friction: ErrorModel { bias: 0.0, cov: 0.10, truncation_sigmas: 2.0 },
+        }
+    }
+}
+
+/// The life model (PHYSICS.md §6.4), every coefficient a parameter.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct LifeParams {
+    pub life_years: usize,
+    pub storms: StormDistribution,
+    /// T1/3 = a H0^b: a (s·m^−b) and b.
+    pub period_coefficient: f64,
+    pub period_exponent: f64,
+    /// Duration of the storm peak, s (N = duration / T1/3 waves).
+    pub storm_duration_s: f64,
+    /// Tidal range R, m.
+    pub tidal_range_m: f64,
+    pub errors: Errors,
+}
+
+/// What the storms act on: the caisson at still water, its foundation, the solver, the site.
+#[derive(Debug, Clone, Copy)]
+pub struct Structure<'a> {
+    pub caisson: &'a Caisson,
+    pub foundation: &'a Foundation,
+    pub solver: SolverParams,
+    /// The wave-load model at still water (its regime choice is used per wave).
+    pub model: &'a WaveLoadModel,
+    pub rigid_block_mu: f64,
+    /// Skip the waves that cannot slide the caisson (module docs).
+    pub screen: bool,
+}
+
+/// One storm at the structure.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct StormInput {
+    /// H1/3 at the structure, m.
+    pub h13_m: f64,
+    /// Largest individual height (breaking limit), m.
+    pub hmax_m: f64,
+    pub period_s: f64,
+    pub waves: usize,
+    /// Water level above still water, m.
+    pub tide_m: f64,
+    /// Multiplier on every wave force.
+    pub force_factor: f64,
+    /// Multiplier on the friction coefficients.
+    pub friction_factor: f64,
+}
+
+/// The outcome of one storm (or, summed, of one life).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct StormOutcome {
+    /// Dynamic model, m.
+    pub sliding_m: f64,
+    /// Rigid block (Shimosako model), m.
+    pub rigid_block_sliding_m: f64,
+    pub waves: u64,
+    /// Waves run through the dynamic model.
+    pub simulated: u64,
+    /// Waves skipped by the screen.
+    pub screened: u64,
+    /// The largest storm sliding (dynamic), m (for a life).
+    pub max_storm_sliding_m: f64,
+}
+
+impl StormOutcome {
+    fn add(&mut self, o: &StormOutcome) {
+        self.sliding_m += o.sliding_m;
+        self.rigid_block_sliding_m += o.rigid_block_sliding_m;
+        self.waves += o.waves;
+        self.simulated += o.simulated;
+        self.screened += o.screened;
+        self.max_storm_sliding_m = self.max_storm_sliding_m.max(o.sliding_m);
+    }
+}
+
+/// Dynamic amplification bound on impulsive components (module docs).
+pub const PSI_IMPULSE: f64 = 2.0;
+/// Cells of the per-storm screen grid.
+const SCREEN_CELLS: usize = 64;
+
+/// Effective peak forces of one wave's event for the screen, and the friction test.
+fn may_slide(e: &WaveEvent, psi_q: f64, weight_n: f64, mu: f64) -> bool {
+    let p = (PSI_IMPULSE * e.impact.x.fx_n).max(psi_q * e.quasi.x.fx_n);
+    let u = (PSI_IMPULSE * e.impact.y.fy_n).max(psi_q * e.quasi.y.fy_n).max(0.0);
+    p > mu * (weight_n - u)
+}
+
+/// Run one storm (module docs). `rng` supplies the per-wave draws.
+pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, SolveError> {
+    // The site and the caisson at this water level.
+    let mut model = *st.model;
+    model.site.depth_at_toe_m += s.tide_m;
+    model.site.depth_at_wall_m += s.tide_m;
+    model.site.base_depth_m += s.tide_m;
+    model.site.crest_freeboard_m = (model.site.crest_freeboard_m - s.tide_m).max(0.0);
+    let mut caisson = *st.caisson;
+    caisson.base_depth_m += s.tide_m;
+    caisson.weight_in_water_n -= model.site.rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * s.tide_m;
+    let mut foundation = st.foundation.clone();
+    foundation.mu_static *= s.friction_factor;
+    foundation.mu_dynamic *= s.friction_factor;
+    let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
+    let dyn_model = Model::new(&caisson, &foundation);
+    let psi_q = 1.0 + dyn_model.natural_period_s() / (PI * 0.25 * s.period_s);
+    let mu_screen = foundation.mu_static.min(block.mu_static);
+    let w = caisson.weight_in_water_n;
+    let event_of = |loads: &WaveLoads, rise: Option<f64>| model.event(loads, rise, 0.0).scaled(s.force_factor);
+    // Screen grid over [0, H_max] (+ the breaker height at the wall as an extra node).
+    let hmax = s.hmax_m.max(1e-6);
+    let dh = hmax / SCREEN_CELLS as f64;
+    let mut node = [false; SCREEN_CELLS + 1];
+    if st.screen {
+        for (i, flag) in node.iter_mut().enumerate() {
+            let h = (i as f64 * dh).max(1e-3 * hmax);
+            *flag = model.evaluate_with(h, s.period_s, RegimeChoice::Auto).map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen));
+        }
+        let hbr = model.breaker_height_at_wall_m(s.period_s);
+        if hbr < hmax {
+            let j = (hbr / dh) as usize;
+            let flag = model.evaluate_with(hbr, s.period_s, RegimeChoice::Auto).map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen));
+            node[j] |= flag;
+            node[(j + 1).min(SCREEN_CELLS)] |= flag;
+        }
+    }
+    // Cell c = [c dh, (c + 1) dh] may slide if a node within one cell of it may.
+    let cell_may_slide = |c: usize| node[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f);
+    let mut sim: Option<Simulation> = None;
+    let mut out = StormOutcome { waves: s.waves as u64, ..StormOutcome::default() };
+    for _ in 0..s.waves {
+        let u = 1.0 - rng.gen::<f64>();
+        let h = (s.h13_m * (-0.5 * u.ln()).sqrt()).clamp(1e-3 * s.h13_m.max(1e-6), hmax);
+        let z: f64 = rng.sample(StandardNormal);
+        if st.screen && !cell_may_slide(((h / dh) as usize).min(SCREEN_CELLS - 1)) {
+            out.screened += 1;
+            continue;
+        }
+        let Ok(loads) = model.evaluate_with(h, s.period_s, model.options.regime) else {
+            // A forced regime the wave contradicts: let the criterion decide this wave.
+            continue;
+        };
+        let event = event_of(&loads, loads.rise_time.map(|d| d.at_deviate(z)));
+        out.rigid_block_sliding_m += block.wave_sliding_m(&event);
+        let train = WaveTrain::new(vec![event]).expect("a checked wave");
+        let sim = match sim.as_mut() {
+            Some(x) => {
+                x.reset(&train);
+                x
+            }
+            None => sim.insert(Simulation::new(dyn_model.clone(), st.solver, &train)),
+        };
+        sim.run_until(s.period_s, &train, &mut ())?;
+        out.sliding_m += permanent_sliding_m(sim);
+        out.simulated += 1;
+    }
+    out.max_storm_sliding_m = out.sliding_m;
+    Ok(out)
+}
+
+/// One life of `p.life_years` storms (module docs), life `index` of the stream `seed`.
+pub fn simulate_life(st: &Structure<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, SolveError> {
+    let mut rng = realization_rng(seed, index);
+    let mut life = StormOutcome::default();
+    let site = &st.model.site;
+    for _ in 0..p.life_years {
+        let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
+        let e = &p.errors;
+        let (e_h0, e_tr, e_f, e_mu) = (e.deep_water_height.draw(&mut rng), e.transformation.draw(&mut rng), e.wave_force.draw(&mut rng), e.friction.draw(&mut rng));
+        let phi = 2.0 * PI * rng.gen::<f64>();
+        let h0 = (p.storms.quantile_m(u) * e_h0).max(1e-3);
+        let period_s = p.period_coefficient * h0.powf(p.period_exponent);
+        let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos());
+        let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
+        let storm = StormInput {
+            h13_m: z.h13_m * e_tr,
+            hmax_m: z.hmax_m * e_tr,
+            period_s,
+            waves: (p.storm_duration_s / period_s).round().max(1.0) as usize,
+            tide_m,
+            force_factor: e_f,
+            friction_factor: e_mu,
+        };
+        let o = simulate_storm(st, &storm, &mut rng)?;
+        life.add(&o);
+    }
+    Ok(life)
+}
+
+/// Statistics of the life totals.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct LifeStatistics {
+    pub lives: usize,
+    pub mean_m: f64,
+    /// (percent, value m) for 5, 50, 95, 99 %.
+    pub percentiles_m: Vec<(f64, f64)>,
+    /// (threshold m, probability of exceeding it).
+    pub exceedance: Vec<(f64, f64)>,
+}
+
+/// Mean, percentiles (nearest-rank) and exceedance probabilities of `values`.
+pub fn life_statistics(values: &[f64], thresholds_m: &[f64]) -> LifeStatistics {
+    let n = values.len();
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let pct = |p: f64| if n == 0 { 0.0 } else { sorted[((p / 100.0 * n as f64).ceil() as usize).clamp(1, n) - 1] };
+    LifeStatistics {
+        lives: n,
+        mean_m: if n == 0 { 0.0 } else { values.iter().sum::<f64>() / n as f64 },
+        percentiles_m: [5.0, 50.0, 95.0, 99.0].iter().map(|&p| (p, pct(p))).collect(),
+        exceedance: thresholds_m.iter().map(|&t| (t, values.iter().filter(|&&v| v > t).count() as f64 / n.max(1) as f64)).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extreme_value_quantiles_invert_their_distributions() {
+        let w = StormDistribution::Weibull { scale_m: 1.5, shape: 1.4, location_m: 2.0 };
+        let g = StormDistribution::Gumbel { location_m: 4.0, scale_m: 0.8 };
+        for p in [0.01, 0.3, 0.5, 0.9, 0.99] {
+            let h = w.quantile_m(p);
+            assert!((1.0 - (-((h - 2.0) / 1.5f64).powf(1.4)).exp() - p).abs() < 1e-12);
+            let h = g.quantile_m(p);
+            assert!(((-(-(h - 4.0) / 0.8f64).exp()).exp() - p).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn statistics_of_a_sample() {
+        let s = life_statistics(&[0.0, 0.1, 0.2, 0.5, 2.0], &[0.1, 1.0]);
+        assert!((s.mean_m - 0.56).abs() < 1e-12);
+        assert_eq!(s.percentiles_m[1], (50.0, 0.2));
+        assert_eq!(s.exceedance, vec![(0.1, 0.6), (1.0, 0.2)]);
+    }
+}
