@@ -6,6 +6,7 @@
 //! ([`ScenarioError`]).
 
 pub mod campaign;
+pub mod design;
 mod validate;
 pub mod waves;
 
@@ -62,6 +63,7 @@ pub struct ScenarioFile {
     pub solver: SolverTable,
     pub waves: Option<waves::WavesTable>,
     pub campaign: Option<campaign::CampaignTable>,
+    pub design: Option<design::DesignTable>,
 }
 
 /// `[caisson]`: geometry and mass (PHYSICS.md §8.2).

@@ -1,0 +1,145 @@
+//! `[design]`: the lifetime Monte Carlo of performance-based design (PHYSICS.md §6.4), validated
+//! into [`LifeParams`] and the run controls. Every key is documented in `docs/design.md`; the
+//! defaults are the values PHYSICS.md §6.4 cites (Goda & Takagi 2000; Takayama & Ikeda 1992 via
+//! Shimosako & Takahashi 1999; Kim & Takayama 2003 for the truncation).
+
+use super::{ScenarioError, ScenarioFile};
+use crate::analysis::lifetime::{ErrorModel, Errors, LifeParams, StormDistribution};
+use serde::Deserialize;
+
+type R<T> = Result<T, ScenarioError>;
+
+/// `[design]` as written.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct DesignTable {
+    pub life_years: Option<i64>,
+    pub lives: Option<i64>,
+    pub seed: Option<i64>,
+    /// `"weibull"` or `"gumbel"`.
+    pub storm_distribution: Option<String>,
+    pub storm_scale_m: Option<f64>,
+    pub storm_shape: Option<f64>,
+    pub storm_location_m: Option<f64>,
+    pub period_coefficient: Option<f64>,
+    pub period_exponent: Option<f64>,
+    pub storm_duration_h: Option<f64>,
+    pub tidal_range_m: Option<f64>,
+    pub deep_water_height_bias: Option<f64>,
+    pub deep_water_height_cov: Option<f64>,
+    pub transformation_bias: Option<f64>,
+    pub transformation_cov: Option<f64>,
+    pub wave_force_bias: Option<f64>,
+    pub wave_force_cov: Option<f64>,
+    pub friction_bias: Option<f64>,
+    pub friction_cov: Option<f64>,
+    pub error_truncation_sigmas: Option<f64>,
+    /// Extra sliding thresholds, m (0.03, 0.1, 0.3, 1 and 3 m are always reported).
+    pub thresholds_m: Option<Vec<f64>>,
+    pub screen: Option<bool>,
+}
+
+/// The validated design run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignSpec {
+    pub life: LifeParams,
+    pub lives: usize,
+    pub seed: u64,
+    /// Sorted thresholds, m (the standard five and the user's).
+    pub thresholds_m: Vec<f64>,
+    pub screen: bool,
+}
+
+/// Takahashi's performance grades (PHYSICS.md §6.4 step 8), m.
+pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
+
+fn num(key: &str, v: Option<f64>, default: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
+    let Some(v) = v else { return Ok(default) };
+    let above = if lo_open { v > lo } else { v >= lo };
+    if v.is_finite() && above && v <= hi {
+        Ok(v)
+    } else {
+        let low = if lo_open { format!("> {lo}") } else { format!("≥ {lo}") };
+        Err(ScenarioError::range(&format!("[design] {key}"), v, format!("must be a finite number {low} and ≤ {hi} ({unit})")))
+    }
+}
+
+fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
+    match v {
+        None => Ok(default),
+        Some(n) if (1..=hi).contains(&n) => Ok(n as usize),
+        Some(n) => Err(ScenarioError::range(&format!("[design] {key}"), n, format!("must be a whole number from 1 to {hi}"))),
+    }
+}
+
+fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
+    v.ok_or_else(|| ScenarioError::missing(&format!("[design] {key}"), hint))
+}
+
+/// Validate `[design]`.
+pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
+    let t = file.design.as_ref().ok_or_else(|| ScenarioError::missing("[design]", "add a [design] table: storm_distribution, its parameters, life_years, lives"))?;
+    let dist = t.storm_distribution.as_deref().ok_or_else(|| ScenarioError::missing("[design] storm_distribution", "\"weibull\" or \"gumbel\" (annual maxima of the deep-water H1/3)"))?;
+    let storms = match dist {
+        "weibull" => StormDistribution::Weibull {
+            scale_m: num("storm_scale_m", Some(required("storm_scale_m", t.storm_scale_m, "the Weibull scale A, m")?), 0.0, 0.0, 100.0, true, "m")?,
+            shape: num("storm_shape", Some(required("storm_shape", t.storm_shape, "the Weibull shape k (0.75-2 typically)")?), 0.0, 0.1, 20.0, false, "-")?,
+            location_m: num("storm_location_m", t.storm_location_m, 0.0, 0.0, 100.0, false, "m")?,
+        },
+        "gumbel" => {
+            if t.storm_shape.is_some() {
+                return Err(ScenarioError::Conflict { message: "`[design] storm_shape` is not used with storm_distribution = \"gumbel\"; remove it".into() });
+            }
+            StormDistribution::Gumbel {
+                location_m: num("storm_location_m", Some(required("storm_location_m", t.storm_location_m, "the Gumbel location B, m")?), 0.0, 0.0, 100.0, true, "m")?,
+                scale_m: num("storm_scale_m", Some(required("storm_scale_m", t.storm_scale_m, "the Gumbel scale A, m")?), 0.0, 0.0, 100.0, true, "m")?,
+            }
+        }
+        other => return Err(ScenarioError::range("[design] storm_distribution", format!("\"{other}\""), "must be \"weibull\" or \"gumbel\"")),
+    };
+    let k = num("error_truncation_sigmas", t.error_truncation_sigmas, 2.0, 0.5, 10.0, false, "standard deviations")?;
+    let d = Errors::default();
+    let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
+        let bias = num(&format!("{name}_bias"), bias, def.bias, -0.9, 1.0, false, "fraction")?;
+        let cov = num(&format!("{name}_cov"), cov, def.cov, 0.0, 1.0, false, "fraction")?;
+        if 1.0 + bias - k * cov <= 0.0 {
+            return Err(ScenarioError::range(&format!("[design] {name}_cov"), cov, format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive")));
+        }
+        Ok(ErrorModel { bias, cov, truncation_sigmas: k })
+    };
+    let errors = Errors {
+        deep_water_height: err("deep_water_height", t.deep_water_height_bias, t.deep_water_height_cov, d.deep_water_height)?,
+        transformation: err("transformation", t.transformation_bias, t.transformation_cov, d.transformation)?,
+        wave_force: err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?,
+        friction: err("friction", t.friction_bias, t.friction_cov, d.friction)?,
+    };
+    let mut thresholds_m = STANDARD_THRESHOLDS_M.to_vec();
+    for (i, v) in t.thresholds_m.iter().flatten().enumerate() {
+        if !(v.is_finite() && *v > 0.0) {
+            return Err(ScenarioError::range(&format!("[design] thresholds_m[{i}]"), v, "must be a finite number > 0 (m)"));
+        }
+        thresholds_m.push(*v);
+    }
+    thresholds_m.sort_by(f64::total_cmp);
+    thresholds_m.dedup();
+    let seed = match t.seed {
+        None => 1,
+        Some(s) if s >= 0 => s as u64,
+        Some(s) => return Err(ScenarioError::range("[design] seed", s, "must be a whole number ≥ 0")),
+    };
+    Ok(DesignSpec {
+        life: LifeParams {
+            life_years: count("life_years", t.life_years, 50, 1000)?,
+            storms,
+            period_coefficient: num("period_coefficient", t.period_coefficient, 3.3, 0.0, 100.0, true, "s·m^−b")?,
+            period_exponent: num("period_exponent", t.period_exponent, 0.63, 0.0, 2.0, false, "-")?,
+            storm_duration_s: num("storm_duration_h", t.storm_duration_h, 2.0, 0.0, 72.0, true, "h")? * 3600.0,
+            tidal_range_m: num("tidal_range_m", t.tidal_range_m, 0.0, 0.0, 20.0, false, "m")?,
+            errors,
+        },
+        lives: count("lives", t.lives, 5000, 10_000_000)?,
+        seed,
+        thresholds_m,
+        screen: t.screen.unwrap_or(true),
+    })
+}
