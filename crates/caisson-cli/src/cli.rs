@@ -22,6 +22,8 @@ pub enum Command {
     Campaign(CampaignArgs),
     /// Regenerate the validation report (validation.md and figures) against the seed paper.
     Validation(ValidationArgs),
+    /// Lifetime Monte Carlo of performance-based design: expected sliding, percentiles, exceedance.
+    Design(DesignArgs),
 }
 
 #[derive(Args, Debug)]
@@ -37,6 +39,36 @@ pub struct RunArgs {
     /// Worker threads for wave-train realizations (0: one per core). Results do not depend on it.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
+}
+
+#[derive(Args, Debug)]
+pub struct DesignArgs {
+    /// Design file (TOML): a wave scenario with a `[design]` table.
+    pub scenario: PathBuf,
+    /// Print the results as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Write design.json, lives.csv, histogram.svg, exceedance.svg and the checkpoint here.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Worker threads (0: one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Override `[design] lives`.
+    #[arg(long)]
+    pub lives: Option<usize>,
+    /// Complete an interrupted run from its checkpoint (identical results).
+    #[arg(long)]
+    pub resume: bool,
+    /// Checkpoint file (default DIR/checkpoint.jsonl with --out; none otherwise).
+    #[arg(long, value_name = "FILE")]
+    pub checkpoint: Option<PathBuf>,
+    /// Brute force for comparison: no screen, fixed time step dt_s.
+    #[arg(long)]
+    pub brute_force: bool,
+    /// Stop after this many lives (to exercise --resume).
+    #[arg(long, hide = true)]
+    pub stop_after: Option<usize>,
 }
 
 #[derive(Args, Debug)]

@@ -5,6 +5,7 @@
 
 mod cli;
 mod cmd_campaign;
+mod cmd_design;
 mod cmd_loads;
 mod cmd_run;
 mod cmd_spectrum;
@@ -47,6 +48,7 @@ fn main() -> ExitCode {
         cli::Command::Loads(a) => cmd_loads::run(a),
         cli::Command::Campaign(a) => cmd_campaign::run(a),
         cli::Command::Validation(a) => cmd_validation::run(a),
+        cli::Command::Design(a) => cmd_design::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
