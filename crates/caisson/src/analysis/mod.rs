@@ -3,6 +3,7 @@
 
 pub mod campaign;
 pub mod closed_form;
+pub mod fragility;
 pub mod lifetime;
 pub mod run;
 pub mod spectrum;

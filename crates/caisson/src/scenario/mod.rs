@@ -7,6 +7,7 @@
 
 pub mod campaign;
 pub mod design;
+pub mod fragility;
 mod validate;
 pub mod waves;
 
@@ -64,6 +65,7 @@ pub struct ScenarioFile {
     pub waves: Option<waves::WavesTable>,
     pub campaign: Option<campaign::CampaignTable>,
     pub design: Option<design::DesignTable>,
+    pub fragility: Option<fragility::FragilityTable>,
 }
 
 /// `[caisson]`: geometry and mass (PHYSICS.md §8.2).

@@ -1,0 +1,531 @@
+//! Fragility curves for sliding (PHYSICS.md §7; the generic method of Lupoi et al. 2007 and
+//! similar): for a grid of significant heights at the structure, many storms each; the
+//! probability that a storm's sliding exceeds each limit; a lognormal curve fitted to the counts.
+//!
+//! **Storms.** The intensity measure IM is H1/3 at the structure (the toe of the mound). At
+//! height level i (H_i) storm j is one [`simulate_storm`] with
+//!
+//! * H1/3 = H_i, the Rayleigh heights of the storm limited to H_max = 1.8 H_i ([`HMAX_RATIO`],
+//!   Goda's design ratio for the largest of about 250-1000 waves; waves above the breaker
+//!   height at the wall break on it and load it by the impact model of the scenario);
+//! * T1/3 = `period_s` for every wave, N = round(duration / T1/3) waves (at least 1);
+//! * no tide, no estimation errors (force and friction factors 1): a fragility is conditional
+//!   on the IM, and the spread comes from the wave sequence and the rise times only. The
+//!   estimation errors of PHYSICS.md §6.4 belong to the life integral (§7 step 5, `lifetime.rs`);
+//! * the conservative screen of [`simulate_storm`] (waves that provably cannot slide either
+//!   model are skipped; the share is reported).
+//!
+//! Storm j of level i draws from its own generator, `realization_rng(seed, i · storms + j)`; the
+//! (level, storm) pairs run with rayon and are collected in order, so the results do not depend
+//! on the number of threads. The library does not print: `tick` is called once per storm.
+//!
+//! **Counts.** k_i(s) = #{storms at H_i with S > s} (strictly greater), for the dynamic model and
+//! for the rigid block (Shimosako model) separately; P̂_i = k_i / n_i.
+//!
+//! **Lognormal fit** (PHYSICS.md §7 step 4): P(S > s | IM) = Φ((ln IM − ln θ)/β), θ the median
+//! capacity (m of H1/3) and β the log-standard deviation, by maximum likelihood on the binomial
+//! counts,
+//!
+//! ```text
+//! ln L(ln θ, β) = Σ_i k_i ln p_i + (n_i − k_i) ln(1 − p_i),   p_i = Φ((ln IM_i − ln θ)/β),
+//! ```
+//!
+//! p_i and 1 − p_i = Φ(−z_i) computed separately and clamped to [1e-12, 1 − 1e-12]. The maximum
+//! is found by Nelder & Mead (1965) on (ln θ, ln β) (so β > 0), restarted from its own result
+//! until it stops moving, from ln θ at the middle of the heights where the counts are mixed and
+//! β half their spread. Standard errors come from the expected (Fisher) information at the
+//! maximum: I = Σ_i n_i φ(z_i)² / (p_i (1 − p_i)) ∇z_i ∇z_iᵀ with ∂z/∂ln θ = −1/β,
+//! ∂z/∂β = −z/β.
+//!
+//! **When the counts do not determine both parameters** the fit is refused with a reason
+//! ([`FitFailure`]):
+//!
+//! * no storm exceeds the limit at any height, or every storm exceeds it at every height;
+//! * the counts are *separated*: no level with an exceedance lies below a level with a
+//!   non-exceedance (the counts go from none to all between two neighbouring heights, with at
+//!   most one mixed level between them; this includes a single level). The likelihood then
+//!   grows without bound as β → 0 (a step at an undetermined height);
+//! * the maximum lies at the search bounds (β > [`BETA_MAX`] or θ more than e^5 ≈ 150 times
+//!   beyond the grid): the probabilities do not rise across the grid, or rise so little that the
+//!   median is far outside it.
+//!
+//! **Φ** is computed from erfc by the Chebyshev fit of Numerical Recipes (Press et al. 1992,
+//! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
+//! same relative accuracy.
+
+use super::lifetime::{simulate_storm, StormInput, StormOutcome, Structure};
+use crate::dynamics::SolveError;
+use crate::loads::generator::realization_rng;
+use rayon::prelude::*;
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+use thiserror::Error;
+
+/// H_max / H1/3 of a storm (Goda's design ratio).
+pub const HMAX_RATIO: f64 = 1.8;
+/// The largest β the fit accepts (in units of ln IM).
+pub const BETA_MAX: f64 = 20.0;
+/// The smallest β the search considers.
+const BETA_MIN: f64 = 1e-4;
+/// How far beyond the grid (in ln IM) the median may lie.
+const LN_MEDIAN_MARGIN: f64 = 5.0;
+/// Clamp of p and 1 − p in the likelihood.
+const P_CLAMP: f64 = 1e-12;
+
+/// Coefficients of the Chebyshev fit of `erfcc` (Numerical Recipes, §6.2), lowest order first.
+const ERFCC: [f64; 10] = [-1.265_512_23, 1.000_023_68, 0.374_091_96, 0.096_784_18, -0.186_288_06, 0.278_868_07, -1.135_203_98, 1.488_515_87, -0.822_152_23, 0.170_872_77];
+
+/// erfc(x), Numerical Recipes `erfcc`: erfc(|x|) = t exp(−x² + Σ c_k t^k), t = 1/(1 + |x|/2)
+/// (fractional error < 1.2e-7 for all x), and erfc(−x) = 2 − erfc(x).
+pub fn erfc(x: f64) -> f64 {
+    let z = x.abs();
+    let t = 1.0 / (1.0 + 0.5 * z);
+    let poly = ERFCC.iter().rev().fold(0.0, |acc, &c| acc * t + c);
+    let r = t * (-z * z + poly).exp();
+    if x >= 0.0 {
+        r
+    } else {
+        2.0 - r
+    }
+}
+
+/// The standard normal CDF Φ(z) = erfc(−z/√2)/2 (relative error < 1.2e-7, tails included).
+pub fn normal_cdf(z: f64) -> f64 {
+    0.5 * erfc(-z * FRAC_1_SQRT_2)
+}
+
+/// The standard normal density φ(z).
+pub fn normal_pdf(z: f64) -> f64 {
+    (-0.5 * z * z).exp() / (2.0 * PI).sqrt()
+}
+
+/// A fitted lognormal fragility curve P(IM) = Φ((ln IM − ln θ)/β).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct LognormalFit {
+    /// θ, the median (the IM at which P = 1/2), in the unit of the IM.
+    pub median: f64,
+    /// β, the log-standard deviation.
+    pub beta: f64,
+    /// Standard error of ln θ (expected information).
+    pub ln_median_se: f64,
+    /// Standard error of β.
+    pub beta_se: f64,
+    /// The maximised log-likelihood (binomial coefficients left out).
+    pub log_likelihood: f64,
+}
+
+impl LognormalFit {
+    /// P(exceedance) at intensity `im` > 0.
+    pub fn probability(&self, im: f64) -> f64 {
+        normal_cdf((im.ln() - self.median.ln()) / self.beta)
+    }
+}
+
+/// Why counts cannot be fitted (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Error, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FitFailure {
+    #[error("no storm exceeded the limit at any height")]
+    NoExceedance,
+    #[error("every storm exceeded the limit at every height")]
+    AllExceed,
+    #[error("the counts do not overlap (no height with an exceedance lies below a height with a storm under the limit), so β is not determined; add heights (or storms) where the probability is between 0 and 1")]
+    Separated,
+    #[error("the likelihood has its maximum at the search bounds (β > 20 or a median far outside the heights): the probabilities do not rise across the grid")]
+    AtBounds,
+}
+
+/// Negative binomial log-likelihood (module docs) at (ln θ, β).
+fn neg_log_likelihood(x: &[f64], k: &[u64], n: &[u64], ln_median: f64, beta: f64) -> f64 {
+    let mut s = 0.0;
+    for i in 0..x.len() {
+        let z = (x[i] - ln_median) / beta;
+        let p = normal_cdf(z).clamp(P_CLAMP, 1.0 - P_CLAMP);
+        let q = normal_cdf(-z).clamp(P_CLAMP, 1.0 - P_CLAMP);
+        s -= k[i] as f64 * p.ln() + (n[i] - k[i]) as f64 * q.ln();
+    }
+    s
+}
+
+/// Nelder & Mead (1965) simplex minimisation in two dimensions (reflection 1, expansion 2,
+/// contraction 1/2, shrink 1/2), from `start` with initial steps `step`, until every vertex is
+/// within `xtol` of the best (in each coordinate) or `max_evals` evaluations.
+fn nelder_mead(f: &dyn Fn([f64; 2]) -> f64, start: [f64; 2], step: [f64; 2], xtol: f64, max_evals: usize) -> ([f64; 2], f64) {
+    let mut v = [start, [start[0] + step[0], start[1]], [start[0], start[1] + step[1]]];
+    let mut fv = [f(v[0]), f(v[1]), f(v[2])];
+    let mut evals = 3;
+    let lerp = |a: [f64; 2], b: [f64; 2], t: f64| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+    while evals < max_evals {
+        // Order: best, middle, worst.
+        let mut idx = [0, 1, 2];
+        idx.sort_by(|&a, &b| fv[a].total_cmp(&fv[b]));
+        v = [v[idx[0]], v[idx[1]], v[idx[2]]];
+        fv = [fv[idx[0]], fv[idx[1]], fv[idx[2]]];
+        let size = (1..3).map(|i| (v[i][0] - v[0][0]).abs().max((v[i][1] - v[0][1]).abs())).fold(0.0, f64::max);
+        if size <= xtol {
+            break;
+        }
+        let centroid = lerp(v[0], v[1], 0.5);
+        let reflected = lerp(centroid, v[2], -1.0);
+        let fr = f(reflected);
+        evals += 1;
+        if fr < fv[0] {
+            let expanded = lerp(centroid, v[2], -2.0);
+            let fe = f(expanded);
+            evals += 1;
+            (v[2], fv[2]) = if fe < fr { (expanded, fe) } else { (reflected, fr) };
+        } else if fr < fv[1] {
+            (v[2], fv[2]) = (reflected, fr);
+        } else {
+            // Contract towards the better of the worst and its reflection.
+            let (toward, f_toward) = if fr < fv[2] { (reflected, fr) } else { (v[2], fv[2]) };
+            let contracted = lerp(centroid, toward, 0.5);
+            let fc = f(contracted);
+            evals += 1;
+            if fc < f_toward {
+                (v[2], fv[2]) = (contracted, fc);
+            } else {
+                for i in 1..3 {
+                    v[i] = lerp(v[0], v[i], 0.5);
+                    fv[i] = f(v[i]);
+                }
+                evals += 2;
+            }
+        }
+    }
+    let best = (0..3).min_by(|&a, &b| fv[a].total_cmp(&fv[b])).expect("three vertices");
+    (v[best], fv[best])
+}
+
+/// Fit P(IM) = Φ((ln IM − ln θ)/β) to `k[i]` exceedances of `n[i]` trials at `im[i]` > 0 by
+/// maximum likelihood (module docs). Levels with n = 0 are ignored.
+pub fn fit_lognormal(im: &[f64], k: &[u64], n: &[u64]) -> Result<LognormalFit, FitFailure> {
+    assert!(im.len() == k.len() && k.len() == n.len(), "one count per level");
+    let levels: Vec<usize> = (0..im.len()).filter(|&i| n[i] > 0).collect();
+    let x: Vec<f64> = levels.iter().map(|&i| im[i].ln()).collect();
+    let k: Vec<u64> = levels.iter().map(|&i| k[i].min(n[i])).collect();
+    let n: Vec<u64> = levels.iter().map(|&i| n[i]).collect();
+    if k.iter().all(|&k| k == 0) {
+        return Err(FitFailure::NoExceedance);
+    }
+    if k.iter().zip(&n).all(|(k, n)| k == n) {
+        return Err(FitFailure::AllExceed);
+    }
+    // Overlap: the lowest level with an exceedance lies below the highest with a non-exceedance.
+    let lo = (0..x.len()).filter(|&i| k[i] > 0).map(|i| x[i]).fold(f64::INFINITY, f64::min);
+    let hi = (0..x.len()).filter(|&i| k[i] < n[i]).map(|i| x[i]).fold(f64::NEG_INFINITY, f64::max);
+    if lo >= hi {
+        return Err(FitFailure::Separated);
+    }
+    let (x_min, x_max) = x.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let (a_lo, a_hi) = (x_min - LN_MEDIAN_MARGIN, x_max + LN_MEDIAN_MARGIN);
+    let (c_lo, c_hi) = (BETA_MIN.ln(), (2.0 * BETA_MAX).ln());
+    // The search stays inside the bounds: outside them the objective is that of the nearest
+    // bound plus a growing penalty.
+    let objective = |p: [f64; 2]| {
+        let a = p[0].clamp(a_lo, a_hi);
+        let c = p[1].clamp(c_lo, c_hi);
+        neg_log_likelihood(&x, &k, &n, a, c.exp()) * (1.0 + (p[0] - a).abs() + (p[1] - c).abs())
+            + (p[0] - a).abs()
+            + (p[1] - c).abs()
+    };
+    let mut best = [0.5 * (lo + hi), (0.5 * (hi - lo)).ln()];
+    let mut f_best = objective(best);
+    for _ in 0..20 {
+        let (p, fp) = nelder_mead(&objective, best, [0.2, 0.3], 1e-10, 20_000);
+        let moved = (p[0] - best[0]).abs().max((p[1] - best[1]).abs());
+        if fp <= f_best {
+            best = p;
+            f_best = fp;
+        }
+        if moved <= 1e-9 {
+            break;
+        }
+    }
+    let (ln_median, beta) = (best[0], best[1].exp());
+    if !(ln_median > a_lo + 1e-6 && ln_median < a_hi - 1e-6 && beta <= BETA_MAX && beta > 2.0 * BETA_MIN) {
+        return Err(FitFailure::AtBounds);
+    }
+    // Expected information on (ln θ, β).
+    let mut info = [[0.0; 2]; 2];
+    for i in 0..x.len() {
+        let z = (x[i] - ln_median) / beta;
+        let p = normal_cdf(z).clamp(P_CLAMP, 1.0 - P_CLAMP);
+        let q = normal_cdf(-z).clamp(P_CLAMP, 1.0 - P_CLAMP);
+        let w = n[i] as f64 * normal_pdf(z).powi(2) / (p * q);
+        let g = [-1.0 / beta, -z / beta];
+        for r in 0..2 {
+            for c in 0..2 {
+                info[r][c] += w * g[r] * g[c];
+            }
+        }
+    }
+    let det = info[0][0] * info[1][1] - info[0][1] * info[1][0];
+    let (ln_median_se, beta_se) = if det > 0.0 && det.is_finite() {
+        ((info[1][1] / det).sqrt(), (info[0][0] / det).sqrt())
+    } else {
+        (f64::INFINITY, f64::INFINITY)
+    };
+    if !(ln_median_se.is_finite() && beta_se.is_finite()) {
+        return Err(FitFailure::AtBounds);
+    }
+    Ok(LognormalFit { median: ln_median.exp(), beta, ln_median_se, beta_se, log_likelihood: -f_best })
+}
+
+/// The storms of a fragility analysis (module docs).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct FragilityParams {
+    /// The IM grid: H1/3 at the structure, m, increasing.
+    pub heights_m: Vec<f64>,
+    /// Storms per height.
+    pub storms: usize,
+    /// Sliding limits s_lim, m, increasing.
+    pub limits_m: Vec<f64>,
+    /// Duration of a storm, s.
+    pub storm_duration_s: f64,
+    /// T1/3 of every wave, s.
+    pub period_s: f64,
+    pub seed: u64,
+}
+
+impl FragilityParams {
+    /// Waves per storm, round(duration / T1/3), at least 1.
+    pub fn waves_per_storm(&self) -> usize {
+        (self.storm_duration_s / self.period_s).round().max(1.0) as usize
+    }
+
+    /// The storm at height `h13_m` (module docs).
+    pub fn storm_input(&self, h13_m: f64) -> StormInput {
+        StormInput {
+            h13_m,
+            hmax_m: HMAX_RATIO * h13_m,
+            period_s: self.period_s,
+            waves: self.waves_per_storm(),
+            tide_m: 0.0,
+            force_factor: 1.0,
+            friction_factor: 1.0,
+        }
+    }
+}
+
+/// The storms of one height.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct LevelResult {
+    /// H1/3 at the structure, m.
+    pub h13_m: f64,
+    /// H_max = 1.8 H1/3, m.
+    pub hmax_m: f64,
+    /// One outcome per storm, in storm order.
+    pub storms: Vec<StormOutcome>,
+    /// Storms with dynamic sliding > each limit.
+    pub dynamic_exceedances: Vec<u64>,
+    /// Storms with rigid-block sliding > each limit.
+    pub rigid_block_exceedances: Vec<u64>,
+}
+
+impl LevelResult {
+    fn new(h13_m: f64, storms: Vec<StormOutcome>, limits_m: &[f64]) -> Self {
+        let count = |f: fn(&StormOutcome) -> f64| limits_m.iter().map(|&s| storms.iter().filter(|o| f(o) > s).count() as u64).collect();
+        LevelResult {
+            h13_m,
+            hmax_m: HMAX_RATIO * h13_m,
+            dynamic_exceedances: count(|o| o.sliding_m),
+            rigid_block_exceedances: count(|o| o.rigid_block_sliding_m),
+            storms,
+        }
+    }
+
+    fn mean(&self, f: fn(&StormOutcome) -> f64) -> f64 {
+        self.storms.iter().map(f).sum::<f64>() / self.storms.len().max(1) as f64
+    }
+
+    /// Mean storm sliding, dynamic model, m.
+    pub fn mean_sliding_m(&self) -> f64 {
+        self.mean(|o| o.sliding_m)
+    }
+
+    /// Mean storm sliding, rigid block, m.
+    pub fn mean_rigid_block_sliding_m(&self) -> f64 {
+        self.mean(|o| o.rigid_block_sliding_m)
+    }
+
+    /// Share of the waves skipped by the screen.
+    pub fn screened_share(&self) -> f64 {
+        let waves: u64 = self.storms.iter().map(|o| o.waves).sum();
+        self.storms.iter().map(|o| o.screened).sum::<u64>() as f64 / waves.max(1) as f64
+    }
+}
+
+/// The fitted curves of one limit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LimitFit {
+    pub limit_m: f64,
+    /// IM = H1/3 in m: the median is in m.
+    pub dynamic: Result<LognormalFit, FitFailure>,
+    pub rigid_block: Result<LognormalFit, FitFailure>,
+}
+
+/// Everything a fragility analysis found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FragilityResult {
+    pub levels: Vec<LevelResult>,
+    /// One per limit, in the order of the limits.
+    pub fits: Vec<LimitFit>,
+}
+
+/// A storm that could not be run.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("storm {storm} at H1/3 = {h13_m} m")]
+pub struct StormFailed {
+    pub h13_m: f64,
+    pub storm: usize,
+    #[source]
+    pub source: SolveError,
+}
+
+/// Run every storm of every height in parallel and fit the curves (module docs).
+pub fn run_fragility(st: &Structure<'_>, p: &FragilityParams, tick: &(dyn Fn() + Sync)) -> Result<FragilityResult, StormFailed> {
+    let storms = p.storms;
+    let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
+        .into_par_iter()
+        .map(|job| {
+            let (level, storm) = (job / storms, job % storms);
+            let h = p.heights_m[level];
+            let mut rng = realization_rng(p.seed, job);
+            let out = simulate_storm(st, &p.storm_input(h), &mut rng).map_err(|source| StormFailed { h13_m: h, storm, source });
+            tick();
+            out
+        })
+        .collect::<Result<_, _>>()?;
+    let levels: Vec<LevelResult> = p.heights_m.iter().zip(outcomes.chunks(storms.max(1))).map(|(&h, o)| LevelResult::new(h, o.to_vec(), &p.limits_m)).collect();
+    Ok(FragilityResult { fits: fit_levels(&levels, &p.limits_m), levels })
+}
+
+/// The lognormal fits of every limit, dynamic and rigid block.
+pub fn fit_levels(levels: &[LevelResult], limits_m: &[f64]) -> Vec<LimitFit> {
+    let im: Vec<f64> = levels.iter().map(|l| l.h13_m).collect();
+    let n: Vec<u64> = levels.iter().map(|l| l.storms.len() as u64).collect();
+    limits_m
+        .iter()
+        .enumerate()
+        .map(|(j, &limit_m)| {
+            let counts = |f: fn(&LevelResult) -> &Vec<u64>| levels.iter().map(|l| f(l)[j]).collect::<Vec<u64>>();
+            LimitFit {
+                limit_m,
+                dynamic: fit_lognormal(&im, &counts(|l| &l.dynamic_exceedances), &n),
+                rigid_block: fit_lognormal(&im, &counts(|l| &l.rigid_block_exceedances), &n),
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::loads::risetime::load_rng;
+    use rand::Rng;
+
+    #[test]
+    fn normal_cdf_matches_tables() {
+        // Abramowitz & Stegun Table 26.1 / standard values.
+        let cases = [
+            (0.0, 0.5),
+            (1.0, 0.841_344_746),
+            (-1.0, 0.158_655_254),
+            (-2.0, 0.022_750_132),
+            (1.96, 0.975_002_105),
+            (3.0, 0.998_650_102),
+            (-3.0, 0.001_349_898),
+            (-5.0, 2.866_515_72e-7),
+            (-8.0, 6.220_960_57e-16),
+        ];
+        for (z, want) in cases {
+            let got = normal_cdf(z);
+            assert!(((got - want) / want).abs() < 2e-7, "Φ({z}) = {got}, want {want}");
+        }
+        for z in [-6.0, -2.5, -0.3, 0.7, 4.0] {
+            assert!((normal_cdf(z) + normal_cdf(-z) - 1.0).abs() < 1e-15);
+        }
+        assert!((erfc(0.0) - 1.0).abs() < 2e-7);
+        assert!((erfc(0.5) - 0.479_500_122).abs() < 1e-7);
+    }
+
+    fn exact_counts(im: &[f64], median: f64, beta: f64, n: u64) -> Vec<u64> {
+        im.iter().map(|&x| (n as f64 * normal_cdf((x / median).ln() / beta)).round() as u64).collect()
+    }
+
+    #[test]
+    fn recovers_the_curve_from_large_exact_counts() {
+        let im: Vec<f64> = (0..10).map(|i| 1.0 + 0.5 * i as f64).collect();
+        for (median, beta) in [(3.0, 0.3), (2.2, 0.15), (4.5, 0.5)] {
+            let n = vec![100_000; im.len()];
+            let k = exact_counts(&im, median, beta, 100_000);
+            let f = fit_lognormal(&im, &k, &n).unwrap();
+            // 1 % asked; the rounding of the counts to whole storms costs about 1e-5.
+            assert!((f.median / median - 1.0).abs() < 1e-3, "θ = {} for {median}", f.median);
+            assert!((f.beta / beta - 1.0).abs() < 1e-3, "β = {} for {beta}", f.beta);
+            assert!((f.probability(median) - 0.5).abs() < 0.01);
+        }
+    }
+
+    #[test]
+    fn recovers_the_curve_from_sampled_counts_within_its_standard_errors() {
+        let im: Vec<f64> = (0..8).map(|i| 2.0 + 0.5 * i as f64).collect();
+        let (median, beta) = (3.5_f64, 0.25);
+        for seed in 0..20 {
+            let mut rng = load_rng(seed);
+            let n = vec![200_u64; im.len()];
+            let k: Vec<u64> = im.iter().map(|&x| {
+                let p = normal_cdf((x / median).ln() / beta);
+                (0..200).filter(|_| rng.gen::<f64>() < p).count() as u64
+            }).collect();
+            let f = fit_lognormal(&im, &k, &n).unwrap();
+            assert!((f.median.ln() - median.ln()).abs() < 4.0 * f.ln_median_se, "seed {seed}: θ = {} ± {}", f.median, f.ln_median_se);
+            assert!((f.beta - beta).abs() < 4.0 * f.beta_se, "seed {seed}: β = {} ± {}", f.beta, f.beta_se);
+            assert!(f.ln_median_se < 0.05 && f.beta_se < 0.1, "standard errors {} {}", f.ln_median_se, f.beta_se);
+        }
+    }
+
+    #[test]
+    fn the_maximum_is_a_maximum() {
+        let im = [1.0, 2.0, 3.0, 4.0];
+        let (k, n) = ([0, 3, 9, 10], [10, 10, 10, 10]);
+        let f = fit_lognormal(&im, &k, &n).unwrap();
+        let x: Vec<f64> = im.iter().map(|v: &f64| v.ln()).collect();
+        let l0 = -neg_log_likelihood(&x, &k, &n, f.median.ln(), f.beta);
+        assert!((l0 - f.log_likelihood).abs() < 1e-9);
+        for (da, db) in [(1e-3, 0.0), (-1e-3, 0.0), (0.0, 1e-3), (0.0, -1e-3)] {
+            assert!(-neg_log_likelihood(&x, &k, &n, f.median.ln() + da, f.beta + db) < l0);
+        }
+    }
+
+    #[test]
+    fn undetermined_counts_are_refused_with_a_reason() {
+        let im = [1.0, 2.0, 3.0, 4.0];
+        let n = [10, 10, 10, 10];
+        assert_eq!(fit_lognormal(&im, &[0, 0, 0, 0], &n), Err(FitFailure::NoExceedance));
+        assert_eq!(fit_lognormal(&im, &[10, 10, 10, 10], &n), Err(FitFailure::AllExceed));
+        assert_eq!(fit_lognormal(&im, &[0, 0, 10, 10], &n), Err(FitFailure::Separated));
+        assert_eq!(fit_lognormal(&im, &[0, 4, 10, 10], &n), Err(FitFailure::Separated));
+        assert_eq!(fit_lognormal(&[2.0], &[4], &[10]), Err(FitFailure::Separated));
+        // Decreasing probabilities: the constrained maximum is a flat curve, β at the bound.
+        assert_eq!(fit_lognormal(&im, &[10, 10, 0, 0], &n), Err(FitFailure::AtBounds));
+        assert_eq!(fit_lognormal(&im, &[9, 6, 3, 1], &n), Err(FitFailure::AtBounds));
+        // Two mixed neighbours are enough.
+        assert!(fit_lognormal(&im, &[0, 4, 7, 10], &n).is_ok());
+        // Levels without trials are ignored.
+        assert_eq!(fit_lognormal(&[1.0, 2.0], &[0, 0], &[0, 0]), Err(FitFailure::NoExceedance));
+    }
+
+    #[test]
+    fn storms_follow_the_grid() {
+        let p = FragilityParams { heights_m: vec![2.0, 4.0], storms: 3, limits_m: vec![0.1], storm_duration_s: 7200.0, period_s: 11.0, seed: 1 };
+        let s = p.storm_input(4.0);
+        assert_eq!((s.h13_m, s.hmax_m, s.waves, s.tide_m, s.force_factor, s.friction_factor), (4.0, 7.2, 655, 0.0, 1.0, 1.0));
+        let storms = [0.05, 0.1, 0.2].map(|v| StormOutcome { sliding_m: v, rigid_block_sliding_m: 2.0 * v, waves: 10, screened: 4, ..StormOutcome::default() });
+        let l = LevelResult::new(2.0, storms.to_vec(), &[0.05, 0.1, 0.3]);
+        assert_eq!(l.dynamic_exceedances, vec![2, 1, 0]);
+        assert_eq!(l.rigid_block_exceedances, vec![3, 2, 1]);
+        assert!((l.mean_sliding_m() - 0.35 / 3.0).abs() < 1e-15);
+        assert!((l.screened_share() - 0.4).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,204 @@
+//! `[fragility]`: the storms of a fragility analysis (PHYSICS.md §7), validated with the wave
+//! scenario they act on into [`FragilityParams`]. Every key is documented in `docs/fragility.md`.
+//!
+//! The rest of the file is a wave scenario (`[caisson]`, `[foundation]`, `[water]`, `[waves]` with
+//! kind = "irregular"); `[waves] significant_height_m` is the design wave (reported, not run),
+//! and the train keys `waves`, `realizations` and `seed` of `[waves]` are not used (the storms
+//! have their own duration and seed), so they are rejected rather than silently ignored.
+
+use super::waves::{validate_waves, WaveScenario};
+use super::{validate, Scenario, ScenarioError, ScenarioFile};
+use crate::analysis::fragility::FragilityParams;
+use crate::waves::breaking::MICHE_STEEPNESS;
+use crate::waves::dispersion::deep_water_wavelength_m;
+use serde::Deserialize;
+use std::path::Path;
+
+type R<T> = Result<T, ScenarioError>;
+
+/// `[fragility]` as written.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct FragilityTable {
+    /// The IM grid: H1/3 at the structure, m (> 0, increasing).
+    pub significant_heights_m: Option<Vec<f64>>,
+    /// Storms per height. Default 200.
+    pub storms: Option<i64>,
+    /// Sliding limits, m (> 0, increasing). Default [0.1, 0.3].
+    pub limits_m: Option<Vec<f64>>,
+    /// Duration of a storm, h. Default 2.
+    pub storm_duration_h: Option<f64>,
+    /// T1/3 of the storms, s. Default `[waves] period_s`.
+    pub period_s: Option<f64>,
+    /// Seed of the storms' generators. Default 1.
+    pub seed: Option<i64>,
+}
+
+/// A validated fragility analysis: the structure, its site and the storms.
+#[derive(Debug, Clone)]
+pub struct FragilitySetup {
+    pub scenario: Scenario,
+    pub waves: WaveScenario,
+    pub params: FragilityParams,
+}
+
+/// At most this many heights and limits.
+const MAX_LEVELS: usize = 1000;
+/// At most this many storms in all (heights × storms).
+const MAX_STORMS: usize = 10_000_000;
+
+/// A non-empty, strictly increasing list of finite numbers in (0, `hi`).
+fn increasing(key: &str, v: &[f64], hi: f64, unit: &str) -> R<()> {
+    if v.is_empty() {
+        return Err(ScenarioError::range(key, "[]", "must list at least one value"));
+    }
+    if v.len() > MAX_LEVELS {
+        return Err(ScenarioError::range(key, format!("{} values", v.len()), format!("at most {MAX_LEVELS} values")));
+    }
+    for (i, x) in v.iter().enumerate() {
+        if !(x.is_finite() && *x > 0.0 && *x < hi) {
+            return Err(ScenarioError::range(&format!("{key}[{i}]"), x, format!("must be a finite number > 0 and < {hi} ({unit})")));
+        }
+        if i > 0 && *x <= v[i - 1] {
+            return Err(ScenarioError::range(&format!("{key}[{i}]"), x, format!("must be larger than the value before it ({}): the list must increase", v[i - 1])));
+        }
+    }
+    Ok(())
+}
+
+/// Validate the scenario, its waves and `[fragility]`. `base_dir` as in [`validate`].
+pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySetup> {
+    let t = file.fragility.as_ref().ok_or_else(|| ScenarioError::missing("[fragility]", "add a [fragility] table with significant_heights_m (and storms, limits_m, ...)"))?;
+    if file.load.is_some() {
+        return Err(ScenarioError::Conflict { message: "a fragility runs storms of waves from [waves]; remove the [load] table".into() });
+    }
+    if file.campaign.is_some() {
+        return Err(ScenarioError::Conflict { message: "a fragility file cannot hold a [campaign] table; run the campaign from its own file".into() });
+    }
+    let wt = file.waves.as_ref().ok_or_else(|| ScenarioError::missing("[waves]", "a fragility needs a [waves] table with kind = \"irregular\", significant_height_m and period_s"))?;
+    for (key, given) in [("waves", wt.waves.is_some()), ("realizations", wt.realizations.is_some()), ("seed", wt.seed.is_some())] {
+        if given {
+            return Err(ScenarioError::Conflict {
+                message: format!("`[waves] {key}` is not used by a fragility (storms have [fragility] storm_duration_h, storms and seed); remove it"),
+            });
+        }
+    }
+    let scenario = validate(file, base_dir)?;
+    let waves = validate_waves(file, &scenario.caisson)?;
+    if wt.kind != "irregular" {
+        return Err(ScenarioError::range("[waves] kind", format!("\"{}\"", wt.kind), "must be \"irregular\" for a fragility (storms of Rayleigh waves of the given H1/3)"));
+    }
+    let period_s = match t.period_s {
+        None => waves.period_s,
+        Some(v) if v.is_finite() && v > 0.0 && v <= 1e3 => v,
+        Some(v) => return Err(ScenarioError::range("[fragility] period_s", v, "must be a finite number > 0 and ≤ 1000 (s)")),
+    };
+    let heights = t.significant_heights_m.as_ref().ok_or_else(|| ScenarioError::missing("[fragility] significant_heights_m", "the grid of H1/3 at the structure, m, increasing (e.g. [3, 4, 5, 6, 7])"))?;
+    // No wave is steeper than Miche's deep-water limit (as for [waves] significant_height_m).
+    let limit = MICHE_STEEPNESS * deep_water_wavelength_m(period_s);
+    increasing("[fragility] significant_heights_m", heights, limit, &format!("m; below 0.142 L0 = {limit:.3} m for T = {period_s} s"))?;
+    let limits_m = t.limits_m.clone().unwrap_or_else(|| vec![0.1, 0.3]);
+    increasing("[fragility] limits_m", &limits_m, 1e3, "m")?;
+    let storms = match t.storms {
+        None => 200,
+        Some(n) if (1..=1_000_000).contains(&n) => n as usize,
+        Some(n) => return Err(ScenarioError::range("[fragility] storms", n, "must be a whole number from 1 to 1000000")),
+    };
+    if storms * heights.len() > MAX_STORMS {
+        return Err(ScenarioError::range(
+            "[fragility] storms",
+            storms,
+            format!("times {} heights is {} storms; at most {MAX_STORMS} in all", heights.len(), storms * heights.len()),
+        ));
+    }
+    let storm_duration_s = match t.storm_duration_h {
+        None => 2.0,
+        Some(v) if v.is_finite() && v > 0.0 && v <= 72.0 => v,
+        Some(v) => return Err(ScenarioError::range("[fragility] storm_duration_h", v, "must be a finite number > 0 and ≤ 72 (h)")),
+    } * 3600.0;
+    let seed = match t.seed {
+        None => 1,
+        Some(s) if s >= 0 => s as u64,
+        Some(s) => return Err(ScenarioError::range("[fragility] seed", s, "must be a whole number ≥ 0")),
+    };
+    let params = FragilityParams { heights_m: heights.clone(), storms, limits_m, storm_duration_s, period_s, seed };
+    Ok(FragilitySetup { scenario, waves, params })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::parse_str;
+
+    const BASE: &str = r#"
+[caisson]
+width_m = 20.0
+height_m = 22.0
+base_depth_m = 16.0
+weight_in_water_kn = 5850.0
+[foundation]
+e100_kpa = 3.5e5
+[water]
+density_kg_per_m3 = 1025.0
+depth_at_toe_m = 20.0
+depth_at_wall_m = 14.0
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.0
+[fragility]
+significant_heights_m = [4.0, 6.0, 8.0]
+"#;
+
+    fn run(text: &str) -> R<FragilitySetup> {
+        validate_fragility(&parse_str(text, Path::new("f.toml"))?, Path::new("."))
+    }
+
+    fn key_of(text: &str) -> String {
+        match run(text) {
+            Err(e) => e.key().map(str::to_string).unwrap_or_else(|| format!("{e}")),
+            Ok(_) => panic!("expected an error for\n{text}"),
+        }
+    }
+
+    #[test]
+    fn defaults() {
+        let p = run(BASE).unwrap().params;
+        assert_eq!(p, FragilityParams { heights_m: vec![4.0, 6.0, 8.0], storms: 200, limits_m: vec![0.1, 0.3], storm_duration_s: 7200.0, period_s: 12.0, seed: 1 });
+        assert_eq!(p.waves_per_storm(), 600);
+        let text = BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9");
+        let p = run(&text).unwrap().params;
+        assert_eq!((p.storms, p.limits_m.clone(), p.storm_duration_s, p.period_s, p.seed, p.waves_per_storm()), (7, vec![0.05], 5400.0, 10.0, 9, 540));
+    }
+
+    #[test]
+    fn bad_inputs_name_their_key() {
+        let h = "significant_heights_m = [4.0, 6.0, 8.0]";
+        let cases = [
+            (h, "significant_heights_m = []", "[fragility] significant_heights_m"),
+            (h, "significant_heights_m = [4.0, -6.0]", "[fragility] significant_heights_m[1]"),
+            (h, "significant_heights_m = [4.0, 4.0]", "[fragility] significant_heights_m[1]"),
+            (h, "significant_heights_m = [4.0, nan]", "[fragility] significant_heights_m[1]"),
+            (h, "significant_heights_m = [4.0, 40.0]", "[fragility] significant_heights_m[1]"),
+            (h, "", "[fragility] significant_heights_m"),
+            (h, "significant_heights_m = [4.0]\nstorms = 0", "[fragility] storms"),
+            (h, "significant_heights_m = [4.0]\nstorms = 2000000", "[fragility] storms"),
+            (h, "significant_heights_m = [4.0, 6.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0, 16.0]\nstorms = 1000000", "[fragility] storms"),
+            (h, "significant_heights_m = [4.0]\nlimits_m = [0.3, 0.1]", "[fragility] limits_m[1]"),
+            (h, "significant_heights_m = [4.0]\nlimits_m = [0.0]", "[fragility] limits_m[0]"),
+            (h, "significant_heights_m = [4.0]\nlimits_m = []", "[fragility] limits_m"),
+            (h, "significant_heights_m = [4.0]\nstorm_duration_h = 0", "[fragility] storm_duration_h"),
+            (h, "significant_heights_m = [4.0]\nperiod_s = -1", "[fragility] period_s"),
+            (h, "significant_heights_m = [4.0]\nseed = -1", "[fragility] seed"),
+            ("kind = \"irregular\"\nsignificant_height_m = 7.5", "kind = \"regular\"\nheight_m = 7.5", "[waves] kind"),
+        ];
+        for (from, to, key) in cases {
+            assert!(BASE.contains(from));
+            assert_eq!(key_of(&BASE.replace(from, to)), key, "{to}");
+        }
+        assert_eq!(key_of(&BASE.replace("[fragility]\n", "").replace(h, "")), "[fragility]");
+        assert!(matches!(run(&BASE.replace(h, "significant_heights_m = [4.0]\nfoo = 1")), Err(ScenarioError::Syntax { .. })));
+        assert!(matches!(run(&BASE.replace("period_s = 12.0", "period_s = 12.0\nseed = 3")), Err(ScenarioError::Conflict { .. })));
+        assert!(matches!(run(&BASE.replace("period_s = 12.0", "period_s = 12.0\nwaves = 3")), Err(ScenarioError::Conflict { .. })));
+    }
+}
