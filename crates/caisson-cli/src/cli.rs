@@ -24,6 +24,8 @@ pub enum Command {
     Validation(ValidationArgs),
     /// Lifetime Monte Carlo of performance-based design: expected sliding, percentiles, exceedance.
     Design(DesignArgs),
+    /// Fragility curves: P(storm sliding > limit) against H1/3 at the structure, lognormal fits.
+    Fragility(FragilityArgs),
 }
 
 #[derive(Args, Debug)]
@@ -69,6 +71,21 @@ pub struct DesignArgs {
     /// Stop after this many lives (to exercise --resume).
     #[arg(long, hide = true)]
     pub stop_after: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct FragilityArgs {
+    /// Fragility file (TOML): an irregular-wave scenario with a `[fragility]` table.
+    pub scenario: PathBuf,
+    /// Print the results as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Write fragility.json, fragility.csv and fragility.svg into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Worker threads (0: one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
 }
 
 #[derive(Args, Debug)]

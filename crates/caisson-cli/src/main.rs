@@ -6,6 +6,7 @@
 mod cli;
 mod cmd_campaign;
 mod cmd_design;
+mod cmd_fragility;
 mod cmd_loads;
 mod cmd_run;
 mod cmd_spectrum;
@@ -49,6 +50,7 @@ fn main() -> ExitCode {
         cli::Command::Campaign(a) => cmd_campaign::run(a),
         cli::Command::Validation(a) => cmd_validation::run(a),
         cli::Command::Design(a) => cmd_design::run(a),
+        cli::Command::Fragility(a) => cmd_fragility::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,238 @@
+//! `caisson fragility`: the JSON contract of docs/fragility.md, probabilities that rise with the
+//! wave height, thread-count determinism, the output files, the shipped example, and keyed errors
+//! for `[fragility]` (exit code 2, `Error:` naming the key, nothing written).
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+/// The prototype caisson of examples/fragility.toml made lighter (W' = 5000 kN/m instead of
+/// 6200: Goda's static sliding safety factor about 0.85 once the waves reach the breaking limit
+/// at the wall), with storms of 0.1 h (28 waves). The heights are 3 m apart: at 3 and 6 m no wave
+/// can slide the caisson (every storm is screened or slides by millimetres), at 12 and 15 m every
+/// storm has several waves at the breaking limit, each sliding it by centimetres, and only 9 m is
+/// in the transition. The probabilities then rise from 0 to 1 with H1/3 by far more than the
+/// sampling noise of 8 storms (seeds 1-6 all give non-decreasing counts), so the test does not
+/// depend on a lucky seed.
+const BASE: &str = r#"
+[caisson]
+width_m = 20.0
+length_m = 1.0
+height_m = 24.5
+base_depth_m = 17.5
+weight_in_water_kn = 5000.0
+[foundation]
+mu_static = 0.6
+mu_dynamic = 0.6
+e100_kpa = 3.5e5
+density_kg_per_m3 = 2000
+damping_mode = "elastic"
+vertical_damping = "springs"
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 20.0
+depth_at_wall_m = 16.5
+seabed_slope = 0.01
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.8
+[solver]
+dt_s = 1e-3
+dt_max_s = 0.05
+error_tolerance_m = 1e-6
+[fragility]
+significant_heights_m = [3.0, 6.0, 9.0, 12.0, 15.0]
+storms = 8
+limits_m = [0.05, 0.2]
+storm_duration_h = 0.1
+seed = 1
+"#;
+
+fn caisson() -> Command {
+    Command::cargo_bin("caisson").expect("the caisson binary is built")
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// BASE with one exact piece of text replaced (panics if it is not there).
+fn edit(from: &str, to: &str) -> String {
+    assert!(BASE.contains(from), "test bug: `{from}` is not in the base file");
+    BASE.replacen(from, to, 1)
+}
+
+fn run_json(dir: &Path, text: &str, threads: &str) -> (String, Value) {
+    let f = write(dir, "fragility.toml", text);
+    let out = caisson().args(["fragility", f.to_str().unwrap(), "--json", "--threads", threads]).output().unwrap();
+    assert!(out.status.success(), "stderr:\n{}", String::from_utf8_lossy(&out.stderr));
+    let s = String::from_utf8(out.stdout).unwrap();
+    let v = serde_json::from_str(&s).unwrap();
+    (s, v)
+}
+
+fn finite(v: &Value, what: &str) -> f64 {
+    let x = v.as_f64().unwrap_or_else(|| panic!("{what} is not a number: {v}"));
+    assert!(x.is_finite(), "{what} = {x}");
+    x
+}
+
+#[test]
+fn json_contract_and_probabilities_rising_with_height() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, v) = run_json(dir.path(), BASE, "0");
+    for key in ["period_s", "storm_duration_h", "hmax_ratio", "rigid_block_mu"] {
+        finite(&v[key], key);
+    }
+    assert_eq!(v["scenario"], "fragility.toml");
+    assert_eq!(v["waves_per_storm"], 28);
+    assert_eq!(v["storms"], 8);
+    assert_eq!(v["seed"], 1);
+    assert_eq!(v["limits_m"], serde_json::json!([0.05, 0.2]));
+    finite(&v["design_wave"]["goda_sliding_safety_factor"], "design_wave.goda_sliding_safety_factor");
+    let levels = v["levels"].as_array().unwrap();
+    assert_eq!(levels.len(), 5);
+    let mut previous = [[0.0_f64; 2]; 2];
+    for (i, l) in levels.iter().enumerate() {
+        assert_eq!(finite(&l["significant_height_m"], "height"), [3.0, 6.0, 9.0, 12.0, 15.0][i]);
+        assert!((finite(&l["hmax_m"], "hmax_m") - 1.8 * [3.0, 6.0, 9.0, 12.0, 15.0][i]).abs() < 1e-12);
+        for key in ["mean_sliding_m", "max_sliding_m", "mean_rigid_block_sliding_m", "max_rigid_block_sliding_m", "screened_share", "simulated_waves", "goda_sliding_safety_factor"] {
+            assert!(finite(&l[key], key) >= 0.0, "{key}");
+        }
+        assert_eq!(l["storms"], 8);
+        assert_eq!(l["storm_sliding_m"].as_array().unwrap().len(), 8);
+        assert_eq!(l["storm_rigid_block_sliding_m"].as_array().unwrap().len(), 8);
+        let ex = l["exceedance"].as_array().unwrap();
+        assert_eq!(ex.len(), 2);
+        for (j, e) in ex.iter().enumerate() {
+            assert_eq!(finite(&e["limit_m"], "limit_m"), [0.05, 0.2][j]);
+            for (m, model) in ["dynamic", "rigid_block"].iter().enumerate() {
+                let p = finite(&e[format!("{model}_probability")], "probability");
+                let k = e[format!("{model}_count")].as_u64().unwrap();
+                assert!((0.0..=1.0).contains(&p));
+                assert_eq!(p, k as f64 / 8.0);
+                // The counts agree with the storm slidings.
+                let key = if m == 0 { "storm_sliding_m" } else { "storm_rigid_block_sliding_m" };
+                let by_hand = l[key].as_array().unwrap().iter().filter(|s| s.as_f64().unwrap() > [0.05, 0.2][j]).count() as u64;
+                assert_eq!(k, by_hand);
+                assert!(p >= previous[m][j], "P({model} > {}) falls from {} to {p} at level {i}", [0.05, 0.2][j], previous[m][j]);
+                previous[m][j] = p;
+            }
+        }
+    }
+    // From none at the lowest height to all at the highest (the configuration is chosen so).
+    assert_eq!(levels[0]["exceedance"][0]["dynamic_count"], 0);
+    assert_eq!(levels[4]["exceedance"][0]["dynamic_count"], 8);
+    let fits = v["fits"].as_array().unwrap();
+    assert_eq!(fits.len(), 2);
+    for f in fits {
+        finite(&f["limit_m"], "limit_m");
+        for model in ["dynamic", "rigid_block"] {
+            let x = &f[model];
+            if x["fitted"].as_bool().unwrap() {
+                let median = finite(&x["median_m"], "median_m");
+                assert!((3.0..=15.0).contains(&median), "median {median}");
+                for key in ["beta", "ln_median_se", "beta_se"] {
+                    assert!(finite(&x[key], key) > 0.0);
+                }
+                finite(&x["log_likelihood"], "log_likelihood");
+            } else {
+                let reason = x["reason"].as_str().unwrap();
+                assert!(["no-exceedance", "all-exceed", "separated", "at-bounds"].contains(&reason), "{reason}");
+                assert!(!x["message"].as_str().unwrap().is_empty());
+            }
+        }
+    }
+}
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let (one, _) = run_json(dir.path(), BASE, "1");
+    let (two, _) = run_json(dir.path(), BASE, "2");
+    assert_eq!(one, two);
+}
+
+#[test]
+fn out_writes_json_csv_and_svg() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(dir.path(), "fragility.toml", BASE);
+    let out = dir.path().join("out");
+    let o = caisson().args(["fragility", f.to_str().unwrap(), "--out", out.to_str().unwrap()]).output().unwrap();
+    assert!(o.status.success(), "stderr:\n{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains("P(S > 0.05 m)") && text.contains("Lognormal fits"), "{text}");
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(out.join("fragility.json")).unwrap()).unwrap();
+    assert_eq!(json["levels"].as_array().unwrap().len(), 5);
+    let csv = std::fs::read_to_string(out.join("fragility.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 1 + 5 * 2, "a header and one row per (height, limit)");
+    assert!(lines[0].starts_with("significant_height_m,hmax_m,storms,limit_m,dynamic_count,dynamic_probability,dynamic_fitted_probability"));
+    assert!(!csv.contains("NaN") && !csv.to_lowercase().contains("inf"));
+    let svg = std::fs::read_to_string(out.join("fragility.svg")).unwrap();
+    assert!(svg.starts_with("<svg"));
+    for label in ["P(S &gt; 0.05 m), dynamic", "P(S &gt; 0.2 m), rigid block"] {
+        assert!(svg.contains(label), "no panel `{label}`");
+    }
+    let mut names: Vec<String> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    names.sort();
+    assert_eq!(names, ["fragility.csv", "fragility.json", "fragility.svg"]);
+}
+
+#[test]
+fn the_shipped_example_runs_with_fewer_storms() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let text = std::fs::read_to_string(root.join("examples/fragility.toml")).unwrap();
+    let fewer: String = text.lines().map(|l| if l.starts_with("storms = ") { "storms = 2" } else { l }).collect::<Vec<_>>().join("\n");
+    assert_ne!(fewer, text.trim_end(), "the example's storms line changed; update this test");
+    let dir = tempfile::tempdir().unwrap();
+    let (_, v) = run_json(dir.path(), &fewer, "0");
+    assert_eq!(v["levels"].as_array().unwrap().len(), 9);
+    let sf = finite(&v["design_wave"]["goda_sliding_safety_factor"], "design SF");
+    assert!((1.15..1.3).contains(&sf), "the example's design wave should have a static sliding safety factor of about 1.2, not {sf}");
+}
+
+/// Bad input: exit code 2, `Error:` naming `key`, no panic, nothing on stdout, `out` not created.
+fn bad(text: &str, key: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "fragility.toml", text);
+    let out = caisson().current_dir(dir.path()).args(["fragility", "fragility.toml", "--out", "out"]).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "exit code for `{key}`; stderr:\n{stderr}");
+    assert!(stderr.starts_with("Error:"), "{stderr}");
+    assert!(stderr.contains(key), "`{key}` not named in:\n{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(out.stdout.is_empty(), "stdout: {}", String::from_utf8_lossy(&out.stdout));
+    let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(names, ["fragility.toml"], "something was written");
+}
+
+#[test]
+fn bad_inputs_name_their_key_and_write_nothing() {
+    let heights = "significant_heights_m = [3.0, 6.0, 9.0, 12.0, 15.0]";
+    bad(&edit(heights, "significant_heights_m = [3.0, 9.0, 6.0]"), "[fragility] significant_heights_m[2]");
+    bad(&edit(heights, "significant_heights_m = [3.0, -6.0]"), "[fragility] significant_heights_m[1]");
+    bad(&edit(heights, "significant_heights_m = [3.0, 60.0]"), "[fragility] significant_heights_m[1]");
+    bad(&edit(heights, "significant_heights_m = []"), "[fragility] significant_heights_m");
+    bad(&edit(heights, ""), "[fragility] significant_heights_m");
+    bad(&edit("storms = 8", "storms = 0"), "[fragility] storms");
+    bad(&edit("storms = 8", "storms = 2.5"), "storms");
+    bad(&edit("limits_m = [0.05, 0.2]", "limits_m = [0.05, -0.2]"), "[fragility] limits_m[1]");
+    bad(&edit("limits_m = [0.05, 0.2]", "limits_m = [0.2, 0.05]"), "[fragility] limits_m[1]");
+    bad(&edit("storm_duration_h = 0.1", "storm_duration_h = 0"), "[fragility] storm_duration_h");
+    bad(&edit("storm_duration_h = 0.1", "storm_duration_h = 0.1\nperiod_s = nan"), "[fragility] period_s");
+    bad(&edit("seed = 1", "seed = -1"), "[fragility] seed");
+    bad(&edit("seed = 1", "seed = 1\nscreen = false"), "screen");
+    bad(&BASE[..BASE.find("[fragility]").unwrap()], "[fragility]");
+    bad(&edit("kind = \"irregular\"\nsignificant_height_m = 7.5", "kind = \"regular\"\nheight_m = 7.5"), "[waves] kind");
+    bad(&edit("period_s = 12.8\n[solver]", "period_s = 12.8\nseed = 4\n[solver]"), "[waves] seed");
+    bad(&edit("weight_in_water_kn = 5000.0", "weight_in_water_kn = -5000.0"), "[caisson] weight_in_water_kn");
+    // A file that is not there.
+    let dir = tempfile::tempdir().unwrap();
+    let out = caisson().current_dir(dir.path()).args(["fragility", "nothere.toml"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("Error:"));
+}
