@@ -261,9 +261,10 @@ pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> 
             out.screened += 1;
             continue;
         }
-        let Ok(loads) = model.evaluate_with(h, s.period_s, model.options.regime) else {
-            // A forced regime the wave contradicts: let the criterion decide this wave.
-            continue;
+        // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
+        let loads = match model.evaluate_with(h, s.period_s, model.options.regime) {
+            Ok(l) => l,
+            Err(_) => model.evaluate_with(h, s.period_s, RegimeChoice::Auto).expect("the automatic regime always applies"),
         };
         let event = event_of(&loads, loads.rise_time.map(|d| d.at_deviate(z)));
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);

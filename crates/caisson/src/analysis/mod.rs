@@ -1,5 +1,5 @@
-//! Drivers: a single run, the shock spectrum, wave-train realizations and campaigns. (Lifetime
-//! Monte Carlo and fragility come with their issue.)
+//! Drivers: a single run, the shock spectrum, wave-train realizations and campaigns, the lifetime
+//! Monte Carlo of performance-based design and fragility curves.
 
 pub mod campaign;
 pub mod closed_form;
