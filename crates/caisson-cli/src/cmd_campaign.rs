@@ -29,6 +29,19 @@ pub fn load_campaign(path: &Path, damping_mode: Option<&str>) -> Result<Campaign
     validate_campaign(&file, path.parent().unwrap_or(Path::new(".")), stem).map_err(input_err)
 }
 
+/// The trains of a campaign, the height being per condition.
+fn campaign_train(c: &Campaign) -> String {
+    let t = &c.setups[0].waves.train;
+    describe_train(t).replace(&format!("H = {} m", t.height_m()), "H per condition").replace(&format!("H1/3 = {} m", t.height_m()), "H1/3 per condition")
+}
+
+fn damping_name(m: caisson::foundation::DampingMode) -> &'static str {
+    match m {
+        caisson::foundation::DampingMode::Total => "total",
+        caisson::foundation::DampingMode::Elastic => "elastic",
+    }
+}
+
 pub fn condition_json(r: &ConditionResult, with_realizations: bool) -> Value {
     let s = &r.summary;
     let mut v = json!({
@@ -59,12 +72,12 @@ pub fn campaign_json(c: &Campaign, results: &[ConditionResult], with_realization
     json!({
         "title": c.title,
         "waves": {
-            "description": describe_train(&first.waves.train),
+            "description": campaign_train(c),
             "waves": first.waves.train.waves,
             "realizations": first.waves.train.realizations,
             "seed": first.waves.train.seed,
         },
-        "damping_mode": format!("{:?}", first.scenario.foundation.damping_mode).to_lowercase(),
+        "damping_mode": damping_name(first.scenario.foundation.damping_mode),
         "conditions": results.iter().map(|r| condition_json(r, with_realizations)).collect::<Vec<_>>(),
     })
 }
@@ -73,9 +86,9 @@ pub fn table_text(c: &Campaign, results: &[ConditionResult]) -> String {
     let first = &c.setups[0];
     let mut t = String::new();
     let _ = writeln!(t, "{}", c.title);
-    let _ = writeln!(t, "{} conditions × {} realizations × {} waves; {}; damping_mode {:?}",
-        results.len(), first.waves.train.realizations, first.waves.train.waves, describe_train(&first.waves.train).replace(&format!("H = {} m", first.waves.train.height_m()), "H = (per condition)"),
-        first.scenario.foundation.damping_mode);
+    let _ = writeln!(t, "{} conditions × {} realizations × {} waves; {}; damping_mode {}",
+        results.len(), first.waves.train.realizations, first.waves.train.waves, campaign_train(c),
+        damping_name(first.scenario.foundation.damping_mode));
     let _ = writeln!(t);
     let _ = writeln!(t, "  #  H (m)  W (kN)  regime        nominal       SF_sl   sliding mean / min / max (mm)    rigid block mean / min / max (mm)");
     for (i, r) in results.iter().enumerate() {

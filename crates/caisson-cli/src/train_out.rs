@@ -113,6 +113,9 @@ pub fn train_summary_json(sc: &Scenario, ws: &WaveScenario, regime: RegimeChoice
     let iterations: u64 = s.realizations.iter().map(|r| r.solver.newton_iterations).sum();
     let substeps: u64 = s.realizations.iter().map(|r| r.solver.substeps).sum();
     let rejected: u64 = s.realizations.iter().map(|r| r.solver.rejected_steps).sum();
+    let forced: u64 = s.realizations.iter().map(|r| r.solver.forced_min_steps).sum();
+    let min_step = s.realizations.iter().map(|r| r.solver.min_step_s).fold(f64::INFINITY, f64::min);
+    let max_step = s.realizations.iter().map(|r| r.solver.max_step_s).fold(0.0, f64::max);
     let max_residual = s.realizations.iter().map(|r| r.solver.max_residual).fold(0.0, f64::max);
     json!({
         "sliding_m": spread_json(&s.sliding_m, 1.0),
@@ -138,6 +141,9 @@ pub fn train_summary_json(sc: &Scenario, ws: &WaveScenario, regime: RegimeChoice
             "newton_iterations": iterations,
             "substeps": substeps,
             "rejected_steps": rejected,
+            "forced_min_steps": forced,
+            "min_step_s": if min_step.is_finite() { min_step } else { 0.0 },
+            "max_step_s": max_step,
             "max_residual": max_residual,
         },
     })

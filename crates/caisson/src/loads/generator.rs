@@ -149,7 +149,8 @@ pub fn realization_waves(model: &WaveLoadModel, spec: &TrainSpec, choice: Regime
             height_m: h,
             period_s: t,
             regime: loads.regime.regime,
-            rise_time_s: loads.rise_time.map(|d| d.at_deviate(z)),
+            // Only an impulsive (breaking) wave uses its rise time; z is drawn for every wave.
+            rise_time_s: if loads.regime.regime == Regime::Breaking { loads.rise_time.map(|d| d.at_deviate(z)) } else { None },
         });
     }
     Ok(RealizationWaves { records, limited_waves })

@@ -421,9 +421,6 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
     if dt_s > duration_s {
         return Err(ScenarioError::range("[solver] dt_s", dt_s, format!("must not exceed the simulated time {duration_s} s")));
     }
-    if duration_s / dt_s > 1e9 {
-        return Err(ScenarioError::range("[solver] dt_s", dt_s, format!("gives {:.2e} steps for {duration_s} s; at most 1e9", duration_s / dt_s)));
-    }
     let gamma = match t.gamma {
         Some(v) => within("[solver] gamma", v, 0.5, 1.0, "-")?,
         None => d.gamma,
@@ -450,6 +447,10 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
         };
         Stepping::Adaptive(AdaptiveParams { dt_min_s, dt_max_s, tolerance_m })
     } else {
+        // Fixed steps: dt_s is every step, so bound their number.
+        if duration_s / dt_s > 1e9 {
+            return Err(ScenarioError::range("[solver] dt_s", dt_s, format!("gives {:.2e} steps for {duration_s} s; at most 1e9", duration_s / dt_s)));
+        }
         for (key, given) in [("dt_min_s", t.dt_min_s.is_some()), ("dt_max_s", t.dt_max_s.is_some()), ("error_tolerance_m", t.error_tolerance_m.is_some())] {
             if given {
                 return Err(ScenarioError::Conflict { message: format!("`[solver] {key}` is only used with stepping = \"adaptive\"; remove it or set stepping = \"adaptive\"") });
