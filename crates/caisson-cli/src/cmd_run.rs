@@ -5,9 +5,23 @@ use crate::output::{ensure_dir, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use crate::input_err;
 use anyhow::{Context, Result};
-use caisson::analysis::run::{self as engine, History, RunSummary};
+use caisson::analysis::run::{self as engine, FoundationSummary, History, RunSummary};
 use caisson::scenario::{self, Scenario};
 use serde_json::{json, Value};
+
+/// The `foundation` object of the JSON summaries (contract keys, docs/cli.md).
+pub fn foundation_json(f: &FoundationSummary) -> Value {
+    json!({
+        "kx_kn_per_m": f.kx_n_per_m / 1e3,
+        "ky_kn_per_m": f.ky_n_per_m / 1e3,
+        "damping_kns_per_m": f.damping_ns_per_m / 1e3,
+        "mass_kg": f.mass_kg,
+        "added_mass_kg": f.added_mass_kg,
+        "natural_period_s": f.natural_period_s,
+        "static_settlement_m": f.static_settlement_m,
+        "static_sliding_resistance_kn": f.static_sliding_resistance_n / 1e3,
+    })
+}
 
 /// The JSON summary (contract keys listed in docs/cli.md). Forces in kN.
 pub fn summary_json(s: &RunSummary, spring_x: &[f64]) -> Value {
@@ -28,16 +42,7 @@ pub fn summary_json(s: &RunSummary, spring_x: &[f64]) -> Value {
         "final_rotation_rad": s.final_rotation_rad,
         "duration_s": s.duration_s,
         "spring_positions_m": spring_x,
-        "foundation": {
-            "kx_kn_per_m": f.kx_n_per_m / 1e3,
-            "ky_kn_per_m": f.ky_n_per_m / 1e3,
-            "damping_kns_per_m": f.damping_ns_per_m / 1e3,
-            "mass_kg": f.mass_kg,
-            "added_mass_kg": f.added_mass_kg,
-            "natural_period_s": f.natural_period_s,
-            "static_settlement_m": f.static_settlement_m,
-            "static_sliding_resistance_kn": f.static_sliding_resistance_n / 1e3,
-        },
+        "foundation": foundation_json(f),
         "solver": {
             "steps": s.solver.steps,
             "newton_iterations": s.solver.newton_iterations,

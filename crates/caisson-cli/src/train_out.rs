@@ -2,7 +2,7 @@
 //! CSV and the seed's Figs. 12/14-style plots of one realization. Also the progress bar and the
 //! thread pool shared with `caisson campaign`.
 
-use crate::cmd_run::{check_finite, history_csv, springs_csv, write_plots};
+use crate::cmd_run::{check_finite, foundation_json, history_csv, springs_csv, write_plots};
 use crate::input_err;
 use crate::output::{ensure_dir, write_atomic};
 use crate::plot::{panels, Panel, Series};
@@ -126,16 +126,7 @@ pub fn train_summary_json(sc: &Scenario, ws: &WaveScenario, regime: RegimeChoice
         "regime": choice_name(regime),
         "waves": train_json(&ws.train),
         "realizations": s.realizations.iter().map(realization_json).collect::<Vec<_>>(),
-        "foundation": {
-            "kx_kn_per_m": f.kx_n_per_m / 1e3,
-            "ky_kn_per_m": f.ky_n_per_m / 1e3,
-            "damping_kns_per_m": f.damping_ns_per_m / 1e3,
-            "mass_kg": f.mass_kg,
-            "added_mass_kg": f.added_mass_kg,
-            "natural_period_s": f.natural_period_s,
-            "static_settlement_m": f.static_settlement_m,
-            "static_sliding_resistance_kn": f.static_sliding_resistance_n / 1e3,
-        },
+        "foundation": foundation_json(&f),
         "solver": {
             "steps": steps,
             "newton_iterations": iterations,
