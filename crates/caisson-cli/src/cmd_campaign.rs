@@ -185,9 +185,9 @@ pub fn run(args: CampaignArgs) -> Result<()> {
     let json = campaign_json(&campaign, &results, false);
     check_finite(&json, "campaign")?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
-        print!("{}", table_text(&campaign, &results));
+        crate::say!("{}", table_text(&campaign, &results));
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
@@ -197,7 +197,7 @@ pub fn run(args: CampaignArgs) -> Result<()> {
         write_atomic(&dir.join("campaign.csv"), &campaign_csv(&results)?)?;
         campaign_plots(dir, "campaign", &campaign.title, &results)?;
         if !args.json {
-            println!("\nWrote campaign.json (with every realization and wave), campaign.csv, campaign.svg, campaign_vs_height.svg to {}", dir.display());
+            crate::sayln!("\nWrote campaign.json (with every realization and wave), campaign.csv, campaign.svg, campaign_vs_height.svg to {}", dir.display());
         }
     }
     Ok(())

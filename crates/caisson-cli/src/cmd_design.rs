@@ -238,7 +238,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     });
     check_finite(&json, "design")?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
         let mut t = String::new();
         let _ = writeln!(t, "{} lives of {years} years (seed {}), {} waves, {} through the dynamic model, {:.4} % screened{}",
@@ -253,7 +253,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
         for ((th, a), (_, b)) in sd.exceedance.iter().zip(&sr.exceedance) {
             let _ = writeln!(t, "P(sliding > {:<5} m)             {:>10.4}      {:>10.4}", th, a, b);
         }
-        print!("{t}");
+        crate::say!("{t}");
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
@@ -262,7 +262,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         plots(dir, title, &dynamic, &rigid)?;
         if !args.json {
-            println!("\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}", dir.display());
+            crate::sayln!("\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}", dir.display());
         }
     }
     Ok(())

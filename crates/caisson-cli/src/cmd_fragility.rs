@@ -225,9 +225,9 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     let json = fragility_json(&setup, name, &result, rigid_block_mu);
     check_finite(&json, "fragility")?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
-        print!("{}", table_text(&setup, name, &result, rigid_block_mu));
+        crate::say!("{}", table_text(&setup, name, &result, rigid_block_mu));
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
@@ -235,7 +235,7 @@ pub fn run(args: FragilityArgs) -> Result<()> {
         write_atomic(&dir.join("fragility.csv"), &fragility_csv(&setup, &result)?)?;
         fragility_plot(&dir.join("fragility.svg"), name, &result)?;
         if !args.json {
-            println!("\nWrote fragility.json, fragility.csv, fragility.svg to {}", dir.display());
+            crate::sayln!("\nWrote fragility.json, fragility.csv, fragility.svg to {}", dir.display());
         }
     }
     Ok(())

@@ -59,9 +59,9 @@ pub fn run(args: LoadsArgs) -> Result<()> {
         });
     }
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&doc)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&doc)?);
     } else {
-        print!("{}", loads_text(&sc, &ws, &loads, &safety));
+        crate::say!("{}", loads_text(&sc, &ws, &loads, &safety));
     }
     if let Some(out) = &args.out {
         ensure_dir(out)?;
@@ -69,7 +69,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
         if let Some((records, train)) = &history {
             write_history(out, &ws, &loads, records, train)?;
             if !args.json {
-                println!("\nWrote {}, {} and {}", out.join("loads.json").display(), out.join("wave_loads.csv").display(), out.join("wave_loads.svg").display());
+                crate::sayln!("\nWrote {}, {} and {}", out.join("loads.json").display(), out.join("wave_loads.csv").display(), out.join("wave_loads.svg").display());
             }
         }
     }

@@ -197,9 +197,9 @@ pub fn run(args: RunArgs) -> Result<()> {
     let json = summary_json(&result.summary, &x);
     check_finite(&json, "summary")?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
-        print!("{}", summary_text(&sc, &result.summary));
+        crate::say!("{}", summary_text(&sc, &result.summary));
     }
     if let (Some(dir), Some(h)) = (&args.out, &result.history) {
         ensure_dir(dir)?;
@@ -209,7 +209,7 @@ pub fn run(args: RunArgs) -> Result<()> {
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
         write_plots(dir, h, title)?;
         if !args.json {
-            println!("\nWrote summary.json, history.csv, springs.csv, loads.svg, displacements.svg, springs.svg to {}", dir.display());
+            crate::sayln!("\nWrote summary.json, history.csv, springs.csv, loads.svg, displacements.svg, springs.svg to {}", dir.display());
         }
     }
     Ok(())

@@ -63,23 +63,23 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     });
     check_finite(&json, "spectrum")?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
-        println!(
+        crate::sayln!(
             "T0 = {:.4} s, F_max = {:.3} kN, U_max = {:.3} kN, static sliding resistance μ_s W' = {:.3} kN",
             model.natural_period_s(),
             base.peak.fx_n / 1e3,
             base.peak.fy_n / 1e3,
             sc.foundation.mu_static * sc.caisson.weight_in_water_n / 1e3
         );
-        println!("{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}", "tr/T0", "tr (s)", "Ψ", "Ψ closed", "slide (mm)", "Shimosako", "rigid blk", "R_x (kN)");
+        crate::sayln!("{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}", "tr/T0", "tr (s)", "Ψ", "Ψ closed", "slide (mm)", "Shimosako", "rigid blk", "R_x (kN)");
         for p in &pts {
-            println!(
+            crate::sayln!(
                 "{:>9.4} {:>10.5} {:>8.4} {:>10.4} {:>12.4} {:>12.4} {:>12.4} {:>10.3}",
                 p.tr_over_t0, p.rise_time_s, p.psi, p.psi_closed_form, p.permanent_sliding_m * 1e3, p.shimosako_sliding_m * 1e3, p.rigid_block_sliding_m * 1e3, p.max_horizontal_reaction_n / 1e3
             );
         }
-        println!("Ψ closed: undamped SDOF (PHYSICS.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
+        crate::sayln!("Ψ closed: undamped SDOF (PHYSICS.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
@@ -103,7 +103,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
             ]},
         ])?;
         if !args.json {
-            println!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
+            crate::sayln!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
         }
     }
     Ok(())

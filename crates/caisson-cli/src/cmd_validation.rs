@@ -334,6 +334,6 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let _ = writeln!(t, "{CHOICES}");
     let path = out.join("validation.md");
     write_atomic(&path, t.as_bytes())?;
-    println!("Wrote {} and its figures in {} ({} of {} findings reproduced with total, {} with elastic; default {default})", path.display(), figs.display(), st, findings.len(), se);
+    crate::sayln!("Wrote {} and its figures in {} ({} of {} findings reproduced with total, {} with elastic; default {default})", path.display(), figs.display(), st, findings.len(), se);
     Ok(())
 }

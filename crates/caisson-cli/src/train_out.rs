@@ -263,9 +263,9 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
     let json = train_summary_json(sc, &ws, case.regime, case.rigid_block_mu, &summary);
     check_finite(&json, "summary")?;
     if json_out {
-        println!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
-        print!("{}", summary_text(sc, &ws, &case, &summary));
+        crate::say!("{}", summary_text(sc, &ws, &case, &summary));
     }
     if let Some(dir) = out {
         // Realization 0 again, with its time histories (deterministic: the same numbers).
@@ -283,7 +283,7 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
         write_plots(dir, &h, &format!("{title}, realization 0"))?;
         cumulative_plot(&dir.join("sliding.svg"), title, &summary)?;
         if !json_out {
-            println!("\nWrote summary.json, realizations.csv, waves.csv, history.csv and springs.csv (realization 0), loads.svg, displacements.svg, springs.svg, sliding.svg to {}", dir.display());
+            crate::sayln!("\nWrote summary.json, realizations.csv, waves.csv, history.csv and springs.csv (realization 0), loads.svg, displacements.svg, springs.svg, sliding.svg to {}", dir.display());
         }
     }
     Ok(())

@@ -188,3 +188,23 @@ fn bad_design_keys_are_named() {
         assert!(!out.exists(), "{to}: nothing may be written");
     }
 }
+
+/// A reader that goes away (`caisson … | head`) is not a panic: the command finishes, writes its
+/// files and exits 0.
+#[test]
+fn a_closed_stdout_is_not_a_panic() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(dir.path(), "d.toml", &design_text(6, ""));
+    let out = dir.path().join("out");
+    let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("caisson"))
+        .args(["design", f.to_str().unwrap(), "--json", "--out", out.to_str().unwrap()])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // close the reading end before anything is written
+    let o = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && !err.contains("panicked"), "{:?}: {err}", o.status);
+    assert!(out.join("design.json").exists());
+}
