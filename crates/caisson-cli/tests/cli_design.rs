@@ -115,7 +115,7 @@ fn an_interrupted_run_resumes_to_the_identical_result() {
 fn a_killed_run_resumes_to_the_identical_result() {
     let dir = tempfile::tempdir().unwrap();
     // Longer lives so that the run is still going when it is killed.
-    let text = design_text(400, "").replace("life_years = 5", "life_years = 20");
+    let text = design_text(120, "").replace("life_years = 5", "life_years = 20");
     let f = write(dir.path(), "d.toml", &text);
     let out = dir.path().join("out");
     let bin = assert_cmd::cargo::cargo_bin("caisson");
