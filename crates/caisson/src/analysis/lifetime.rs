@@ -56,6 +56,7 @@ use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
 use crate::scenario::SolverParams;
 use crate::structure::Caisson;
+use crate::waves::statistics::sample_rayleigh_m;
 use crate::waves::surf_zone::goda_surf_zone;
 use crate::G_M_PER_S2;
 use rand::Rng;
@@ -254,8 +255,7 @@ pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> 
     let mut sim: Option<Simulation> = None;
     let mut out = StormOutcome { waves: s.waves as u64, ..StormOutcome::default() };
     for _ in 0..s.waves {
-        let u = 1.0 - rng.gen::<f64>();
-        let h = (s.h13_m * (-0.5 * u.ln()).sqrt()).clamp(1e-3 * s.h13_m.max(1e-6), hmax);
+        let h = sample_rayleigh_m(s.h13_m, rng).clamp(1e-3 * s.h13_m.max(1e-6), hmax);
         let z: f64 = rng.sample(StandardNormal);
         if st.screen && !cell_may_slide(((h / dh) as usize).min(SCREEN_CELLS - 1)) {
             out.screened += 1;

@@ -29,6 +29,7 @@
 use super::model::{WaveLoadModel, WaveRecord};
 use super::regime::{Regime, RegimeChoice, RegimeError};
 use super::risetime::LoadRng;
+use crate::waves::statistics::sample_rayleigh_m;
 use rand::{Rng, SeedableRng};
 use rand_distr::StandardNormal;
 
@@ -131,8 +132,7 @@ pub fn realization_waves(model: &WaveLoadModel, spec: &TrainSpec, choice: Regime
                 HeightVariability::None => height_m,
             },
             TrainKind::Irregular { significant_height_m } => {
-                let u = 1.0 - rng.gen::<f64>();
-                significant_height_m * (-0.5 * u.ln()).sqrt().max(1e-3)
+                sample_rayleigh_m(significant_height_m, &mut rng).max(1e-3 * significant_height_m)
             }
         };
         let z: f64 = rng.sample(StandardNormal);

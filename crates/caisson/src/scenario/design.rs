@@ -3,6 +3,7 @@
 //! defaults are the values PHYSICS.md §6.4 cites (Goda & Takagi 2000; Takayama & Ikeda 1992 via
 //! Shimosako & Takahashi 1999; Kim & Takayama 2003 for the truncation).
 
+use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
 use crate::analysis::lifetime::{ErrorModel, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
@@ -54,14 +55,7 @@ pub struct DesignSpec {
 pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
 
 fn num(key: &str, v: Option<f64>, default: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
-    let Some(v) = v else { return Ok(default) };
-    let above = if lo_open { v > lo } else { v >= lo };
-    if v.is_finite() && above && v <= hi {
-        Ok(v)
-    } else {
-        let low = if lo_open { format!("> {lo}") } else { format!("≥ {lo}") };
-        Err(ScenarioError::range(&format!("[design] {key}"), v, format!("must be a finite number {low} and ≤ {hi} ({unit})")))
-    }
+    v.map_or(Ok(default), |v| number(&format!("[design] {key}"), v, lo, hi, lo_open, unit))
 }
 
 fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
@@ -73,7 +67,7 @@ fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
 }
 
 fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
-    v.ok_or_else(|| ScenarioError::missing(&format!("[design] {key}"), hint))
+    waves::required(&format!("[design] {key}"), v, hint)
 }
 
 /// Validate `[design]`.
@@ -122,11 +116,7 @@ pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
     }
     thresholds_m.sort_by(f64::total_cmp);
     thresholds_m.dedup();
-    let seed = match t.seed {
-        None => 1,
-        Some(s) if s >= 0 => s as u64,
-        Some(s) => return Err(ScenarioError::range("[design] seed", s, "must be a whole number ≥ 0")),
-    };
+    let seed = seed_of("[design] seed", t.seed)?;
     Ok(DesignSpec {
         life: LifeParams {
             life_years: count("life_years", t.life_years, 50, 1000)?,

@@ -116,11 +116,7 @@ pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySe
         Some(v) if v.is_finite() && v > 0.0 && v <= 72.0 => v,
         Some(v) => return Err(ScenarioError::range("[fragility] storm_duration_h", v, "must be a finite number > 0 and ≤ 72 (h)")),
     } * 3600.0;
-    let seed = match t.seed {
-        None => 1,
-        Some(s) if s >= 0 => s as u64,
-        Some(s) => return Err(ScenarioError::range("[fragility] seed", s, "must be a whole number ≥ 0")),
-    };
+    let seed = super::waves::seed_of("[fragility] seed", t.seed)?;
     let params = FragilityParams { heights_m: heights.clone(), storms, limits_m, storm_duration_s, period_s, seed };
     Ok(FragilitySetup { scenario, waves, params })
 }

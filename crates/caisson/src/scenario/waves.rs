@@ -83,7 +83,8 @@ pub struct WaveScenario {
     pub rigid_block_mu: Option<f64>,
 }
 
-fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
+/// A finite number in (lo, hi] (`lo_open`) or [lo, hi], else a keyed range error.
+pub(super) fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
     let above = if lo_open { v > lo } else { v >= lo };
     if v.is_finite() && above && v <= hi {
         Ok(v)
@@ -101,8 +102,17 @@ fn pick<T: Copy>(key: &str, v: Option<&String>, default: T, options: &[(&str, T)
     })
 }
 
-fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
+pub(super) fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
     v.ok_or_else(|| ScenarioError::missing(key, hint))
+}
+
+/// A random seed: a whole number ≥ 0 (default 1).
+pub(super) fn seed_of(key: &str, v: Option<i64>) -> R<u64> {
+    match v {
+        None => Ok(1),
+        Some(s) if s >= 0 => Ok(s as u64),
+        Some(s) => Err(ScenarioError::range(key, s, "must be a whole number ≥ 0")),
+    }
 }
 
 /// Validate `[water]` (depths, slope, berm) and `[waves]` against the validated caisson.
@@ -242,11 +252,7 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
     };
     let waves = count("[waves] waves", t.waves, 15)?;
     let realizations = count("[waves] realizations", t.realizations, 10)?;
-    let seed = match t.seed {
-        None => 1,
-        Some(s) if s >= 0 => s as u64,
-        Some(s) => return Err(ScenarioError::range("[waves] seed", s, "must be a whole number ≥ 0")),
-    };
+    let seed = seed_of("[waves] seed", t.seed)?;
     let kind = if irregular {
         TrainKind::Irregular { significant_height_m: height_m }
     } else {
