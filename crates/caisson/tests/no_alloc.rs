@@ -1,37 +1,23 @@
-//! The time loop allocates nothing: a counting global allocator sees zero allocations over
-//! thousands of steps that include sticking, sliding, lift-off and re-contact.
+//! The hot loops allocate nothing: the time loop (fixed and adaptive steps, through sticking,
+//! sliding, lift-off and re-contact) and the wave-train load history the engine calls every step.
+//! Allocations are counted per thread (`support/counting_alloc.rs`), so the harness's other
+//! threads cannot disturb the count.
+
+#[path = "support/counting_alloc.rs"]
+mod counting_alloc;
 
 use caisson::dynamics::{Model, Simulation};
+use caisson::loads::model::{WaveLoadModel, WaveLoadOptions, WaveRecord, WaveSite};
 use caisson::loads::pulse::TrianglePulse;
-use caisson::loads::WaveForce;
+use caisson::loads::regime::Regime;
+use caisson::loads::shapes::LoadShape;
+use caisson::loads::{LoadHistory, WaveForce};
 use caisson::scenario::{parse_str, validate};
-use std::alloc::{GlobalAlloc, Layout, System};
+use counting_alloc::count_allocations;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-struct Counting;
-static ALLOCS: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        ALLOCS.fetch_add(1, Ordering::SeqCst);
-        System.alloc(l)
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        System.dealloc(p, l)
-    }
-}
-
-#[global_allocator]
-static A: Counting = Counting;
-
-/// The counter is global: the tests take turns so that one's set-up does not land in the other's
-/// counting window.
-static TURN: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 #[test]
 fn time_loop_does_not_allocate() {
-    let _turn = TURN.lock().unwrap_or_else(|e| e.into_inner());
     let text = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\ndamping_mode = \"elastic\"\nvertical_damping = \"springs\"\n";
     let s = validate(&parse_str(text, Path::new("t.toml")).unwrap(), Path::new(".")).unwrap();
     // A pulse of 3 × the sliding resistance at the SWL: the caisson slides and rocks, and the
@@ -39,27 +25,61 @@ fn time_loop_does_not_allocate() {
     let load = TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
     let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
     let mut peaks = caisson::analysis::run::Peaks::default();
-    let before = ALLOCS.load(Ordering::SeqCst);
-    for _ in 0..3000 {
-        sim.step(&load, &mut peaks).unwrap();
-    }
-    let after = ALLOCS.load(Ordering::SeqCst);
+    let ((), allocations) = count_allocations(|| {
+        for _ in 0..3000 {
+            sim.step(&load, &mut peaks).unwrap();
+        }
+    });
     assert!(peaks.slip_events >= 1 && peaks.min_n == 0.0, "the test must exercise sliding and lift-off");
-    assert_eq!(after - before, 0, "allocations in the time loop");
+    assert_eq!(allocations, 0, "allocations in the time loop");
 }
 
 /// The adaptive stepper (rejections, breakpoints, step-size changes) allocates nothing either.
 #[test]
 fn adaptive_time_loop_does_not_allocate() {
-    let _turn = TURN.lock().unwrap_or_else(|e| e.into_inner());
     let text = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 15.0\nrise_time_s = 0.05\n[solver]\nstepping = \"adaptive\"\n";
     let s = validate(&parse_str(text, Path::new("t.toml")).unwrap(), Path::new(".")).unwrap();
     let load = TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
     let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
     let mut peaks = caisson::analysis::run::Peaks::default();
-    let before = ALLOCS.load(Ordering::SeqCst);
-    sim.run_until(0.6, &load, &mut peaks).unwrap();
-    let after = ALLOCS.load(Ordering::SeqCst);
+    let (result, allocations) = count_allocations(|| sim.run_until(0.6, &load, &mut peaks));
+    result.unwrap();
     assert!(peaks.slip_events >= 1 && sim.stats.rejected_steps > 0, "the test must exercise sliding and step rejection");
-    assert_eq!(after - before, 0, "allocations in the adaptive time loop");
+    assert_eq!(allocations, 0, "allocations in the adaptive time loop");
+}
+
+/// `WaveTrain::at` (the wave-load `LoadHistory`) allocates nothing, for every load shape.
+#[test]
+fn wave_train_at_does_not_allocate() {
+    let site = WaveSite { rho_w: 1000.0, depth_at_toe_m: 1.14, depth_at_wall_m: 0.4, base_depth_m: 0.8, crest_freeboard_m: 0.32, width_m: 0.78, length_m: 1.0, seabed_slope: 0.0, berm_width_m: None };
+    let mut checked = 0;
+    for (_, shape) in LoadShape::ALL {
+        let model = WaveLoadModel { site, options: WaveLoadOptions { load_shape: shape, ..WaveLoadOptions::default() } };
+        let recs: Vec<WaveRecord> = (0..50)
+            .map(|j| WaveRecord { height_m: 0.428, period_s: 3.04, regime: if j % 3 == 0 { Regime::NonBreaking } else { Regime::Breaking }, rise_time_s: Some(0.01 + 1e-3 * j as f64) })
+            .map(|r| if r.regime == Regime::NonBreaking { WaveRecord { height_m: 0.3, ..r } } else { r })
+            .collect();
+        let train = model.train(&recs).unwrap();
+        let (sum, allocations) = count_allocations(|| (0..200_000).map(|k| train.at(k as f64 * 1e-3).fx_n).sum::<f64>());
+        assert_eq!(allocations, 0, "{shape:?}: at() allocated");
+        assert!(sum.is_finite() && sum != 0.0, "{shape:?}: the train must load the caisson");
+        checked += 1;
+    }
+    assert_eq!(checked, LoadShape::ALL.len());
+}
+
+/// The counter is not vacuous: it sees this thread's allocations and not another thread's.
+#[test]
+fn the_counter_sees_this_threads_allocations_only() {
+    let (v, here) = count_allocations(|| vec![1u8; 64]);
+    assert_eq!((v.len(), here), (64, 1));
+    let ((), elsewhere) = count_allocations(|| {
+        std::thread::scope(|s| {
+            let h = s.spawn(|| (1..=1000).map(|n| vec![0u8; n].len()).sum::<usize>());
+            assert_eq!(h.join().unwrap(), 500_500);
+        })
+    });
+    // Spawning a thread allocates its handle on the spawning thread (a few allocations); the
+    // other thread's 1000 vectors must not be counted here.
+    assert!(elsewhere < 100, "{elsewhere}");
 }
