@@ -4,7 +4,11 @@ use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
 #[derive(Parser, Debug)]
-#[command(name = "caisson", version, about = "Dynamic sliding of caisson breakwaters under breaking and non-breaking waves")]
+#[command(
+    name = "caisson",
+    version,
+    about = "Dynamic sliding of caisson breakwaters under breaking and non-breaking waves"
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,

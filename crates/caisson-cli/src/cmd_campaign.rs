@@ -32,7 +32,9 @@ pub fn load_campaign(path: &Path, damping_mode: Option<&str>) -> Result<Campaign
 /// The trains of a campaign, the height being per condition.
 fn campaign_train(c: &Campaign) -> String {
     let t = &c.setups[0].waves.train;
-    describe_train(t).replace(&format!("H = {} m", t.height_m()), "H per condition").replace(&format!("H1/3 = {} m", t.height_m()), "H1/3 per condition")
+    describe_train(t)
+        .replace(&format!("H = {} m", t.height_m()), "H per condition")
+        .replace(&format!("H1/3 = {} m", t.height_m()), "H1/3 per condition")
 }
 
 fn damping_name(m: caisson::foundation::DampingMode) -> &'static str {
@@ -86,9 +88,15 @@ pub fn table_text(c: &Campaign, results: &[ConditionResult]) -> String {
     let first = &c.setups[0];
     let mut t = String::new();
     let _ = writeln!(t, "{}", c.title);
-    let _ = writeln!(t, "{} conditions × {} realizations × {} waves; {}; damping_mode {}",
-        results.len(), first.waves.train.realizations, first.waves.train.waves, campaign_train(c),
-        damping_name(first.scenario.foundation.damping_mode));
+    let _ = writeln!(
+        t,
+        "{} conditions × {} realizations × {} waves; {}; damping_mode {}",
+        results.len(),
+        first.waves.train.realizations,
+        first.waves.train.waves,
+        campaign_train(c),
+        damping_name(first.scenario.foundation.damping_mode)
+    );
     let _ = writeln!(t);
     let _ = writeln!(t, "  #  H (m)  W (kN)  regime        nominal       SF_sl   sliding mean / min / max (mm)    rigid block mean / min / max (mm)");
     for (i, r) in results.iter().enumerate() {
@@ -105,8 +113,20 @@ pub fn table_text(c: &Campaign, results: &[ConditionResult]) -> String {
 fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
-        "condition", "height_m", "weight_in_water_kn", "regime", "nominal_regime", "sliding_safety_factor", "sliding_mean_m", "sliding_min_m",
-        "sliding_max_m", "rigid_block_mean_m", "rigid_block_min_m", "rigid_block_max_m", "max_horizontal_reaction_mean_kn", "slip_events_mean",
+        "condition",
+        "height_m",
+        "weight_in_water_kn",
+        "regime",
+        "nominal_regime",
+        "sliding_safety_factor",
+        "sliding_mean_m",
+        "sliding_min_m",
+        "sliding_max_m",
+        "rigid_block_mean_m",
+        "rigid_block_min_m",
+        "rigid_block_max_m",
+        "max_horizontal_reaction_mean_kn",
+        "slip_events_mean",
     ])?;
     for (i, r) in results.iter().enumerate() {
         let s = &r.summary;
@@ -140,17 +160,46 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         ca.weight_in_water_n.total_cmp(&cb.weight_in_water_n).then(ca.height_m.total_cmp(&cb.height_m))
     });
     let at = |k: usize| (k + 1) as f64;
-    let dyn_pts: Vec<(f64, f64)> = order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.sliding_m.mean * 1e3)).collect();
-    let dyn_rng: Vec<(f64, f64)> = order.iter().map(|&i| (results[i].summary.sliding_m.min * 1e3, results[i].summary.sliding_m.max * 1e3)).collect();
-    let rb_pts: Vec<(f64, f64)> = order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.rigid_block_sliding_m.mean * 1e3)).collect();
-    let rb_rng: Vec<(f64, f64)> = order.iter().map(|&i| (results[i].summary.rigid_block_sliding_m.min * 1e3, results[i].summary.rigid_block_sliding_m.max * 1e3)).collect();
-    let h_pts: Vec<(f64, f64)> = order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.height_m)).collect();
-    let w_pts: Vec<(f64, f64)> = order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.weight_in_water_n / 1e3)).collect();
-    panels(&dir.join(format!("{stem}.svg")), &format!("{title}: total sliding per test (ordered by W, then H)"), "test condition", &[
-        Panel { y_label: "dynamic model (mm)".into(), series: vec![Series::ranges("mean, min-max of the realizations", dyn_pts, dyn_rng)] },
-        Panel { y_label: "rigid block (mm)".into(), series: vec![Series::ranges("Shimosako model: mean, min-max", rb_pts, rb_rng)] },
-        Panel { y_label: "H (m) / W (kN)".into(), series: vec![Series::markers("H (m)", h_pts), Series::markers("W / 10 (kN)", w_pts.iter().map(|&(x, w)| (x, w / 10.0)).collect())] },
-    ])?;
+    let dyn_pts: Vec<(f64, f64)> =
+        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.sliding_m.mean * 1e3)).collect();
+    let dyn_rng: Vec<(f64, f64)> = order
+        .iter()
+        .map(|&i| (results[i].summary.sliding_m.min * 1e3, results[i].summary.sliding_m.max * 1e3))
+        .collect();
+    let rb_pts: Vec<(f64, f64)> =
+        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.rigid_block_sliding_m.mean * 1e3)).collect();
+    let rb_rng: Vec<(f64, f64)> = order
+        .iter()
+        .map(|&i| {
+            (results[i].summary.rigid_block_sliding_m.min * 1e3, results[i].summary.rigid_block_sliding_m.max * 1e3)
+        })
+        .collect();
+    let h_pts: Vec<(f64, f64)> =
+        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.height_m)).collect();
+    let w_pts: Vec<(f64, f64)> =
+        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.weight_in_water_n / 1e3)).collect();
+    panels(
+        &dir.join(format!("{stem}.svg")),
+        &format!("{title}: total sliding per test (ordered by W, then H)"),
+        "test condition",
+        &[
+            Panel {
+                y_label: "dynamic model (mm)".into(),
+                series: vec![Series::ranges("mean, min-max of the realizations", dyn_pts, dyn_rng)],
+            },
+            Panel {
+                y_label: "rigid block (mm)".into(),
+                series: vec![Series::ranges("Shimosako model: mean, min-max", rb_pts, rb_rng)],
+            },
+            Panel {
+                y_label: "H (m) / W (kN)".into(),
+                series: vec![
+                    Series::markers("H (m)", h_pts),
+                    Series::markers("W / 10 (kN)", w_pts.iter().map(|&(x, w)| (x, w / 10.0)).collect()),
+                ],
+            },
+        ],
+    )?;
     // Sliding against H, one series per weight.
     let mut weights: Vec<f64> = results.iter().map(|r| r.condition.weight_in_water_n).collect();
     weights.sort_by(f64::total_cmp);
@@ -161,13 +210,25 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         let mut rs: Vec<&ConditionResult> = results.iter().filter(|r| r.condition.weight_in_water_n == *w).collect();
         rs.sort_by(|a, b| a.condition.height_m.total_cmp(&b.condition.height_m));
         let label = format!("W = {:.1} kN", w / 1e3);
-        dyn_series.push(Series::ranges(label.clone(), rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * 1e3)).collect(), rs.iter().map(|r| (r.summary.sliding_m.min * 1e3, r.summary.sliding_m.max * 1e3)).collect()));
-        rb_series.push(Series::line(label, rs.iter().map(|r| (r.condition.height_m, r.summary.rigid_block_sliding_m.mean * 1e3)).collect()));
+        dyn_series.push(Series::ranges(
+            label.clone(),
+            rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * 1e3)).collect(),
+            rs.iter().map(|r| (r.summary.sliding_m.min * 1e3, r.summary.sliding_m.max * 1e3)).collect(),
+        ));
+        rb_series.push(Series::line(
+            label,
+            rs.iter().map(|r| (r.condition.height_m, r.summary.rigid_block_sliding_m.mean * 1e3)).collect(),
+        ));
     }
-    panels(&dir.join(format!("{stem}_vs_height.svg")), &format!("{title}: total sliding against the wave height"), "H (m)", &[
-        Panel { y_label: "dynamic model (mm)".into(), series: dyn_series },
-        Panel { y_label: "rigid block, mean (mm)".into(), series: rb_series },
-    ])
+    panels(
+        &dir.join(format!("{stem}_vs_height.svg")),
+        &format!("{title}: total sliding against the wave height"),
+        "H (m)",
+        &[
+            Panel { y_label: "dynamic model (mm)".into(), series: dyn_series },
+            Panel { y_label: "rigid block, mean (mm)".into(), series: rb_series },
+        ],
+    )
 }
 
 pub fn run(args: CampaignArgs) -> Result<()> {

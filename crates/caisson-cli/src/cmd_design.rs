@@ -46,13 +46,13 @@ struct LifeLine {
 
 /// Lives already in a checkpoint (errors if it belongs to another run).
 fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<BTreeMap<usize, StormOutcome>> {
-    let file = std::fs::File::open(path).map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
+    let file = std::fs::File::open(path)
+        .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
     let mut lines = std::io::BufReader::new(file).lines();
-    let header: Header = lines
-        .next()
-        .and_then(|l| l.ok())
-        .and_then(|l| serde_json::from_str(&l).ok())
-        .ok_or_else(|| input_err(format!("--resume: {} line 1 is not a caisson design checkpoint header", path.display())))?;
+    let header: Header =
+        lines.next().and_then(|l| l.ok()).and_then(|l| serde_json::from_str(&l).ok()).ok_or_else(|| {
+            input_err(format!("--resume: {} line 1 is not a caisson design checkpoint header", path.display()))
+        })?;
     if header.fingerprint != fingerprint {
         return Err(input_err(format!(
             "--resume: the checkpoint {} was written for a different scenario or options (lives, seed, --brute-force); run without --resume to start again",
@@ -84,9 +84,25 @@ fn stats_json(s: &LifeStatistics, years: usize) -> Value {
 
 fn lives_csv(lives: &[StormOutcome]) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(["life", "sliding_m", "rigid_block_sliding_m", "max_storm_sliding_m", "waves", "simulated_waves", "screened_waves"])?;
+    w.write_record([
+        "life",
+        "sliding_m",
+        "rigid_block_sliding_m",
+        "max_storm_sliding_m",
+        "waves",
+        "simulated_waves",
+        "screened_waves",
+    ])?;
     for (i, l) in lives.iter().enumerate() {
-        w.write_record(&[i.to_string(), format!("{:e}", l.sliding_m), format!("{:e}", l.rigid_block_sliding_m), format!("{:e}", l.max_storm_sliding_m), l.waves.to_string(), l.simulated.to_string(), l.screened.to_string()])?;
+        w.write_record(&[
+            i.to_string(),
+            format!("{:e}", l.sliding_m),
+            format!("{:e}", l.rigid_block_sliding_m),
+            format!("{:e}", l.max_storm_sliding_m),
+            l.waves.to_string(),
+            l.simulated.to_string(),
+            l.screened.to_string(),
+        ])?;
     }
     Ok(w.into_inner()?)
 }
@@ -101,29 +117,49 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64]) -> Result<()> 
             c[((x / max * bins as f64) as usize).min(bins - 1)] += 1;
         }
         let w = max / bins as f64;
-        c.iter().enumerate().flat_map(|(i, &n)| {
-            let y = n as f64 / v.len().max(1) as f64;
-            [(i as f64 * w, y), ((i + 1) as f64 * w, y)]
-        }).collect()
+        c.iter()
+            .enumerate()
+            .flat_map(|(i, &n)| {
+                let y = n as f64 / v.len().max(1) as f64;
+                [(i as f64 * w, y), ((i + 1) as f64 * w, y)]
+            })
+            .collect()
     };
-    panels(&dir.join("histogram.svg"), &format!("{title}: sliding over the design life"), "total sliding (m)", &[Panel {
-        y_label: "share of lives".into(),
-        series: vec![Series::line("dynamic model", hist(dynamic)), Series::dashed("rigid block (Shimosako model)", hist(rigid))],
-    }])?;
+    panels(
+        &dir.join("histogram.svg"),
+        &format!("{title}: sliding over the design life"),
+        "total sliding (m)",
+        &[Panel {
+            y_label: "share of lives".into(),
+            series: vec![
+                Series::line("dynamic model", hist(dynamic)),
+                Series::dashed("rigid block (Shimosako model)", hist(rigid)),
+            ],
+        }],
+    )?;
     let exceed = |v: &[f64]| -> Vec<(f64, f64)> {
         let mut s = v.to_vec();
         s.sort_by(f64::total_cmp);
         let n = s.len().max(1) as f64;
         s.iter().enumerate().map(|(i, &x)| (x, 1.0 - i as f64 / n)).collect()
     };
-    panels(&dir.join("exceedance.svg"), &format!("{title}: probability that the life's sliding exceeds S"), "S (m)", &[Panel {
-        y_label: "P(sliding > S)".into(),
-        series: vec![Series::line("dynamic model", exceed(dynamic)), Series::dashed("rigid block (Shimosako model)", exceed(rigid))],
-    }])
+    panels(
+        &dir.join("exceedance.svg"),
+        &format!("{title}: probability that the life's sliding exceeds S"),
+        "S (m)",
+        &[Panel {
+            y_label: "P(sliding > S)".into(),
+            series: vec![
+                Series::line("dynamic model", exceed(dynamic)),
+                Series::dashed("rigid block (Shimosako model)", exceed(rigid)),
+            ],
+        }],
+    )
 }
 
 pub fn run(args: DesignArgs) -> Result<()> {
-    let text = std::fs::read_to_string(&args.scenario).map_err(|e| input_err(format!("cannot read scenario file {}: {e}", args.scenario.display())))?;
+    let text = std::fs::read_to_string(&args.scenario)
+        .map_err(|e| input_err(format!("cannot read scenario file {}: {e}", args.scenario.display())))?;
     let file = parse_str(&text, &args.scenario).map_err(input_err)?;
     let base = args.scenario.parent().unwrap_or(Path::new("."));
     let mut sc = validate(&file, base).map_err(input_err)?;
@@ -145,9 +181,12 @@ pub fn run(args: DesignArgs) -> Result<()> {
             return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
         }
     }
-    let checkpoint: Option<PathBuf> = args.checkpoint.clone().or_else(|| args.out.as_ref().map(|d| d.join("checkpoint.jsonl")));
+    let checkpoint: Option<PathBuf> =
+        args.checkpoint.clone().or_else(|| args.out.as_ref().map(|d| d.join("checkpoint.jsonl")));
     if args.resume && checkpoint.is_none() {
-        return Err(input_err("--resume needs the checkpoint: give --out DIR (DIR/checkpoint.jsonl) or --checkpoint FILE"));
+        return Err(input_err(
+            "--resume needs the checkpoint: give --out DIR (DIR/checkpoint.jsonl) or --checkpoint FILE",
+        ));
     }
     set_threads(args.threads)?;
     let structure = Structure {
@@ -159,7 +198,11 @@ pub fn run(args: DesignArgs) -> Result<()> {
         screen: spec.screen,
     };
     let fingerprint = format!("{text}\n--lives {} --brute-force {}", spec.lives, args.brute_force);
-    let mut done = if args.resume { read_checkpoint(checkpoint.as_ref().expect("checked"), &fingerprint)? } else { BTreeMap::new() };
+    let mut done = if args.resume {
+        read_checkpoint(checkpoint.as_ref().expect("checked"), &fingerprint)?
+    } else {
+        BTreeMap::new()
+    };
     done.retain(|&i, _| i < spec.lives);
     let writer = match &checkpoint {
         Some(path) => {
@@ -167,10 +210,22 @@ pub fn run(args: DesignArgs) -> Result<()> {
                 ensure_dir(parent)?;
             }
             let mut f = if args.resume {
-                std::fs::OpenOptions::new().append(true).open(path).with_context(|| format!("opening the checkpoint {}", path.display()))?
+                std::fs::OpenOptions::new()
+                    .append(true)
+                    .open(path)
+                    .with_context(|| format!("opening the checkpoint {}", path.display()))?
             } else {
-                let mut f = std::fs::File::create(path).with_context(|| format!("creating the checkpoint {}", path.display()))?;
-                writeln!(f, "{}", serde_json::to_string(&Header { caisson_design_checkpoint: 1, fingerprint: fingerprint.clone(), lives: spec.lives })?)?;
+                let mut f = std::fs::File::create(path)
+                    .with_context(|| format!("creating the checkpoint {}", path.display()))?;
+                writeln!(
+                    f,
+                    "{}",
+                    serde_json::to_string(&Header {
+                        caisson_design_checkpoint: 1,
+                        fingerprint: fingerprint.clone(),
+                        lives: spec.lives
+                    })?
+                )?;
                 f
             };
             f.flush()?;
@@ -180,7 +235,11 @@ pub fn run(args: DesignArgs) -> Result<()> {
     };
     let todo: Vec<usize> = (0..spec.lives).filter(|i| !done.contains_key(i)).collect();
     let pb = ProgressBar::new(spec.lives as u64);
-    pb.set_style(ProgressStyle::with_template("lives [{bar:40}] {pos}/{len}, {elapsed} elapsed, ~{eta} left").expect("template").progress_chars("=> "));
+    pb.set_style(
+        ProgressStyle::with_template("lives [{bar:40}] {pos}/{len}, {elapsed} elapsed, ~{eta} left")
+            .expect("template")
+            .progress_chars("=> "),
+    );
     pb.set_position(done.len() as u64);
     let finished_now = AtomicUsize::new(0);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
@@ -241,12 +300,29 @@ pub fn run(args: DesignArgs) -> Result<()> {
         crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
     } else {
         let mut t = String::new();
-        let _ = writeln!(t, "{} lives of {years} years (seed {}), {} waves, {} through the dynamic model, {:.4} % screened{}",
-            spec.lives, spec.seed, waves, simulated, 100.0 * screened as f64 / waves.max(1) as f64, if spec.screen { "" } else { " (screen off)" });
+        let _ = writeln!(
+            t,
+            "{} lives of {years} years (seed {}), {} waves, {} through the dynamic model, {:.4} % screened{}",
+            spec.lives,
+            spec.seed,
+            waves,
+            simulated,
+            100.0 * screened as f64 / waves.max(1) as f64,
+            if spec.screen { "" } else { " (screen off)" }
+        );
         let _ = writeln!(t);
-        let _ = writeln!(t, "                                  dynamic model   rigid block (Shimosako, μ = {})", structure.rigid_block_mu);
+        let _ = writeln!(
+            t,
+            "                                  dynamic model   rigid block (Shimosako, μ = {})",
+            structure.rigid_block_mu
+        );
         let _ = writeln!(t, "expected sliding over the life   {:>10.4} m    {:>10.4} m", sd.mean_m, sr.mean_m);
-        let _ = writeln!(t, "expected sliding per year        {:>10.5} m    {:>10.5} m", sd.mean_m / years as f64, sr.mean_m / years as f64);
+        let _ = writeln!(
+            t,
+            "expected sliding per year        {:>10.5} m    {:>10.5} m",
+            sd.mean_m / years as f64,
+            sr.mean_m / years as f64
+        );
         for ((p, a), (_, b)) in sd.percentiles_m.iter().zip(&sr.percentiles_m) {
             let _ = writeln!(t, "{:>3.0} % percentile                  {:>10.4} m    {:>10.4} m", p, a, b);
         }
@@ -262,7 +338,10 @@ pub fn run(args: DesignArgs) -> Result<()> {
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         plots(dir, title, &dynamic, &rigid)?;
         if !args.json {
-            crate::sayln!("\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}", dir.display());
+            crate::sayln!(
+                "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",
+                dir.display()
+            );
         }
     }
     Ok(())

@@ -48,7 +48,9 @@ fn fit_json(f: &Result<LognormalFit, FitFailure>) -> Value {
             "beta_se": f.beta_se,
             "log_likelihood": f.log_likelihood,
         }),
-        Err(e) => json!({ "fitted": false, "reason": serde_json::to_value(e).expect("serialisable"), "message": e.to_string() }),
+        Err(e) => {
+            json!({ "fitted": false, "reason": serde_json::to_value(e).expect("serialisable"), "message": e.to_string() })
+        }
     }
 }
 
@@ -117,11 +119,22 @@ fn table_text(s: &FragilitySetup, name: &str, r: &FragilityResult, rigid_block_m
     let p = &s.params;
     let c = &s.scenario.caisson;
     let mut t = String::new();
-    let _ = writeln!(t, "Fragility of {name}: B = {} m, W' = {:.1} kN, μ_s = {}, rigid block μ = {rigid_block_mu}", c.width_m, c.weight_in_water_n / 1e3, s.scenario.foundation.mu_static);
+    let _ = writeln!(
+        t,
+        "Fragility of {name}: B = {} m, W' = {:.1} kN, μ_s = {}, rigid block μ = {rigid_block_mu}",
+        c.width_m,
+        c.weight_in_water_n / 1e3,
+        s.scenario.foundation.mu_static
+    );
     let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to H_max = {HMAX_RATIO} H1/3, no tide or estimation errors; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
     let sf = goda_sliding_safety(s, s.waves.height_m, s.waves.period_s).map_or("-".into(), |v| format!("{v:.3}"));
-    let _ = writeln!(t, "Design wave H1/3 = {} m: Goda static sliding safety factor {sf} at H_max = {:.2} m", s.waves.height_m, HMAX_RATIO * s.waves.height_m);
+    let _ = writeln!(
+        t,
+        "Design wave H1/3 = {} m: Goda static sliding safety factor {sf} at H_max = {:.2} m",
+        s.waves.height_m,
+        HMAX_RATIO * s.waves.height_m
+    );
     let _ = writeln!(t);
     let mut head = String::from("H1/3 (m)  SF(H_max)  storms");
     for lim in &p.limits_m {
@@ -138,15 +151,32 @@ fn table_text(s: &FragilitySetup, name: &str, r: &FragilityResult, rigid_block_m
         let sf = goda_sliding_safety(s, l.h13_m, p.period_s).map_or("-".into(), |v| format!("{v:.2}"));
         let _ = write!(t, "{:>8.3}  {:>9}  {:>6}", l.h13_m, sf, l.storms.len());
         for j in 0..p.limits_m.len() {
-            let _ = write!(t, "    {:>7.3} {:>7.3}", l.dynamic_exceedances[j] as f64 / n, l.rigid_block_exceedances[j] as f64 / n);
+            let _ = write!(
+                t,
+                "    {:>7.3} {:>7.3}",
+                l.dynamic_exceedances[j] as f64 / n,
+                l.rigid_block_exceedances[j] as f64 / n
+            );
         }
-        let _ = writeln!(t, "    {:>9.4}  {:>9.4}   {:>7.3} %", l.mean_sliding_m(), l.mean_rigid_block_sliding_m(), 100.0 * l.screened_share());
+        let _ = writeln!(
+            t,
+            "    {:>9.4}  {:>9.4}   {:>7.3} %",
+            l.mean_sliding_m(),
+            l.mean_rigid_block_sliding_m(),
+            100.0 * l.screened_share()
+        );
     }
     let _ = writeln!(t);
     let _ = writeln!(t, "Lognormal fits (maximum likelihood): P(S > s | H1/3) = Φ((ln H1/3 − ln θ)/β)");
     for f in &r.fits {
         let _ = writeln!(t, "  s = {} m   dynamic model  {}", f.limit_m, fit_text(&f.dynamic));
-        let _ = writeln!(t, "  {:w$}   rigid block    {}", "", fit_text(&f.rigid_block), w = format!("s = {} m", f.limit_m).chars().count());
+        let _ = writeln!(
+            t,
+            "  {:w$}   rigid block    {}",
+            "",
+            fit_text(&f.rigid_block),
+            w = format!("s = {} m", f.limit_m).chars().count()
+        );
     }
     t
 }
@@ -155,13 +185,26 @@ fn table_text(s: &FragilitySetup, name: &str, r: &FragilityResult, rigid_block_m
 fn fragility_csv(s: &FragilitySetup, r: &FragilityResult) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
-        "significant_height_m", "hmax_m", "storms", "limit_m", "dynamic_count", "dynamic_probability", "dynamic_fitted_probability",
-        "rigid_block_count", "rigid_block_probability", "rigid_block_fitted_probability", "mean_sliding_m", "mean_rigid_block_sliding_m", "screened_share",
+        "significant_height_m",
+        "hmax_m",
+        "storms",
+        "limit_m",
+        "dynamic_count",
+        "dynamic_probability",
+        "dynamic_fitted_probability",
+        "rigid_block_count",
+        "rigid_block_probability",
+        "rigid_block_fitted_probability",
+        "mean_sliding_m",
+        "mean_rigid_block_sliding_m",
+        "screened_share",
     ])?;
     for l in &r.levels {
         let n = l.storms.len() as f64;
         for (j, f) in r.fits.iter().enumerate() {
-            let fitted = |x: &Result<LognormalFit, FitFailure>| x.as_ref().map_or(String::new(), |x| format!("{}", x.probability(l.h13_m)));
+            let fitted = |x: &Result<LognormalFit, FitFailure>| {
+                x.as_ref().map_or(String::new(), |x| format!("{}", x.probability(l.h13_m)))
+            };
             w.write_record(&[
                 l.h13_m.to_string(),
                 l.hmax_m.to_string(),
@@ -188,20 +231,30 @@ fn fragility_csv(s: &FragilitySetup, r: &FragilityResult) -> Result<Vec<u8>> {
 fn fragility_plot(path: &Path, name: &str, r: &FragilityResult) -> Result<()> {
     let (lo, hi) = (r.levels[0].h13_m, r.levels[r.levels.len() - 1].h13_m);
     let hi = hi + 0.4 * (hi - lo);
-    let curve_at = |f: &LognormalFit| (0..=200).map(|i| lo + (hi - lo) * i as f64 / 200.0).map(|h| (h, f.probability(h))).collect::<Vec<_>>();
+    let curve_at = |f: &LognormalFit| {
+        (0..=200).map(|i| lo + (hi - lo) * i as f64 / 200.0).map(|h| (h, f.probability(h))).collect::<Vec<_>>()
+    };
     let mut out = Vec::new();
     for (j, f) in r.fits.iter().enumerate() {
-        for (m, (label, fit)) in [("dynamic model", &f.dynamic), ("rigid block", &f.rigid_block)].into_iter().enumerate() {
+        for (m, (label, fit)) in
+            [("dynamic model", &f.dynamic), ("rigid block", &f.rigid_block)].into_iter().enumerate()
+        {
             let pts = r.levels.iter().map(|l| (l.h13_m, counts(l, m)[j] as f64 / l.storms.len() as f64)).collect();
             let mut series = vec![Series::markers(format!("{label}: share of storms"), pts)];
             match fit {
-                Ok(x) => series.push(Series::line(format!("lognormal: θ = {:.2} m, β = {:.3}", x.median, x.beta), curve_at(x))),
+                Ok(x) => series
+                    .push(Series::line(format!("lognormal: θ = {:.2} m, β = {:.3}", x.median, x.beta), curve_at(x))),
                 Err(_) => series[0].label.push_str(" (no fit)"),
             }
             out.push(Panel { y_label: format!("P(S > {} m), {}", f.limit_m, MODELS[m].replace('_', " ")), series });
         }
     }
-    panels(path, &format!("{name}: fragility curves for sliding (points: storms; lines: lognormal fits)"), "H1/3 at the structure (m)", &out)
+    panels(
+        path,
+        &format!("{name}: fragility curves for sliding (points: storms; lines: lognormal fits)"),
+        "H1/3 at the structure (m)",
+        &out,
+    )
 }
 
 pub fn run(args: FragilityArgs) -> Result<()> {
@@ -215,10 +268,21 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     set_threads(args.threads)?;
     let sc = &setup.scenario;
     let rigid_block_mu = setup.waves.rigid_block_mu.unwrap_or(sc.foundation.mu_static);
-    let structure = Structure { caisson: &sc.caisson, foundation: &sc.foundation, solver: sc.solver, model: &setup.waves.model, rigid_block_mu, screen: true };
+    let structure = Structure {
+        caisson: &sc.caisson,
+        foundation: &sc.foundation,
+        solver: sc.solver,
+        model: &setup.waves.model,
+        rigid_block_mu,
+        screen: true,
+    };
     let p = &setup.params;
     let pb = ProgressBar::new((p.heights_m.len() * p.storms) as u64);
-    pb.set_style(ProgressStyle::with_template("storms [{bar:40}] {pos}/{len}, {elapsed} elapsed, ~{eta} left").expect("template").progress_chars("=> "));
+    pb.set_style(
+        ProgressStyle::with_template("storms [{bar:40}] {pos}/{len}, {elapsed} elapsed, ~{eta} left")
+            .expect("template")
+            .progress_chars("=> "),
+    );
     let result = run_fragility(&structure, p, &|| pb.inc(1)).context("the fragility analysis failed")?;
     pb.finish_and_clear();
     let name = args.scenario.file_name().and_then(|s| s.to_str()).unwrap_or("fragility");

@@ -69,7 +69,12 @@ pub fn run(args: LoadsArgs) -> Result<()> {
         if let Some((records, train)) = &history {
             write_history(out, &ws, &loads, records, train)?;
             if !args.json {
-                crate::sayln!("\nWrote {}, {} and {}", out.join("loads.json").display(), out.join("wave_loads.csv").display(), out.join("wave_loads.svg").display());
+                crate::sayln!(
+                    "\nWrote {}, {} and {}",
+                    out.join("loads.json").display(),
+                    out.join("wave_loads.csv").display(),
+                    out.join("wave_loads.svg").display()
+                );
             }
         }
     }
@@ -196,45 +201,105 @@ pub fn loads_text(sc: &Scenario, ws: &WaveScenario, l: &WaveLoads, sf: &SafetyFa
     let mut t = String::new();
     let _ = writeln!(t, "Site     h_s = {:.3} m at the toe, d = {:.3} m at the wall, base h' = {:.3} m, crest h_c = {:.3} m, B = {:.3} m, l = {:.3} m",
         site.depth_at_toe_m, site.depth_at_wall_m, site.base_depth_m, site.crest_freeboard_m, site.width_m, site.length_m);
-    let _ = writeln!(t, "Wave     H = {:.3} m (at the toe {:.3} m{}), T = {:.3} s, β = {:.1}°, L(h_s) = {:.4} m, L0 = {:.4} m",
-        l.height_incident_m, l.height_m, if l.limited_at_toe { ", Miche-limited" } else { "" }, l.period_s, o.angle_rad.to_degrees(), l.toe_wavelength_m, l.deep_water_wavelength_m);
+    let _ = writeln!(
+        t,
+        "Wave     H = {:.3} m (at the toe {:.3} m{}), T = {:.3} s, β = {:.1}°, L(h_s) = {:.4} m, L0 = {:.4} m",
+        l.height_incident_m,
+        l.height_m,
+        if l.limited_at_toe { ", Miche-limited" } else { "" },
+        l.period_s,
+        o.angle_rad.to_degrees(),
+        l.toe_wavelength_m,
+        l.deep_water_wavelength_m
+    );
     let breaking = l.regime.regime == Regime::Breaking;
     let why = match (l.regime.forced, breaking) {
         (true, _) => "forced",
         (false, true) => "auto: H ≥ H_br",
         (false, false) => "auto: H < H_br",
     };
-    let _ = writeln!(t, "Regime   {} ({why}; {} breaker height at the wall H_br = {:.4} m)", l.regime.regime.name(), o.criterion.name(), l.regime.breaker_height_at_wall_m);
+    let _ = writeln!(
+        t,
+        "Regime   {} ({why}; {} breaker height at the wall H_br = {:.4} m)",
+        l.regime.regime.name(),
+        o.criterion.name(),
+        l.regime.breaker_height_at_wall_m
+    );
     let _ = writeln!(t);
-    let _ = writeln!(t, "Goda (per metre)          α1 = {:.4}  α2 = {:.4}  α3 = {:.4}  α* = {:.4}{}", g.alpha1, g.alpha2, g.alpha3, g.alpha_star,
-        g.alpha_i.map_or(String::new(), |a| format!("  (α_I = {a:.4})")));
-    let _ = writeln!(t, "  η* = {:.4} m   p1 = {:.4} kPa   p3 = {:.4} kPa   p4 = {:.4} kPa   pu = {:.4} kPa",
-        g.eta_star_m, g.p1_pa / 1e3, g.p3_pa / 1e3, g.p4_pa / 1e3, g.pu_pa / 1e3);
+    let _ = writeln!(
+        t,
+        "Goda (per metre)          α1 = {:.4}  α2 = {:.4}  α3 = {:.4}  α* = {:.4}{}",
+        g.alpha1,
+        g.alpha2,
+        g.alpha3,
+        g.alpha_star,
+        g.alpha_i.map_or(String::new(), |a| format!("  (α_I = {a:.4})"))
+    );
+    let _ = writeln!(
+        t,
+        "  η* = {:.4} m   p1 = {:.4} kPa   p3 = {:.4} kPa   p4 = {:.4} kPa   pu = {:.4} kPa",
+        g.eta_star_m,
+        g.p1_pa / 1e3,
+        g.p3_pa / 1e3,
+        g.p4_pa / 1e3,
+        g.pu_pa / 1e3
+    );
     let _ = writeln!(t, "  P = {:.4} kN/m at {:.4} m above the base (M_P = {:.4} kN·m/m)   U = {:.4} kN/m (M_U = {:.4} kN·m/m about the heel)",
         g.horizontal_force_n_per_m / 1e3, g.horizontal_lever_m, g.horizontal_moment_base_nm_per_m / 1e3, g.uplift_force_n_per_m / 1e3, g.uplift_moment_heel_nm_per_m / 1e3);
     let _ = writeln!(t, "Sainflou (h = {:.3} m)     h0 = {:.4} m   crest F = {:.4} kN/m   trough F = {:.4} kN/m at {:.4} m (M = {:.4} kN·m/m)",
         l.sainflou_depth_m, s.h0_m, s.crest_force_n_per_m / 1e3, s.trough_force_n_per_m / 1e3, s.trough_lever_m, s.trough_moment_base_nm_per_m / 1e3);
-    let _ = writeln!(t, "  p_t(h') = {:.4} kPa   suction U_t = {:.4} kN/m", s.trough_base_pressure_pa / 1e3, s.suction_uplift_n_per_m / 1e3);
-    let _ = writeln!(t, "Impact (seed Eq. 30, 32)  d_b = {} m   H_br = {:.4} m   1 − |d_b − d|/d = {:.4}{}", opt(i.breaking_depth_m, 4), i.breaker_height_m, i.reduction,
-        if breaking { "" } else { "   (not applied: non-breaking)" });
-    let _ = writeln!(t, "  F_x,max = {:.4} kN/m at {:.4} m above the base   F_y,max = {:.4} kN/m", i.horizontal_force_n_per_m / 1e3, i.horizontal_lever_m, i.uplift_force_n_per_m / 1e3);
+    let _ = writeln!(
+        t,
+        "  p_t(h') = {:.4} kPa   suction U_t = {:.4} kN/m",
+        s.trough_base_pressure_pa / 1e3,
+        s.suction_uplift_n_per_m / 1e3
+    );
+    let _ = writeln!(
+        t,
+        "Impact (seed Eq. 30, 32)  d_b = {} m   H_br = {:.4} m   1 − |d_b − d|/d = {:.4}{}",
+        opt(i.breaking_depth_m, 4),
+        i.breaker_height_m,
+        i.reduction,
+        if breaking { "" } else { "   (not applied: non-breaking)" }
+    );
+    let _ = writeln!(
+        t,
+        "  F_x,max = {:.4} kN/m at {:.4} m above the base   F_y,max = {:.4} kN/m",
+        i.horizontal_force_n_per_m / 1e3,
+        i.horizontal_lever_m,
+        i.uplift_force_n_per_m / 1e3
+    );
     match l.rise_time {
         _ if !breaking => {
             let _ = writeln!(t, "  F* = {:.4} (no impact and no rise time: non-breaking wave, seed Eq. 29)", l.f_star);
         }
         Some(d) => {
-            let _ = writeln!(t, "  F* = {:.4}: impulsive, median t_r = {:.4} s, σ(ln t_r) = {:.4} ({} reading, t_r ≤ T/4)", l.f_star, d.median_clamped_s(), d.log_std, match o.rise_time.model {
-                RiseTimeModel::Median => "median",
-                RiseTimeModel::Literal => "literal",
-            });
+            let _ = writeln!(
+                t,
+                "  F* = {:.4}: impulsive, median t_r = {:.4} s, σ(ln t_r) = {:.4} ({} reading, t_r ≤ T/4)",
+                l.f_star,
+                d.median_clamped_s(),
+                d.log_std,
+                match o.rise_time.model {
+                    RiseTimeModel::Median => "median",
+                    RiseTimeModel::Literal => "literal",
+                }
+            );
         }
         None => {
             let _ = writeln!(t, "  F* = {:.4} ≤ 1: non-impulsive (pulsating loads only)", l.f_star);
         }
     }
     let _ = writeln!(t);
-    let _ = writeln!(t, "Safety (Goda loads, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa",
-        sc.foundation.mu_static, sc.caisson.weight_in_water_n / 1e3 / site.length_m, opt(sf.sliding, 3), opt(sf.overturning, 3), opt(sf.heel_pressure_pa.map(|p| p / 1e3), 3));
+    let _ = writeln!(
+        t,
+        "Safety (Goda loads, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa",
+        sc.foundation.mu_static,
+        sc.caisson.weight_in_water_n / 1e3 / site.length_m,
+        opt(sf.sliding, 3),
+        opt(sf.overturning, 3),
+        opt(sf.heel_pressure_pa.map(|p| p / 1e3), 3)
+    );
     t
 }
 
@@ -255,7 +320,13 @@ fn wave_times(e: &WaveEvent, out: &mut Vec<f64>) {
     }
 }
 
-fn write_history(out: &Path, ws: &WaveScenario, loads: &WaveLoads, records: &[WaveRecord], train: &WaveTrain) -> Result<()> {
+fn write_history(
+    out: &Path,
+    ws: &WaveScenario,
+    loads: &WaveLoads,
+    records: &[WaveRecord],
+    train: &WaveTrain,
+) -> Result<()> {
     let mut times = Vec::new();
     for e in train.events() {
         wave_times(e, &mut times);
@@ -276,9 +347,13 @@ fn write_history(out: &Path, ws: &WaveScenario, loads: &WaveLoads, records: &[Wa
     }
     write_atomic(&out.join("wave_loads.csv"), csv.as_bytes())?;
     // Reference: the pulsating part alone (the same waves without their impacts).
-    let pulsating = WaveTrain::new(train.events().iter().map(|e| WaveEvent { impulse: None, impact: LoadComponent::default(), ..*e }).collect())
-        .map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
-    let reference = |pick: fn(caisson::loads::WaveForce) -> f64| -> Vec<(f64, f64)> { times.iter().map(|&t| (t, pick(pulsating.at(t)) / 1e3)).collect() };
+    let pulsating = WaveTrain::new(
+        train.events().iter().map(|e| WaveEvent { impulse: None, impact: LoadComponent::default(), ..*e }).collect(),
+    )
+    .map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
+    let reference = |pick: fn(caisson::loads::WaveForce) -> f64| -> Vec<(f64, f64)> {
+        times.iter().map(|&t| (t, pick(pulsating.at(t)) / 1e3)).collect()
+    };
     let shape = ws.model.options.load_shape;
     let label = match (loads.regime.regime, shape) {
         (Regime::NonBreaking, _) => "seed Eq. 29".to_string(),
@@ -299,9 +374,18 @@ fn write_history(out: &Path, ws: &WaveScenario, loads: &WaveLoads, records: &[Wa
         &title,
         "time (s)",
         &[
-            Panel { y_label: "F_x (kN)".into(), series: vec![Series::line(label.clone(), fx), Series::dashed(ref_label, reference(|f| f.fx_n))] },
-            Panel { y_label: "F_y (kN)".into(), series: vec![Series::line(label.clone(), fy), Series::dashed(ref_label, reference(|f| f.fy_n))] },
-            Panel { y_label: "M (kN·m)".into(), series: vec![Series::line(label, m), Series::dashed(ref_label, reference(|f| f.m_nm))] },
+            Panel {
+                y_label: "F_x (kN)".into(),
+                series: vec![Series::line(label.clone(), fx), Series::dashed(ref_label, reference(|f| f.fx_n))],
+            },
+            Panel {
+                y_label: "F_y (kN)".into(),
+                series: vec![Series::line(label.clone(), fy), Series::dashed(ref_label, reference(|f| f.fy_n))],
+            },
+            Panel {
+                y_label: "M (kN·m)".into(),
+                series: vec![Series::line(label, m), Series::dashed(ref_label, reference(|f| f.m_nm))],
+            },
         ],
     )
 }

@@ -13,7 +13,9 @@ use serde_json::json;
 
 /// Parse `FROM:TO:COUNT` (0 < FROM < TO, 2 ≤ COUNT ≤ 2000).
 pub fn parse_range(s: &str) -> Result<(f64, f64, usize)> {
-    let bad = || input_err(format!("--tr-over-t0 = \"{s}\": expected FROM:TO:COUNT with 0 < FROM < TO and COUNT a whole number from 2 to 2000, e.g. 0.05:5:60"));
+    let bad = || {
+        input_err(format!("--tr-over-t0 = \"{s}\": expected FROM:TO:COUNT with 0 < FROM < TO and COUNT a whole number from 2 to 2000, e.g. 0.05:5:60"))
+    };
     let parts: Vec<&str> = s.split(':').collect();
     if parts.len() != 3 {
         return Err(bad());
@@ -44,7 +46,10 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     let (from, to, count) = parse_range(&args.tr_over_t0)?;
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     let Some(LoadSpec::Triangle(base)) = sc.load.clone() else {
-        return Err(input_err(format!("{}: `caisson spectrum` needs `[load] kind = \"triangle\"` (its peak forces are swept over rise times)", args.scenario.display())));
+        return Err(input_err(format!(
+            "{}: `caisson spectrum` needs `[load] kind = \"triangle\"` (its peak forces are swept over rise times)",
+            args.scenario.display()
+        )));
     };
     if let Some(dir) = &args.out {
         if dir.exists() && !dir.is_dir() {
@@ -72,11 +77,28 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
             base.peak.fy_n / 1e3,
             sc.foundation.mu_static * sc.caisson.weight_in_water_n / 1e3
         );
-        crate::sayln!("{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}", "tr/T0", "tr (s)", "Ψ", "Ψ closed", "slide (mm)", "Shimosako", "rigid blk", "R_x (kN)");
+        crate::sayln!(
+            "{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}",
+            "tr/T0",
+            "tr (s)",
+            "Ψ",
+            "Ψ closed",
+            "slide (mm)",
+            "Shimosako",
+            "rigid blk",
+            "R_x (kN)"
+        );
         for p in &pts {
             crate::sayln!(
                 "{:>9.4} {:>10.5} {:>8.4} {:>10.4} {:>12.4} {:>12.4} {:>12.4} {:>10.3}",
-                p.tr_over_t0, p.rise_time_s, p.psi, p.psi_closed_form, p.permanent_sliding_m * 1e3, p.shimosako_sliding_m * 1e3, p.rigid_block_sliding_m * 1e3, p.max_horizontal_reaction_n / 1e3
+                p.tr_over_t0,
+                p.rise_time_s,
+                p.psi,
+                p.psi_closed_form,
+                p.permanent_sliding_m * 1e3,
+                p.shimosako_sliding_m * 1e3,
+                p.rigid_block_sliding_m * 1e3,
+                p.max_horizontal_reaction_n / 1e3
             );
         }
         crate::sayln!("Ψ closed: undamped SDOF (PHYSICS.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
@@ -84,24 +106,56 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
         let mut w = csv::Writer::from_writer(Vec::new());
-        w.write_record(["tr_over_t0", "rise_time_s", "psi", "psi_closed_form", "permanent_sliding_m", "shimosako_sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn"])?;
+        w.write_record([
+            "tr_over_t0",
+            "rise_time_s",
+            "psi",
+            "psi_closed_form",
+            "permanent_sliding_m",
+            "shimosako_sliding_m",
+            "rigid_block_sliding_m",
+            "max_horizontal_reaction_kn",
+        ])?;
         for p in &pts {
-            w.write_record(&[p.tr_over_t0, p.rise_time_s, p.psi, p.psi_closed_form, p.permanent_sliding_m, p.shimosako_sliding_m, p.rigid_block_sliding_m, p.max_horizontal_reaction_n / 1e3].map(|v| format!("{v:e}")))?;
+            w.write_record(
+                &[
+                    p.tr_over_t0,
+                    p.rise_time_s,
+                    p.psi,
+                    p.psi_closed_form,
+                    p.permanent_sliding_m,
+                    p.shimosako_sliding_m,
+                    p.rigid_block_sliding_m,
+                    p.max_horizontal_reaction_n / 1e3,
+                ]
+                .map(|v| format!("{v:e}")),
+            )?;
         }
         write_atomic(&dir.join("spectrum.csv"), &w.into_inner()?)?;
         write_atomic(&dir.join("spectrum.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;
         let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
-        panels(&dir.join("spectrum.svg"), "Shock spectrum: triangular pulse (seed Figs. 7-8)", "t_r / T0", &[
-            Panel { y_label: "Ψ = max u_x / (F/K_x)".into(), series: vec![
-                Series::markers("dynamic model", col(|p| p.psi)),
-                Series::dashed("undamped SDOF, closed form", col(|p| p.psi_closed_form)),
-            ]},
-            Panel { y_label: "permanent sliding (mm)".into(), series: vec![
-                Series::markers("dynamic model", col(|p| p.permanent_sliding_m * 1e3)),
-                Series::line("Shimosako (1999) closed form", col(|p| p.shimosako_sliding_m * 1e3)),
-                Series::dashed("exact rigid block", col(|p| p.rigid_block_sliding_m * 1e3)),
-            ]},
-        ])?;
+        panels(
+            &dir.join("spectrum.svg"),
+            "Shock spectrum: triangular pulse (seed Figs. 7-8)",
+            "t_r / T0",
+            &[
+                Panel {
+                    y_label: "Ψ = max u_x / (F/K_x)".into(),
+                    series: vec![
+                        Series::markers("dynamic model", col(|p| p.psi)),
+                        Series::dashed("undamped SDOF, closed form", col(|p| p.psi_closed_form)),
+                    ],
+                },
+                Panel {
+                    y_label: "permanent sliding (mm)".into(),
+                    series: vec![
+                        Series::markers("dynamic model", col(|p| p.permanent_sliding_m * 1e3)),
+                        Series::line("Shimosako (1999) closed form", col(|p| p.shimosako_sliding_m * 1e3)),
+                        Series::dashed("exact rigid block", col(|p| p.rigid_block_sliding_m * 1e3)),
+                    ],
+                },
+            ],
+        )?;
         if !args.json {
             crate::sayln!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
         }

@@ -109,11 +109,20 @@ pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Resu
                 .map_err(|e| anyhow::anyhow!("{e}"))?;
             for (k, s) in panel.series.iter().enumerate() {
                 let color = if s.dashed { RGBColor(90, 90, 90) } else { COLORS[k % COLORS.len()] };
-                let style = ShapeStyle { color: color.to_rgba(), filled: s.markers, stroke_width: if s.dashed { 1 } else { 2 } };
+                let style = ShapeStyle {
+                    color: color.to_rgba(),
+                    filled: s.markers,
+                    stroke_width: if s.dashed { 1 } else { 2 },
+                };
                 let label = s.label.clone();
                 if let Some(r) = &s.ranges {
                     chart
-                        .draw_series(s.points.iter().zip(r).map(|(&(x, _), &(lo, hi))| PathElement::new(vec![(x, lo), (x, hi)], style)))
+                        .draw_series(
+                            s.points
+                                .iter()
+                                .zip(r)
+                                .map(|(&(x, _), &(lo, hi))| PathElement::new(vec![(x, lo), (x, hi)], style)),
+                        )
                         .map_err(|e| anyhow::anyhow!("{e}"))?;
                 }
                 let anno = if s.markers {

@@ -46,13 +46,17 @@ pub fn describe_train(t: &TrainSpec) -> String {
     match t.kind {
         TrainKind::Regular { height_m, variability } => {
             let v = match variability {
-                HeightVariability::Normal { cov, truncation_sigmas } => format!("normal, COV {cov}, truncated at ±{truncation_sigmas}σ"),
+                HeightVariability::Normal { cov, truncation_sigmas } => {
+                    format!("normal, COV {cov}, truncated at ±{truncation_sigmas}σ")
+                }
                 HeightVariability::Uniform { half_width } => format!("uniform ±{:.0} %", half_width * 100.0),
                 HeightVariability::None => "no height variability".to_string(),
             };
             format!("regular H = {height_m} m ({v}), T = {} s", t.period_s)
         }
-        TrainKind::Irregular { significant_height_m } => format!("irregular (Rayleigh) H1/3 = {significant_height_m} m, T1/3 = {} s", t.period_s),
+        TrainKind::Irregular { significant_height_m } => {
+            format!("irregular (Rayleigh) H1/3 = {significant_height_m} m, T1/3 = {} s", t.period_s)
+        }
     }
 }
 
@@ -106,7 +110,13 @@ pub fn realization_json(r: &RealizationResult) -> Value {
 }
 
 /// The JSON summary of a wave-train run.
-pub fn train_summary_json(sc: &Scenario, ws: &WaveScenario, regime: RegimeChoice, rigid_block_mu: f64, s: &TrainSummary) -> Value {
+pub fn train_summary_json(
+    sc: &Scenario,
+    ws: &WaveScenario,
+    regime: RegimeChoice,
+    rigid_block_mu: f64,
+    s: &TrainSummary,
+) -> Value {
     let model = Model::new(&sc.caisson, &sc.foundation);
     let f = FoundationSummary::new(&sc.caisson, &sc.foundation, &model);
     let steps: u64 = s.realizations.iter().map(|r| r.solver.steps).sum();
@@ -145,12 +155,27 @@ fn summary_text(sc: &Scenario, ws: &WaveScenario, case: &TrainCase<'_>, s: &Trai
     let model = Model::new(&sc.caisson, &sc.foundation);
     let f = FoundationSummary::new(&sc.caisson, &sc.foundation, &model);
     let mut t = String::new();
-    let _ = writeln!(t, "Caisson  B = {:.3} m, l = {:.3} m, h = {:.3} m, base {:.3} m below SWL, W' = {:.3} kN in water, m = {:.1} kg",
-        c.width_m, c.length_m, c.height_m, c.base_depth_m, c.weight_in_water_n / 1e3, c.mass_kg);
+    let _ = writeln!(
+        t,
+        "Caisson  B = {:.3} m, l = {:.3} m, h = {:.3} m, base {:.3} m below SWL, W' = {:.3} kN in water, m = {:.1} kg",
+        c.width_m,
+        c.length_m,
+        c.height_m,
+        c.base_depth_m,
+        c.weight_in_water_n / 1e3,
+        c.mass_kg
+    );
     let _ = writeln!(t, "Foundation  K_x = {:.4e} kN/m, K_y = {:.4e} kN/m, C = {:.1} kN·s/m ({} springs, μ_s = {}, μ_d = {}), T0 = {:.4} s",
         f.kx_n_per_m / 1e3, f.ky_n_per_m / 1e3, f.damping_ns_per_m / 1e3, sc.foundation.springs, sc.foundation.mu_static, sc.foundation.mu_dynamic, f.natural_period_s);
-    let _ = writeln!(t, "Waves  {}; {} waves × {} realizations, seed {}, regime {}",
-        describe_train(&ws.train), ws.train.waves, ws.train.realizations, ws.train.seed, choice_name(case.regime));
+    let _ = writeln!(
+        t,
+        "Waves  {}; {} waves × {} realizations, seed {}, regime {}",
+        describe_train(&ws.train),
+        ws.train.waves,
+        ws.train.realizations,
+        ws.train.seed,
+        choice_name(case.regime)
+    );
     if let Ok(nominal) = ws.model.evaluate_with(ws.height_m, ws.period_s, case.regime) {
         let sf = ws.model.safety(&nominal, c.weight_in_water_n, sc.foundation.mu_static);
         let _ = writeln!(t, "       nominal wave: {} (H_br at the wall {:.3} m), Goda P = {:.3} kN/m, U = {:.3} kN/m, static sliding safety factor {}",
@@ -158,29 +183,65 @@ fn summary_text(sc: &Scenario, ws: &WaveScenario, case: &TrainCase<'_>, s: &Trai
             nominal.goda.uplift_force_n_per_m / 1e3, sf.sliding.map_or("-".into(), |v| format!("{v:.3}")));
     }
     let _ = writeln!(t);
-    let _ = writeln!(t, "realization  sliding (mm)  rigid block (mm)  max R_x (kN)  slip events  breaking waves  steps");
+    let _ =
+        writeln!(t, "realization  sliding (mm)  rigid block (mm)  max R_x (kN)  slip events  breaking waves  steps");
     for r in &s.realizations {
         let breaking = r.waves.iter().filter(|w| w.record.regime == Regime::Breaking).count();
-        let _ = writeln!(t, "{:>11}  {:>12.3}  {:>16.3}  {:>12.3}  {:>11}  {:>14}  {:>5}",
-            r.index, r.sliding_m * 1e3, r.rigid_block_sliding_m * 1e3, r.max_horizontal_reaction_n / 1e3, r.slip_events, breaking, r.solver.steps);
+        let _ = writeln!(
+            t,
+            "{:>11}  {:>12.3}  {:>16.3}  {:>12.3}  {:>11}  {:>14}  {:>5}",
+            r.index,
+            r.sliding_m * 1e3,
+            r.rigid_block_sliding_m * 1e3,
+            r.max_horizontal_reaction_n / 1e3,
+            r.slip_events,
+            breaking,
+            r.solver.steps
+        );
     }
     let _ = writeln!(t);
-    let _ = writeln!(t, "Total sliding over {} realizations      mean {:.3} mm, min {:.3} mm, max {:.3} mm",
-        s.realizations.len(), s.sliding_m.mean * 1e3, s.sliding_m.min * 1e3, s.sliding_m.max * 1e3);
-    let _ = writeln!(t, "Rigid block (Shimosako model, μ = {})  mean {:.3} mm, min {:.3} mm, max {:.3} mm",
-        case.rigid_block_mu, s.rigid_block_sliding_m.mean * 1e3, s.rigid_block_sliding_m.min * 1e3, s.rigid_block_sliding_m.max * 1e3);
-    let _ = writeln!(t, "Peak effective horizontal reaction        mean {:.3} kN, max {:.3} kN",
-        s.max_horizontal_reaction_n.mean / 1e3, s.max_horizontal_reaction_n.max / 1e3);
+    let _ = writeln!(
+        t,
+        "Total sliding over {} realizations      mean {:.3} mm, min {:.3} mm, max {:.3} mm",
+        s.realizations.len(),
+        s.sliding_m.mean * 1e3,
+        s.sliding_m.min * 1e3,
+        s.sliding_m.max * 1e3
+    );
+    let _ = writeln!(
+        t,
+        "Rigid block (Shimosako model, μ = {})  mean {:.3} mm, min {:.3} mm, max {:.3} mm",
+        case.rigid_block_mu,
+        s.rigid_block_sliding_m.mean * 1e3,
+        s.rigid_block_sliding_m.min * 1e3,
+        s.rigid_block_sliding_m.max * 1e3
+    );
+    let _ = writeln!(
+        t,
+        "Peak effective horizontal reaction        mean {:.3} kN, max {:.3} kN",
+        s.max_horizontal_reaction_n.mean / 1e3,
+        s.max_horizontal_reaction_n.max / 1e3
+    );
     let limited: usize = s.realizations.iter().map(|r| r.limited_waves).sum();
     if limited > 0 {
-        let _ = writeln!(t, "{limited} waves were limited to the breaker height at the wall (forced non-breaking regime)");
+        let _ =
+            writeln!(t, "{limited} waves were limited to the breaker height at the wall (forced non-breaking regime)");
     }
     t
 }
 
 fn realizations_csv(s: &TrainSummary) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(["realization", "sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn", "slip_events", "breaking_waves", "limited_waves", "steps"])?;
+    w.write_record([
+        "realization",
+        "sliding_m",
+        "rigid_block_sliding_m",
+        "max_horizontal_reaction_kn",
+        "slip_events",
+        "breaking_waves",
+        "limited_waves",
+        "steps",
+    ])?;
     for r in &s.realizations {
         let breaking = r.waves.iter().filter(|w| w.record.regime == Regime::Breaking).count();
         w.write_record(&[
@@ -199,7 +260,17 @@ fn realizations_csv(s: &TrainSummary) -> Result<Vec<u8>> {
 
 fn waves_csv(s: &TrainSummary) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(["realization", "wave", "start_s", "height_m", "regime", "rise_time_s", "sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn"])?;
+    w.write_record([
+        "realization",
+        "wave",
+        "start_s",
+        "height_m",
+        "regime",
+        "rise_time_s",
+        "sliding_m",
+        "rigid_block_sliding_m",
+        "max_horizontal_reaction_kn",
+    ])?;
     for r in &s.realizations {
         for (j, x) in r.waves.iter().enumerate() {
             w.write_record(&[
@@ -237,7 +308,8 @@ fn cumulative_plot(path: &Path, title: &str, s: &TrainSummary) -> Result<()> {
     let mut mean = vec![(0.0, 0.0)];
     let mut acc = 0.0;
     for j in 0..n {
-        acc += s.realizations.iter().map(|r| r.waves[j].rigid_block_sliding_m).sum::<f64>() / s.realizations.len().max(1) as f64;
+        acc += s.realizations.iter().map(|r| r.waves[j].rigid_block_sliding_m).sum::<f64>()
+            / s.realizations.len().max(1) as f64;
         mean.push(((j + 1) as f64, acc * 1e3));
     }
     series.push(Series::dashed("rigid block (Shimosako model), mean", mean));
@@ -271,7 +343,13 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
         // Realization 0 again, with its time histories (deterministic: the same numbers).
         let samples = (case.duration_s() / sc.solver.output_interval_s).ceil() as usize + 1;
         let x = caisson::foundation::Foundation::spring_positions(&sc.foundation, sc.caisson.width_m);
-        let mut h = History::new(sc.solver.output_interval_s, samples, x, sc.caisson.weight_in_water_n, sc.foundation.mu_static);
+        let mut h = History::new(
+            sc.solver.output_interval_s,
+            samples,
+            x,
+            sc.caisson.weight_in_water_n,
+            sc.foundation.mu_static,
+        );
         case.run(0, Some(&mut h)).context("the dynamic run failed")?;
         ensure_dir(dir)?;
         write_atomic(&dir.join("summary.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;

@@ -13,7 +13,8 @@ use std::path::Path;
 const BREAKING: &str = include_str!("../../../examples/pari_breaking_campaign.toml");
 
 /// A reduced grid: 2 heights × 2 weights (4 conditions).
-const GRID: &str = "[campaign]\ntitle = \"reduced PARI grid\"\nheights_m = [0.428, 0.524]\nweights_in_water_kn = [13.7, 16.2]\n";
+const GRID: &str =
+    "[campaign]\ntitle = \"reduced PARI grid\"\nheights_m = [0.428, 0.524]\nweights_in_water_kn = [13.7, 16.2]\n";
 
 fn caisson() -> Command {
     Command::cargo_bin("caisson").expect("the caisson binary is built")
@@ -73,7 +74,10 @@ fn num(v: &Value, key: &str) -> f64 {
 fn spread(v: &Value, key: &str) -> (f64, f64, f64) {
     let s = &v[key];
     let (mean, min, max) = (num(s, "mean"), num(s, "min"), num(s, "max"));
-    assert!(min <= mean * (1.0 + 1e-12) + 1e-15 && mean <= max * (1.0 + 1e-12) + 1e-15, "{key}: min {min}, mean {mean}, max {max}");
+    assert!(
+        min <= mean * (1.0 + 1e-12) + 1e-15 && mean <= max * (1.0 + 1e-12) + 1e-15,
+        "{key}: min {min}, mean {mean}, max {max}"
+    );
     (mean, min, max)
 }
 
@@ -85,13 +89,31 @@ fn assert_keys(v: &Value, keys: &[&str], what: &str) {
 
 /// The keys of one realization (`caisson run`, campaign.json): `n` waves, each with its keys.
 fn check_realization(r: &Value, index: usize, n: usize) {
-    assert_keys(r, &["index", "sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn", "slip_events", "limited_waves", "breaking_waves", "steps", "waves"], "a realization");
+    assert_keys(
+        r,
+        &[
+            "index",
+            "sliding_m",
+            "rigid_block_sliding_m",
+            "max_horizontal_reaction_kn",
+            "slip_events",
+            "limited_waves",
+            "breaking_waves",
+            "steps",
+            "waves",
+        ],
+        "a realization",
+    );
     assert_eq!(r["index"].as_u64(), Some(index as u64));
     let waves = r["waves"].as_array().expect("waves is an array");
     assert_eq!(waves.len(), n);
     let mut sum = 0.0;
     for w in waves {
-        assert_keys(w, &["start_s", "height_m", "regime", "sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn"], "a wave");
+        assert_keys(
+            w,
+            &["start_s", "height_m", "regime", "sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn"],
+            "a wave",
+        );
         assert!(matches!(w["regime"].as_str(), Some("breaking" | "non-breaking")));
         // Only waves with impulsive loads (F* > 1) have a rise time.
         if let Some(tr) = w.get("rise_time_s") {
@@ -117,7 +139,10 @@ fn campaign_json_has_the_documented_keys_and_is_the_same_on_one_and_two_threads(
     assert_eq!(j["title"], "reduced PARI grid");
     assert_eq!(j["damping_mode"], "total");
     assert_keys(&j["waves"], &["description", "waves", "realizations", "seed"], "waves");
-    assert_eq!((j["waves"]["waves"].as_u64(), j["waves"]["realizations"].as_u64(), j["waves"]["seed"].as_u64()), (Some(3), Some(2), Some(1)));
+    assert_eq!(
+        (j["waves"]["waves"].as_u64(), j["waves"]["realizations"].as_u64(), j["waves"]["seed"].as_u64()),
+        (Some(3), Some(2), Some(1))
+    );
     let conditions = j["conditions"].as_array().unwrap();
     // The grid, heights fastest, then weights.
     let order = [(0.428, 13.7), (0.524, 13.7), (0.428, 16.2), (0.524, 16.2)];
@@ -126,8 +151,15 @@ fn campaign_json_has_the_documented_keys_and_is_the_same_on_one_and_two_threads(
         assert_keys(
             c,
             &[
-                "height_m", "weight_in_water_kn", "regime", "nominal_regime", "goda_horizontal_force_kn_per_m", "goda_uplift_force_kn_per_m",
-                "impact_horizontal_force_kn_per_m", "sliding_safety_factor", "realization_sliding_m",
+                "height_m",
+                "weight_in_water_kn",
+                "regime",
+                "nominal_regime",
+                "goda_horizontal_force_kn_per_m",
+                "goda_uplift_force_kn_per_m",
+                "impact_horizontal_force_kn_per_m",
+                "sliding_safety_factor",
+                "realization_sliding_m",
             ],
             "a condition",
         );
@@ -139,7 +171,8 @@ fn campaign_json_has_the_documented_keys_and_is_the_same_on_one_and_two_threads(
         spread(c, "rigid_block_sliding_m");
         spread(c, "max_horizontal_reaction_kn");
         spread(c, "slip_events");
-        let per: Vec<f64> = c["realization_sliding_m"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        let per: Vec<f64> =
+            c["realization_sliding_m"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
         assert_eq!(per.len(), 2);
         assert!((per.iter().sum::<f64>() / 2.0 - mean).abs() <= 1e-15 + 1e-12 * mean.abs());
         assert!(max > 0.0 && num(c, "goda_horizontal_force_kn_per_m") > 0.0 && num(c, "sliding_safety_factor") > 0.0);
@@ -151,10 +184,12 @@ fn campaign_out_writes_json_csv_and_both_plots() {
     let dir = tempfile::tempdir().unwrap();
     let f = write(dir.path(), "campaign.toml", &campaign_text());
     let out = dir.path().join("out");
-    let text = caisson().args(["campaign", &f, "--out", out.to_str().unwrap()]).assert().success().get_output().stdout.clone();
+    let text =
+        caisson().args(["campaign", &f, "--out", out.to_str().unwrap()]).assert().success().get_output().stdout.clone();
     let text = String::from_utf8(text).unwrap();
     assert!(text.starts_with("reduced PARI grid\n") && text.contains("sliding mean / min / max (mm)"), "{text}");
-    let mut names: Vec<String> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
+    let mut names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
     names.sort();
     assert_eq!(names, ["campaign.csv", "campaign.json", "campaign.svg", "campaign_vs_height.svg"]);
     let full: Value = serde_json::from_str(&std::fs::read_to_string(out.join("campaign.json")).unwrap()).unwrap();
@@ -208,7 +243,16 @@ fn run_on_a_wave_scenario_reports_every_realization_and_writes_its_files() {
     }
     assert_keys(
         &j["foundation"],
-        &["kx_kn_per_m", "ky_kn_per_m", "damping_kns_per_m", "mass_kg", "added_mass_kg", "natural_period_s", "static_settlement_m", "static_sliding_resistance_kn"],
+        &[
+            "kx_kn_per_m",
+            "ky_kn_per_m",
+            "damping_kns_per_m",
+            "mass_kg",
+            "added_mass_kg",
+            "natural_period_s",
+            "static_settlement_m",
+            "static_sliding_resistance_kn",
+        ],
         "foundation",
     );
     assert_keys(&j["solver"], &["steps", "newton_iterations", "substeps", "rejected_steps", "max_residual"], "solver");
@@ -217,10 +261,19 @@ fn run_on_a_wave_scenario_reports_every_realization_and_writes_its_files() {
 
     let out = dir.path().join("out");
     caisson().args(["run", &f, "--out", out.to_str().unwrap()]).assert().success();
-    let mut names: Vec<String> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
+    let mut names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
     names.sort();
     let expected = [
-        "displacements.svg", "history.csv", "loads.svg", "realizations.csv", "sliding.svg", "springs.csv", "springs.svg", "summary.json", "waves.csv",
+        "displacements.svg",
+        "history.csv",
+        "loads.svg",
+        "realizations.csv",
+        "sliding.svg",
+        "springs.csv",
+        "springs.svg",
+        "summary.json",
+        "waves.csv",
     ];
     assert_eq!(names, expected);
     let waves_csv = std::fs::read_to_string(out.join("waves.csv")).unwrap();
@@ -239,7 +292,8 @@ fn run_on_a_wave_scenario_reports_every_realization_and_writes_its_files() {
 fn bad(command: &str, text: &str, extra: &[&str], expected: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
     write(dir.path(), "input.toml", text);
-    let out = caisson().current_dir(dir.path()).args([command, "input.toml", "--out", "out"]).args(extra).output().unwrap();
+    let out =
+        caisson().current_dir(dir.path()).args([command, "input.toml", "--out", "out"]).args(extra).output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).to_string();
     let case = format!("{expected:?}");
     assert_eq!(out.status.code(), Some(2), "{case}: exit code; stderr:\n{stderr}");
@@ -249,7 +303,8 @@ fn bad(command: &str, text: &str, extra: &[&str], expected: &[&str]) {
         assert!(stderr.contains(e), "{case}: stderr does not contain `{e}`:\n{stderr}");
     }
     assert!(out.stdout.is_empty(), "{case}: bad input printed to stdout");
-    let present: Vec<String> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
+    let present: Vec<String> =
+        std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
     assert_eq!(present, ["input.toml"], "{case}: files were written for bad input");
 }
 
@@ -268,21 +323,57 @@ fn bad_wave_train_keys_are_named_with_the_allowed_values() {
     let c = campaign_text();
     let w = wave_scenario();
     let irregular = edit(&w, "kind = \"regular\"", "kind = \"irregular\"");
-    let irregular_without_height = edit(&edit(&irregular, "height_m = 0.524 ", "# no height "), "height_variability = \"normal\"", "# no variability");
+    let irregular_without_height = edit(
+        &edit(&irregular, "height_m = 0.524 ", "# no height "),
+        "height_variability = \"normal\"",
+        "# no variability",
+    );
     let cases: [(&str, String, &[&str]); 13] = [
         ("campaign", edit(&c, "waves = 3 ", "waves = 0 "), &["`[waves] waves` = 0", "1 to 1000000"]),
         ("run", edit(&w, "waves = 3 ", "waves = 1.5 "), &["line", "waves = 1.5", "expected i64"]),
-        ("campaign", edit(&c, "realizations = 2", "realizations = -4"), &["`[waves] realizations` = -4", "1 to 1000000"]),
-        ("run", edit(&w, "height_variability = \"normal\"", "height_variability = \"gaussian\""), &["`[waves] height_variability` = \"gaussian\"", "\"uniform\""]),
-        ("campaign", edit(&c, "seed = 1", "seed = 1\nheight_variability_fraction = 0.95"), &["`[waves] height_variability_fraction` = 0.95", "≤ 0.9"]),
-        ("run", edit(&w, "seed = 1", "seed = 1\nheight_truncation_sigmas = 0.2"), &["`[waves] height_truncation_sigmas` = 0.2", "≥ 0.5"]),
-        ("campaign", edit(&c, "seed = 1", "seed = 1\nheight_variability_fraction = 0.6"), &["`[waves] height_variability_fraction` = 0.6", "below 1"]),
+        (
+            "campaign",
+            edit(&c, "realizations = 2", "realizations = -4"),
+            &["`[waves] realizations` = -4", "1 to 1000000"],
+        ),
+        (
+            "run",
+            edit(&w, "height_variability = \"normal\"", "height_variability = \"gaussian\""),
+            &["`[waves] height_variability` = \"gaussian\"", "\"uniform\""],
+        ),
+        (
+            "campaign",
+            edit(&c, "seed = 1", "seed = 1\nheight_variability_fraction = 0.95"),
+            &["`[waves] height_variability_fraction` = 0.95", "≤ 0.9"],
+        ),
+        (
+            "run",
+            edit(&w, "seed = 1", "seed = 1\nheight_truncation_sigmas = 0.2"),
+            &["`[waves] height_truncation_sigmas` = 0.2", "≥ 0.5"],
+        ),
+        (
+            "campaign",
+            edit(&c, "seed = 1", "seed = 1\nheight_variability_fraction = 0.6"),
+            &["`[waves] height_variability_fraction` = 0.6", "below 1"],
+        ),
         ("run", edit(&w, "seed = 1", "seed = -1"), &["`[waves] seed` = -1", "≥ 0"]),
         ("campaign", edit(&c, "seed = 1", "seed = \"one\""), &["line", "seed = \"one\""]),
         ("run", edit(&w, "seed = 1", "seed = 1\nrigid_block_mu = 0"), &["`[waves] rigid_block_mu` = 0", "> 0 and ≤ 2"]),
-        ("campaign", edit(&c, "seed = 1", "seed = 1\nsignificant_height_m = 0.5"), &["`[waves] significant_height_m`", "kind = \"regular\""]),
+        (
+            "campaign",
+            edit(&c, "seed = 1", "seed = 1\nsignificant_height_m = 0.5"),
+            &["`[waves] significant_height_m`", "kind = \"regular\""],
+        ),
         ("run", irregular_without_height, &["missing key `[waves] significant_height_m`"]),
-        ("run", edit(&w, "height_variability = \"normal\"", "height_variability = \"uniform\"\nheight_truncation_sigmas = 2"), &["`[waves] height_truncation_sigmas`", "\"normal\""]),
+        (
+            "run",
+            edit(
+                &w,
+                "height_variability = \"normal\"",
+                "height_variability = \"uniform\"\nheight_truncation_sigmas = 2",
+            ),
+            &["`[waves] height_truncation_sigmas`", "\"normal\""],
+        ),
     ];
     for (command, text, expected) in &cases {
         bad(command, text, &[], expected);
@@ -295,9 +386,17 @@ fn bad_adaptive_solver_keys_are_named_with_the_allowed_values() {
     let cases: [(&str, String, &[&str]); 5] = [
         ("campaign", solver("stepping = \"rk4\""), &["`[solver] stepping` = \"rk4\"", "\"fixed\", \"adaptive\""]),
         ("campaign", solver("dt_max_s = 2.0"), &["`[solver] dt_max_s` = 2", "from dt_s to 1 s"]),
-        ("campaign", solver("error_tolerance_m = 1e-2"), &["`[solver] error_tolerance_m` = 0.01", "m of local displacement error"]),
+        (
+            "campaign",
+            solver("error_tolerance_m = 1e-2"),
+            &["`[solver] error_tolerance_m` = 0.01", "m of local displacement error"],
+        ),
         ("campaign", solver("dt_min_s = 1e-3"), &["`[solver] dt_min_s` = 0.001", "from 1e-9 s to dt_s"]),
-        ("run", format!("{}[solver]\nstepping = \"fixed\"\ndt_max_s = 1e-3\n", wave_scenario()), &["`[solver] dt_max_s`", "stepping = \"adaptive\""]),
+        (
+            "run",
+            format!("{}[solver]\nstepping = \"fixed\"\ndt_max_s = 1e-3\n", wave_scenario()),
+            &["`[solver] dt_max_s`", "stepping = \"adaptive\""],
+        ),
     ];
     for (command, text, expected) in &cases {
         bad(command, text, &[], expected);
@@ -309,20 +408,54 @@ fn bad_campaign_tables_and_options_are_named() {
     let grid = "heights_m = [0.428, 0.524]\nweights_in_water_kn = [13.7, 16.2]\n";
     let cases: [(String, &[&str], &[&str]); 12] = [
         (with_campaign("[campaign]\nconditions = []\n"), &[], &["`[campaign] conditions` = []", "at least one"]),
-        (with_campaign("[campaign]\nheights_m = [0.428, -0.5]\nweights_in_water_kn = [13.7]\n"), &[], &["`[campaign] heights_m[1]` = -0.5", "> 0 (m)"]),
-        (with_campaign("[campaign]\nheights_m = []\nweights_in_water_kn = [13.7]\n"), &[], &["`[campaign] heights_m` = []", "at least one"]),
-        (with_campaign("[campaign]\nheights_m = [0.428]\nweights_in_water_kn = [0.0]\n"), &[], &["`[campaign] weights_in_water_kn[0]` = 0", "> 0 (kN)"]),
-        (with_campaign("[campaign]\nheights_m = [0.428]\n"), &[], &["missing key `[campaign] weights_in_water_kn`"]),
-        (with_campaign(&format!("[campaign]\n{grid}regimes = [\"sometimes\"]\n")), &[], &["`[campaign] regimes[0]` = \"sometimes\"", "\"non-breaking\""]),
         (
-            with_campaign("[campaign]\nconditions = [{ height_m = 0.4, weight_in_water_kn = 13.7, regime = \"maybe\" }]\n"),
+            with_campaign("[campaign]\nheights_m = [0.428, -0.5]\nweights_in_water_kn = [13.7]\n"),
+            &[],
+            &["`[campaign] heights_m[1]` = -0.5", "> 0 (m)"],
+        ),
+        (
+            with_campaign("[campaign]\nheights_m = []\nweights_in_water_kn = [13.7]\n"),
+            &[],
+            &["`[campaign] heights_m` = []", "at least one"],
+        ),
+        (
+            with_campaign("[campaign]\nheights_m = [0.428]\nweights_in_water_kn = [0.0]\n"),
+            &[],
+            &["`[campaign] weights_in_water_kn[0]` = 0", "> 0 (kN)"],
+        ),
+        (with_campaign("[campaign]\nheights_m = [0.428]\n"), &[], &["missing key `[campaign] weights_in_water_kn`"]),
+        (
+            with_campaign(&format!("[campaign]\n{grid}regimes = [\"sometimes\"]\n")),
+            &[],
+            &["`[campaign] regimes[0]` = \"sometimes\"", "\"non-breaking\""],
+        ),
+        (
+            with_campaign(
+                "[campaign]\nconditions = [{ height_m = 0.4, weight_in_water_kn = 13.7, regime = \"maybe\" }]\n",
+            ),
             &[],
             &["`[campaign] conditions[0].regime` = \"maybe\"", "\"auto\""],
         ),
-        (with_campaign(&format!("[campaign]\n{grid}conditions = [{{ height_m = 0.4, weight_in_water_kn = 13.7 }}]\n")), &[], &["`[campaign]` has both a grid", "conditions"]),
+        (
+            with_campaign(&format!(
+                "[campaign]\n{grid}conditions = [{{ height_m = 0.4, weight_in_water_kn = 13.7 }}]\n"
+            )),
+            &[],
+            &["`[campaign]` has both a grid", "conditions"],
+        ),
         // A height that breaks at the wall (H_br = 0.336 m) cannot be forced non-breaking.
-        (with_campaign("[campaign]\nheights_m = [0.5]\nweights_in_water_kn = [13.7]\nregimes = [\"non-breaking\"]\n"), &[], &["regimes[0]", "\"non-breaking\"", "breaks"]),
-        (format!("{}[load]\nkind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\n", campaign_text()), &[], &["[load]"]),
+        (
+            with_campaign(
+                "[campaign]\nheights_m = [0.5]\nweights_in_water_kn = [13.7]\nregimes = [\"non-breaking\"]\n",
+            ),
+            &[],
+            &["regimes[0]", "\"non-breaking\"", "breaks"],
+        ),
+        (
+            format!("{}[load]\nkind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\n", campaign_text()),
+            &[],
+            &["[load]"],
+        ),
         (wave_scenario(), &[], &["missing key `[campaign]`"]),
         (campaign_text(), &["--damping-mode", "bogus"], &["--damping-mode \"bogus\"", "\"total\" or \"elastic\""]),
     ];

@@ -69,16 +69,37 @@ fn json_of(out: &[u8]) -> Value {
 fn json_has_the_documented_keys_and_is_the_same_on_any_thread_count() {
     let dir = tempfile::tempdir().unwrap();
     let f = write(dir.path(), "d.toml", &design_text(12, ""));
-    let one = caisson().args(["design", f.to_str().unwrap(), "--json", "--threads", "1"]).assert().success().get_output().stdout.clone();
-    let two = caisson().args(["design", f.to_str().unwrap(), "--json", "--threads", "2"]).assert().success().get_output().stdout.clone();
+    let one = caisson()
+        .args(["design", f.to_str().unwrap(), "--json", "--threads", "1"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let two = caisson()
+        .args(["design", f.to_str().unwrap(), "--json", "--threads", "2"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
     assert_eq!(one, two, "results must not depend on the thread count");
     let j = json_of(&one);
     for model in ["dynamic", "rigid_block"] {
         let m = &j[model];
         assert!(m["expected_sliding_m"].as_f64().unwrap() >= 0.0);
-        assert!((m["expected_sliding_per_year_m"].as_f64().unwrap() - m["expected_sliding_m"].as_f64().unwrap() / 5.0).abs() < 1e-15);
+        assert!(
+            (m["expected_sliding_per_year_m"].as_f64().unwrap() - m["expected_sliding_m"].as_f64().unwrap() / 5.0)
+                .abs()
+                < 1e-15
+        );
         let p = &m["percentiles_m"];
-        let (p5, p50, p95, p99) = (p["p5"].as_f64().unwrap(), p["p50"].as_f64().unwrap(), p["p95"].as_f64().unwrap(), p["p99"].as_f64().unwrap());
+        let (p5, p50, p95, p99) = (
+            p["p5"].as_f64().unwrap(),
+            p["p50"].as_f64().unwrap(),
+            p["p95"].as_f64().unwrap(),
+            p["p99"].as_f64().unwrap(),
+        );
         assert!(p5 <= p50 && p50 <= p95 && p95 <= p99);
         let ex = m["exceedance_probability"].as_array().unwrap();
         let thresholds: Vec<f64> = ex.iter().map(|e| e["threshold_m"].as_f64().unwrap()).collect();
@@ -88,7 +109,11 @@ fn json_has_the_documented_keys_and_is_the_same_on_any_thread_count() {
     }
     let share = j["screened_share"].as_f64().unwrap();
     assert!((0.0..=1.0).contains(&share));
-    assert_eq!(j["waves"].as_u64().unwrap(), j["simulated_waves"].as_u64().unwrap() + j["screened_waves"].as_u64().unwrap(), "every wave is either simulated or screened");
+    assert_eq!(
+        j["waves"].as_u64().unwrap(),
+        j["simulated_waves"].as_u64().unwrap() + j["screened_waves"].as_u64().unwrap(),
+        "every wave is either simulated or screened"
+    );
     // The test is not vacuous: some life slides.
     assert!(j["dynamic"]["expected_sliding_m"].as_f64().unwrap() > 0.0);
 }
@@ -99,14 +124,41 @@ fn an_interrupted_run_resumes_to_the_identical_result() {
     let f = write(dir.path(), "d.toml", &design_text(10, ""));
     let full = dir.path().join("full");
     let part = dir.path().join("part");
-    let reference = caisson().args(["design", f.to_str().unwrap(), "--json", "--out", full.to_str().unwrap()]).assert().success().get_output().stdout.clone();
+    let reference = caisson()
+        .args(["design", f.to_str().unwrap(), "--json", "--out", full.to_str().unwrap()])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
     // Stop after 3 lives: exit 1, the checkpoint keeps them, no results written.
-    let out = caisson().args(["design", f.to_str().unwrap(), "--json", "--threads", "1", "--stop-after", "3", "--out", part.to_str().unwrap()]).assert().code(1).get_output().clone();
+    let out = caisson()
+        .args([
+            "design",
+            f.to_str().unwrap(),
+            "--json",
+            "--threads",
+            "1",
+            "--stop-after",
+            "3",
+            "--out",
+            part.to_str().unwrap(),
+        ])
+        .assert()
+        .code(1)
+        .get_output()
+        .clone();
     assert!(String::from_utf8_lossy(&out.stderr).contains("--resume"));
     let cp = std::fs::read_to_string(part.join("checkpoint.jsonl")).unwrap();
     assert_eq!(cp.lines().count(), 1 + 3, "header + 3 lives");
     assert!(!part.join("design.json").exists());
-    let resumed = caisson().args(["design", f.to_str().unwrap(), "--json", "--resume", "--out", part.to_str().unwrap()]).assert().success().get_output().stdout.clone();
+    let resumed = caisson()
+        .args(["design", f.to_str().unwrap(), "--json", "--resume", "--out", part.to_str().unwrap()])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
     assert_eq!(resumed, reference, "resume must give exactly the uninterrupted result");
     assert_eq!(std::fs::read(part.join("lives.csv")).unwrap(), std::fs::read(full.join("lives.csv")).unwrap());
 }
@@ -143,9 +195,20 @@ fn a_killed_run_resumes_to_the_identical_result() {
     }
     assert!(lines >= 2, "the checkpoint keeps the finished lives");
     // Simulate a line cut by the kill, then resume.
-    std::fs::OpenOptions::new().append(true).open(&cp).and_then(|mut fh| std::io::Write::write_all(&mut fh, b"{\"life\": 39")).unwrap();
-    let resumed = caisson().args(["design", f.to_str().unwrap(), "--json", "--resume", "--out", out.to_str().unwrap()]).assert().success().get_output().stdout.clone();
-    let reference = caisson().args(["design", f.to_str().unwrap(), "--json"]).assert().success().get_output().stdout.clone();
+    std::fs::OpenOptions::new()
+        .append(true)
+        .open(&cp)
+        .and_then(|mut fh| std::io::Write::write_all(&mut fh, b"{\"life\": 39"))
+        .unwrap();
+    let resumed = caisson()
+        .args(["design", f.to_str().unwrap(), "--json", "--resume", "--out", out.to_str().unwrap()])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let reference =
+        caisson().args(["design", f.to_str().unwrap(), "--json"]).assert().success().get_output().stdout.clone();
     assert_eq!(resumed, reference);
 }
 
@@ -154,9 +217,18 @@ fn resume_refuses_a_checkpoint_of_another_run() {
     let dir = tempfile::tempdir().unwrap();
     let f = write(dir.path(), "d.toml", &design_text(4, ""));
     let out = dir.path().join("out");
-    caisson().args(["design", f.to_str().unwrap(), "--stop-after", "1", "--threads", "1", "--out", out.to_str().unwrap()]).assert().code(1);
+    caisson()
+        .args(["design", f.to_str().unwrap(), "--stop-after", "1", "--threads", "1", "--out", out.to_str().unwrap()])
+        .assert()
+        .code(1);
     let g = write(dir.path(), "d.toml", &design_text(4, "").replace("seed = 3", "seed = 4"));
-    let err = caisson().args(["design", g.to_str().unwrap(), "--resume", "--out", out.to_str().unwrap()]).assert().code(2).get_output().stderr.clone();
+    let err = caisson()
+        .args(["design", g.to_str().unwrap(), "--resume", "--out", out.to_str().unwrap()])
+        .assert()
+        .code(2)
+        .get_output()
+        .stderr
+        .clone();
     let err = String::from_utf8_lossy(&err);
     assert!(err.starts_with("Error:") && err.contains("different scenario"), "{err}");
 }
@@ -182,7 +254,12 @@ fn bad_design_keys_are_named() {
         let text = design_text(4, "").replace(from, to);
         let f = write(dir.path(), "bad.toml", &text);
         let out = dir.path().join("never");
-        let o = caisson().args(["design", f.to_str().unwrap(), "--out", out.to_str().unwrap()]).assert().code(2).get_output().clone();
+        let o = caisson()
+            .args(["design", f.to_str().unwrap(), "--out", out.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .get_output()
+            .clone();
         let err = String::from_utf8_lossy(&o.stderr);
         assert!(err.starts_with("Error:") && err.contains(key), "{to}: {err}");
         assert!(!out.exists(), "{to}: nothing may be written");

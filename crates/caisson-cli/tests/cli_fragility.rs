@@ -99,7 +99,15 @@ fn json_contract_and_probabilities_rising_with_height() {
     for (i, l) in levels.iter().enumerate() {
         assert_eq!(finite(&l["significant_height_m"], "height"), [3.0, 6.0, 9.0, 12.0, 15.0][i]);
         assert!((finite(&l["hmax_m"], "hmax_m") - 1.8 * [3.0, 6.0, 9.0, 12.0, 15.0][i]).abs() < 1e-12);
-        for key in ["mean_sliding_m", "max_sliding_m", "mean_rigid_block_sliding_m", "max_rigid_block_sliding_m", "screened_share", "simulated_waves", "goda_sliding_safety_factor"] {
+        for key in [
+            "mean_sliding_m",
+            "max_sliding_m",
+            "mean_rigid_block_sliding_m",
+            "max_rigid_block_sliding_m",
+            "screened_share",
+            "simulated_waves",
+            "goda_sliding_safety_factor",
+        ] {
             assert!(finite(&l[key], key) >= 0.0, "{key}");
         }
         assert_eq!(l["storms"], 8);
@@ -116,9 +124,15 @@ fn json_contract_and_probabilities_rising_with_height() {
                 assert_eq!(p, k as f64 / 8.0);
                 // The counts agree with the storm slidings.
                 let key = if m == 0 { "storm_sliding_m" } else { "storm_rigid_block_sliding_m" };
-                let by_hand = l[key].as_array().unwrap().iter().filter(|s| s.as_f64().unwrap() > [0.05, 0.2][j]).count() as u64;
+                let by_hand =
+                    l[key].as_array().unwrap().iter().filter(|s| s.as_f64().unwrap() > [0.05, 0.2][j]).count() as u64;
                 assert_eq!(k, by_hand);
-                assert!(p >= previous[m][j], "P({model} > {}) falls from {} to {p} at level {i}", [0.05, 0.2][j], previous[m][j]);
+                assert!(
+                    p >= previous[m][j],
+                    "P({model} > {}) falls from {} to {p} at level {i}",
+                    [0.05, 0.2][j],
+                    previous[m][j]
+                );
                 previous[m][j] = p;
             }
         }
@@ -170,14 +184,17 @@ fn out_writes_json_csv_and_svg() {
     let csv = std::fs::read_to_string(out.join("fragility.csv")).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines.len(), 1 + 5 * 2, "a header and one row per (height, limit)");
-    assert!(lines[0].starts_with("significant_height_m,hmax_m,storms,limit_m,dynamic_count,dynamic_probability,dynamic_fitted_probability"));
+    assert!(lines[0].starts_with(
+        "significant_height_m,hmax_m,storms,limit_m,dynamic_count,dynamic_probability,dynamic_fitted_probability"
+    ));
     assert!(!csv.contains("NaN") && !csv.to_lowercase().contains("inf"));
     let svg = std::fs::read_to_string(out.join("fragility.svg")).unwrap();
     assert!(svg.starts_with("<svg"));
     for label in ["P(S &gt; 0.05 m), dynamic", "P(S &gt; 0.2 m), rigid block"] {
         assert!(svg.contains(label), "no panel `{label}`");
     }
-    let mut names: Vec<String> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    let mut names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
     names.sort();
     assert_eq!(names, ["fragility.csv", "fragility.json", "fragility.svg"]);
 }
@@ -186,13 +203,17 @@ fn out_writes_json_csv_and_svg() {
 fn the_shipped_example_runs_with_fewer_storms() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let text = std::fs::read_to_string(root.join("examples/fragility.toml")).unwrap();
-    let fewer: String = text.lines().map(|l| if l.starts_with("storms = ") { "storms = 2" } else { l }).collect::<Vec<_>>().join("\n");
+    let fewer: String =
+        text.lines().map(|l| if l.starts_with("storms = ") { "storms = 2" } else { l }).collect::<Vec<_>>().join("\n");
     assert_ne!(fewer, text.trim_end(), "the example's storms line changed; update this test");
     let dir = tempfile::tempdir().unwrap();
     let (_, v) = run_json(dir.path(), &fewer, "0");
     assert_eq!(v["levels"].as_array().unwrap().len(), 9);
     let sf = finite(&v["design_wave"]["goda_sliding_safety_factor"], "design SF");
-    assert!((1.15..1.3).contains(&sf), "the example's design wave should have a static sliding safety factor of about 1.2, not {sf}");
+    assert!(
+        (1.15..1.3).contains(&sf),
+        "the example's design wave should have a static sliding safety factor of about 1.2, not {sf}"
+    );
 }
 
 /// Bad input: exit code 2, `Error:` naming `key`, no panic, nothing on stdout, `out` not created.
@@ -227,7 +248,10 @@ fn bad_inputs_name_their_key_and_write_nothing() {
     bad(&edit("seed = 1", "seed = -1"), "[fragility] seed");
     bad(&edit("seed = 1", "seed = 1\nscreen = false"), "screen");
     bad(&BASE[..BASE.find("[fragility]").unwrap()], "[fragility]");
-    bad(&edit("kind = \"irregular\"\nsignificant_height_m = 7.5", "kind = \"regular\"\nheight_m = 7.5"), "[waves] kind");
+    bad(
+        &edit("kind = \"irregular\"\nsignificant_height_m = 7.5", "kind = \"regular\"\nheight_m = 7.5"),
+        "[waves] kind",
+    );
     bad(&edit("period_s = 12.8\n[solver]", "period_s = 12.8\nseed = 4\n[solver]"), "[waves] seed");
     bad(&edit("weight_in_water_kn = 5000.0", "weight_in_water_kn = -5000.0"), "[caisson] weight_in_water_kn");
     // A file that is not there.

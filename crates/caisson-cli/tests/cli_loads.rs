@@ -57,7 +57,12 @@ fn nonbreaking_example_reports_physics_md_values() {
     close(&v, "sainflou.suction_uplift_kn_per_m", -1.497, 5e-3, 3);
     assert_eq!(v["regime"]["regime"], "non-breaking");
     assert_eq!(v["impact"]["applied"], false);
-    for k in ["impact.breaking_depth_m", "impact.breaker_height_m", "impact.horizontal_force_kn_per_m", "impact.uplift_force_kn_per_m"] {
+    for k in [
+        "impact.breaking_depth_m",
+        "impact.breaker_height_m",
+        "impact.horizontal_force_kn_per_m",
+        "impact.uplift_force_kn_per_m",
+    ] {
         num(&v, k);
     }
     // §11: H = 0.524 m slides for W = 8.2 kN (μ = 0.6): sliding factor below 1.

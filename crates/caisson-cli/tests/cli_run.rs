@@ -51,7 +51,10 @@ fn edit(from: &str, to: &str) -> String {
 
 /// The base caisson driven by a series file `forces.csv`.
 fn series_scenario() -> String {
-    edit("kind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\nduration_s = 0.3\n", "kind = \"series\"\nfile = \"forces.csv\"\n")
+    edit(
+        "kind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\nduration_s = 0.3\n",
+        "kind = \"series\"\nfile = \"forces.csv\"\n",
+    )
 }
 
 /// Run `caisson run SCENARIO --out out` in a fresh directory holding the scenario (unless
@@ -123,12 +126,18 @@ fn missing_weight_and_mass_names_both_alternatives() {
 
 #[test]
 fn missing_part_of_the_direct_stiffness_names_the_key_and_the_soil_route() {
-    bad_toml(&edit("e100_kpa = 3.5e5\n", "kx_kn_per_m = 1.5e5\n"), &["[foundation] ky_kn_per_m", "damping_kns_per_m", "e100_kpa"]);
+    bad_toml(
+        &edit("e100_kpa = 3.5e5\n", "kx_kn_per_m = 1.5e5\n"),
+        &["[foundation] ky_kn_per_m", "damping_kns_per_m", "e100_kpa"],
+    );
 }
 
 #[test]
 fn unknown_key_reports_file_line_and_the_allowed_keys() {
-    bad_toml(&edit("height_m = 1.12", "heigth_m = 1.12"), &["scenario.toml line 4", "heigth_m", "height_m", "base_depth_m"]);
+    bad_toml(
+        &edit("height_m = 1.12", "heigth_m = 1.12"),
+        &["scenario.toml line 4", "heigth_m", "height_m", "base_depth_m"],
+    );
 }
 
 #[test]
@@ -153,12 +162,18 @@ fn negative_height() {
 
 #[test]
 fn zero_weight_in_water() {
-    bad_toml(&edit("weight_in_water_kn = 8.24", "weight_in_water_kn = 0.0"), &["[caisson] weight_in_water_kn", "= 0", "> 0"]);
+    bad_toml(
+        &edit("weight_in_water_kn = 8.24", "weight_in_water_kn = 0.0"),
+        &["[caisson] weight_in_water_kn", "= 0", "> 0"],
+    );
 }
 
 #[test]
 fn negative_weight_in_water() {
-    bad_toml(&edit("weight_in_water_kn = 8.24", "weight_in_water_kn = -8.24"), &["[caisson] weight_in_water_kn", "-8.24", "> 0"]);
+    bad_toml(
+        &edit("weight_in_water_kn = 8.24", "weight_in_water_kn = -8.24"),
+        &["[caisson] weight_in_water_kn", "-8.24", "> 0"],
+    );
 }
 
 #[test]
@@ -202,7 +217,10 @@ fn one_spring() {
 
 #[test]
 fn base_deeper_than_the_caisson_is_tall() {
-    bad_toml(&edit("base_depth_m = 0.8", "base_depth_m = 1.5"), &["[caisson] base_depth_m", "1.5", "between 0 and the caisson height 1.12 m"]);
+    bad_toml(
+        &edit("base_depth_m = 0.8", "base_depth_m = 1.5"),
+        &["[caisson] base_depth_m", "1.5", "between 0 and the caisson height 1.12 m"],
+    );
 }
 
 #[test]
@@ -232,7 +250,10 @@ fn infinite_height() {
 
 #[test]
 fn unknown_load_kind() {
-    bad_toml(&edit("kind = \"triangle\"", "kind = \"sinus\""), &["[load] kind", "sinus", "\"triangle\", \"static\", \"series\""]);
+    bad_toml(
+        &edit("kind = \"triangle\"", "kind = \"sinus\""),
+        &["[load] kind", "sinus", "\"triangle\", \"static\", \"series\""],
+    );
 }
 
 #[test]
@@ -298,7 +319,11 @@ fn series_with_unsorted_time_reports_the_line() {
 #[test]
 fn series_with_a_bad_column_header() {
     let csv = "time_s,fx_kn,fy_kn,moment\n0,0,0,0\n0.1,1,0,0\n";
-    bad(Some(&series_scenario()), Some(csv), &["forces.csv", "`time_s,fx_kn,fy_kn,moment`", "time_s,fx_kn,fy_kn,moment_knm", "horizontal_lever_m"]);
+    bad(
+        Some(&series_scenario()),
+        Some(csv),
+        &["forces.csv", "`time_s,fx_kn,fy_kn,moment`", "time_s,fx_kn,fy_kn,moment_knm", "horizontal_lever_m"],
+    );
 }
 
 #[test]
@@ -352,8 +377,13 @@ fn within_rel(name: &str, got: f64, want: f64, rel: f64) {
     assert!((got - want).abs() <= rel * want.abs(), "{name} = {got}, expected {want} within {} %", rel * 100.0);
 }
 
-const CONTRACT_TOP: [&str; 5] =
-    ["permanent_sliding_m", "max_horizontal_displacement_m", "max_rotation_rad", "max_horizontal_reaction_kn", "slip_events"];
+const CONTRACT_TOP: [&str; 5] = [
+    "permanent_sliding_m",
+    "max_horizontal_displacement_m",
+    "max_rotation_rad",
+    "max_horizontal_reaction_kn",
+    "slip_events",
+];
 const CONTRACT_FOUNDATION: [&str; 8] = [
     "kx_kn_per_m",
     "ky_kn_per_m",
@@ -400,8 +430,18 @@ fn triangle_example_reports_the_contract_keys_and_the_table6_foundation() {
     // T0 = 2π sqrt((m + m_hyd)/K_x) and settlement W'/K_y from the reported values, 1e-9 relative.
     let m_total = num(&j, "foundation.mass_kg") + num(&j, "foundation.added_mass_kg");
     let kx = num(&j, "foundation.kx_kn_per_m") * 1e3;
-    within_rel("T0 (s)", num(&j, "foundation.natural_period_s"), 2.0 * std::f64::consts::PI * (m_total / kx).sqrt(), 1e-9);
-    within_rel("static settlement (m)", num(&j, "foundation.static_settlement_m"), 8.24 / num(&j, "foundation.ky_kn_per_m"), 1e-9);
+    within_rel(
+        "T0 (s)",
+        num(&j, "foundation.natural_period_s"),
+        2.0 * std::f64::consts::PI * (m_total / kx).sqrt(),
+        1e-9,
+    );
+    within_rel(
+        "static settlement (m)",
+        num(&j, "foundation.static_settlement_m"),
+        8.24 / num(&j, "foundation.ky_kn_per_m"),
+        1e-9,
+    );
 
     // The 12 kN peak exceeds μ_s W' = 4.94 kN: the caisson slips, during the pulse (2 t_r = 0.1 s),
     // and keeps a permanent shoreward displacement no larger than its peak displacement.
@@ -411,7 +451,10 @@ fn triangle_example_reports_the_contract_keys_and_the_table6_foundation() {
     let sliding = num(&j, "permanent_sliding_m");
     let peak_ux = num(&j, "max_horizontal_displacement_m");
     assert!(sliding > 0.0, "permanent sliding {sliding} m is not shoreward");
-    assert!(sliding <= peak_ux * (1.0 + 1e-9), "permanent sliding {sliding} m exceeds the peak displacement {peak_ux} m");
+    assert!(
+        sliding <= peak_ux * (1.0 + 1e-9),
+        "permanent sliding {sliding} m exceeds the peak displacement {peak_ux} m"
+    );
     let reaction = num(&j, "max_horizontal_reaction_kn");
     assert!(reaction > 0.0 && reaction <= 2.0 * 12.0, "peak reaction {reaction} kN outside (0, 2 × peak force]");
     assert!(num(&j, "max_rotation_rad") >= 0.0);
@@ -468,7 +511,9 @@ fn triangle_example_writes_every_output_file() {
         "time_s,ux_m,uy_m,theta_rad,vx_m_per_s,fx_kn,fy_kn,moment_knm,reaction_x_kn,reaction_y_kn,reaction_moment_knm,sliding_resistance_kn,sliding_springs"
     );
     let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap_or_else(|_| panic!("history.csv: `{v}` in `{l}`"))).collect())
+        .map(|l| {
+            l.split(',').map(|v| v.parse::<f64>().unwrap_or_else(|_| panic!("history.csv: `{v}` in `{l}`"))).collect()
+        })
         .collect();
     assert!(rows.len() > 100, "history.csv has {} rows", rows.len());
     assert!(rows.iter().all(|r| r.len() == 13 && r.iter().all(|v| v.is_finite())));

@@ -59,12 +59,22 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("fifteen_waves");
     g.sample_size(10);
     g.bench_function("45.6s_dt1e-4", |b| {
-        b.iter(|| run_with(&s.caisson, &s.foundation, s.solver, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
+        b.iter(|| {
+            run_with(&s.caisson, &s.foundation, s.solver, black_box(&load), 45.6, false)
+                .unwrap()
+                .summary
+                .permanent_sliding_m
+        })
     });
     // The same test with the adaptive stepper at its defaults (the wave-train default).
     let adaptive = SolverParams { stepping: Stepping::Adaptive(AdaptiveParams::default()), ..s.solver };
     g.bench_function("45.6s_adaptive", |b| {
-        b.iter(|| run_with(&s.caisson, &s.foundation, adaptive, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
+        b.iter(|| {
+            run_with(&s.caisson, &s.foundation, adaptive, black_box(&load), 45.6, false)
+                .unwrap()
+                .summary
+                .permanent_sliding_m
+        })
     });
     g.finish();
 }

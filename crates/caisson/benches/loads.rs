@@ -29,7 +29,12 @@ fn bench(c: &mut Criterion) {
         b.iter(|| model.evaluate(black_box(0.428), black_box(3.04)).unwrap())
     });
     let recs: Vec<WaveRecord> = (0..1000)
-        .map(|j| WaveRecord { height_m: 0.428, period_s: 3.04, regime: Regime::Breaking, rise_time_s: Some(0.01 + 1e-4 * j as f64) })
+        .map(|j| WaveRecord {
+            height_m: 0.428,
+            period_s: 3.04,
+            regime: Regime::Breaking,
+            rise_time_s: Some(0.01 + 1e-4 * j as f64),
+        })
         .collect();
     let train = model.train(&recs).unwrap();
     let mut t = 0.0;

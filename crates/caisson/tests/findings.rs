@@ -82,7 +82,8 @@ fn breaking_sliding_peaks_between_the_middle_heights_with_nominal_waves() {
     let rs = campaign(BREAKING, |f| f.waves.as_mut().unwrap().height_variability = Some("none".into()));
     for w in [16.2, 17.8] {
         let s: Vec<f64> = HEIGHTS.iter().map(|&h| mean(&rs, h, w).unwrap()).collect();
-        let (imax, _) = s.iter().enumerate().fold((0, f64::NEG_INFINITY), |a, (i, &v)| if v > a.1 { (i, v) } else { a });
+        let (imax, _) =
+            s.iter().enumerate().fold((0, f64::NEG_INFINITY), |a, (i, &v)| if v > a.1 { (i, v) } else { a });
         assert!(imax == 1 || imax == 2, "W = {w}: sliding {:?} m peaks at H = {}", s, HEIGHTS[imax]);
         assert!(s[3] < s[imax] && s[0] < s[imax], "W = {w}: not monotonic expected, got {s:?}");
     }
@@ -123,12 +124,20 @@ fn pulse_findings_of_figures_7_and_8() {
         assert!(p.permanent_sliding_m < NO_SLIDE_M, "t_r/T0 = {}: slides {} m", p.tr_over_t0, p.permanent_sliding_m);
     }
     assert!(
-        pts.iter().filter(|p| (0.5..=2.0).contains(&p.tr_over_t0)).any(|p| p.permanent_sliding_m > p.shimosako_sliding_m),
+        pts.iter()
+            .filter(|p| (0.5..=2.0).contains(&p.tr_over_t0))
+            .any(|p| p.permanent_sliding_m > p.shimosako_sliding_m),
         "no point near t_r ≈ T0 slides more than Shimosako: {:?}",
         pts.iter().map(|p| (p.tr_over_t0, p.permanent_sliding_m, p.shimosako_sliding_m)).collect::<Vec<_>>()
     );
     for p in pts.iter().filter(|p| p.tr_over_t0 >= 5.0) {
-        assert!(p.permanent_sliding_m < p.shimosako_sliding_m, "t_r/T0 = {}: {} ≥ Shimosako {}", p.tr_over_t0, p.permanent_sliding_m, p.shimosako_sliding_m);
+        assert!(
+            p.permanent_sliding_m < p.shimosako_sliding_m,
+            "t_r/T0 = {}: {} ≥ Shimosako {}",
+            p.tr_over_t0,
+            p.permanent_sliding_m,
+            p.shimosako_sliding_m
+        );
     }
 }
 
@@ -143,8 +152,18 @@ fn elastic_placement_slides_more_than_the_rigid_block_and_total_less() {
         let rb = e.summary.rigid_block_sliding_m.mean;
         assert_eq!(rb, t.summary.rigid_block_sliding_m.mean, "the reference does not depend on the dashpot");
         if rb > 1e-3 {
-            assert!(e.summary.sliding_m.mean > rb, "{:?}: elastic {} vs rigid block {rb}", e.condition, e.summary.sliding_m.mean);
-            assert!(t.summary.sliding_m.mean < rb, "{:?}: total {} vs rigid block {rb}", t.condition, t.summary.sliding_m.mean);
+            assert!(
+                e.summary.sliding_m.mean > rb,
+                "{:?}: elastic {} vs rigid block {rb}",
+                e.condition,
+                e.summary.sliding_m.mean
+            );
+            assert!(
+                t.summary.sliding_m.mean < rb,
+                "{:?}: total {} vs rigid block {rb}",
+                t.condition,
+                t.summary.sliding_m.mean
+            );
         }
     }
 }

@@ -51,7 +51,14 @@ fn lives(screen: bool) -> Vec<StormOutcome> {
     let sc = validate(&f, Path::new(".")).unwrap();
     let ws = validate_waves(&f, &sc.caisson).unwrap();
     let spec = validate_design(&f).unwrap();
-    let st = Structure { caisson: &sc.caisson, foundation: &sc.foundation, solver: sc.solver, model: &ws.model, rigid_block_mu: 0.6, screen };
+    let st = Structure {
+        caisson: &sc.caisson,
+        foundation: &sc.foundation,
+        solver: sc.solver,
+        model: &ws.model,
+        rigid_block_mu: 0.6,
+        screen,
+    };
     (0..spec.lives).map(|i| simulate_life(&st, &spec.life, spec.seed, i).unwrap()).collect()
 }
 
@@ -71,10 +78,16 @@ fn the_screen_skips_only_waves_that_do_not_slide() {
         assert_eq!(b.screened, 0);
         screened += a.screened;
         total_sliding += b.sliding_m;
-        assert!((a.rigid_block_sliding_m - b.rigid_block_sliding_m).abs() <= 1e-12 * b.rigid_block_sliding_m.abs().max(1.0), "rigid block {a:?} vs {b:?}");
+        assert!(
+            (a.rigid_block_sliding_m - b.rigid_block_sliding_m).abs() <= 1e-12 * b.rigid_block_sliding_m.abs().max(1.0),
+            "rigid block {a:?} vs {b:?}"
+        );
         assert!((a.sliding_m - b.sliding_m).abs() <= 1e-6, "dynamic {} vs {} m", a.sliding_m, b.sliding_m);
     }
-    assert!(screened > 0 && total_sliding > 0.01, "the test must screen waves and slide ({screened} screened, {total_sliding} m)");
+    assert!(
+        screened > 0 && total_sliding > 0.01,
+        "the test must screen waves and slide ({screened} screened, {total_sliding} m)"
+    );
 }
 
 /// With the physically placed dashpots (beside the springs), impacts short against T0 are

@@ -44,23 +44,43 @@ fn adaptive_time_loop_does_not_allocate() {
     let mut peaks = caisson::analysis::run::Peaks::default();
     let (result, allocations) = count_allocations(|| sim.run_until(0.6, &load, &mut peaks));
     result.unwrap();
-    assert!(peaks.slip_events >= 1 && sim.stats.rejected_steps > 0, "the test must exercise sliding and step rejection");
+    assert!(
+        peaks.slip_events >= 1 && sim.stats.rejected_steps > 0,
+        "the test must exercise sliding and step rejection"
+    );
     assert_eq!(allocations, 0, "allocations in the adaptive time loop");
 }
 
 /// `WaveTrain::at` (the wave-load `LoadHistory`) allocates nothing, for every load shape.
 #[test]
 fn wave_train_at_does_not_allocate() {
-    let site = WaveSite { rho_w: 1000.0, depth_at_toe_m: 1.14, depth_at_wall_m: 0.4, base_depth_m: 0.8, crest_freeboard_m: 0.32, width_m: 0.78, length_m: 1.0, seabed_slope: 0.0, berm_width_m: None };
+    let site = WaveSite {
+        rho_w: 1000.0,
+        depth_at_toe_m: 1.14,
+        depth_at_wall_m: 0.4,
+        base_depth_m: 0.8,
+        crest_freeboard_m: 0.32,
+        width_m: 0.78,
+        length_m: 1.0,
+        seabed_slope: 0.0,
+        berm_width_m: None,
+    };
     let mut checked = 0;
     for (_, shape) in LoadShape::ALL {
-        let model = WaveLoadModel { site, options: WaveLoadOptions { load_shape: shape, ..WaveLoadOptions::default() } };
+        let model =
+            WaveLoadModel { site, options: WaveLoadOptions { load_shape: shape, ..WaveLoadOptions::default() } };
         let recs: Vec<WaveRecord> = (0..50)
-            .map(|j| WaveRecord { height_m: 0.428, period_s: 3.04, regime: if j % 3 == 0 { Regime::NonBreaking } else { Regime::Breaking }, rise_time_s: Some(0.01 + 1e-3 * j as f64) })
+            .map(|j| WaveRecord {
+                height_m: 0.428,
+                period_s: 3.04,
+                regime: if j % 3 == 0 { Regime::NonBreaking } else { Regime::Breaking },
+                rise_time_s: Some(0.01 + 1e-3 * j as f64),
+            })
             .map(|r| if r.regime == Regime::NonBreaking { WaveRecord { height_m: 0.3, ..r } } else { r })
             .collect();
         let train = model.train(&recs).unwrap();
-        let (sum, allocations) = count_allocations(|| (0..200_000).map(|k| train.at(k as f64 * 1e-3).fx_n).sum::<f64>());
+        let (sum, allocations) =
+            count_allocations(|| (0..200_000).map(|k| train.at(k as f64 * 1e-3).fx_n).sum::<f64>());
         assert_eq!(allocations, 0, "{shape:?}: at() allocated");
         assert!(sum.is_finite() && sum != 0.0, "{shape:?}: the train must load the caisson");
         checked += 1;

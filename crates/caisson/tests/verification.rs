@@ -76,7 +76,14 @@ horizontal_lever_m = 0.0
     let pts = sweep(&s.caisson, &s.foundation, s.solver, base, &ratios).unwrap();
     for p in pts {
         let err = (p.psi / p.psi_closed_form - 1.0).abs();
-        assert!(err < 0.005, "t_r/T0 = {}: Ψ {} vs closed form {} ({:.3} %)", p.tr_over_t0, p.psi, p.psi_closed_form, 100.0 * err);
+        assert!(
+            err < 0.005,
+            "t_r/T0 = {}: Ψ {} vs closed form {} ({:.3} %)",
+            p.tr_over_t0,
+            p.psi,
+            p.psi_closed_form,
+            100.0 * err
+        );
         assert_eq!(p.permanent_sliding_m.abs() < 1e-12, true, "no sliding expected");
     }
 }
@@ -176,7 +183,10 @@ output_interval_s = 1e-3
         let first_slip = (0..h.len()).find(|&k| h.sliding_springs[k] > 0).expect("the push must slide the caisson");
         let f = h.fx_n[first_slip];
         let expected = 0.6 * (8240.0 - h.fy_n[first_slip]);
-        assert!((f / expected - 1.0).abs() < 0.01, "U = {uplift_kn} kN: sliding starts at {f} N, expected {expected} N");
+        assert!(
+            (f / expected - 1.0).abs() < 0.01,
+            "U = {uplift_kn} kN: sliding starts at {f} N, expected {expected} N"
+        );
         // Before sliding, at every sample: N increases from the seaward to the shoreward end,
         // and the springs in contact lie on a line (rigid base), both to 1e-6 of W' (the start
         // of the ramp excites a dynamic transient of a few 1e-6 N, see the coupled mass).
@@ -225,7 +235,9 @@ fn sliding_converges_in_dt() {
 /// static settlement is W'/K_y.
 #[test]
 fn no_sliding_below_resistance_and_settlement() {
-    let text = format!("{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 1.0\nrise_time_s = 0.05\nduration_s = 0.3\n");
+    let text = format!(
+        "{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 1.0\nrise_time_s = 0.05\nduration_s = 0.3\n"
+    );
     let s = scenario(&text);
     let r = run(&s, false).unwrap().summary;
     assert_eq!(r.slip_events, 0);

@@ -107,7 +107,15 @@ fn sainflou_table_of_physics_md_2_4() {
     ];
     let l = wavelength_m(T, HS);
     for r in rows {
-        let s = sainflou(&SainflouInput { height_m: r[0], wavelength_m: l, depth_m: HS, base_depth_m: 0.8, crest_freeboard_m: 0.32, width_m: 0.78, rho_w: 1000.0 });
+        let s = sainflou(&SainflouInput {
+            height_m: r[0],
+            wavelength_m: l,
+            depth_m: HS,
+            base_depth_m: 0.8,
+            crest_freeboard_m: 0.32,
+            width_m: 0.78,
+            rho_w: 1000.0,
+        });
         let tag = format!("H = {}", r[0]);
         close(&format!("{tag} h0"), s.h0_m, r[1], 5e-3, 4);
         close(&format!("{tag} F_trough"), s.trough_force_n_per_m / 1e3, r[2], 5e-3, 3);
@@ -202,7 +210,11 @@ fn closed_form_forces_equal_numerical_integrals_of_the_pressures() {
         };
         let (f, m) = integrate(p, -hc, hp, hp, n);
         assert!((f - g.horizontal_force_n_per_m).abs() < 1e-6 * f, "Goda P: {f} vs {}", g.horizontal_force_n_per_m);
-        assert!((m - g.horizontal_moment_base_nm_per_m).abs() < 1e-6 * m, "Goda M_P: {m} vs {}", g.horizontal_moment_base_nm_per_m);
+        assert!(
+            (m - g.horizontal_moment_base_nm_per_m).abs() < 1e-6 * m,
+            "Goda M_P: {m} vs {}",
+            g.horizontal_moment_base_nm_per_m
+        );
         // Uplift: triangle pu → 0 over B; moment about the heel by integration.
         let b = 0.78;
         let (u, mu) = integrate(|x| g.pu_pa * x / b, 0.0, b, 0.0, n); // x from the heel; "hp − z" = −x
@@ -211,7 +223,15 @@ fn closed_form_forces_equal_numerical_integrals_of_the_pressures() {
 
         // Sainflou trough (§2.2), net pressure, integrated from SWL to the base.
         let l = wavelength_m(T, HS);
-        let s = sainflou(&SainflouInput { height_m: h, wavelength_m: l, depth_m: HS, base_depth_m: hp, crest_freeboard_m: hc, width_m: b, rho_w: 1000.0 });
+        let s = sainflou(&SainflouInput {
+            height_m: h,
+            wavelength_m: l,
+            depth_m: HS,
+            base_depth_m: hp,
+            crest_freeboard_m: hc,
+            width_m: b,
+            rho_w: 1000.0,
+        });
         let gw = 1000.0 * G_M_PER_S2;
         let kh = 2.0 * std::f64::consts::PI * HS / l;
         let h0 = std::f64::consts::PI * h * h / l / kh.tanh();
@@ -226,7 +246,11 @@ fn closed_form_forces_equal_numerical_integrals_of_the_pressures() {
         };
         let (f, m) = integrate(pt, 0.0, hp, hp, n);
         assert!((f - s.trough_force_n_per_m).abs() < 1e-6 * f.abs(), "Sainflou F: {f} vs {}", s.trough_force_n_per_m);
-        assert!((m - s.trough_moment_base_nm_per_m).abs() < 1e-6 * m.abs(), "Sainflou M: {m} vs {}", s.trough_moment_base_nm_per_m);
+        assert!(
+            (m - s.trough_moment_base_nm_per_m).abs() < 1e-6 * m.abs(),
+            "Sainflou M: {m} vs {}",
+            s.trough_moment_base_nm_per_m
+        );
 
         // Impact distribution (§4.3): M_h closed form vs integration of the pressure.
         let mut ii = impact_pari(h);
@@ -265,7 +289,8 @@ fn table_2_shapes_have_their_analytic_impulse() {
     ];
     for (shape, analytic) in cases {
         let imp = Impulse { shape, rise_s: tr, duration_s: td };
-        let e = WaveEvent::new(0.0, T, comp(fqs, 0.4, 1e3), 1.0, comp(2e3, 0.3, 500.0), comp(fmax, 0.5, 2e3), Some(imp));
+        let e =
+            WaveEvent::new(0.0, T, comp(fqs, 0.4, 1e3), 1.0, comp(2e3, 0.3, 500.0), comp(fmax, 0.5, 2e3), Some(imp));
         let got = impulse_x(&e, 2_000_000);
         assert!((got - analytic).abs() < 1e-6 * analytic, "{shape:?}: {got} vs {analytic}");
     }
@@ -286,7 +311,9 @@ fn eq29_and_eq31_are_continuous_and_signed() {
     ];
     let train = model.train(&recs).unwrap();
     let nb_model = WaveLoadModel { site: pari_site(0.8), options: WaveLoadOptions::default() };
-    let nb = nb_model.train(&[WaveRecord { height_m: 0.524, period_s: T, regime: Regime::NonBreaking, rise_time_s: None }]).unwrap();
+    let nb = nb_model
+        .train(&[WaveRecord { height_m: 0.524, period_s: T, regime: Regime::NonBreaking, rise_time_s: None }])
+        .unwrap();
     // Continuity: the largest jump between samples 1e-7 s apart is bounded by the steepest slope
     // (F_max/t_r ≈ 15.3 kN / 0.015 s ≈ 1e6 N/s → 0.1 N per 1e-7 s). Tolerance 1 N, 1 N·m.
     for (name, h, end) in [("Eq. 31", &train as &dyn LoadHistory, 2.0 * T), ("Eq. 29", &nb, T)] {
@@ -297,7 +324,10 @@ fn eq29_and_eq31_are_continuous_and_signed() {
         }
         for &t in marks.iter().filter(|&&t| t > 0.0 && t < end) {
             let (a, b) = (h.at(t - 1e-7), h.at(t + 1e-7));
-            assert!((a.fx_n - b.fx_n).abs() < 1.0 && (a.fy_n - b.fy_n).abs() < 1.0 && (a.m_nm - b.m_nm).abs() < 1.0, "{name} jump at t = {t}: {a:?} → {b:?}");
+            assert!(
+                (a.fx_n - b.fx_n).abs() < 1.0 && (a.fy_n - b.fy_n).abs() < 1.0 && (a.m_nm - b.m_nm).abs() < 1.0,
+                "{name} jump at t = {t}: {a:?} → {b:?}"
+            );
         }
         // Signs: shoreward/uplift in the first half-period, seaward/suction in the second.
         for k in 1..2000 {
@@ -318,7 +348,8 @@ fn eq29_and_eq31_are_continuous_and_signed() {
     assert!((nb.at(T / 4.0).fx_n - 0.8 * nbl.goda.horizontal_force_n_per_m).abs() < 1e-6);
     assert!((nb.at(0.75 * T).fx_n - nbl.sainflou.trough_force_n_per_m).abs() < 1e-6);
     // The moment of the impact peak uses the impact lever: m = F_x y_L + F_y (2B/3 − B/2).
-    let m = loads.impact.horizontal_force_n_per_m * loads.impact.horizontal_lever_m + loads.impact.uplift_force_n_per_m * (0.52 - 0.39);
+    let m = loads.impact.horizontal_force_n_per_m * loads.impact.horizontal_lever_m
+        + loads.impact.uplift_force_n_per_m * (0.52 - 0.39);
     assert!((peak.m_nm - m).abs() < 1e-9 * m);
 }
 

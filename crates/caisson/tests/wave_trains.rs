@@ -22,8 +22,10 @@ const BREAKING: &str = include_str!("../../../examples/pari_breaking_campaign.to
 /// A PARI campaign file cut to `waves` waves × `realizations` realizations and the listed
 /// conditions (H m, W' kN, regime).
 fn reduced(text: &str, waves: i64, realizations: i64, conditions: &[(f64, f64, &str)]) -> Campaign {
-    let list: String =
-        conditions.iter().map(|(h, w, r)| format!("{{ height_m = {h}, weight_in_water_kn = {w}, regime = \"{r}\" }}, ")).collect();
+    let list: String = conditions
+        .iter()
+        .map(|(h, w, r)| format!("{{ height_m = {h}, weight_in_water_kn = {w}, regime = \"{r}\" }}, "))
+        .collect();
     let text = format!("{}[campaign]\nconditions = [{list}]\n", &text[..text.find("[campaign]").unwrap()]);
     let mut f = parse_str(&text, Path::new("campaign.toml")).unwrap();
     let w = f.waves.as_mut().unwrap();
@@ -91,7 +93,10 @@ fn a_campaign_gives_identical_results_on_one_and_three_threads() {
     let one = on(1);
     let three = on(3);
     assert_eq!(one.len(), 4);
-    assert!(one.iter().all(|c| c.summary.realizations.len() == 4 && c.summary.sliding_m.max > 1e-4), "every condition slides");
+    assert!(
+        one.iter().all(|c| c.summary.realizations.len() == 4 && c.summary.sliding_m.max > 1e-4),
+        "every condition slides"
+    );
     assert!(one == three, "1 and 3 threads differ");
 }
 
@@ -120,8 +125,19 @@ fn b_adaptive_steps_slide_as_far_as_fixed_steps_of_1e_4_s() {
         let fixed = fixed_case.run(0, None).unwrap();
         assert!(fixed.sliding_m > 5e-3, "H = {h} m, W' = {w} kN must slide (it slides {} m)", fixed.sliding_m);
         let rel = (adaptive.sliding_m - fixed.sliding_m).abs() / fixed.sliding_m;
-        assert!(rel <= 5e-3, "H = {h} m, W' = {w} kN: adaptive {} m vs fixed {} m ({:.3} %)", adaptive.sliding_m, fixed.sliding_m, rel * 100.0);
-        assert!(adaptive.solver.steps * 10 < fixed.solver.steps, "adaptive {} steps, fixed {}", adaptive.solver.steps, fixed.solver.steps);
+        assert!(
+            rel <= 5e-3,
+            "H = {h} m, W' = {w} kN: adaptive {} m vs fixed {} m ({:.3} %)",
+            adaptive.sliding_m,
+            fixed.sliding_m,
+            rel * 100.0
+        );
+        assert!(
+            adaptive.solver.steps * 10 < fixed.solver.steps,
+            "adaptive {} steps, fixed {}",
+            adaptive.solver.steps,
+            fixed.solver.steps
+        );
     }
 }
 
@@ -140,7 +156,11 @@ fn check_symmetric(x: &[f64], h: f64, sigma: f64, bound: f64, reach: f64) {
     within_5_se("mean", m, h, sigma / n.sqrt());
     within_5_se("sd", sd, sigma, sigma / (2.0 * n).sqrt());
     let (lo, hi) = (h * (1.0 - bound) * (1.0 - 1e-12), h * (1.0 + bound) * (1.0 + 1e-12));
-    assert!(x.iter().all(|&v| (lo..=hi).contains(&v)), "a height outside H (1 ± {bound}): {:?}", x.iter().find(|&&v| !(lo..=hi).contains(&v)));
+    assert!(
+        x.iter().all(|&v| (lo..=hi).contains(&v)),
+        "a height outside H (1 ± {bound}): {:?}",
+        x.iter().find(|&&v| !(lo..=hi).contains(&v))
+    );
     let (min, max) = x.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
     assert!(min < h * (1.0 - reach) && max > h * (1.0 + reach), "heights only from {min} to {max} m");
 }

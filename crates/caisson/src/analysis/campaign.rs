@@ -37,8 +37,12 @@ pub fn case_of(s: &ConditionSetup) -> TrainCase<'_> {
 }
 
 /// Run every realization of every condition in parallel (module docs).
-pub fn run_campaign(setups: &[ConditionSetup], tick: &(dyn Fn() + Sync)) -> Result<Vec<ConditionResult>, TrainRunError> {
-    let jobs: Vec<(usize, usize)> = setups.iter().enumerate().flat_map(|(c, s)| (0..s.waves.train.realizations).map(move |r| (c, r))).collect();
+pub fn run_campaign(
+    setups: &[ConditionSetup],
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<ConditionResult>, TrainRunError> {
+    let jobs: Vec<(usize, usize)> =
+        setups.iter().enumerate().flat_map(|(c, s)| (0..s.waves.train.realizations).map(move |r| (c, r))).collect();
     let results: Vec<RealizationResult> = jobs
         .par_iter()
         .map(|&(c, r)| {
@@ -52,8 +56,13 @@ pub fn run_campaign(setups: &[ConditionSetup], tick: &(dyn Fn() + Sync)) -> Resu
         .iter()
         .map(|s| {
             let rs: Vec<RealizationResult> = results.by_ref().take(s.waves.train.realizations).collect();
-            let nominal = s.waves.model.evaluate_with(s.waves.height_m, s.waves.period_s, s.condition.regime).map_err(|e: RegimeError| TrainRunError::Regime(e))?;
-            let safety = s.waves.model.safety(&nominal, s.scenario.caisson.weight_in_water_n, s.scenario.foundation.mu_static);
+            let nominal = s
+                .waves
+                .model
+                .evaluate_with(s.waves.height_m, s.waves.period_s, s.condition.regime)
+                .map_err(|e: RegimeError| TrainRunError::Regime(e))?;
+            let safety =
+                s.waves.model.safety(&nominal, s.scenario.caisson.weight_in_water_n, s.scenario.foundation.mu_static);
             Ok(ConditionResult { condition: s.condition, nominal, safety, summary: TrainSummary::new(rs) })
         })
         .collect()

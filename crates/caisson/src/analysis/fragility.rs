@@ -72,7 +72,18 @@ const LN_MEDIAN_MARGIN: f64 = 5.0;
 const P_CLAMP: f64 = 1e-12;
 
 /// Coefficients of the Chebyshev fit of `erfcc` (Numerical Recipes, §6.2), lowest order first.
-const ERFCC: [f64; 10] = [-1.265_512_23, 1.000_023_68, 0.374_091_96, 0.096_784_18, -0.186_288_06, 0.278_868_07, -1.135_203_98, 1.488_515_87, -0.822_152_23, 0.170_872_77];
+const ERFCC: [f64; 10] = [
+    -1.265_512_23,
+    1.000_023_68,
+    0.374_091_96,
+    0.096_784_18,
+    -0.186_288_06,
+    0.278_868_07,
+    -1.135_203_98,
+    1.488_515_87,
+    -0.822_152_23,
+    0.170_872_77,
+];
 
 /// erfc(x), Numerical Recipes `erfcc`: erfc(|x|) = t exp(−x² + Σ c_k t^k), t = 1/(1 + |x|/2)
 /// (fractional error < 1.2e-7 for all x), and erfc(−x) = 2 − erfc(x).
@@ -149,7 +160,13 @@ fn neg_log_likelihood(x: &[f64], k: &[u64], n: &[u64], ln_median: f64, beta: f64
 /// Nelder & Mead (1965) simplex minimisation in two dimensions (reflection 1, expansion 2,
 /// contraction 1/2, shrink 1/2), from `start` with initial steps `step`, until every vertex is
 /// within `xtol` of the best (in each coordinate) or `max_evals` evaluations.
-fn nelder_mead(f: &dyn Fn([f64; 2]) -> f64, start: [f64; 2], step: [f64; 2], xtol: f64, max_evals: usize) -> ([f64; 2], f64) {
+fn nelder_mead(
+    f: &dyn Fn([f64; 2]) -> f64,
+    start: [f64; 2],
+    step: [f64; 2],
+    xtol: f64,
+    max_evals: usize,
+) -> ([f64; 2], f64) {
     let mut v = [start, [start[0] + step[0], start[1]], [start[0], start[1] + step[1]]];
     let mut fv = [f(v[0]), f(v[1]), f(v[2])];
     let mut evals = 3;
@@ -324,7 +341,9 @@ pub struct LevelResult {
 
 impl LevelResult {
     fn new(h13_m: f64, storms: Vec<StormOutcome>, limits_m: &[f64]) -> Self {
-        let count = |f: fn(&StormOutcome) -> f64| limits_m.iter().map(|&s| storms.iter().filter(|o| f(o) > s).count() as u64).collect();
+        let count = |f: fn(&StormOutcome) -> f64| {
+            limits_m.iter().map(|&s| storms.iter().filter(|o| f(o) > s).count() as u64).collect()
+        };
         LevelResult {
             h13_m,
             hmax_m: HMAX_RATIO * h13_m,
@@ -383,7 +402,11 @@ pub struct StormFailed {
 }
 
 /// Run every storm of every height in parallel and fit the curves (module docs).
-pub fn run_fragility(st: &Structure<'_>, p: &FragilityParams, tick: &(dyn Fn() + Sync)) -> Result<FragilityResult, StormFailed> {
+pub fn run_fragility(
+    st: &Structure<'_>,
+    p: &FragilityParams,
+    tick: &(dyn Fn() + Sync),
+) -> Result<FragilityResult, StormFailed> {
     let storms = p.storms;
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
@@ -391,12 +414,21 @@ pub fn run_fragility(st: &Structure<'_>, p: &FragilityParams, tick: &(dyn Fn() +
             let (level, storm) = (job / storms, job % storms);
             let h = p.heights_m[level];
             let mut rng = realization_rng(p.seed, job);
-            let out = simulate_storm(st, &p.storm_input(h), &mut rng).map_err(|source| StormFailed { h13_m: h, storm, source });
+            let out = simulate_storm(st, &p.storm_input(h), &mut rng).map_err(|source| StormFailed {
+                h13_m: h,
+                storm,
+                source,
+            });
             tick();
             out
         })
         .collect::<Result<_, _>>()?;
-    let levels: Vec<LevelResult> = p.heights_m.iter().zip(outcomes.chunks(storms.max(1))).map(|(&h, o)| LevelResult::new(h, o.to_vec(), &p.limits_m)).collect();
+    let levels: Vec<LevelResult> = p
+        .heights_m
+        .iter()
+        .zip(outcomes.chunks(storms.max(1)))
+        .map(|(&h, o)| LevelResult::new(h, o.to_vec(), &p.limits_m))
+        .collect();
     Ok(FragilityResult { fits: fit_levels(&levels, &p.limits_m), levels })
 }
 
@@ -474,12 +506,20 @@ mod tests {
         for seed in 0..20 {
             let mut rng = load_rng(seed);
             let n = vec![200_u64; im.len()];
-            let k: Vec<u64> = im.iter().map(|&x| {
-                let p = normal_cdf((x / median).ln() / beta);
-                (0..200).filter(|_| rng.gen::<f64>() < p).count() as u64
-            }).collect();
+            let k: Vec<u64> = im
+                .iter()
+                .map(|&x| {
+                    let p = normal_cdf((x / median).ln() / beta);
+                    (0..200).filter(|_| rng.gen::<f64>() < p).count() as u64
+                })
+                .collect();
             let f = fit_lognormal(&im, &k, &n).unwrap();
-            assert!((f.median.ln() - median.ln()).abs() < 4.0 * f.ln_median_se, "seed {seed}: θ = {} ± {}", f.median, f.ln_median_se);
+            assert!(
+                (f.median.ln() - median.ln()).abs() < 4.0 * f.ln_median_se,
+                "seed {seed}: θ = {} ± {}",
+                f.median,
+                f.ln_median_se
+            );
             assert!((f.beta - beta).abs() < 4.0 * f.beta_se, "seed {seed}: β = {} ± {}", f.beta, f.beta_se);
             assert!(f.ln_median_se < 0.05 && f.beta_se < 0.1, "standard errors {} {}", f.ln_median_se, f.beta_se);
         }
@@ -518,10 +558,26 @@ mod tests {
 
     #[test]
     fn storms_follow_the_grid() {
-        let p = FragilityParams { heights_m: vec![2.0, 4.0], storms: 3, limits_m: vec![0.1], storm_duration_s: 7200.0, period_s: 11.0, seed: 1 };
+        let p = FragilityParams {
+            heights_m: vec![2.0, 4.0],
+            storms: 3,
+            limits_m: vec![0.1],
+            storm_duration_s: 7200.0,
+            period_s: 11.0,
+            seed: 1,
+        };
         let s = p.storm_input(4.0);
-        assert_eq!((s.h13_m, s.hmax_m, s.waves, s.tide_m, s.force_factor, s.friction_factor), (4.0, 7.2, 655, 0.0, 1.0, 1.0));
-        let storms = [0.05, 0.1, 0.2].map(|v| StormOutcome { sliding_m: v, rigid_block_sliding_m: 2.0 * v, waves: 10, screened: 4, ..StormOutcome::default() });
+        assert_eq!(
+            (s.h13_m, s.hmax_m, s.waves, s.tide_m, s.force_factor, s.friction_factor),
+            (4.0, 7.2, 655, 0.0, 1.0, 1.0)
+        );
+        let storms = [0.05, 0.1, 0.2].map(|v| StormOutcome {
+            sliding_m: v,
+            rigid_block_sliding_m: 2.0 * v,
+            waves: 10,
+            screened: 4,
+            ..StormOutcome::default()
+        });
         let l = LevelResult::new(2.0, storms.to_vec(), &[0.05, 0.1, 0.3]);
         assert_eq!(l.dynamic_exceedances, vec![2, 1, 0]);
         assert_eq!(l.rigid_block_exceedances, vec![3, 2, 1]);

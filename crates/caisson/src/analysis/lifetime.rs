@@ -77,7 +77,9 @@ impl StormDistribution {
     /// The height of non-exceedance probability `p` in (0, 1).
     pub fn quantile_m(&self, p: f64) -> f64 {
         match *self {
-            StormDistribution::Weibull { scale_m, shape, location_m } => location_m + scale_m * (-(1.0 - p).ln()).powf(1.0 / shape),
+            StormDistribution::Weibull { scale_m, shape, location_m } => {
+                location_m + scale_m * (-(1.0 - p).ln()).powf(1.0 / shape)
+            }
             StormDistribution::Gumbel { location_m, scale_m } => location_m - scale_m * (-p.ln()).ln(),
         }
     }
@@ -240,12 +242,16 @@ pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> 
     if st.screen {
         for (i, flag) in node.iter_mut().enumerate() {
             let h = (i as f64 * dh).max(1e-3 * hmax);
-            *flag = model.evaluate_with(h, s.period_s, RegimeChoice::Auto).map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen, caisson.width_m));
+            *flag = model
+                .evaluate_with(h, s.period_s, RegimeChoice::Auto)
+                .map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen, caisson.width_m));
         }
         let hbr = model.breaker_height_at_wall_m(s.period_s);
         if hbr < hmax {
             let j = (hbr / dh) as usize;
-            let flag = model.evaluate_with(hbr, s.period_s, RegimeChoice::Auto).map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen, caisson.width_m));
+            let flag = model
+                .evaluate_with(hbr, s.period_s, RegimeChoice::Auto)
+                .map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen, caisson.width_m));
             node[j] |= flag;
             node[(j + 1).min(SCREEN_CELLS)] |= flag;
         }
@@ -264,7 +270,9 @@ pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> 
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
         let loads = match model.evaluate_with(h, s.period_s, model.options.regime) {
             Ok(l) => l,
-            Err(_) => model.evaluate_with(h, s.period_s, RegimeChoice::Auto).expect("the automatic regime always applies"),
+            Err(_) => {
+                model.evaluate_with(h, s.period_s, RegimeChoice::Auto).expect("the automatic regime always applies")
+            }
         };
         let event = event_of(&loads, loads.rise_time.map(|d| d.at_deviate(z)));
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);
@@ -292,7 +300,12 @@ pub fn simulate_life(st: &Structure<'_>, p: &LifeParams, seed: u64, index: usize
     for _ in 0..p.life_years {
         let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
         let e = &p.errors;
-        let (e_h0, e_tr, e_f, e_mu) = (e.deep_water_height.draw(&mut rng), e.transformation.draw(&mut rng), e.wave_force.draw(&mut rng), e.friction.draw(&mut rng));
+        let (e_h0, e_tr, e_f, e_mu) = (
+            e.deep_water_height.draw(&mut rng),
+            e.transformation.draw(&mut rng),
+            e.wave_force.draw(&mut rng),
+            e.friction.draw(&mut rng),
+        );
         let phi = 2.0 * PI * rng.gen::<f64>();
         let h0 = (p.storms.quantile_m(u) * e_h0).max(1e-3);
         let period_s = p.period_coefficient * h0.powf(p.period_exponent);
@@ -334,7 +347,10 @@ pub fn life_statistics(values: &[f64], thresholds_m: &[f64]) -> LifeStatistics {
         lives: n,
         mean_m: if n == 0 { 0.0 } else { values.iter().sum::<f64>() / n as f64 },
         percentiles_m: [5.0, 50.0, 95.0, 99.0].iter().map(|&p| (p, pct(p))).collect(),
-        exceedance: thresholds_m.iter().map(|&t| (t, values.iter().filter(|&&v| v > t).count() as f64 / n.max(1) as f64)).collect(),
+        exceedance: thresholds_m
+            .iter()
+            .map(|&t| (t, values.iter().filter(|&&v| v > t).count() as f64 / n.max(1) as f64))
+            .collect(),
     }
 }
 

@@ -13,10 +13,10 @@
 //! * **Slip event**: a step at which the caisson goes from no spring slipping to at least one.
 
 use crate::dynamics::{Model, Observer, Simulation, SolveError, SolverStats, StepView};
+use crate::foundation::Foundation;
 use crate::loads::LoadHistory;
 use crate::scenario::{Scenario, SolverParams};
 use crate::structure::Caisson;
-use crate::foundation::Foundation;
 
 /// At most this many slip-event times are kept (all are counted).
 pub const MAX_SLIP_TIMES: usize = 10_000;
@@ -288,7 +288,14 @@ pub fn run_with<L: LoadHistory + ?Sized>(
     let mut peaks = Peaks::default();
     {
         // Record the initial (static equilibrium) state.
-        let view = StepView { t_s: 0.0, state: sim.state(), load: load.at(0.0), reaction: sim.reaction(), springs: sim.springs(), iterations: 0 };
+        let view = StepView {
+            t_s: 0.0,
+            state: sim.state(),
+            load: load.at(0.0),
+            reaction: sim.reaction(),
+            springs: sim.springs(),
+            iterations: 0,
+        };
         if let Some(h) = history.as_mut() {
             h.observe(&view);
         }

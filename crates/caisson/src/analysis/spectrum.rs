@@ -42,7 +42,13 @@ pub fn log_space(from: f64, to: f64, count: usize) -> Vec<f64> {
 }
 
 /// Sweep `ratios` of t_r/T0 for the pulse `base` (its rise time is replaced).
-pub fn sweep(caisson: &Caisson, foundation: &Foundation, solver: SolverParams, base: TrianglePulse, ratios: &[f64]) -> Result<Vec<SpectrumPoint>, SolveError> {
+pub fn sweep(
+    caisson: &Caisson,
+    foundation: &Foundation,
+    solver: SolverParams,
+    base: TrianglePulse,
+    ratios: &[f64],
+) -> Result<Vec<SpectrumPoint>, SolveError> {
     let model = Model::new(caisson, foundation);
     let t0 = model.natural_period_s();
     let m_x = model.horizontal_mass_kg();

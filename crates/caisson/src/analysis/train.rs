@@ -92,7 +92,12 @@ impl RigidBlock {
     /// M = m_c + 1.0855 ρ_w h'² l, one friction coefficient `mu`.
     pub fn new(caisson: &Caisson, rho_w: f64, mu: f64) -> Self {
         let added = RIGID_BLOCK_ADDED_MASS_COEFF * rho_w * caisson.base_depth_m.powi(2) * caisson.length_m;
-        RigidBlock { mass_kg: caisson.mass_kg + added, weight_n: caisson.weight_in_water_n, mu_static: mu, mu_dynamic: mu }
+        RigidBlock {
+            mass_kg: caisson.mass_kg + added,
+            weight_n: caisson.weight_in_water_n,
+            mu_static: mu,
+            mu_dynamic: mu,
+        }
     }
 
     /// Shoreward slide of the block, from rest, under the load of one wave (module docs), m.
@@ -199,7 +204,14 @@ impl TrainCase<'_> {
         let mut peaks = Peaks::default();
         let mut history = history;
         if let Some(h) = history.as_deref_mut() {
-            let view = StepView { t_s: 0.0, state: sim.state(), load: train.at(0.0), reaction: sim.reaction(), springs: sim.springs(), iterations: 0 };
+            let view = StepView {
+                t_s: 0.0,
+                state: sim.state(),
+                load: train.at(0.0),
+                reaction: sim.reaction(),
+                springs: sim.springs(),
+                iterations: 0,
+            };
             h.observe(&view);
         }
         let mut waves = Vec::with_capacity(train.events().len());
@@ -299,7 +311,15 @@ mod tests {
             let tr = 0.05;
             let fx = peak_over_resistance * mu * w;
             let impact = LoadComponent::from_levers(fx, 0.5, uplift, 0.52, 0.78);
-            let e = WaveEvent::new(0.0, 3.04, LoadComponent::default(), 1.0, LoadComponent::default(), impact, Some(Impulse { shape: LoadShape::ShimosakoTakahashi1994, rise_s: tr, duration_s: 2.0 * tr }));
+            let e = WaveEvent::new(
+                0.0,
+                3.04,
+                LoadComponent::default(),
+                1.0,
+                LoadComponent::default(),
+                impact,
+                Some(Impulse { shape: LoadShape::ShimosakoTakahashi1994, rise_s: tr, duration_s: 2.0 * tr }),
+            );
             let s = block.wave_sliding_m(&e);
             let exact = rigid_block_sliding_m(fx + mu * uplift, mu * w, m, 2.0 * tr);
             // Trapezoidal rule with 200 steps over the pulse and the start detected on the grid:

@@ -102,7 +102,14 @@ impl Model {
         Model {
             mass: m,
             damping: Matrix3::from_diagonal(&Vector3::new(c_x, c_y, c_theta)),
-            law: SpringLaw::new(f.stiffness.kx_n_per_m, f.stiffness.ky_n_per_m, c.weight_in_water_n, f.springs, f.mu_static, f.mu_dynamic),
+            law: SpringLaw::new(
+                f.stiffness.kx_n_per_m,
+                f.stiffness.ky_n_per_m,
+                c.weight_in_water_n,
+                f.springs,
+                f.mu_static,
+                f.mu_dynamic,
+            ),
             x_m,
             spring_dashpot_ns_per_m: c_spring,
             spring_vertical_dashpot_ns_per_m: c_spring_y,
@@ -233,7 +240,16 @@ impl Simulation {
             springs: vec![SpringState::default(); n],
         };
         let gravity = Vector3::new(0.0, -model.weight_n, 0.0);
-        let mut sim = Simulation { model, solver, state, trial: vec![SpringResponse::default(); n], reaction: Reaction::default(), stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() }, gravity, h_next: solver.dt_s };
+        let mut sim = Simulation {
+            model,
+            solver,
+            state,
+            trial: vec![SpringResponse::default(); n],
+            reaction: Reaction::default(),
+            stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
+            gravity,
+            h_next: solver.dt_s,
+        };
         sim.reset(load);
         sim
     }
@@ -385,7 +401,13 @@ impl Simulation {
     }
 
     /// Advance by `h` seconds, halving on failure (recursively, up to the allowed levels).
-    fn advance<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, h: f64, level: usize, load: &L, obs: &mut O) -> Result<(), SolveError> {
+    fn advance<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
+        &mut self,
+        h: f64,
+        level: usize,
+        load: &L,
+        obs: &mut O,
+    ) -> Result<(), SolveError> {
         let t1 = self.state.t_s + h;
         let w = load.at(t1);
         match self.try_step(h, self.load_vector(w)) {
@@ -393,7 +415,14 @@ impl Simulation {
                 let it = c.iterations;
                 self.commit(h, c);
                 // `assemble` left the trial of the converged iterate in `self.trial`/`reaction`.
-                obs.observe(&StepView { t_s: self.state.t_s, state: &self.state, load: w, reaction: self.reaction, springs: &self.trial, iterations: it });
+                obs.observe(&StepView {
+                    t_s: self.state.t_s,
+                    state: &self.state,
+                    load: w,
+                    reaction: self.reaction,
+                    springs: &self.trial,
+                    iterations: it,
+                });
                 Ok(())
             }
             Err((iterations, residual)) => {
@@ -410,13 +439,22 @@ impl Simulation {
 
     /// Advance one time step of `solver.dt_s`.
     #[inline]
-    pub fn step<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, load: &L, obs: &mut O) -> Result<(), SolveError> {
+    pub fn step<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
+        &mut self,
+        load: &L,
+        obs: &mut O,
+    ) -> Result<(), SolveError> {
         self.advance(self.solver.dt_s, 0, load, obs)
     }
 
     /// Run until `t_end_s` (the last step is shortened to land on it), with the stepping of
     /// `solver.stepping`.
-    pub fn run_until<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, load: &L, obs: &mut O) -> Result<(), SolveError> {
+    pub fn run_until<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
+        &mut self,
+        t_end_s: f64,
+        load: &L,
+        obs: &mut O,
+    ) -> Result<(), SolveError> {
         match self.solver.stepping {
             Stepping::Fixed => self.run_fixed(t_end_s, load, obs),
             Stepping::Adaptive(p) => self.run_adaptive(t_end_s, p, load, obs),
@@ -424,7 +462,13 @@ impl Simulation {
     }
 
     /// Adaptive stepping to `t_end_s` (module docs).
-    fn run_adaptive<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, p: AdaptiveParams, load: &L, obs: &mut O) -> Result<(), SolveError> {
+    fn run_adaptive<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
+        &mut self,
+        t_end_s: f64,
+        p: AdaptiveParams,
+        load: &L,
+        obs: &mut O,
+    ) -> Result<(), SolveError> {
         let c_err = (self.solver.beta - 1.0 / 6.0).abs();
         let half_b = 0.5 * self.model.width_m;
         let mut level = 0usize;
@@ -432,7 +476,8 @@ impl Simulation {
         while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
             let t = self.state.t_s;
             // After a Newton failure the halved step may go below dt_min.
-            let planned = if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
+            let planned =
+                if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
             let mut h = planned.min(t_end_s - t);
             let bp = load.next_breakpoint_s(t);
             if bp - t > p.dt_min_s && bp < t + h {
@@ -462,7 +507,14 @@ impl Simulation {
                     let it = c.iterations;
                     self.commit(h, c);
                     self.state.t_s = t1;
-                    obs.observe(&StepView { t_s: t1, state: &self.state, load: w, reaction: self.reaction, springs: &self.trial, iterations: it });
+                    obs.observe(&StepView {
+                        t_s: t1,
+                        state: &self.state,
+                        load: w,
+                        reaction: self.reaction,
+                        springs: &self.trial,
+                        iterations: it,
+                    });
                     let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
                     self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
                     level = 0;
@@ -482,7 +534,12 @@ impl Simulation {
     }
 
     /// Fixed steps of `solver.dt_s` to `t_end_s`.
-    fn run_fixed<L: LoadHistory + ?Sized, O: Observer + ?Sized>(&mut self, t_end_s: f64, load: &L, obs: &mut O) -> Result<(), SolveError> {
+    fn run_fixed<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
+        &mut self,
+        t_end_s: f64,
+        load: &L,
+        obs: &mut O,
+    ) -> Result<(), SolveError> {
         let dt = self.solver.dt_s;
         let n = ((t_end_s - self.state.t_s) / dt - 1e-9).ceil().max(0.0) as u64;
         let t0 = self.state.t_s;

@@ -119,7 +119,12 @@ fn truncated_normal(rng: &mut LoadRng, k: f64) -> f64 {
 }
 
 /// The waves of realization `index` of `spec` at the site of `model`, regime chosen by `choice`.
-pub fn realization_waves(model: &WaveLoadModel, spec: &TrainSpec, choice: RegimeChoice, index: usize) -> Result<RealizationWaves, RegimeError> {
+pub fn realization_waves(
+    model: &WaveLoadModel,
+    spec: &TrainSpec,
+    choice: RegimeChoice,
+    index: usize,
+) -> Result<RealizationWaves, RegimeError> {
     let mut rng = realization_rng(spec.seed, index);
     let mut records = Vec::with_capacity(spec.waves);
     let mut limited_waves = 0;
@@ -127,8 +132,12 @@ pub fn realization_waves(model: &WaveLoadModel, spec: &TrainSpec, choice: Regime
     for _ in 0..spec.waves {
         let mut h = match spec.kind {
             TrainKind::Regular { height_m, variability } => match variability {
-                HeightVariability::Normal { cov, truncation_sigmas } => height_m * (1.0 + cov * truncated_normal(&mut rng, truncation_sigmas)),
-                HeightVariability::Uniform { half_width } => height_m * (1.0 + half_width * (2.0 * rng.gen::<f64>() - 1.0)),
+                HeightVariability::Normal { cov, truncation_sigmas } => {
+                    height_m * (1.0 + cov * truncated_normal(&mut rng, truncation_sigmas))
+                }
+                HeightVariability::Uniform { half_width } => {
+                    height_m * (1.0 + half_width * (2.0 * rng.gen::<f64>() - 1.0))
+                }
                 HeightVariability::None => height_m,
             },
             TrainKind::Irregular { significant_height_m } => {
@@ -150,7 +159,11 @@ pub fn realization_waves(model: &WaveLoadModel, spec: &TrainSpec, choice: Regime
             period_s: t,
             regime: loads.regime.regime,
             // Only an impulsive (breaking) wave uses its rise time; z is drawn for every wave.
-            rise_time_s: if loads.regime.regime == Regime::Breaking { loads.rise_time.map(|d| d.at_deviate(z)) } else { None },
+            rise_time_s: if loads.regime.regime == Regime::Breaking {
+                loads.rise_time.map(|d| d.at_deviate(z))
+            } else {
+                None
+            },
         });
     }
     Ok(RealizationWaves { records, limited_waves })

@@ -206,7 +206,11 @@ mod tests {
             let p = r.profile();
             assert!((p.force() - r.horizontal_force_n_per_m).abs() < 1e-12 * r.horizontal_force_n_per_m);
             let m = p.moment_about(0.8);
-            assert!((m - r.horizontal_moment_base_nm_per_m).abs() < 1e-12 * m, "{m} vs {}", r.horizontal_moment_base_nm_per_m);
+            assert!(
+                (m - r.horizontal_moment_base_nm_per_m).abs() < 1e-12 * m,
+                "{m} vs {}",
+                r.horizontal_moment_base_nm_per_m
+            );
         }
     }
 

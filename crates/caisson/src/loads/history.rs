@@ -83,7 +83,8 @@ impl WaveEvent {
     ) -> Self {
         let impulse = impulse.map(|i| {
             let rise_s = i.rise_s.min(0.25 * period_s);
-            let duration_s = if i.shape.uses_duration() { i.duration_s.clamp(rise_s, 0.5 * period_s) } else { 2.0 * rise_s };
+            let duration_s =
+                if i.shape.uses_duration() { i.duration_s.clamp(rise_s, 0.5 * period_s) } else { 2.0 * rise_s };
             Impulse { shape: i.shape, rise_s, duration_s }
         });
         WaveEvent {
@@ -237,7 +238,8 @@ mod tests {
 
     #[test]
     fn train_finds_each_wave_and_is_zero_outside() {
-        let mk = |start| WaveEvent::new(start, 2.0, comp(100.0, 10.0), 1.0, comp(50.0, 5.0), LoadComponent::default(), None);
+        let mk =
+            |start| WaveEvent::new(start, 2.0, comp(100.0, 10.0), 1.0, comp(50.0, 5.0), LoadComponent::default(), None);
         let train = WaveTrain::new(vec![mk(0.0), mk(2.0), mk(5.0)]).unwrap();
         // Quarter period of each wave: the sine peak, α_qs F_qs+.
         for t0 in [0.0, 2.0, 5.0] {
@@ -252,7 +254,8 @@ mod tests {
 
     #[test]
     fn overlapping_or_bad_waves_are_rejected() {
-        let mk = |start, t| WaveEvent::new(start, t, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), LoadComponent::default(), None);
+        let mk =
+            |start, t| WaveEvent::new(start, t, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), LoadComponent::default(), None);
         assert!(matches!(WaveTrain::new(vec![mk(0.0, 2.0), mk(1.0, 2.0)]), Err(TrainError::Overlap { index: 1, .. })));
         assert!(matches!(WaveTrain::new(vec![mk(0.0, 0.0)]), Err(TrainError::BadNumber { .. })));
         assert!(matches!(WaveTrain::new(vec![mk(f64::NAN, 1.0)]), Err(TrainError::BadNumber { .. })));

@@ -29,9 +29,9 @@ use super::sainflou::{sainflou, SainflouInput, SainflouResult};
 use super::shapes::{Impulse, LoadShape};
 use crate::waves::breaking::{miche_breaker_height_from_wavenumber_m, miche_breaker_height_m, BreakerCriterion};
 use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m, wavenumber};
-use std::f64::consts::PI;
 use rand::Rng;
 use rand_distr::StandardNormal;
+use std::f64::consts::PI;
 use thiserror::Error;
 
 /// Which depth the Sainflou standing wave forms in (PHYSICS.md §10 item 21).
@@ -232,20 +232,27 @@ impl WaveLoadModel {
             width_m: s.width_m,
             rho_w: s.rho_w,
         });
-        let impact = impact_with_breaking(&ImpactInput {
-            height_m: h,
-            period_s,
-            toe_wavelength_m: l_toe,
-            wall_depth_m: s.depth_at_wall_m,
-            base_depth_m: s.base_depth_m,
-            crest_freeboard_m: s.crest_freeboard_m,
-            width_m: s.width_m,
-            criterion: o.criterion,
-            alpha_max: o.alpha_max,
-            a_imp: o.a_imp,
-            rho_w: s.rho_w,
-        }, hbr);
-        let f_star = if goda.horizontal_force_n_per_m > 0.0 { impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m } else { 0.0 };
+        let impact = impact_with_breaking(
+            &ImpactInput {
+                height_m: h,
+                period_s,
+                toe_wavelength_m: l_toe,
+                wall_depth_m: s.depth_at_wall_m,
+                base_depth_m: s.base_depth_m,
+                crest_freeboard_m: s.crest_freeboard_m,
+                width_m: s.width_m,
+                criterion: o.criterion,
+                alpha_max: o.alpha_max,
+                a_imp: o.a_imp,
+                rho_w: s.rho_w,
+            },
+            hbr,
+        );
+        let f_star = if goda.horizontal_force_n_per_m > 0.0 {
+            impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m
+        } else {
+            0.0
+        };
         Ok(WaveLoads {
             height_incident_m: height_m,
             height_m: h,
@@ -290,14 +297,36 @@ impl WaveLoadModel {
         let g = &loads.goda;
         let sf = &loads.sainflou;
         let im = &loads.impact;
-        let quasi = LoadComponent::from_levers(g.horizontal_force_n_per_m * l, g.horizontal_lever_m, g.uplift_force_n_per_m * l, g.uplift_from_heel_m, b);
-        let trough = LoadComponent::from_levers(-sf.trough_force_n_per_m * l, sf.trough_lever_m, -sf.suction_uplift_n_per_m * l, sf.suction_from_heel_m, b);
-        let impact = LoadComponent::from_levers(im.horizontal_force_n_per_m * l, im.horizontal_lever_m, im.uplift_force_n_per_m * l, im.uplift_from_heel_m, b);
+        let quasi = LoadComponent::from_levers(
+            g.horizontal_force_n_per_m * l,
+            g.horizontal_lever_m,
+            g.uplift_force_n_per_m * l,
+            g.uplift_from_heel_m,
+            b,
+        );
+        let trough = LoadComponent::from_levers(
+            -sf.trough_force_n_per_m * l,
+            sf.trough_lever_m,
+            -sf.suction_uplift_n_per_m * l,
+            sf.suction_from_heel_m,
+            b,
+        );
+        let impact = LoadComponent::from_levers(
+            im.horizontal_force_n_per_m * l,
+            im.horizontal_lever_m,
+            im.uplift_force_n_per_m * l,
+            im.uplift_from_heel_m,
+            b,
+        );
         let breaking = loads.regime.regime == Regime::Breaking;
         let impulse = match (breaking, loads.rise_time) {
             (true, Some(dist)) => {
                 let rise_s = rise_time_s.unwrap_or_else(|| dist.median_clamped_s());
-                Some(Impulse { shape: self.options.load_shape, rise_s, duration_s: self.options.duration_ratio * rise_s.min(0.25 * loads.period_s) })
+                Some(Impulse {
+                    shape: self.options.load_shape,
+                    rise_s,
+                    duration_s: self.options.duration_ratio * rise_s.min(0.25 * loads.period_s),
+                })
             }
             _ => None,
         };
@@ -320,7 +349,9 @@ impl WaveLoadModel {
                     return Err(WaveLoadError::BadWave { index, what: "rise_time_s", value: tr });
                 }
             }
-            let loads = self.evaluate_with(r.height_m, r.period_s, RegimeChoice::Forced(r.regime)).map_err(|source| WaveLoadError::Regime { index, source })?;
+            let loads = self
+                .evaluate_with(r.height_m, r.period_s, RegimeChoice::Forced(r.regime))
+                .map_err(|source| WaveLoadError::Regime { index, source })?;
             events.push(self.event(&loads, r.rise_time_s, t));
             t += r.period_s;
         }

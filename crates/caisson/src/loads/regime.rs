@@ -61,12 +61,24 @@ pub struct RegimeError {
 
 /// Decide the regime of a wave of height `height_m` (at the toe) and period `period_s` in front
 /// of a wall in depth `wall_depth_m` (module docs).
-pub fn decide(choice: RegimeChoice, height_m: f64, period_s: f64, wall_depth_m: f64, criterion: BreakerCriterion) -> Result<RegimeDecision, RegimeError> {
+pub fn decide(
+    choice: RegimeChoice,
+    height_m: f64,
+    period_s: f64,
+    wall_depth_m: f64,
+    criterion: BreakerCriterion,
+) -> Result<RegimeDecision, RegimeError> {
     decide_with_limit(choice, height_m, criterion.breaker_height_m(wall_depth_m, period_s), wall_depth_m, criterion)
 }
 
 /// As [`decide`] with the breaker height at the wall H_br (m) already computed.
-pub fn decide_with_limit(choice: RegimeChoice, height_m: f64, hbr: f64, wall_depth_m: f64, criterion: BreakerCriterion) -> Result<RegimeDecision, RegimeError> {
+pub fn decide_with_limit(
+    choice: RegimeChoice,
+    height_m: f64,
+    hbr: f64,
+    wall_depth_m: f64,
+    criterion: BreakerCriterion,
+) -> Result<RegimeDecision, RegimeError> {
     let breaks = height_m >= hbr;
     match choice {
         RegimeChoice::Auto => Ok(RegimeDecision {
@@ -97,7 +109,8 @@ mod tests {
 
     #[test]
     fn forcing_non_breaking_above_the_limit_is_an_error() {
-        let e = decide(RegimeChoice::Forced(Regime::NonBreaking), 0.428, 3.04, 0.4, BreakerCriterion::Miche).unwrap_err();
+        let e =
+            decide(RegimeChoice::Forced(Regime::NonBreaking), 0.428, 3.04, 0.4, BreakerCriterion::Miche).unwrap_err();
         assert!((e.breaker_height_m - 0.336).abs() < 0.002);
         let ok = decide(RegimeChoice::Forced(Regime::Breaking), 0.428, 3.04, 0.8, BreakerCriterion::Miche).unwrap();
         assert!(ok.forced && ok.regime == Regime::Breaking);

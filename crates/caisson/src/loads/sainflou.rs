@@ -176,7 +176,15 @@ mod tests {
         // Wall to the seabed (h' = h) with a tall crest: polyline integrals = §2.3 closed forms to
         // rounding (1e-12), and the §2.3 check values 7.277 and 3.619 kN/m (given to 4 digits → 5e-4).
         let l = wavelength_m(3.04, 1.14);
-        let r = sainflou(&SainflouInput { height_m: 0.524, wavelength_m: l, depth_m: 1.14, base_depth_m: 1.14, crest_freeboard_m: 10.0, width_m: 0.78, rho_w: 1000.0 });
+        let r = sainflou(&SainflouInput {
+            height_m: 0.524,
+            wavelength_m: l,
+            depth_m: 1.14,
+            base_depth_m: 1.14,
+            crest_freeboard_m: 10.0,
+            width_m: 0.78,
+            rho_w: 1000.0,
+        });
         let (fc, mc, ft, mt) = full_depth_closed_forms(0.524, l, 1.14, 1000.0);
         assert!((r.crest_force_n_per_m - fc).abs() < 1e-12 * fc);
         assert!((r.crest_moment_base_nm_per_m - mc).abs() < 1e-12 * mc);
@@ -190,7 +198,15 @@ mod tests {
     fn base_above_trough_integrates_only_to_the_base() {
         // h' < H − h0: the net trough pressure is −ρ g z on [0, h'], so F = −ρ g h'²/2 exactly.
         let l = wavelength_m(3.04, 1.14);
-        let r = sainflou(&SainflouInput { height_m: 0.524, wavelength_m: l, depth_m: 1.14, base_depth_m: 0.2, crest_freeboard_m: 1.0, width_m: 0.78, rho_w: 1000.0 });
+        let r = sainflou(&SainflouInput {
+            height_m: 0.524,
+            wavelength_m: l,
+            depth_m: 1.14,
+            base_depth_m: 0.2,
+            crest_freeboard_m: 1.0,
+            width_m: 0.78,
+            rho_w: 1000.0,
+        });
         let expected = -1000.0 * G_M_PER_S2 * 0.04 / 2.0;
         assert!((r.trough_force_n_per_m - expected).abs() < 1e-12 * expected.abs());
         assert!((r.trough_base_pressure_pa + 1000.0 * G_M_PER_S2 * 0.2).abs() < 1e-9);
@@ -199,7 +215,15 @@ mod tests {
     #[test]
     fn crest_is_cut_at_the_caisson_crest() {
         let l = wavelength_m(3.04, 1.14);
-        let base = SainflouInput { height_m: 0.524, wavelength_m: l, depth_m: 1.14, base_depth_m: 0.8, crest_freeboard_m: 0.32, width_m: 0.78, rho_w: 1000.0 };
+        let base = SainflouInput {
+            height_m: 0.524,
+            wavelength_m: l,
+            depth_m: 1.14,
+            base_depth_m: 0.8,
+            crest_freeboard_m: 0.32,
+            width_m: 0.78,
+            rho_w: 1000.0,
+        };
         let low = sainflou(&base);
         let tall = sainflou(&SainflouInput { crest_freeboard_m: 5.0, ..base });
         assert!(low.crest_force_n_per_m < tall.crest_force_n_per_m);

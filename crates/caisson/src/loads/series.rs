@@ -55,11 +55,11 @@ impl ForceSeries {
             }
             let mut v = [0.0; 5];
             for (j, field) in rec.iter().enumerate() {
-                v[j] = field
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|x| x.is_finite())
-                    .ok_or_else(|| SeriesError::BadNumber { line, column: names[j].to_string(), value: field.to_string() })?;
+                v[j] = field.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| SeriesError::BadNumber {
+                    line,
+                    column: names[j].to_string(),
+                    value: field.to_string(),
+                })?;
             }
             if let Some(&prev) = t_s.last() {
                 if v[0] <= prev {
@@ -133,13 +133,18 @@ mod tests {
     #[test]
     fn lever_form_gives_clockwise_moment() {
         // 1 kN at 0.5 m, 1 kN uplift at 2B/3 from the heel of B = 0.9 m: M = 0.5 + 0.15 kN·m.
-        let s = ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,horizontal_lever_m,uplift_lever_m\n0,1,1,0.5,0.6\n1,1,1,0.5,0.6\n", 0.9).unwrap();
+        let s = ForceSeries::from_csv_str(
+            "time_s,fx_kn,fy_kn,horizontal_lever_m,uplift_lever_m\n0,1,1,0.5,0.6\n1,1,1,0.5,0.6\n",
+            0.9,
+        )
+        .unwrap();
         assert!((s.at(0.5).m_nm - 650.0).abs() < 1e-9);
     }
 
     #[test]
     fn rejects_unsorted_time_with_line_number() {
-        let e = ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,moment_knm\n0,0,0,0\n1,0,0,0\n0.5,0,0,0\n", 1.0).unwrap_err();
+        let e =
+            ForceSeries::from_csv_str("time_s,fx_kn,fy_kn,moment_knm\n0,0,0,0\n1,0,0,0\n0.5,0,0,0\n", 1.0).unwrap_err();
         assert_eq!(e, SeriesError::Unsorted { line: 4, value: 0.5, previous: 1.0 });
     }
 

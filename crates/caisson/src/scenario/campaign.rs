@@ -84,7 +84,11 @@ fn regime_of(key: &str, v: &str) -> R<RegimeChoice> {
         "auto" => Ok(RegimeChoice::Auto),
         "breaking" => Ok(RegimeChoice::Forced(Regime::Breaking)),
         "non-breaking" => Ok(RegimeChoice::Forced(Regime::NonBreaking)),
-        _ => Err(ScenarioError::range(key, format!("\"{v}\""), "must be one of \"auto\", \"breaking\", \"non-breaking\"")),
+        _ => Err(ScenarioError::range(
+            key,
+            format!("\"{v}\""),
+            "must be one of \"auto\", \"breaking\", \"non-breaking\"",
+        )),
     }
 }
 
@@ -94,7 +98,11 @@ fn positive_list(key: &str, v: &[f64], unit: &str) -> R<()> {
     }
     for (i, x) in v.iter().enumerate() {
         if !(x.is_finite() && *x > 0.0) {
-            return Err(ScenarioError::range(&format!("{key}[{i}]"), x, format!("must be a finite number > 0 ({unit})")));
+            return Err(ScenarioError::range(
+                &format!("{key}[{i}]"),
+                x,
+                format!("must be a finite number > 0 ({unit})"),
+            ));
         }
     }
     Ok(())
@@ -103,12 +111,19 @@ fn positive_list(key: &str, v: &[f64], unit: &str) -> R<()> {
 /// Validate `[campaign]` and every condition's scenario. `base_dir` as in [`validate`].
 pub fn validate_campaign(file: &ScenarioFile, base_dir: &Path, default_title: &str) -> R<Campaign> {
     let c = file.campaign.as_ref().ok_or_else(|| {
-        ScenarioError::missing("[campaign]", "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list")
+        ScenarioError::missing(
+            "[campaign]",
+            "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
+        )
     })?;
     if file.load.is_some() {
-        return Err(ScenarioError::Conflict { message: "a campaign runs wave trains from [waves]; remove the [load] table".into() });
+        return Err(ScenarioError::Conflict {
+            message: "a campaign runs wave trains from [waves]; remove the [load] table".into(),
+        });
     }
-    let wave_table = file.waves.as_ref().ok_or_else(|| ScenarioError::missing("[waves]", "a campaign needs a [waves] table (kind, period_s, waves, realizations, ...)"))?;
+    let wave_table = file.waves.as_ref().ok_or_else(|| {
+        ScenarioError::missing("[waves]", "a campaign needs a [waves] table (kind, period_s, waves, realizations, ...)")
+    })?;
     let irregular = wave_table.kind == "irregular";
     let default_regime = match &wave_table.regime {
         Some(r) => regime_of("[waves] regime", r)?,
@@ -116,36 +131,59 @@ pub fn validate_campaign(file: &ScenarioFile, base_dir: &Path, default_title: &s
     };
     let mut conditions = Vec::new();
     match (&c.conditions, c.heights_m.is_some() || c.weights_in_water_kn.is_some() || c.regimes.is_some()) {
-        (Some(_), true) => {
-            return Err(ScenarioError::Conflict {
-                message: "`[campaign]` has both a grid (heights_m, weights_in_water_kn, regimes) and a conditions list; keep one".into(),
-            })
-        }
+        (Some(_), true) => return Err(ScenarioError::Conflict {
+            message:
+                "`[campaign]` has both a grid (heights_m, weights_in_water_kn, regimes) and a conditions list; keep one"
+                    .into(),
+        }),
         (Some(list), false) => {
             if list.is_empty() {
                 return Err(ScenarioError::range("[campaign] conditions", "[]", "must list at least one condition"));
             }
             for (i, t) in list.iter().enumerate() {
                 let key = |k: &str| format!("[campaign] conditions[{i}].{k}");
-                let h = t.height_m.ok_or_else(|| ScenarioError::missing(&key("height_m"), "the wave height of this condition, m"))?;
-                let w = t.weight_in_water_kn.ok_or_else(|| ScenarioError::missing(&key("weight_in_water_kn"), "the caisson weight in water of this condition, kN"))?;
+                let h = t
+                    .height_m
+                    .ok_or_else(|| ScenarioError::missing(&key("height_m"), "the wave height of this condition, m"))?;
+                let w = t.weight_in_water_kn.ok_or_else(|| {
+                    ScenarioError::missing(
+                        &key("weight_in_water_kn"),
+                        "the caisson weight in water of this condition, kN",
+                    )
+                })?;
                 positive_list(&key("height_m"), &[h], "m")?;
                 positive_list(&key("weight_in_water_kn"), &[w], "kN")?;
                 let regime = match &t.regime {
                     Some(r) => regime_of(&key("regime"), r)?,
                     None => default_regime,
                 };
-                conditions.push((format!("[campaign] conditions[{i}]"), Condition { height_m: h, weight_in_water_n: w * 1e3, regime }));
+                conditions.push((
+                    format!("[campaign] conditions[{i}]"),
+                    Condition { height_m: h, weight_in_water_n: w * 1e3, regime },
+                ));
             }
         }
         (None, _) => {
-            let hs = c.heights_m.as_ref().ok_or_else(|| ScenarioError::missing("[campaign] heights_m", "the wave heights of the grid, m (or a conditions list)"))?;
-            let ws = c.weights_in_water_kn.as_ref().ok_or_else(|| ScenarioError::missing("[campaign] weights_in_water_kn", "the caisson weights in water of the grid, kN (or a conditions list)"))?;
+            let hs = c.heights_m.as_ref().ok_or_else(|| {
+                ScenarioError::missing("[campaign] heights_m", "the wave heights of the grid, m (or a conditions list)")
+            })?;
+            let ws = c.weights_in_water_kn.as_ref().ok_or_else(|| {
+                ScenarioError::missing(
+                    "[campaign] weights_in_water_kn",
+                    "the caisson weights in water of the grid, kN (or a conditions list)",
+                )
+            })?;
             positive_list("[campaign] heights_m", hs, "m")?;
             positive_list("[campaign] weights_in_water_kn", ws, "kN")?;
             let regimes = match &c.regimes {
-                Some(list) if list.is_empty() => return Err(ScenarioError::range("[campaign] regimes", "[]", "must list at least one regime")),
-                Some(list) => list.iter().enumerate().map(|(i, r)| regime_of(&format!("[campaign] regimes[{i}]"), r)).collect::<R<Vec<_>>>()?,
+                Some(list) if list.is_empty() => {
+                    return Err(ScenarioError::range("[campaign] regimes", "[]", "must list at least one regime"))
+                }
+                Some(list) => list
+                    .iter()
+                    .enumerate()
+                    .map(|(i, r)| regime_of(&format!("[campaign] regimes[{i}]"), r))
+                    .collect::<R<Vec<_>>>()?,
                 None => vec![default_regime],
             };
             for (ri, r) in regimes.iter().enumerate() {

@@ -62,7 +62,9 @@ fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
     match v {
         None => Ok(default),
         Some(n) if (1..=hi).contains(&n) => Ok(n as usize),
-        Some(n) => Err(ScenarioError::range(&format!("[design] {key}"), n, format!("must be a whole number from 1 to {hi}"))),
+        Some(n) => {
+            Err(ScenarioError::range(&format!("[design] {key}"), n, format!("must be a whole number from 1 to {hi}")))
+        }
     }
 }
 
@@ -72,24 +74,75 @@ fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
 
 /// Validate `[design]`.
 pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
-    let t = file.design.as_ref().ok_or_else(|| ScenarioError::missing("[design]", "add a [design] table: storm_distribution, its parameters, life_years, lives"))?;
-    let dist = t.storm_distribution.as_deref().ok_or_else(|| ScenarioError::missing("[design] storm_distribution", "\"weibull\" or \"gumbel\" (annual maxima of the deep-water H1/3)"))?;
+    let t = file.design.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[design]",
+            "add a [design] table: storm_distribution, its parameters, life_years, lives",
+        )
+    })?;
+    let dist = t.storm_distribution.as_deref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[design] storm_distribution",
+            "\"weibull\" or \"gumbel\" (annual maxima of the deep-water H1/3)",
+        )
+    })?;
     let storms = match dist {
         "weibull" => StormDistribution::Weibull {
-            scale_m: num("storm_scale_m", Some(required("storm_scale_m", t.storm_scale_m, "the Weibull scale A, m")?), 0.0, 0.0, 100.0, true, "m")?,
-            shape: num("storm_shape", Some(required("storm_shape", t.storm_shape, "the Weibull shape k (0.75-2 typically)")?), 0.0, 0.1, 20.0, false, "-")?,
+            scale_m: num(
+                "storm_scale_m",
+                Some(required("storm_scale_m", t.storm_scale_m, "the Weibull scale A, m")?),
+                0.0,
+                0.0,
+                100.0,
+                true,
+                "m",
+            )?,
+            shape: num(
+                "storm_shape",
+                Some(required("storm_shape", t.storm_shape, "the Weibull shape k (0.75-2 typically)")?),
+                0.0,
+                0.1,
+                20.0,
+                false,
+                "-",
+            )?,
             location_m: num("storm_location_m", t.storm_location_m, 0.0, 0.0, 100.0, false, "m")?,
         },
         "gumbel" => {
             if t.storm_shape.is_some() {
-                return Err(ScenarioError::Conflict { message: "`[design] storm_shape` is not used with storm_distribution = \"gumbel\"; remove it".into() });
+                return Err(ScenarioError::Conflict {
+                    message: "`[design] storm_shape` is not used with storm_distribution = \"gumbel\"; remove it"
+                        .into(),
+                });
             }
             StormDistribution::Gumbel {
-                location_m: num("storm_location_m", Some(required("storm_location_m", t.storm_location_m, "the Gumbel location B, m")?), 0.0, 0.0, 100.0, true, "m")?,
-                scale_m: num("storm_scale_m", Some(required("storm_scale_m", t.storm_scale_m, "the Gumbel scale A, m")?), 0.0, 0.0, 100.0, true, "m")?,
+                location_m: num(
+                    "storm_location_m",
+                    Some(required("storm_location_m", t.storm_location_m, "the Gumbel location B, m")?),
+                    0.0,
+                    0.0,
+                    100.0,
+                    true,
+                    "m",
+                )?,
+                scale_m: num(
+                    "storm_scale_m",
+                    Some(required("storm_scale_m", t.storm_scale_m, "the Gumbel scale A, m")?),
+                    0.0,
+                    0.0,
+                    100.0,
+                    true,
+                    "m",
+                )?,
             }
         }
-        other => return Err(ScenarioError::range("[design] storm_distribution", format!("\"{other}\""), "must be \"weibull\" or \"gumbel\"")),
+        other => {
+            return Err(ScenarioError::range(
+                "[design] storm_distribution",
+                format!("\"{other}\""),
+                "must be \"weibull\" or \"gumbel\"",
+            ))
+        }
     };
     let k = num("error_truncation_sigmas", t.error_truncation_sigmas, 2.0, 0.5, 10.0, false, "standard deviations")?;
     let d = Errors::default();
@@ -97,12 +150,21 @@ pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
         let bias = num(&format!("{name}_bias"), bias, def.bias, -0.9, 1.0, false, "fraction")?;
         let cov = num(&format!("{name}_cov"), cov, def.cov, 0.0, 1.0, false, "fraction")?;
         if 1.0 + bias - k * cov <= 0.0 {
-            return Err(ScenarioError::range(&format!("[design] {name}_cov"), cov, format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive")));
+            return Err(ScenarioError::range(
+                &format!("[design] {name}_cov"),
+                cov,
+                format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive"),
+            ));
         }
         Ok(ErrorModel { bias, cov, truncation_sigmas: k })
     };
     let errors = Errors {
-        deep_water_height: err("deep_water_height", t.deep_water_height_bias, t.deep_water_height_cov, d.deep_water_height)?,
+        deep_water_height: err(
+            "deep_water_height",
+            t.deep_water_height_bias,
+            t.deep_water_height_cov,
+            d.deep_water_height,
+        )?,
         transformation: err("transformation", t.transformation_bias, t.transformation_cov, d.transformation)?,
         wave_force: err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?,
         friction: err("friction", t.friction_bias, t.friction_cov, d.friction)?,
@@ -110,7 +172,11 @@ pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
     let mut thresholds_m = STANDARD_THRESHOLDS_M.to_vec();
     for (i, v) in t.thresholds_m.iter().flatten().enumerate() {
         if !(v.is_finite() && *v > 0.0) {
-            return Err(ScenarioError::range(&format!("[design] thresholds_m[{i}]"), v, "must be a finite number > 0 (m)"));
+            return Err(ScenarioError::range(
+                &format!("[design] thresholds_m[{i}]"),
+                v,
+                "must be a finite number > 0 (m)",
+            ));
         }
         thresholds_m.push(*v);
     }

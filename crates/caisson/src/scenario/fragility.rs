@@ -57,10 +57,18 @@ fn increasing(key: &str, v: &[f64], hi: f64, unit: &str) -> R<()> {
     }
     for (i, x) in v.iter().enumerate() {
         if !(x.is_finite() && *x > 0.0 && *x < hi) {
-            return Err(ScenarioError::range(&format!("{key}[{i}]"), x, format!("must be a finite number > 0 and < {hi} ({unit})")));
+            return Err(ScenarioError::range(
+                &format!("{key}[{i}]"),
+                x,
+                format!("must be a finite number > 0 and < {hi} ({unit})"),
+            ));
         }
         if i > 0 && *x <= v[i - 1] {
-            return Err(ScenarioError::range(&format!("{key}[{i}]"), x, format!("must be larger than the value before it ({}): the list must increase", v[i - 1])));
+            return Err(ScenarioError::range(
+                &format!("{key}[{i}]"),
+                x,
+                format!("must be larger than the value before it ({}): the list must increase", v[i - 1]),
+            ));
         }
     }
     Ok(())
@@ -68,15 +76,31 @@ fn increasing(key: &str, v: &[f64], hi: f64, unit: &str) -> R<()> {
 
 /// Validate the scenario, its waves and `[fragility]`. `base_dir` as in [`validate`].
 pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySetup> {
-    let t = file.fragility.as_ref().ok_or_else(|| ScenarioError::missing("[fragility]", "add a [fragility] table with significant_heights_m (and storms, limits_m, ...)"))?;
+    let t = file.fragility.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[fragility]",
+            "add a [fragility] table with significant_heights_m (and storms, limits_m, ...)",
+        )
+    })?;
     if file.load.is_some() {
-        return Err(ScenarioError::Conflict { message: "a fragility runs storms of waves from [waves]; remove the [load] table".into() });
+        return Err(ScenarioError::Conflict {
+            message: "a fragility runs storms of waves from [waves]; remove the [load] table".into(),
+        });
     }
     if file.campaign.is_some() {
-        return Err(ScenarioError::Conflict { message: "a fragility file cannot hold a [campaign] table; run the campaign from its own file".into() });
+        return Err(ScenarioError::Conflict {
+            message: "a fragility file cannot hold a [campaign] table; run the campaign from its own file".into(),
+        });
     }
-    let wt = file.waves.as_ref().ok_or_else(|| ScenarioError::missing("[waves]", "a fragility needs a [waves] table with kind = \"irregular\", significant_height_m and period_s"))?;
-    for (key, given) in [("waves", wt.waves.is_some()), ("realizations", wt.realizations.is_some()), ("seed", wt.seed.is_some())] {
+    let wt = file.waves.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[waves]",
+            "a fragility needs a [waves] table with kind = \"irregular\", significant_height_m and period_s",
+        )
+    })?;
+    for (key, given) in
+        [("waves", wt.waves.is_some()), ("realizations", wt.realizations.is_some()), ("seed", wt.seed.is_some())]
+    {
         if given {
             return Err(ScenarioError::Conflict {
                 message: format!("`[waves] {key}` is not used by a fragility (storms have [fragility] storm_duration_h, storms and seed); remove it"),
@@ -86,35 +110,63 @@ pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySe
     let scenario = validate(file, base_dir)?;
     let waves = validate_waves(file, &scenario.caisson)?;
     if wt.kind != "irregular" {
-        return Err(ScenarioError::range("[waves] kind", format!("\"{}\"", wt.kind), "must be \"irregular\" for a fragility (storms of Rayleigh waves of the given H1/3)"));
+        return Err(ScenarioError::range(
+            "[waves] kind",
+            format!("\"{}\"", wt.kind),
+            "must be \"irregular\" for a fragility (storms of Rayleigh waves of the given H1/3)",
+        ));
     }
     let period_s = match t.period_s {
         None => waves.period_s,
         Some(v) if v.is_finite() && v > 0.0 && v <= 1e3 => v,
-        Some(v) => return Err(ScenarioError::range("[fragility] period_s", v, "must be a finite number > 0 and ≤ 1000 (s)")),
+        Some(v) => {
+            return Err(ScenarioError::range("[fragility] period_s", v, "must be a finite number > 0 and ≤ 1000 (s)"))
+        }
     };
-    let heights = t.significant_heights_m.as_ref().ok_or_else(|| ScenarioError::missing("[fragility] significant_heights_m", "the grid of H1/3 at the structure, m, increasing (e.g. [3, 4, 5, 6, 7])"))?;
+    let heights = t.significant_heights_m.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[fragility] significant_heights_m",
+            "the grid of H1/3 at the structure, m, increasing (e.g. [3, 4, 5, 6, 7])",
+        )
+    })?;
     // No wave is steeper than Miche's deep-water limit (as for [waves] significant_height_m).
     let limit = MICHE_STEEPNESS * deep_water_wavelength_m(period_s);
-    increasing("[fragility] significant_heights_m", heights, limit, &format!("m; below 0.142 L0 = {limit:.3} m for T = {period_s} s"))?;
+    increasing(
+        "[fragility] significant_heights_m",
+        heights,
+        limit,
+        &format!("m; below 0.142 L0 = {limit:.3} m for T = {period_s} s"),
+    )?;
     let limits_m = t.limits_m.clone().unwrap_or_else(|| vec![0.1, 0.3]);
     increasing("[fragility] limits_m", &limits_m, 1e3, "m")?;
     let storms = match t.storms {
         None => 200,
         Some(n) if (1..=1_000_000).contains(&n) => n as usize,
-        Some(n) => return Err(ScenarioError::range("[fragility] storms", n, "must be a whole number from 1 to 1000000")),
+        Some(n) => {
+            return Err(ScenarioError::range("[fragility] storms", n, "must be a whole number from 1 to 1000000"))
+        }
     };
     if storms * heights.len() > MAX_STORMS {
         return Err(ScenarioError::range(
             "[fragility] storms",
             storms,
-            format!("times {} heights is {} storms; at most {MAX_STORMS} in all", heights.len(), storms * heights.len()),
+            format!(
+                "times {} heights is {} storms; at most {MAX_STORMS} in all",
+                heights.len(),
+                storms * heights.len()
+            ),
         ));
     }
     let storm_duration_s = match t.storm_duration_h {
         None => 2.0,
         Some(v) if v.is_finite() && v > 0.0 && v <= 72.0 => v,
-        Some(v) => return Err(ScenarioError::range("[fragility] storm_duration_h", v, "must be a finite number > 0 and ≤ 72 (h)")),
+        Some(v) => {
+            return Err(ScenarioError::range(
+                "[fragility] storm_duration_h",
+                v,
+                "must be a finite number > 0 and ≤ 72 (h)",
+            ))
+        }
     } * 3600.0;
     let seed = super::waves::seed_of("[fragility] seed", t.seed)?;
     let params = FragilityParams { heights_m: heights.clone(), storms, limits_m, storm_duration_s, period_s, seed };
@@ -160,11 +212,27 @@ significant_heights_m = [4.0, 6.0, 8.0]
     #[test]
     fn defaults() {
         let p = run(BASE).unwrap().params;
-        assert_eq!(p, FragilityParams { heights_m: vec![4.0, 6.0, 8.0], storms: 200, limits_m: vec![0.1, 0.3], storm_duration_s: 7200.0, period_s: 12.0, seed: 1 });
+        assert_eq!(
+            p,
+            FragilityParams {
+                heights_m: vec![4.0, 6.0, 8.0],
+                storms: 200,
+                limits_m: vec![0.1, 0.3],
+                storm_duration_s: 7200.0,
+                period_s: 12.0,
+                seed: 1
+            }
+        );
         assert_eq!(p.waves_per_storm(), 600);
-        let text = BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9");
+        let text = BASE.replace(
+            "[4.0, 6.0, 8.0]",
+            "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9",
+        );
         let p = run(&text).unwrap().params;
-        assert_eq!((p.storms, p.limits_m.clone(), p.storm_duration_s, p.period_s, p.seed, p.waves_per_storm()), (7, vec![0.05], 5400.0, 10.0, 9, 540));
+        assert_eq!(
+            (p.storms, p.limits_m.clone(), p.storm_duration_s, p.period_s, p.seed, p.waves_per_storm()),
+            (7, vec![0.05], 5400.0, 10.0, 9, 540)
+        );
     }
 
     #[test]
@@ -193,8 +261,17 @@ significant_heights_m = [4.0, 6.0, 8.0]
             assert_eq!(key_of(&BASE.replace(from, to)), key, "{to}");
         }
         assert_eq!(key_of(&BASE.replace("[fragility]\n", "").replace(h, "")), "[fragility]");
-        assert!(matches!(run(&BASE.replace(h, "significant_heights_m = [4.0]\nfoo = 1")), Err(ScenarioError::Syntax { .. })));
-        assert!(matches!(run(&BASE.replace("period_s = 12.0", "period_s = 12.0\nseed = 3")), Err(ScenarioError::Conflict { .. })));
-        assert!(matches!(run(&BASE.replace("period_s = 12.0", "period_s = 12.0\nwaves = 3")), Err(ScenarioError::Conflict { .. })));
+        assert!(matches!(
+            run(&BASE.replace(h, "significant_heights_m = [4.0]\nfoo = 1")),
+            Err(ScenarioError::Syntax { .. })
+        ));
+        assert!(matches!(
+            run(&BASE.replace("period_s = 12.0", "period_s = 12.0\nseed = 3")),
+            Err(ScenarioError::Conflict { .. })
+        ));
+        assert!(matches!(
+            run(&BASE.replace("period_s = 12.0", "period_s = 12.0\nwaves = 3")),
+            Err(ScenarioError::Conflict { .. })
+        ));
     }
 }

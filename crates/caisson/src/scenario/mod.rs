@@ -177,8 +177,15 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
                 (line, column)
             })
             .unwrap_or((0, 0));
-        let source_line = if line > 0 { text.lines().nth(line - 1).unwrap_or("").trim().to_string() } else { String::new() };
-        ScenarioError::Syntax { path: path.to_path_buf(), line, column, message: e.message().trim().to_string(), source_line }
+        let source_line =
+            if line > 0 { text.lines().nth(line - 1).unwrap_or("").trim().to_string() } else { String::new() };
+        ScenarioError::Syntax {
+            path: path.to_path_buf(),
+            line,
+            column,
+            message: e.message().trim().to_string(),
+            source_line,
+        }
     })
 }
 

@@ -1,7 +1,7 @@
 //! Validation of a parsed [`ScenarioFile`] into typed SI parameters for the dynamic engine.
 
 use super::{ScenarioError, ScenarioFile};
-use crate::foundation::{AddedMass, DampingMode, Foundation, FoundationStiffness, VerticalDamping, Soil};
+use crate::foundation::{AddedMass, DampingMode, Foundation, FoundationStiffness, Soil, VerticalDamping};
 use crate::loads::pulse::{StaticRamp, TrianglePulse};
 use crate::loads::series::ForceSeries;
 use crate::loads::{LoadHistory, WaveForce};
@@ -174,10 +174,13 @@ pub fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         }
         // A wave-train scenario: its waves (default 15) of its period.
         // (A bad period or count is reported by the [waves] validation, not here.)
-        None => (None, f.waves.as_ref().map_or(1.0, |w| {
-            let t = w.period_s.filter(|t| t.is_finite() && *t > 0.0 && *t <= 1e3).unwrap_or(1.0);
-            t * w.waves.unwrap_or(15).clamp(1, 1_000_000) as f64
-        })),
+        None => (
+            None,
+            f.waves.as_ref().map_or(1.0, |w| {
+                let t = w.period_s.filter(|t| t.is_finite() && *t > 0.0 && *t <= 1e3).unwrap_or(1.0);
+                t * w.waves.unwrap_or(15).clamp(1, 1_000_000) as f64
+            }),
+        ),
     };
     let duration_s = match f.load.as_ref().and_then(|l| l.duration_s) {
         Some(v) => positive("[load] duration_s", v, "s")?,
@@ -189,15 +192,35 @@ pub fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
 
 fn validate_caisson(f: &ScenarioFile, rho_w: f64) -> R<Caisson> {
     let c = &f.caisson;
-    let width_m = positive("[caisson] width_m", c.width_m.ok_or_else(|| ScenarioError::missing("[caisson] width_m", "B, the base width in the wave direction, m (a finite number > 0)"))?, "m")?;
+    let width_m = positive(
+        "[caisson] width_m",
+        c.width_m.ok_or_else(|| {
+            ScenarioError::missing(
+                "[caisson] width_m",
+                "B, the base width in the wave direction, m (a finite number > 0)",
+            )
+        })?,
+        "m",
+    )?;
     let length_m = match c.length_m {
         Some(v) => positive("[caisson] length_m", v, "m")?,
         None => 1.0,
     };
-    let height_m = positive("[caisson] height_m", c.height_m.ok_or_else(|| ScenarioError::missing("[caisson] height_m", "the caisson height, base to crest, m (a finite number > 0)"))?, "m")?;
+    let height_m = positive(
+        "[caisson] height_m",
+        c.height_m.ok_or_else(|| {
+            ScenarioError::missing("[caisson] height_m", "the caisson height, base to crest, m (a finite number > 0)")
+        })?,
+        "m",
+    )?;
     let base_depth_m = finite(
         "[caisson] base_depth_m",
-        c.base_depth_m.ok_or_else(|| ScenarioError::missing("[caisson] base_depth_m", "h', the depth of the base below still water, m (from 0 to height_m)"))?,
+        c.base_depth_m.ok_or_else(|| {
+            ScenarioError::missing(
+                "[caisson] base_depth_m",
+                "h', the depth of the base below still water, m (from 0 to height_m)",
+            )
+        })?,
     )?;
     if base_depth_m < 0.0 || base_depth_m > height_m {
         return Err(ScenarioError::range(
@@ -229,7 +252,9 @@ fn validate_caisson(f: &ScenarioFile, rho_w: f64) -> R<Caisson> {
             }
             (m, (m - displaced) * G_M_PER_S2)
         }
-        (Some(w), Some(m)) => (positive("[caisson] mass_kg", m, "kg")?, positive("[caisson] weight_in_water_kn", w, "kN")? * 1e3),
+        (Some(w), Some(m)) => {
+            (positive("[caisson] mass_kg", m, "kg")?, positive("[caisson] weight_in_water_kn", w, "kN")? * 1e3)
+        }
     };
     let cog_height_m = match c.cog_height_m {
         Some(v) => within("[caisson] cog_height_m", v, 0.0, height_m, "m above the base")?,
@@ -240,10 +265,22 @@ fn validate_caisson(f: &ScenarioFile, rho_w: f64) -> R<Caisson> {
         None => Caisson::uniform_block_inertia_kg_m2(mass_kg, width_m, height_m),
     };
     let mass_matrix = match &c.mass_matrix {
-        Some(s) => choice("[caisson] mass_matrix", s, &[("coupled", MassMatrix::Coupled), ("diagonal", MassMatrix::Diagonal)])?,
+        Some(s) => {
+            choice("[caisson] mass_matrix", s, &[("coupled", MassMatrix::Coupled), ("diagonal", MassMatrix::Diagonal)])?
+        }
         None => MassMatrix::Coupled,
     };
-    Ok(Caisson { width_m, length_m, height_m, base_depth_m, mass_kg, weight_in_water_n, cog_height_m, inertia_cog_kg_m2, mass_matrix })
+    Ok(Caisson {
+        width_m,
+        length_m,
+        height_m,
+        base_depth_m,
+        mass_kg,
+        weight_in_water_n,
+        cog_height_m,
+        inertia_cog_kg_m2,
+        mass_matrix,
+    })
 }
 
 fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundation, Option<Soil>)> {
@@ -284,10 +321,16 @@ fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundati
             },
         }),
         None => {
-            for (key, v) in [("poisson", t.poisson), ("density_kg_per_m3", t.density_kg_per_m3), ("reference_stress_kpa", t.reference_stress_kpa)] {
+            for (key, v) in [
+                ("poisson", t.poisson),
+                ("density_kg_per_m3", t.density_kg_per_m3),
+                ("reference_stress_kpa", t.reference_stress_kpa),
+            ] {
                 if v.is_some() {
                     return Err(ScenarioError::Conflict {
-                        message: format!("`[foundation] {key}` is part of the soil route and needs `[foundation] e100_kpa`"),
+                        message: format!(
+                            "`[foundation] {key}` is part of the soil route and needs `[foundation] e100_kpa`"
+                        ),
                     });
                 }
             }
@@ -317,11 +360,17 @@ fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundati
         None => 10.0,
     };
     let damping_mode = match &t.damping_mode {
-        Some(s) => choice("[foundation] damping_mode", s, &[("total", DampingMode::Total), ("elastic", DampingMode::Elastic)])?,
+        Some(s) => {
+            choice("[foundation] damping_mode", s, &[("total", DampingMode::Total), ("elastic", DampingMode::Elastic)])?
+        }
         None => DampingMode::Total,
     };
     let vertical_damping = match &t.vertical_damping {
-        Some(s) => choice("[foundation] vertical_damping", s, &[("seed", VerticalDamping::Seed), ("springs", VerticalDamping::Springs)])?,
+        Some(s) => choice(
+            "[foundation] vertical_damping",
+            s,
+            &[("seed", VerticalDamping::Seed), ("springs", VerticalDamping::Springs)],
+        )?,
         None => VerticalDamping::Seed,
     };
     let added_mass = if t.added_mass.unwrap_or(true) {
@@ -339,17 +388,36 @@ fn validate_foundation(f: &ScenarioFile, c: &Caisson, rho_w: f64) -> R<(Foundati
         AddedMass::default()
     };
     Ok((
-        Foundation { springs, mu_static, mu_dynamic, stiffness, vertical_damping_factor, damping_mode, vertical_damping, added_mass },
+        Foundation {
+            springs,
+            mu_static,
+            mu_dynamic,
+            stiffness,
+            vertical_damping_factor,
+            damping_mode,
+            vertical_damping,
+            added_mass,
+        },
         soil,
     ))
 }
 
 fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec, f64)> {
     let t = f.load.as_ref().expect("checked by caller");
-    let kind_name = t.kind.as_deref().ok_or_else(|| ScenarioError::missing("[load] kind", "one of \"triangle\", \"static\", \"series\""))?;
+    let kind_name = t
+        .kind
+        .as_deref()
+        .ok_or_else(|| ScenarioError::missing("[load] kind", "one of \"triangle\", \"static\", \"series\""))?;
     let kind = choice("[load] kind", kind_name, &[("triangle", 0), ("static", 1), ("series", 2)])?;
     let relevant: &[&str] = match kind {
-        0 => &["peak_horizontal_kn", "rise_time_s", "peak_uplift_kn", "horizontal_lever_m", "uplift_lever_m", "start_time_s"],
+        0 => &[
+            "peak_horizontal_kn",
+            "rise_time_s",
+            "peak_uplift_kn",
+            "horizontal_lever_m",
+            "uplift_lever_m",
+            "start_time_s",
+        ],
         1 => &["peak_horizontal_kn", "ramp_time_s", "peak_uplift_kn", "horizontal_lever_m", "uplift_lever_m"],
         _ => &["file"],
     };
@@ -366,15 +434,29 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
     for (key, present) in given {
         if present && !relevant.contains(&key) {
             return Err(ScenarioError::Conflict {
-                message: format!("`[load] {key}` is not used with kind = \"{}\"; remove it (keys for this kind: {})", kind_name, relevant.join(", ")),
+                message: format!(
+                    "`[load] {key}` is not used with kind = \"{}\"; remove it (keys for this kind: {})",
+                    kind_name,
+                    relevant.join(", ")
+                ),
             });
         }
     }
     let peak = |t: &crate::scenario::LoadTable| -> R<WaveForce> {
-        let fx = finite("[load] peak_horizontal_kn", t.peak_horizontal_kn.ok_or_else(|| ScenarioError::missing("[load] peak_horizontal_kn", "the peak horizontal force, kN (positive shoreward)"))?)? * 1e3;
+        let fx = finite(
+            "[load] peak_horizontal_kn",
+            t.peak_horizontal_kn.ok_or_else(|| {
+                ScenarioError::missing(
+                    "[load] peak_horizontal_kn",
+                    "the peak horizontal force, kN (positive shoreward)",
+                )
+            })?,
+        )? * 1e3;
         let fy = finite("[load] peak_uplift_kn", t.peak_uplift_kn.unwrap_or(0.0))? * 1e3;
         let lever = match t.horizontal_lever_m {
-            Some(v) => within("[load] horizontal_lever_m", v, 0.0, c.height_m, "m above the base, at most the caisson height")?,
+            Some(v) => {
+                within("[load] horizontal_lever_m", v, 0.0, c.height_m, "m above the base, at most the caisson height")?
+            }
             None => c.base_depth_m,
         };
         let ulever = match t.uplift_lever_m {
@@ -385,7 +467,13 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
     };
     Ok(match kind {
         0 => {
-            let rise_s = positive("[load] rise_time_s", t.rise_time_s.ok_or_else(|| ScenarioError::missing("[load] rise_time_s", "the rise time t_r of the triangular pulse, s"))?, "s")?;
+            let rise_s = positive(
+                "[load] rise_time_s",
+                t.rise_time_s.ok_or_else(|| {
+                    ScenarioError::missing("[load] rise_time_s", "the rise time t_r of the triangular pulse, s")
+                })?,
+                "s",
+            )?;
             let start_s = match t.start_time_s {
                 Some(v) => within("[load] start_time_s", v, 0.0, 1e6, "s")?,
                 None => 0.0,
@@ -401,10 +489,14 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
             (LoadSpec::Static(StaticRamp { peak: peak(t)?, ramp_s }), ramp_s)
         }
         _ => {
-            let name = t.file.as_ref().ok_or_else(|| ScenarioError::missing("[load] file", "the CSV force series, relative to the scenario file"))?;
+            let name = t.file.as_ref().ok_or_else(|| {
+                ScenarioError::missing("[load] file", "the CSV force series, relative to the scenario file")
+            })?;
             let path = base_dir.join(name);
-            let text = std::fs::read_to_string(&path).map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
-            let series = ForceSeries::from_csv_str(&text, c.width_m).map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
+            let series = ForceSeries::from_csv_str(&text, c.width_m)
+                .map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
             let end = series.last_time_s();
             (LoadSpec::Series(series), end)
         }
@@ -419,7 +511,11 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
         None => d.dt_s,
     };
     if dt_s > duration_s {
-        return Err(ScenarioError::range("[solver] dt_s", dt_s, format!("must not exceed the simulated time {duration_s} s")));
+        return Err(ScenarioError::range(
+            "[solver] dt_s",
+            dt_s,
+            format!("must not exceed the simulated time {duration_s} s"),
+        ));
     }
     let gamma = match t.gamma {
         Some(v) => within("[solver] gamma", v, 0.5, 1.0, "-")?,
@@ -430,7 +526,11 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
         None => d.beta,
     };
     let stepping_default = if f.load.is_none() && f.waves.is_some() { "adaptive" } else { "fixed" };
-    let adaptive = choice("[solver] stepping", t.stepping.as_deref().unwrap_or(stepping_default), &[("fixed", false), ("adaptive", true)])?;
+    let adaptive = choice(
+        "[solver] stepping",
+        t.stepping.as_deref().unwrap_or(stepping_default),
+        &[("fixed", false), ("adaptive", true)],
+    )?;
     let stepping = if adaptive {
         let a = AdaptiveParams::default();
         let dt_max_s = match t.dt_max_s {
@@ -449,9 +549,17 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
     } else {
         // Fixed steps: dt_s is every step, so bound their number.
         if duration_s / dt_s > 1e9 {
-            return Err(ScenarioError::range("[solver] dt_s", dt_s, format!("gives {:.2e} steps for {duration_s} s; at most 1e9", duration_s / dt_s)));
+            return Err(ScenarioError::range(
+                "[solver] dt_s",
+                dt_s,
+                format!("gives {:.2e} steps for {duration_s} s; at most 1e9", duration_s / dt_s),
+            ));
         }
-        for (key, given) in [("dt_min_s", t.dt_min_s.is_some()), ("dt_max_s", t.dt_max_s.is_some()), ("error_tolerance_m", t.error_tolerance_m.is_some())] {
+        for (key, given) in [
+            ("dt_min_s", t.dt_min_s.is_some()),
+            ("dt_max_s", t.dt_max_s.is_some()),
+            ("error_tolerance_m", t.error_tolerance_m.is_some()),
+        ] {
             if given {
                 return Err(ScenarioError::Conflict { message: format!("`[solver] {key}` is only used with stepping = \"adaptive\"; remove it or set stepping = \"adaptive\"") });
             }
@@ -476,7 +584,13 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
             None => d.tolerance,
         },
         output_interval_s: match t.output_interval_s {
-            Some(v) => within("[solver] output_interval_s", v, dt_s, duration_s.max(dt_s), "s, from dt_s to the simulated time")?,
+            Some(v) => within(
+                "[solver] output_interval_s",
+                v,
+                dt_s,
+                duration_s.max(dt_s),
+                "s, from dt_s to the simulated time",
+            )?,
             None => d.output_interval_s.max(dt_s),
         },
     })

@@ -118,15 +118,32 @@ pub(super) fn seed_of(key: &str, v: Option<i64>) -> R<u64> {
 /// Validate `[water]` (depths, slope, berm) and `[waves]` against the validated caisson.
 pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario> {
     let w = &file.water;
-    let t = file.waves.as_ref().ok_or_else(|| ScenarioError::missing("[waves]", "add a [waves] table with kind = \"regular\", height_m and period_s"))?;
+    let t = file.waves.as_ref().ok_or_else(|| {
+        ScenarioError::missing("[waves]", "add a [waves] table with kind = \"regular\", height_m and period_s")
+    })?;
     let rho_w = match w.density_kg_per_m3 {
         Some(v) => number("[water] density_kg_per_m3", v, 500.0, 2000.0, false, "kg/m³")?,
         None => 1000.0,
     };
-    let hs = number("[water] depth_at_toe_m", required("[water] depth_at_toe_m", w.depth_at_toe_m, "h_s, the water depth at the toe of the mound, m")?, 0.0, 1e4, true, "m")?;
-    let d = required("[water] depth_at_wall_m", w.depth_at_wall_m, "d, the water depth in front of the wall above the berm, m (= depth_at_toe_m without a mound)")?;
+    let hs = number(
+        "[water] depth_at_toe_m",
+        required("[water] depth_at_toe_m", w.depth_at_toe_m, "h_s, the water depth at the toe of the mound, m")?,
+        0.0,
+        1e4,
+        true,
+        "m",
+    )?;
+    let d = required(
+        "[water] depth_at_wall_m",
+        w.depth_at_wall_m,
+        "d, the water depth in front of the wall above the berm, m (= depth_at_toe_m without a mound)",
+    )?;
     if !(d.is_finite() && d > 0.0 && d <= hs) {
-        return Err(ScenarioError::range("[water] depth_at_wall_m", d, format!("must be > 0 and at most depth_at_toe_m = {hs} m (the berm cannot be below the seabed)")));
+        return Err(ScenarioError::range(
+            "[water] depth_at_wall_m",
+            d,
+            format!("must be > 0 and at most depth_at_toe_m = {hs} m (the berm cannot be below the seabed)"),
+        ));
     }
     let hp = caisson.base_depth_m;
     if hp < d {
@@ -137,7 +154,11 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
         ));
     }
     if hp > hs {
-        return Err(ScenarioError::range("[caisson] base_depth_m", hp, format!("must be at most [water] depth_at_toe_m = {hs} m: the base cannot be below the seabed at the toe")));
+        return Err(ScenarioError::range(
+            "[caisson] base_depth_m",
+            hp,
+            format!("must be at most [water] depth_at_toe_m = {hs} m: the base cannot be below the seabed at the toe"),
+        ));
     }
     let slope = match w.seabed_slope {
         Some(v) => number("[water] seabed_slope", v, 0.0, 0.5, false, "tan θ, 0 for a flat bed")?,
@@ -149,7 +170,14 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
     };
 
     let irregular = pick("[waves] kind", Some(&t.kind), false, &[("regular", false), ("irregular", true)])?;
-    let period_s = number("[waves] period_s", required("[waves] period_s", t.period_s, "the wave period T (T1/3 for irregular waves), s")?, 0.0, 1e3, true, "s")?;
+    let period_s = number(
+        "[waves] period_s",
+        required("[waves] period_s", t.period_s, "the wave period T (T1/3 for irregular waves), s")?,
+        0.0,
+        1e3,
+        true,
+        "s",
+    )?;
     let conflict = |key: &str, kind: &str| ScenarioError::Conflict {
         message: format!("`[waves] {key}` is not used with kind = \"{kind}\"; remove it"),
     };
@@ -164,13 +192,27 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
                 return Err(conflict(key, "irregular"));
             }
         }
-        let h = required("[waves] significant_height_m", t.significant_height_m, "the significant wave height H1/3 at the toe, m")?;
+        let h = required(
+            "[waves] significant_height_m",
+            t.significant_height_m,
+            "the significant wave height H1/3 at the toe, m",
+        )?;
         ("[waves] significant_height_m", number("[waves] significant_height_m", h, 0.0, 1e3, true, "m")?)
     } else {
         if t.significant_height_m.is_some() {
             return Err(conflict("significant_height_m", "regular"));
         }
-        ("[waves] height_m", number("[waves] height_m", required("[waves] height_m", t.height_m, "the incident wave height H, m")?, 0.0, 1e3, true, "m")?)
+        (
+            "[waves] height_m",
+            number(
+                "[waves] height_m",
+                required("[waves] height_m", t.height_m, "the incident wave height H, m")?,
+                0.0,
+                1e3,
+                true,
+                "m",
+            )?,
+        )
     };
     let l0 = deep_water_wavelength_m(period_s);
     if height_m >= MICHE_STEEPNESS * l0 {
@@ -182,14 +224,24 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
     }
     let angle_deg = match t.angle_deg {
         Some(v) if v.is_finite() && v.abs() < 90.0 => v,
-        Some(v) => return Err(ScenarioError::range("[waves] angle_deg", v, "must be a finite number strictly between -90 and 90 (degrees from the normal to the breakwater)")),
+        Some(v) => {
+            return Err(ScenarioError::range(
+                "[waves] angle_deg",
+                v,
+                "must be a finite number strictly between -90 and 90 (degrees from the normal to the breakwater)",
+            ))
+        }
         None => 0.0,
     };
     let regime = pick(
         "[waves] regime",
         t.regime.as_ref(),
         RegimeChoice::Auto,
-        &[("auto", RegimeChoice::Auto), ("breaking", RegimeChoice::Forced(Regime::Breaking)), ("non-breaking", RegimeChoice::Forced(Regime::NonBreaking))],
+        &[
+            ("auto", RegimeChoice::Auto),
+            ("breaking", RegimeChoice::Forced(Regime::Breaking)),
+            ("non-breaking", RegimeChoice::Forced(Regime::NonBreaking)),
+        ],
     )?;
     let criterion = pick(
         "[waves] breaker_criterion",
@@ -219,15 +271,32 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
         criterion,
         alpha_max: opt("alpha_max", t.alpha_max, d_opt.alpha_max, 0.0, 10.0, true)?,
         a_imp: opt("a_imp", t.a_imp, d_opt.a_imp, 0.0, 10.0, false)?,
-        alpha_qs_nonbreaking: opt("alpha_qs_nonbreaking", t.alpha_qs_nonbreaking, d_opt.alpha_qs_nonbreaking, 0.0, 2.0, false)?,
+        alpha_qs_nonbreaking: opt(
+            "alpha_qs_nonbreaking",
+            t.alpha_qs_nonbreaking,
+            d_opt.alpha_qs_nonbreaking,
+            0.0,
+            2.0,
+            false,
+        )?,
         alpha_qs_breaking: opt("alpha_qs_breaking", t.alpha_qs_breaking, d_opt.alpha_qs_breaking, 0.0, 2.0, false)?,
         rise_time: RiseTimeParams {
-            model: pick("[waves] rise_time_model", t.rise_time_model.as_ref(), RiseTimeModel::Median, &[("median", RiseTimeModel::Median), ("literal", RiseTimeModel::Literal)])?,
+            model: pick(
+                "[waves] rise_time_model",
+                t.rise_time_model.as_ref(),
+                RiseTimeModel::Median,
+                &[("median", RiseTimeModel::Median), ("literal", RiseTimeModel::Literal)],
+            )?,
             ..RiseTimeParams::default()
         },
         load_shape,
         duration_ratio: opt("duration_ratio", t.duration_ratio, d_opt.duration_ratio, 1.0, 20.0, true)?,
-        sainflou_depth: pick("[waves] sainflou_depth", t.sainflou_depth.as_ref(), SainflouDepth::Toe, &[("toe", SainflouDepth::Toe), ("wall", SainflouDepth::Wall)])?,
+        sainflou_depth: pick(
+            "[waves] sainflou_depth",
+            t.sainflou_depth.as_ref(),
+            SainflouDepth::Toe,
+            &[("toe", SainflouDepth::Toe), ("wall", SainflouDepth::Wall)],
+        )?,
         angle_rad: angle_deg.to_radians(),
         lambda: d_opt.lambda,
     };
@@ -262,7 +331,11 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
             return Err(ScenarioError::Conflict { message: "`[waves] height_variability_fraction` and `height_truncation_sigmas` are not used with height_variability = \"none\"; remove them".into() });
         }
         if which == 1 && t.height_truncation_sigmas.is_some() {
-            return Err(ScenarioError::Conflict { message: "`[waves] height_truncation_sigmas` is only used with height_variability = \"normal\"; remove it".into() });
+            return Err(ScenarioError::Conflict {
+                message:
+                    "`[waves] height_truncation_sigmas` is only used with height_variability = \"normal\"; remove it"
+                        .into(),
+            });
         }
         let c = opt("height_variability_fraction", t.height_variability_fraction, 0.2, 0.0, 0.9, false)?;
         let k = opt("height_truncation_sigmas", t.height_truncation_sigmas, 2.0, 0.5, 10.0, false)?;
@@ -291,7 +364,8 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
             format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
         )
     })?;
-    let rigid_block_mu = t.rigid_block_mu.map(|v| number("[waves] rigid_block_mu", v, 0.0, 2.0, true, "-")).transpose()?;
+    let rigid_block_mu =
+        t.rigid_block_mu.map(|v| number("[waves] rigid_block_mu", v, 0.0, 2.0, true, "-")).transpose()?;
     Ok(WaveScenario { model, height_m, period_s, train, rigid_block_mu })
 }
 
@@ -370,8 +444,14 @@ period_s = 3.04
         let no_waves = &PARI[..PARI.find("[waves]").unwrap()];
         assert_eq!(key_of(no_waves), "[waves]");
         // Unknown key and a key that does nothing with the chosen shape.
-        assert!(matches!(run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nfoo = 1")), Err(ScenarioError::Syntax { .. })));
-        assert!(matches!(run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nduration_ratio = 3")), Err(ScenarioError::Conflict { .. })));
+        assert!(matches!(
+            run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nfoo = 1")),
+            Err(ScenarioError::Syntax { .. })
+        ));
+        assert!(matches!(
+            run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nduration_ratio = 3")),
+            Err(ScenarioError::Conflict { .. })
+        ));
     }
 
     #[test]

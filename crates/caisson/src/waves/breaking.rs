@@ -131,7 +131,10 @@ pub fn breaking_depth_bisect(height_m: f64, breaker_height_m: impl Fn(f64) -> f6
     let mut hi = height_m;
     let mut doublings = 0;
     // A NaN breaker height counts as "not reached" (written with partial_cmp for that reason).
-    while !matches!(breaker_height_m(hi).partial_cmp(&height_m), Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)) {
+    while !matches!(
+        breaker_height_m(hi).partial_cmp(&height_m),
+        Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)
+    ) {
         hi *= 2.0;
         doublings += 1;
         if doublings > 200 {
