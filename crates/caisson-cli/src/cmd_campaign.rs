@@ -3,85 +3,41 @@
 //! manner of the seed's Figs. 13 and 15.
 
 use crate::cli::CampaignArgs;
-use crate::cmd_run::check_finite;
 use crate::input_err;
-use crate::output::{ensure_dir, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, Panel, Series};
-use crate::train_out::{describe_train, progress, realization_json, set_threads, spread_json};
 use anyhow::{Context, Result};
-use caisson::analysis::campaign::{run_campaign, ConditionResult};
-use caisson::scenario::campaign::{choice_name, validate_campaign, Campaign};
-use caisson::scenario::read_file;
-use serde_json::{json, Value};
+use caisson::analysis::campaign::{run_campaign, Campaign, ConditionResult};
+use caisson::foundation::DampingMode;
+use caisson::report::campaign::CampaignReport;
+use caisson::report::train::describe_train;
+use caisson::scenario;
 use std::fmt::Write;
 use std::path::Path;
 
 /// Read and validate a campaign file; `damping_mode` overrides `[foundation] damping_mode`.
 pub fn load_campaign(path: &Path, damping_mode: Option<&str>) -> Result<Campaign> {
-    let mut file = read_file(path).map_err(input_err)?;
+    let mut sc = scenario::load(path).map_err(input_err)?;
     if let Some(m) = damping_mode {
-        if !matches!(m, "total" | "elastic") {
-            return Err(input_err(format!("--damping-mode \"{m}\": must be \"total\" or \"elastic\"")));
-        }
-        file.foundation.damping_mode = Some(m.to_string());
+        let mode = match m {
+            "total" => DampingMode::Total,
+            "elastic" => DampingMode::Elastic,
+            _ => return Err(input_err(format!("--damping-mode \"{m}\": must be \"total\" or \"elastic\""))),
+        };
+        sc = sc.with_foundation(|f| f.damping_mode = mode).map_err(input_err)?;
     }
-    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("campaign");
-    validate_campaign(&file, path.parent().unwrap_or(Path::new(".")), stem).map_err(input_err)
+    let mut c = sc.campaign().map_err(input_err)?;
+    if sc.campaign.as_ref().is_some_and(|s| s.title.is_none()) {
+        c.title = path.file_stem().and_then(|s| s.to_str()).unwrap_or("campaign").to_string();
+    }
+    Ok(c)
 }
 
-/// The trains of a campaign, the height being per condition.
-fn campaign_train(c: &Campaign) -> String {
-    let t = &c.setups[0].waves.train;
-    describe_train(t)
-        .replace(&format!("H = {} m", t.height_m()), "H per condition")
-        .replace(&format!("H1/3 = {} m", t.height_m()), "H1/3 per condition")
-}
-
-fn damping_name(m: caisson::foundation::DampingMode) -> &'static str {
+fn damping_name(m: DampingMode) -> &'static str {
     match m {
-        caisson::foundation::DampingMode::Total => "total",
-        caisson::foundation::DampingMode::Elastic => "elastic",
+        DampingMode::Total => "total",
+        DampingMode::Elastic => "elastic",
     }
-}
-
-pub fn condition_json(r: &ConditionResult, with_realizations: bool) -> Value {
-    let s = &r.summary;
-    let mut v = json!({
-        "height_m": r.condition.height_m,
-        "weight_in_water_kn": r.condition.weight_in_water_n / 1e3,
-        "regime": choice_name(r.condition.regime),
-        "nominal_regime": r.nominal.regime.regime.name(),
-        "goda_horizontal_force_kn_per_m": r.nominal.goda.horizontal_force_n_per_m / 1e3,
-        "goda_uplift_force_kn_per_m": r.nominal.goda.uplift_force_n_per_m / 1e3,
-        "impact_horizontal_force_kn_per_m": r.nominal.impact.horizontal_force_n_per_m / 1e3,
-        "sliding_m": spread_json(&s.sliding_m, 1.0),
-        "rigid_block_sliding_m": spread_json(&s.rigid_block_sliding_m, 1.0),
-        "max_horizontal_reaction_kn": spread_json(&s.max_horizontal_reaction_n, 1e-3),
-        "slip_events": spread_json(&s.slip_events, 1.0),
-        "realization_sliding_m": s.realizations.iter().map(|x| x.sliding_m).collect::<Vec<_>>(),
-    });
-    if let Some(sf) = r.safety.sliding {
-        v["sliding_safety_factor"] = json!(sf);
-    }
-    if with_realizations {
-        v["realizations"] = s.realizations.iter().map(realization_json).collect();
-    }
-    v
-}
-
-pub fn campaign_json(c: &Campaign, results: &[ConditionResult], with_realizations: bool) -> Value {
-    let first = &c.setups[0];
-    json!({
-        "title": c.title,
-        "waves": {
-            "description": campaign_train(c),
-            "waves": first.waves.train.waves,
-            "realizations": first.waves.train.realizations,
-            "seed": first.waves.train.seed,
-        },
-        "damping_mode": damping_name(first.scenario.foundation.damping_mode),
-        "conditions": results.iter().map(|r| condition_json(r, with_realizations)).collect::<Vec<_>>(),
-    })
 }
 
 pub fn table_text(c: &Campaign, results: &[ConditionResult]) -> String {
@@ -94,15 +50,15 @@ pub fn table_text(c: &Campaign, results: &[ConditionResult]) -> String {
         results.len(),
         first.waves.train.realizations,
         first.waves.train.waves,
-        campaign_train(c),
-        damping_name(first.scenario.foundation.damping_mode)
+        describe_train(&first.waves.train, true),
+        damping_name(first.structure.foundation.damping_mode)
     );
     let _ = writeln!(t);
     let _ = writeln!(t, "  #  H (m)  W (kN)  regime        nominal       SF_sl   sliding mean / min / max (mm)    rigid block mean / min / max (mm)");
     for (i, r) in results.iter().enumerate() {
         let s = &r.summary;
         let _ = writeln!(t, "{:>3}  {:.3}  {:>6.2}  {:<12}  {:<12}  {:>5}   {:>8.3} / {:>8.3} / {:>8.3}      {:>9.2} / {:>9.2} / {:>9.2}",
-            i + 1, r.condition.height_m, r.condition.weight_in_water_n / 1e3, choice_name(r.condition.regime), r.nominal.regime.regime.name(),
+            i + 1, r.condition.height_m, r.condition.weight_in_water_n / 1e3, r.condition.regime.name(), r.nominal.regime.regime.name(),
             r.safety.sliding.map_or("-".into(), |v| format!("{v:.2}")),
             s.sliding_m.mean * 1e3, s.sliding_m.min * 1e3, s.sliding_m.max * 1e3,
             s.rigid_block_sliding_m.mean * 1e3, s.rigid_block_sliding_m.min * 1e3, s.rigid_block_sliding_m.max * 1e3);
@@ -134,7 +90,7 @@ fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
             (i + 1).to_string(),
             r.condition.height_m.to_string(),
             (r.condition.weight_in_water_n / 1e3).to_string(),
-            choice_name(r.condition.regime).to_string(),
+            r.condition.regime.name().to_string(),
             r.nominal.regime.regime.name().to_string(),
             r.safety.sliding.map_or(String::new(), |v| format!("{v}")),
             format!("{:e}", s.sliding_m.mean),
@@ -233,28 +189,22 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
 
 pub fn run(args: CampaignArgs) -> Result<()> {
     let campaign = load_campaign(&args.campaign, args.damping_mode.as_deref())?;
-    if let Some(dir) = &args.out {
-        if dir.exists() && !dir.is_dir() {
-            return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
-        }
-    }
-    set_threads(args.threads)?;
+    check_out_dir(args.out.as_deref())?;
     let total: usize = campaign.setups.iter().map(|s| s.waves.train.realizations).sum();
-    let pb = progress(total as u64, &format!("{} conditions", campaign.setups.len()));
-    let results = run_campaign(&campaign.setups, &|| pb.inc(1)).context("the campaign failed")?;
+    let pb = progress(total as u64, &format!("{} conditions", campaign.setups.len()), "realizations");
+    let results =
+        with_threads(args.threads, || run_campaign(&campaign.setups, &|| pb.inc(1)))?.context("the campaign failed")?;
     pb.finish_and_clear();
-    let json = campaign_json(&campaign, &results, false);
-    check_finite(&json, "campaign")?;
+    let json = report_json(&CampaignReport::new(&campaign, &results, false), "campaign")?;
     if args.json {
-        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", pretty(&json)?);
     } else {
         crate::say!("{}", table_text(&campaign, &results));
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
-        let full = campaign_json(&campaign, &results, true);
-        check_finite(&full, "campaign")?;
-        write_atomic(&dir.join("campaign.json"), serde_json::to_string_pretty(&full)?.as_bytes())?;
+        let full = report_json(&CampaignReport::new(&campaign, &results, true), "campaign")?;
+        write_atomic(&dir.join("campaign.json"), pretty(&full)?.as_bytes())?;
         write_atomic(&dir.join("campaign.csv"), &campaign_csv(&results)?)?;
         campaign_plots(dir, "campaign", &campaign.title, &results)?;
         if !args.json {

@@ -2,30 +2,27 @@
 //! lifetime Monte Carlo of performance-based design (PHYSICS.md §6.4), lives in parallel, with a
 //! checkpoint that keeps every finished life.
 //!
-//! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the run's
-//! fingerprint (the scenario text and the options that change results), then one JSON line per
-//! finished life, written and flushed as each life ends. A run killed at any moment (Ctrl-C,
+//! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the
+//! fingerprint of what every life depends on (the typed scenario, the screen and the stepping of
+//! `--brute-force`; [`design_fingerprint`]) and the tool and results versions, then one JSON line
+//! per finished life, written and flushed as each life ends. A run killed at any moment (Ctrl-C,
 //! `kill`) leaves the lives it finished; a partly written last line is ignored. `--resume` reads
 //! them, runs only the missing lives and reports exactly what an uninterrupted run reports (each
 //! life depends only on the seed and its index; f64 values round-trip exactly through JSON).
 
 use crate::cli::DesignArgs;
-use crate::cmd_run::check_finite;
 use crate::input_err;
-use crate::output::{ensure_dir, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, Panel, Series};
-use crate::train_out::set_threads;
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::{life_statistics, simulate_life, LifeStatistics, StormOutcome, Structure};
-use caisson::scenario::design::validate_design;
-use caisson::scenario::waves::validate_waves;
-use caisson::scenario::{parse_str, validate, Stepping};
-use indicatif::{ProgressBar, ProgressStyle};
-use rayon::prelude::*;
-use serde_json::{json, Value};
+use caisson::analysis::lifetime::{run_lives, StormOutcome};
+use caisson::dynamics::Stepping;
+use caisson::report::design::{design_fingerprint, DesignReport};
+use caisson::scenario;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::{BufRead, Write};
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -35,6 +32,8 @@ struct Header {
     caisson_design_checkpoint: u32,
     fingerprint: String,
     lives: usize,
+    caisson_version: String,
+    results_version: u32,
 }
 
 #[derive(serde::Serialize, serde::Deserialize)]
@@ -44,19 +43,34 @@ struct LifeLine {
     outcome: StormOutcome,
 }
 
-/// Lives already in a checkpoint (errors if it belongs to another run).
+/// Lives already in a checkpoint (an input error if it belongs to another run).
 fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<BTreeMap<usize, StormOutcome>> {
     let file = std::fs::File::open(path)
         .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
     let mut lines = std::io::BufReader::new(file).lines();
-    let header: Header =
-        lines.next().and_then(|l| l.ok()).and_then(|l| serde_json::from_str(&l).ok()).ok_or_else(|| {
-            input_err(format!("--resume: {} line 1 is not a caisson design checkpoint header", path.display()))
-        })?;
+    let header: Header = lines.next().and_then(|l| l.ok()).and_then(|l| serde_json::from_str(&l).ok()).ok_or_else(|| {
+        input_err(format!(
+            "--resume: {} line 1 is not a caisson design checkpoint header (of results version {}); run without --resume to start again",
+            path.display(),
+            caisson::RESULTS_VERSION
+        ))
+    })?;
+    if header.results_version != caisson::RESULTS_VERSION {
+        return Err(input_err(format!(
+            "--resume: the checkpoint {} holds results version {} (caisson {}), this caisson {} computes results version {}; its lives would not match: run without --resume to start again",
+            path.display(),
+            header.results_version,
+            header.caisson_version,
+            caisson::VERSION,
+            caisson::RESULTS_VERSION
+        )));
+    }
     if header.fingerprint != fingerprint {
         return Err(input_err(format!(
-            "--resume: the checkpoint {} was written for a different scenario or options (lives, seed, --brute-force); run without --resume to start again",
-            path.display()
+            "--resume: the checkpoint {} was written for a different scenario or options (fingerprint {}, this run {}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); run without --resume to start again",
+            path.display(),
+            header.fingerprint,
+            fingerprint
         )));
     }
     let mut done = BTreeMap::new();
@@ -71,15 +85,6 @@ fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<BTreeMap<usize, Sto
         }
     }
     Ok(done)
-}
-
-fn stats_json(s: &LifeStatistics, years: usize) -> Value {
-    json!({
-        "expected_sliding_m": s.mean_m,
-        "expected_sliding_per_year_m": s.mean_m / years as f64,
-        "percentiles_m": s.percentiles_m.iter().map(|(p, v)| (format!("p{}", *p as u32), json!(v))).collect::<serde_json::Map<_, _>>(),
-        "exceedance_probability": s.exceedance.iter().map(|(t, p)| json!({"threshold_m": t, "probability": p})).collect::<Vec<_>>(),
-    })
 }
 
 fn lives_csv(lives: &[StormOutcome]) -> Result<Vec<u8>> {
@@ -158,29 +163,21 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64]) -> Result<()> 
 }
 
 pub fn run(args: DesignArgs) -> Result<()> {
-    let text = std::fs::read_to_string(&args.scenario)
-        .map_err(|e| input_err(format!("cannot read scenario file {}: {e}", args.scenario.display())))?;
-    let file = parse_str(&text, &args.scenario).map_err(input_err)?;
-    let base = args.scenario.parent().unwrap_or(Path::new("."));
-    let mut sc = validate(&file, base).map_err(input_err)?;
-    let ws = validate_waves(&file, &sc.caisson).map_err(input_err)?;
-    let mut spec = validate_design(&file).map_err(input_err)?;
+    let mut sc = scenario::load(&args.scenario).map_err(input_err)?;
+    let mut design = sc.design_for("`caisson design`").map_err(input_err)?.clone();
     if let Some(n) = args.lives {
         if n == 0 {
             return Err(input_err("--lives 0: must be at least 1"));
         }
-        spec.lives = n;
+        design.lives = n;
     }
     if args.brute_force {
         // Brute force: every wave through the dynamic model at the fixed step dt_s.
-        spec.screen = false;
-        sc.solver.stepping = Stepping::Fixed;
+        design.screen = false;
+        let solver = caisson::dynamics::SolverParams { stepping: Stepping::Fixed, ..sc.solver() };
+        sc = sc.with_solver(solver).map_err(input_err)?;
     }
-    if let Some(dir) = &args.out {
-        if dir.exists() && !dir.is_dir() {
-            return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
-        }
-    }
+    check_out_dir(args.out.as_deref())?;
     let checkpoint: Option<PathBuf> =
         args.checkpoint.clone().or_else(|| args.out.as_ref().map(|d| d.join("checkpoint.jsonl")));
     if args.resume && checkpoint.is_none() {
@@ -188,22 +185,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
             "--resume needs the checkpoint: give --out DIR (DIR/checkpoint.jsonl) or --checkpoint FILE",
         ));
     }
-    set_threads(args.threads)?;
-    let structure = Structure {
-        caisson: &sc.caisson,
-        foundation: &sc.foundation,
-        solver: sc.solver,
-        model: &ws.model,
-        rigid_block_mu: ws.rigid_block_mu.unwrap_or(sc.foundation.mu_static),
-        screen: spec.screen,
-    };
-    let fingerprint = format!("{text}\n--lives {} --brute-force {}", spec.lives, args.brute_force);
+    let case = sc.storm_case(design.screen).map_err(input_err)?;
+    let fingerprint = design_fingerprint(&case, &design);
     let mut done = if args.resume {
         read_checkpoint(checkpoint.as_ref().expect("checked"), &fingerprint)?
     } else {
         BTreeMap::new()
     };
-    done.retain(|&i, _| i < spec.lives);
+    done.retain(|&i, _| i < design.lives);
     let writer = match &checkpoint {
         Some(path) => {
             if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
@@ -217,15 +206,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
             } else {
                 let mut f = std::fs::File::create(path)
                     .with_context(|| format!("creating the checkpoint {}", path.display()))?;
-                writeln!(
-                    f,
-                    "{}",
-                    serde_json::to_string(&Header {
-                        caisson_design_checkpoint: 1,
-                        fingerprint: fingerprint.clone(),
-                        lives: spec.lives
-                    })?
-                )?;
+                let header = Header {
+                    caisson_design_checkpoint: 1,
+                    fingerprint: fingerprint.clone(),
+                    lives: design.lives,
+                    caisson_version: caisson::VERSION.to_string(),
+                    results_version: caisson::RESULTS_VERSION,
+                };
+                writeln!(f, "{}", serde_json::to_string(&header)?)?;
                 f
             };
             f.flush()?;
@@ -233,109 +221,59 @@ pub fn run(args: DesignArgs) -> Result<()> {
         }
         None => None,
     };
-    let todo: Vec<usize> = (0..spec.lives).filter(|i| !done.contains_key(i)).collect();
-    let pb = ProgressBar::new(spec.lives as u64);
-    pb.set_style(
-        ProgressStyle::with_template("lives [{bar:40}] {pos}/{len}, {elapsed} elapsed, ~{eta} left")
-            .expect("template")
-            .progress_chars("=> "),
-    );
+    let todo: Vec<usize> = (0..design.lives).filter(|i| !done.contains_key(i)).collect();
+    let pb = progress(design.lives as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let finished_now = AtomicUsize::new(0);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
-    let results: Vec<Option<(usize, StormOutcome)>> = todo
-        .par_iter()
-        .map(|&i| -> Result<Option<(usize, StormOutcome)>> {
-            if finished_now.load(Ordering::SeqCst) >= stop_after {
-                return Ok(None);
+    let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
+    let on_life = |i: usize, o: &StormOutcome| {
+        if let Some(w) = &writer {
+            let line = serde_json::to_string(&LifeLine { life: i, outcome: *o }).expect("a life serializes");
+            let mut f = w.lock().expect("checkpoint lock");
+            if let Err(e) = writeln!(f, "{line}").and_then(|_| f.flush()) {
+                *write_error.lock().expect("error slot") =
+                    Some(anyhow::Error::new(e).context("writing the checkpoint"));
+                return ControlFlow::Break(());
             }
-            let o = simulate_life(&structure, &spec.life, spec.seed, i).with_context(|| format!("life {i} failed"))?;
-            if let Some(w) = &writer {
-                let line = serde_json::to_string(&LifeLine { life: i, outcome: o })?;
-                let mut f = w.lock().expect("checkpoint lock");
-                writeln!(f, "{line}")?;
-                f.flush()?;
-            }
-            finished_now.fetch_add(1, Ordering::SeqCst);
-            pb.inc(1);
-            Ok(Some((i, o)))
-        })
-        .collect::<Result<_>>()?;
+        }
+        pb.inc(1);
+        if finished_now.fetch_add(1, Ordering::SeqCst) + 1 >= stop_after {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    };
+    let results = with_threads(args.threads, || run_lives(&case, &design.life, design.seed, &todo, &on_life))?
+        .context("the design run failed")?;
     pb.finish_and_clear();
-    for (i, o) in results.into_iter().flatten() {
-        done.insert(i, o);
+    if let Some(e) = write_error.into_inner().expect("error slot") {
+        return Err(e);
     }
-    if done.len() < spec.lives {
+    done.extend(results);
+    if done.len() < design.lives {
         anyhow::bail!(
             "stopped after {} of {} lives (--stop-after); the finished lives are in {}; run again with --resume to complete",
             done.len(),
-            spec.lives,
+            design.lives,
             checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string())
         );
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
-    let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m).collect();
-    let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m).collect();
-    let sd = life_statistics(&dynamic, &spec.thresholds_m);
-    let sr = life_statistics(&rigid, &spec.thresholds_m);
-    let waves: u64 = lives.iter().map(|l| l.waves).sum();
-    let simulated: u64 = lives.iter().map(|l| l.simulated).sum();
-    let screened: u64 = lives.iter().map(|l| l.screened).sum();
-    let years = spec.life.life_years;
-    let json = json!({
-        "lives": spec.lives,
-        "life_years": years,
-        "seed": spec.seed,
-        "screen": spec.screen,
-        "dynamic": stats_json(&sd, years),
-        "rigid_block": stats_json(&sr, years),
-        "rigid_block_mu": structure.rigid_block_mu,
-        "waves": waves,
-        "simulated_waves": simulated,
-        "screened_waves": screened,
-        "screened_share": screened as f64 / waves.max(1) as f64,
-    });
-    check_finite(&json, "design")?;
+    let report = DesignReport::new(&design, case.rigid_block_mu, &lives);
+    let json = report_json(&report, "design")?;
     if args.json {
-        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", pretty(&json)?);
     } else {
-        let mut t = String::new();
-        let _ = writeln!(
-            t,
-            "{} lives of {years} years (seed {}), {} waves, {} through the dynamic model, {:.4} % screened{}",
-            spec.lives,
-            spec.seed,
-            waves,
-            simulated,
-            100.0 * screened as f64 / waves.max(1) as f64,
-            if spec.screen { "" } else { " (screen off)" }
-        );
-        let _ = writeln!(t);
-        let _ = writeln!(
-            t,
-            "                                  dynamic model   rigid block (Shimosako, μ = {})",
-            structure.rigid_block_mu
-        );
-        let _ = writeln!(t, "expected sliding over the life   {:>10.4} m    {:>10.4} m", sd.mean_m, sr.mean_m);
-        let _ = writeln!(
-            t,
-            "expected sliding per year        {:>10.5} m    {:>10.5} m",
-            sd.mean_m / years as f64,
-            sr.mean_m / years as f64
-        );
-        for ((p, a), (_, b)) in sd.percentiles_m.iter().zip(&sr.percentiles_m) {
-            let _ = writeln!(t, "{:>3.0} % percentile                  {:>10.4} m    {:>10.4} m", p, a, b);
-        }
-        for ((th, a), (_, b)) in sd.exceedance.iter().zip(&sr.exceedance) {
-            let _ = writeln!(t, "P(sliding > {:<5} m)             {:>10.4}      {:>10.4}", th, a, b);
-        }
-        crate::say!("{t}");
+        crate::say!("{}", design_text(&report));
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
-        write_atomic(&dir.join("design.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;
+        write_atomic(&dir.join("design.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("lives.csv"), &lives_csv(&lives)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
+        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m).collect();
+        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m).collect();
         plots(dir, title, &dynamic, &rigid)?;
         if !args.json {
             crate::sayln!(
@@ -345,4 +283,50 @@ pub fn run(args: DesignArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The table of a design run.
+fn design_text(r: &DesignReport) -> String {
+    let years = r.life_years;
+    let (sd, sr) = (&r.dynamic, &r.rigid_block);
+    let mut t = String::new();
+    let _ = writeln!(
+        t,
+        "{} lives of {years} years (seed {}), {} waves, {} through the dynamic model, {:.4} % screened{}",
+        r.lives,
+        r.seed,
+        r.waves,
+        r.simulated_waves,
+        100.0 * r.screened_waves as f64 / r.waves.max(1) as f64,
+        if r.screen { "" } else { " (screen off)" }
+    );
+    let _ = writeln!(t);
+    let _ = writeln!(
+        t,
+        "                                  dynamic model   rigid block (Shimosako, μ = {})",
+        r.rigid_block_mu
+    );
+    let _ = writeln!(
+        t,
+        "expected sliding over the life   {:>10.4} m    {:>10.4} m",
+        sd.expected_sliding_m, sr.expected_sliding_m
+    );
+    let _ = writeln!(
+        t,
+        "expected sliding per year        {:>10.5} m    {:>10.5} m",
+        sd.expected_sliding_m / years as f64,
+        sr.expected_sliding_m / years as f64
+    );
+    let (pd, pr) = (&sd.percentiles_m, &sr.percentiles_m);
+    for (p, a, b) in [(5.0, pd.p5, pr.p5), (50.0, pd.p50, pr.p50), (95.0, pd.p95, pr.p95), (99.0, pd.p99, pr.p99)] {
+        let _ = writeln!(t, "{:>3.0} % percentile                  {:>10.4} m    {:>10.4} m", p, a, b);
+    }
+    for (a, b) in sd.exceedance_probability.iter().zip(&sr.exceedance_probability) {
+        let _ = writeln!(
+            t,
+            "P(sliding > {:<5} m)             {:>10.4}      {:>10.4}",
+            a.threshold_m, a.probability, b.probability
+        );
+    }
+    t
 }

@@ -5,29 +5,33 @@
 //! with their fitted curves.
 
 use crate::cli::FragilityArgs;
-use crate::cmd_run::check_finite;
 use crate::input_err;
-use crate::output::{ensure_dir, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, Panel, Series};
-use crate::train_out::set_threads;
 use anyhow::{Context, Result};
-use caisson::analysis::fragility::{run_fragility, FitFailure, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
-use caisson::analysis::lifetime::Structure;
-use caisson::scenario::fragility::{validate_fragility, FragilitySetup};
-use caisson::scenario::read_file;
-use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::{json, Value};
+use caisson::analysis::fragility::{
+    run_fragility, FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO,
+};
+use caisson::analysis::train::WaveSetup;
+use caisson::analysis::Structure;
+use caisson::report::fragility::FragilityReport;
+use caisson::scenario;
 use std::fmt::Write;
 use std::path::Path;
 
 /// The two sliding models, as named in JSON and CSV.
 const MODELS: [&str; 2] = ["dynamic", "rigid_block"];
 
+/// What a fragility analysis runs on.
+struct Setup<'a> {
+    structure: &'a Structure,
+    waves: &'a WaveSetup,
+    params: &'a FragilityParams,
+}
+
 /// Goda's static sliding safety factor (μ_s) under the wave H_max = 1.8 H1/3, if defined.
-fn goda_sliding_safety(s: &FragilitySetup, h13_m: f64, period_s: f64) -> Option<f64> {
-    let m = &s.waves.model;
-    let loads = m.evaluate_with(HMAX_RATIO * h13_m, period_s, m.options.regime).ok()?;
-    m.safety(&loads, s.scenario.caisson.weight_in_water_n, s.scenario.foundation.mu_static).sliding
+fn goda_sliding_safety(s: &Setup<'_>, h13_m: f64, period_s: f64) -> Option<f64> {
+    caisson::report::fragility::goda_sliding_safety(s.structure, s.waves, h13_m, period_s)
 }
 
 fn counts(l: &LevelResult, model: usize) -> &[u64] {
@@ -38,76 +42,6 @@ fn counts(l: &LevelResult, model: usize) -> &[u64] {
     }
 }
 
-fn fit_json(f: &Result<LognormalFit, FitFailure>) -> Value {
-    match f {
-        Ok(f) => json!({
-            "fitted": true,
-            "median_m": f.median,
-            "beta": f.beta,
-            "ln_median_se": f.ln_median_se,
-            "beta_se": f.beta_se,
-            "log_likelihood": f.log_likelihood,
-        }),
-        Err(e) => {
-            json!({ "fitted": false, "reason": serde_json::to_value(e).expect("serialisable"), "message": e.to_string() })
-        }
-    }
-}
-
-fn level_json(s: &FragilitySetup, l: &LevelResult) -> Value {
-    let n = l.storms.len() as f64;
-    let mut v = json!({
-        "significant_height_m": l.h13_m,
-        "hmax_m": l.hmax_m,
-        "storms": l.storms.len(),
-        "mean_sliding_m": l.mean_sliding_m(),
-        "max_sliding_m": l.storms.iter().map(|o| o.sliding_m).fold(0.0, f64::max),
-        "mean_rigid_block_sliding_m": l.mean_rigid_block_sliding_m(),
-        "max_rigid_block_sliding_m": l.storms.iter().map(|o| o.rigid_block_sliding_m).fold(0.0, f64::max),
-        "screened_share": l.screened_share(),
-        "simulated_waves": l.storms.iter().map(|o| o.simulated).sum::<u64>(),
-        "exceedance": s.params.limits_m.iter().enumerate().map(|(j, lim)| json!({
-            "limit_m": lim,
-            "dynamic_count": l.dynamic_exceedances[j],
-            "dynamic_probability": l.dynamic_exceedances[j] as f64 / n,
-            "rigid_block_count": l.rigid_block_exceedances[j],
-            "rigid_block_probability": l.rigid_block_exceedances[j] as f64 / n,
-        })).collect::<Vec<_>>(),
-        "storm_sliding_m": l.storms.iter().map(|o| o.sliding_m).collect::<Vec<_>>(),
-        "storm_rigid_block_sliding_m": l.storms.iter().map(|o| o.rigid_block_sliding_m).collect::<Vec<_>>(),
-    });
-    if let Some(sf) = goda_sliding_safety(s, l.h13_m, s.params.period_s) {
-        v["goda_sliding_safety_factor"] = json!(sf);
-    }
-    v
-}
-
-fn fragility_json(s: &FragilitySetup, name: &str, r: &FragilityResult, rigid_block_mu: f64) -> Value {
-    let p = &s.params;
-    let mut design = json!({ "significant_height_m": s.waves.height_m, "hmax_m": HMAX_RATIO * s.waves.height_m, "period_s": s.waves.period_s });
-    if let Some(sf) = goda_sliding_safety(s, s.waves.height_m, s.waves.period_s) {
-        design["goda_sliding_safety_factor"] = json!(sf);
-    }
-    json!({
-        "scenario": name,
-        "period_s": p.period_s,
-        "storm_duration_h": p.storm_duration_s / 3600.0,
-        "waves_per_storm": p.waves_per_storm(),
-        "hmax_ratio": HMAX_RATIO,
-        "storms": p.storms,
-        "seed": p.seed,
-        "limits_m": p.limits_m,
-        "rigid_block_mu": rigid_block_mu,
-        "design_wave": design,
-        "levels": r.levels.iter().map(|l| level_json(s, l)).collect::<Vec<_>>(),
-        "fits": r.fits.iter().map(|f| json!({
-            "limit_m": f.limit_m,
-            "dynamic": fit_json(&f.dynamic),
-            "rigid_block": fit_json(&f.rigid_block),
-        })).collect::<Vec<_>>(),
-    })
-}
-
 fn fit_text(f: &Result<LognormalFit, FitFailure>) -> String {
     match f {
         Ok(f) => format!("θ = {:.3} m (ln θ ± {:.3}), β = {:.3} ± {:.3}", f.median, f.ln_median_se, f.beta, f.beta_se),
@@ -115,25 +49,25 @@ fn fit_text(f: &Result<LognormalFit, FitFailure>) -> String {
     }
 }
 
-fn table_text(s: &FragilitySetup, name: &str, r: &FragilityResult, rigid_block_mu: f64) -> String {
+fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f64) -> String {
     let p = &s.params;
-    let c = &s.scenario.caisson;
+    let c = &s.structure.caisson;
     let mut t = String::new();
     let _ = writeln!(
         t,
         "Fragility of {name}: B = {} m, W' = {:.1} kN, μ_s = {}, rigid block μ = {rigid_block_mu}",
         c.width_m,
         c.weight_in_water_n / 1e3,
-        s.scenario.foundation.mu_static
+        s.structure.foundation.mu_static
     );
     let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to H_max = {HMAX_RATIO} H1/3, no tide or estimation errors; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
-    let sf = goda_sliding_safety(s, s.waves.height_m, s.waves.period_s).map_or("-".into(), |v| format!("{v:.3}"));
+    let sf = goda_sliding_safety(s, s.waves.height_m(), s.waves.period_s()).map_or("-".into(), |v| format!("{v:.3}"));
     let _ = writeln!(
         t,
         "Design wave H1/3 = {} m: Goda static sliding safety factor {sf} at H_max = {:.2} m",
-        s.waves.height_m,
-        HMAX_RATIO * s.waves.height_m
+        s.waves.height_m(),
+        HMAX_RATIO * s.waves.height_m()
     );
     let _ = writeln!(t);
     let mut head = String::from("H1/3 (m)  SF(H_max)  storms");
@@ -182,7 +116,7 @@ fn table_text(s: &FragilitySetup, name: &str, r: &FragilityResult, rigid_block_m
 }
 
 /// One row per (height, limit): the counts, the probabilities and the fitted probabilities.
-fn fragility_csv(s: &FragilitySetup, r: &FragilityResult) -> Result<Vec<u8>> {
+fn fragility_csv(s: &Setup<'_>, r: &FragilityResult) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
         "significant_height_m",
@@ -258,44 +192,26 @@ fn fragility_plot(path: &Path, name: &str, r: &FragilityResult) -> Result<()> {
 }
 
 pub fn run(args: FragilityArgs) -> Result<()> {
-    let file = read_file(&args.scenario).map_err(input_err)?;
-    let setup = validate_fragility(&file, args.scenario.parent().unwrap_or(Path::new("."))).map_err(input_err)?;
-    if let Some(dir) = &args.out {
-        if dir.exists() && !dir.is_dir() {
-            return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
-        }
-    }
-    set_threads(args.threads)?;
-    let sc = &setup.scenario;
-    let rigid_block_mu = setup.waves.rigid_block_mu.unwrap_or(sc.foundation.mu_static);
-    let structure = Structure {
-        caisson: &sc.caisson,
-        foundation: &sc.foundation,
-        solver: sc.solver,
-        model: &setup.waves.model,
-        rigid_block_mu,
-        screen: true,
-    };
-    let p = &setup.params;
-    let pb = ProgressBar::new((p.heights_m.len() * p.storms) as u64);
-    pb.set_style(
-        ProgressStyle::with_template("storms [{bar:40}] {pos}/{len}, {elapsed} elapsed, ~{eta} left")
-            .expect("template")
-            .progress_chars("=> "),
-    );
-    let result = run_fragility(&structure, p, &|| pb.inc(1)).context("the fragility analysis failed")?;
+    let sc = scenario::load(&args.scenario).map_err(input_err)?;
+    let params = sc.fragility_for("`caisson fragility`").map_err(input_err)?;
+    check_out_dir(args.out.as_deref())?;
+    let case = sc.storm_case(true).map_err(input_err)?;
+    let setup = Setup { structure: sc.structure(), waves: sc.waves_for("a fragility").map_err(input_err)?, params };
+    let pb = progress((params.heights_m.len() * params.storms) as u64, "storms", "");
+    let result = with_threads(args.threads, || run_fragility(&case, params, &|| pb.inc(1)))?
+        .context("the fragility analysis failed")?;
     pb.finish_and_clear();
     let name = args.scenario.file_name().and_then(|s| s.to_str()).unwrap_or("fragility");
-    let json = fragility_json(&setup, name, &result, rigid_block_mu);
-    check_finite(&json, "fragility")?;
+    let report = FragilityReport::new(name, setup.structure, setup.waves, params, &result);
+    let json = report_json(&report, "fragility")?;
     if args.json {
-        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", pretty(&json)?);
     } else {
-        crate::say!("{}", table_text(&setup, name, &result, rigid_block_mu));
+        crate::say!("{}", table_text(&setup, name, &result, case.rigid_block_mu));
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
-        write_atomic(&dir.join("fragility.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;
+        write_atomic(&dir.join("fragility.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("fragility.csv"), &fragility_csv(&setup, &result)?)?;
         fragility_plot(&dir.join("fragility.svg"), name, &result)?;
         if !args.json {

@@ -8,9 +8,10 @@
 
 use crate::cli::LoadsArgs;
 use crate::input_err;
-use crate::output::{ensure_dir, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
+use caisson::analysis::train::WaveSetup;
 use caisson::loads::history::{LoadComponent, WaveEvent, WaveTrain};
 use caisson::loads::model::{WaveLoads, WaveRecord};
 use caisson::loads::regime::Regime;
@@ -18,9 +19,8 @@ use caisson::loads::risetime::{load_rng, RiseTimeModel};
 use caisson::loads::safety::SafetyFactors;
 use caisson::loads::shapes::LoadShape;
 use caisson::loads::LoadHistory;
-use caisson::scenario::waves::{validate_waves, WaveScenario};
+use caisson::report::loads::{HistoryInfo, LoadsReport};
 use caisson::scenario::{self, Scenario};
-use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -34,12 +34,12 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     if args.waves == 0 || args.waves > MAX_WAVES {
         return Err(input_err(format!("--waves {}: must be a whole number from 1 to {MAX_WAVES}", args.waves)));
     }
-    let file = scenario::read_file(&args.scenario).map_err(input_err)?;
-    let dir = args.scenario.parent().unwrap_or(Path::new("."));
-    let sc = scenario::validate(&file, dir).map_err(input_err)?;
-    let ws = validate_waves(&file, &sc.caisson).map_err(input_err)?;
-    let loads = ws.model.evaluate(ws.height_m, ws.period_s).map_err(input_err)?;
-    let safety = ws.model.safety(&loads, sc.caisson.weight_in_water_n, sc.foundation.mu_static);
+    let sc = scenario::load(&args.scenario).map_err(input_err)?;
+    check_out_dir(args.out.as_deref())?;
+    let ws = sc.waves_for("`caisson loads`").map_err(input_err)?;
+    let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).map_err(input_err)?;
+    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
+    let safety = ws.model.safety(&loads, w, mu);
 
     let history = if args.history {
         let records = ws.model.regular_records(&loads, args.waves, &mut load_rng(args.seed));
@@ -48,26 +48,27 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     } else {
         None
     };
-    let mut doc = loads_json(&sc, &ws, &loads, &safety);
+    let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
     if let Some((records, _)) = &history {
-        doc["history"] = json!({
-            "waves": args.waves,
-            "seed": args.seed,
-            "rise_times_s": records.iter().map(|r| r.rise_time_s).collect::<Vec<_>>(),
-            "csv": "wave_loads.csv",
-            "svg": "wave_loads.svg",
+        report.history = Some(HistoryInfo {
+            waves: args.waves,
+            seed: args.seed,
+            rise_times_s: records.iter().map(|r| r.rise_time_s).collect(),
+            csv: "wave_loads.csv",
+            svg: "wave_loads.svg",
         });
     }
+    let doc = serde_json::to_value(&report)?;
     if args.json {
-        crate::sayln!("{}", serde_json::to_string_pretty(&doc)?);
+        crate::sayln!("{}", pretty(&doc)?);
     } else {
-        crate::say!("{}", loads_text(&sc, &ws, &loads, &safety));
+        crate::say!("{}", loads_text(&sc, ws, &loads, &safety));
     }
     if let Some(out) = &args.out {
         ensure_dir(out)?;
-        write_atomic(&out.join("loads.json"), serde_json::to_string_pretty(&doc)?.as_bytes())?;
+        write_atomic(&out.join("loads.json"), pretty(&doc)?.as_bytes())?;
         if let Some((records, train)) = &history {
-            write_history(out, &ws, &loads, records, train)?;
+            write_history(out, ws, &loads, records, train)?;
             if !args.json {
                 crate::sayln!(
                     "\nWrote {}, {} and {}",
@@ -81,120 +82,12 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     Ok(())
 }
 
-/// The JSON document (per metre of breakwater; kN, kPa, m).
-pub fn loads_json(sc: &Scenario, ws: &WaveScenario, l: &WaveLoads, sf: &SafetyFactors) -> Value {
-    let site = &ws.model.site;
-    let o = &ws.model.options;
-    let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
-    let kn = |x: f64| x / 1e3;
-    let impulsive = l.regime.regime == Regime::Breaking && l.rise_time.is_some();
-    json!({
-        "wave": {
-            "kind": "regular",
-            "incident_height_m": l.height_incident_m,
-            "height_at_toe_m": l.height_m,
-            "limited_at_toe": l.limited_at_toe,
-            "toe_breaker_height_m": l.toe_breaker_height_m,
-            "period_s": l.period_s,
-            "angle_deg": o.angle_rad.to_degrees(),
-            "toe_wavelength_m": l.toe_wavelength_m,
-            "deep_water_wavelength_m": l.deep_water_wavelength_m,
-        },
-        "site": {
-            "water_density_kg_per_m3": site.rho_w,
-            "depth_at_toe_m": site.depth_at_toe_m,
-            "depth_at_wall_m": site.depth_at_wall_m,
-            "base_depth_m": site.base_depth_m,
-            "crest_freeboard_m": site.crest_freeboard_m,
-            "width_m": site.width_m,
-            "length_m": site.length_m,
-            "seabed_slope": site.seabed_slope,
-            "berm_width_m": site.berm_width_m,
-            "depth_5h_seaward_m": l.depth_5h_seaward_m,
-        },
-        "regime": {
-            "regime": l.regime.regime.name(),
-            "forced": l.regime.forced,
-            "breaker_criterion": o.criterion.name(),
-            "breaker_height_at_wall_m": l.regime.breaker_height_at_wall_m,
-        },
-        "goda": {
-            "alpha1": g.alpha1,
-            "alpha2": g.alpha2,
-            "alpha3": g.alpha3,
-            "alpha_i": g.alpha_i,
-            "alpha_star": g.alpha_star,
-            "eta_star_m": g.eta_star_m,
-            "p1_kpa": kn(g.p1_pa),
-            "p2_kpa": kn(g.p2_pa),
-            "p3_kpa": kn(g.p3_pa),
-            "p4_kpa": kn(g.p4_pa),
-            "pu_kpa": kn(g.pu_pa),
-            "horizontal_force_kn_per_m": kn(g.horizontal_force_n_per_m),
-            "horizontal_moment_base_kn_m_per_m": kn(g.horizontal_moment_base_nm_per_m),
-            "horizontal_lever_m": g.horizontal_lever_m,
-            "uplift_force_kn_per_m": kn(g.uplift_force_n_per_m),
-            "uplift_moment_heel_kn_m_per_m": kn(g.uplift_moment_heel_nm_per_m),
-            "uplift_from_heel_m": g.uplift_from_heel_m,
-        },
-        "sainflou": {
-            "depth_m": l.sainflou_depth_m,
-            "h0_m": s.h0_m,
-            "pb_kpa": kn(s.pb_pa),
-            "crest_force_kn_per_m": kn(s.crest_force_n_per_m),
-            "crest_moment_base_kn_m_per_m": kn(s.crest_moment_base_nm_per_m),
-            "trough_base_pressure_kpa": kn(s.trough_base_pressure_pa),
-            "trough_force_kn_per_m": kn(s.trough_force_n_per_m),
-            "trough_moment_base_kn_m_per_m": kn(s.trough_moment_base_nm_per_m),
-            "trough_lever_m": s.trough_lever_m,
-            "suction_uplift_kn_per_m": kn(s.suction_uplift_n_per_m),
-            "suction_moment_heel_kn_m_per_m": kn(s.suction_moment_heel_nm_per_m),
-        },
-        "impact": {
-            "applied": impulsive,
-            "breaking_depth_m": i.breaking_depth_m,
-            "breaker_height_m": i.breaker_height_m,
-            "reduction": i.reduction,
-            "alpha_max": o.alpha_max,
-            "a_imp": o.a_imp,
-            "horizontal_force_kn_per_m": kn(i.horizontal_force_n_per_m),
-            "p1_kpa": kn(i.p1_pa),
-            "horizontal_moment_base_kn_m_per_m": kn(i.horizontal_moment_base_nm_per_m),
-            "horizontal_lever_m": i.horizontal_lever_m,
-            "uplift_force_kn_per_m": kn(i.uplift_force_n_per_m),
-            "uplift_moment_heel_kn_m_per_m": kn(i.uplift_moment_heel_nm_per_m),
-            "uplift_from_heel_m": i.uplift_from_heel_m,
-        },
-        "rise_time": {
-            "model": o.rise_time.model,
-            "f_star": l.f_star,
-            "impulsive": l.rise_time.is_some(),
-            "median_s": l.rise_time.map(|d| d.median_clamped_s()),
-            "log_std": l.rise_time.map(|d| d.log_std),
-            "max_s": 0.25 * l.period_s,
-        },
-        "time_history": {
-            "load_shape": if l.regime.regime == Regime::Breaking { o.load_shape.name() } else { "eq29" },
-            "alpha_qs": if l.regime.regime == Regime::Breaking { o.alpha_qs_breaking } else { o.alpha_qs_nonbreaking },
-            "duration_ratio": o.duration_ratio,
-        },
-        "safety": {
-            "mu": sc.foundation.mu_static,
-            "weight_in_water_kn_per_m": kn(sc.caisson.weight_in_water_n / site.length_m),
-            "sliding": sf.sliding,
-            "overturning": sf.overturning,
-            "heel_pressure_kpa": sf.heel_pressure_pa.map(kn),
-            "resultant_from_heel_m": sf.resultant_from_heel_m,
-        },
-    })
-}
-
 fn opt(v: Option<f64>, digits: usize) -> String {
     v.map_or_else(|| "–".to_string(), |x| format!("{x:.digits$}"))
 }
 
 /// The human-readable report.
-pub fn loads_text(sc: &Scenario, ws: &WaveScenario, l: &WaveLoads, sf: &SafetyFactors) -> String {
+pub fn loads_text(sc: &Scenario, ws: &WaveSetup, l: &WaveLoads, sf: &SafetyFactors) -> String {
     let site = &ws.model.site;
     let o = &ws.model.options;
     let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
@@ -294,8 +187,8 @@ pub fn loads_text(sc: &Scenario, ws: &WaveScenario, l: &WaveLoads, sf: &SafetyFa
     let _ = writeln!(
         t,
         "Safety (Goda loads, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa",
-        sc.foundation.mu_static,
-        sc.caisson.weight_in_water_n / 1e3 / site.length_m,
+        sc.foundation().mu_static,
+        sc.caisson().weight_in_water_n / 1e3 / site.length_m,
         opt(sf.sliding, 3),
         opt(sf.overturning, 3),
         opt(sf.heel_pressure_pa.map(|p| p / 1e3), 3)
@@ -322,7 +215,7 @@ fn wave_times(e: &WaveEvent, out: &mut Vec<f64>) {
 
 fn write_history(
     out: &Path,
-    ws: &WaveScenario,
+    ws: &WaveSetup,
     loads: &WaveLoads,
     records: &[WaveRecord],
     train: &WaveTrain,

@@ -2,72 +2,17 @@
 
 use crate::cli::RunArgs;
 use crate::input_err;
-use crate::output::{ensure_dir, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::run::{self as engine, FoundationSummary, History, RunSummary};
+use caisson::analysis::run::{self as engine, History, RunSummary};
+use caisson::loads::LoadSpec;
+use caisson::report::run::RunReport;
 use caisson::scenario::{self, Scenario};
-use serde_json::{json, Value};
-
-/// The `foundation` object of the JSON summaries (contract keys, docs/cli.md).
-pub fn foundation_json(f: &FoundationSummary) -> Value {
-    json!({
-        "kx_kn_per_m": f.kx_n_per_m / 1e3,
-        "ky_kn_per_m": f.ky_n_per_m / 1e3,
-        "damping_kns_per_m": f.damping_ns_per_m / 1e3,
-        "mass_kg": f.mass_kg,
-        "added_mass_kg": f.added_mass_kg,
-        "natural_period_s": f.natural_period_s,
-        "static_settlement_m": f.static_settlement_m,
-        "static_sliding_resistance_kn": f.static_sliding_resistance_n / 1e3,
-    })
-}
-
-/// The JSON summary (contract keys listed in docs/cli.md). Forces in kN.
-pub fn summary_json(s: &RunSummary, spring_x: &[f64]) -> Value {
-    let f = &s.foundation;
-    json!({
-        "permanent_sliding_m": s.permanent_sliding_m,
-        "max_horizontal_displacement_m": s.max_horizontal_displacement_m,
-        "max_rotation_rad": s.max_rotation_rad,
-        "max_horizontal_reaction_kn": s.max_horizontal_reaction_n / 1e3,
-        "time_of_max_horizontal_reaction_s": s.time_of_max_horizontal_reaction_s,
-        "slip_events": s.slip_events,
-        "slip_event_times_s": s.slip_event_times_s,
-        "max_spring_reaction_kn": s.max_spring_normal_n / 1e3,
-        "min_spring_reaction_kn": s.min_spring_normal_n / 1e3,
-        "max_spring_shear_kn": s.max_spring_shear_n / 1e3,
-        "final_displacement_m": s.final_displacement_m,
-        "final_settlement_m": s.final_settlement_m,
-        "final_rotation_rad": s.final_rotation_rad,
-        "duration_s": s.duration_s,
-        "spring_positions_m": spring_x,
-        "foundation": foundation_json(f),
-        "solver": {
-            "steps": s.solver.steps,
-            "newton_iterations": s.solver.newton_iterations,
-            "substeps": s.solver.substeps,
-            "max_residual": s.solver.max_residual,
-        },
-    })
-}
-
-/// Refuse to print or write a non-finite number.
-pub fn check_finite(v: &Value, path: &str) -> Result<()> {
-    match v {
-        Value::Number(n) if n.as_f64().map_or(false, |x| !x.is_finite()) => {
-            anyhow::bail!("internal error: {path} is not finite")
-        }
-        Value::Null => anyhow::bail!("internal error: {path} is not a finite number"),
-        Value::Object(m) => m.iter().try_for_each(|(k, x)| check_finite(x, &format!("{path}.{k}"))),
-        Value::Array(a) => a.iter().enumerate().try_for_each(|(i, x)| check_finite(x, &format!("{path}[{i}]"))),
-        _ => Ok(()),
-    }
-}
 
 pub fn summary_text(sc: &Scenario, s: &RunSummary) -> String {
     let f = &s.foundation;
-    let c = &sc.caisson;
+    let c = sc.caisson();
     let mut t = String::new();
     use std::fmt::Write;
     let _ = writeln!(
@@ -88,9 +33,9 @@ pub fn summary_text(sc: &Scenario, s: &RunSummary) -> String {
         f.kx_n_per_m / 1e3,
         f.ky_n_per_m / 1e3,
         f.damping_ns_per_m / 1e3,
-        sc.foundation.springs,
-        sc.foundation.mu_static,
-        sc.foundation.mu_dynamic
+        sc.foundation().springs,
+        sc.foundation().mu_static,
+        sc.foundation().mu_dynamic
     );
     let _ = writeln!(
         t,
@@ -270,31 +215,35 @@ pub fn write_plots(dir: &std::path::Path, h: &History, title: &str) -> Result<()
 
 pub fn run(args: RunArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
-    if let Some(dir) = &args.out {
-        if dir.exists() && !dir.is_dir() {
-            return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
+    check_out_dir(args.out.as_deref())?;
+    match &sc.load {
+        Some(load) => run_load(&args, &sc, load),
+        None if sc.waves.is_some() => {
+            crate::output::with_threads(args.threads, || {
+                crate::train_out::run_waves(&args.scenario, &sc, args.json, args.out.as_deref())
+            })?
         }
+        None => Err(input_err(format!(
+            "{}: `caisson run` needs a [load] table (kind = \"triangle\", \"static\" or \"series\") or a [waves] table (wave trains)",
+            args.scenario.display()
+        ))),
     }
-    if sc.load.is_none() {
-        let file = scenario::read_file(&args.scenario).map_err(input_err)?;
-        if file.waves.is_none() {
-            return Err(input_err(format!("{}: `caisson run` needs a [load] table (kind = \"triangle\", \"static\" or \"series\") or a [waves] table (wave trains)", args.scenario.display())));
-        }
-        crate::train_out::set_threads(args.threads)?;
-        return crate::train_out::run_waves(&args.scenario, &sc, args.json, args.out.as_deref());
-    }
-    let result = engine::run(&sc, args.out.is_some()).context("the dynamic run failed")?;
-    let x = caisson::foundation::Foundation::spring_positions(&sc.foundation, sc.caisson.width_m);
-    let json = summary_json(&result.summary, &x);
-    check_finite(&json, "summary")?;
+}
+
+/// `caisson run` on a `[load]` scenario.
+fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
+    let result =
+        engine::run(sc.structure(), load, sc.duration_s, args.out.is_some()).context("the dynamic run failed")?;
+    let x = sc.foundation().spring_positions(sc.caisson().width_m);
+    let json = report_json(&RunReport::new(&result.summary, x), "summary")?;
     if args.json {
-        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", pretty(&json)?);
     } else {
-        crate::say!("{}", summary_text(&sc, &result.summary));
+        crate::say!("{}", summary_text(sc, &result.summary));
     }
     if let (Some(dir), Some(h)) = (&args.out, &result.history) {
         ensure_dir(dir)?;
-        write_atomic(&dir.join("summary.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;
+        write_atomic(&dir.join("summary.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("history.csv"), &history_csv(h)?)?;
         write_atomic(&dir.join("springs.csv"), &springs_csv(h)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("run");

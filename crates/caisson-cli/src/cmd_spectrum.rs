@@ -2,14 +2,14 @@
 //! spectrum of the scenario's caisson under its triangular pulse (seed §5.2, Figs. 7-8).
 
 use crate::cli::SpectrumArgs;
-use crate::cmd_run::check_finite;
 use crate::input_err;
-use crate::output::{ensure_dir, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::spectrum::{log_space, sweep, SpectrumPoint};
-use caisson::scenario::{self, LoadSpec};
-use serde_json::json;
+use caisson::loads::LoadSpec;
+use caisson::report::spectrum::SpectrumReport;
+use caisson::scenario;
 
 /// Parse `FROM:TO:COUNT` (0 < FROM < TO, 2 ≤ COUNT ≤ 2000).
 pub fn parse_range(s: &str) -> Result<(f64, f64, usize)> {
@@ -29,19 +29,6 @@ pub fn parse_range(s: &str) -> Result<(f64, f64, usize)> {
     Ok((from, to, count))
 }
 
-fn point_json(p: &SpectrumPoint) -> serde_json::Value {
-    json!({
-        "tr_over_t0": p.tr_over_t0,
-        "rise_time_s": p.rise_time_s,
-        "psi": p.psi,
-        "psi_closed_form": p.psi_closed_form,
-        "permanent_sliding_m": p.permanent_sliding_m,
-        "shimosako_sliding_m": p.shimosako_sliding_m,
-        "rigid_block_sliding_m": p.rigid_block_sliding_m,
-        "max_horizontal_reaction_kn": p.max_horizontal_reaction_n / 1e3,
-    })
-}
-
 pub fn run(args: SpectrumArgs) -> Result<()> {
     let (from, to, count) = parse_range(&args.tr_over_t0)?;
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
@@ -51,31 +38,23 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
             args.scenario.display()
         )));
     };
-    if let Some(dir) = &args.out {
-        if dir.exists() && !dir.is_dir() {
-            return Err(input_err(format!("--out {}: exists and is not a directory", dir.display())));
-        }
-    }
+    check_out_dir(args.out.as_deref())?;
     let ratios = log_space(from, to, count);
-    let pts = sweep(&sc.caisson, &sc.foundation, sc.solver, base, &ratios).context("the spectrum sweep failed")?;
-    let model = caisson::dynamics::Model::new(&sc.caisson, &sc.foundation);
-    let json = json!({
-        "natural_period_s": model.natural_period_s(),
-        "peak_horizontal_kn": base.peak.fx_n / 1e3,
-        "peak_uplift_kn": base.peak.fy_n / 1e3,
-        "static_sliding_resistance_kn": sc.foundation.mu_static * sc.caisson.weight_in_water_n / 1e3,
-        "points": pts.iter().map(point_json).collect::<Vec<_>>(),
-    });
-    check_finite(&json, "spectrum")?;
+    let pb = progress(ratios.len() as u64, "spectrum", "points");
+    let pts = sweep(sc.structure(), base, &ratios, &|| pb.inc(1)).context("the spectrum sweep failed")?;
+    pb.finish_and_clear();
+    let model = sc.structure().model();
+    let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
+    let json = report_json(&SpectrumReport::new(model.natural_period_s(), &base, resistance_n, &pts), "spectrum")?;
     if args.json {
-        crate::sayln!("{}", serde_json::to_string_pretty(&json)?);
+        crate::sayln!("{}", pretty(&json)?);
     } else {
         crate::sayln!(
             "T0 = {:.4} s, F_max = {:.3} kN, U_max = {:.3} kN, static sliding resistance μ_s W' = {:.3} kN",
             model.natural_period_s(),
             base.peak.fx_n / 1e3,
             base.peak.fy_n / 1e3,
-            sc.foundation.mu_static * sc.caisson.weight_in_water_n / 1e3
+            sc.foundation().mu_static * sc.caisson().weight_in_water_n / 1e3
         );
         crate::sayln!(
             "{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}",
@@ -118,7 +97,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
         ])?;
         for p in &pts {
             w.write_record(
-                &[
+                [
                     p.tr_over_t0,
                     p.rise_time_s,
                     p.psi,
@@ -132,7 +111,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
             )?;
         }
         write_atomic(&dir.join("spectrum.csv"), &w.into_inner()?)?;
-        write_atomic(&dir.join("spectrum.json"), serde_json::to_string_pretty(&json)?.as_bytes())?;
+        write_atomic(&dir.join("spectrum.json"), pretty(&json)?.as_bytes())?;
         let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
         panels(
             &dir.join("spectrum.svg"),

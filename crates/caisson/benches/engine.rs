@@ -3,10 +3,11 @@
 //!
 //! Run: `cargo bench -p caisson --bench engine`. Figures are recorded in BENCHMARKS.md.
 
-use caisson::analysis::run::run_with;
-use caisson::dynamics::{Model, Simulation};
+use caisson::analysis::run::run;
+use caisson::analysis::Structure;
+use caisson::dynamics::{AdaptiveParams, Simulation, Stepping};
 use caisson::loads::{LoadHistory, WaveForce};
-use caisson::scenario::{parse_str, validate, AdaptiveParams, Scenario, SolverParams, Stepping};
+use caisson::scenario::Scenario;
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::path::Path;
 
@@ -28,7 +29,7 @@ impl LoadHistory for RegularTrain {
     }
 }
 
-fn table5() -> Scenario {
+fn table5() -> Structure {
     let text = r#"
 [caisson]
 width_m = 0.78
@@ -39,7 +40,7 @@ weight_in_water_kn = 7.5
 e100_kpa = 3.5e5
 springs = 10
 "#;
-    validate(&parse_str(text, Path::new("bench.toml")).unwrap(), Path::new(".")).unwrap()
+    Scenario::from_toml(text, Path::new("bench.toml"), Path::new(".")).unwrap().structure().clone()
 }
 
 fn bench(c: &mut Criterion) {
@@ -48,10 +49,10 @@ fn bench(c: &mut Criterion) {
     // One step, measured on a running simulation (state advances: a representative mix of
     // sticking and sliding steps over the first wave).
     c.bench_function("step_10_springs", |b| {
-        let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+        let mut sim = Simulation::new(s.model(), s.solver, &load);
         b.iter(|| {
             if sim.state().t_s > 3.0 {
-                sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+                sim = Simulation::new(s.model(), s.solver, &load);
             }
             sim.step(black_box(&load), &mut ()).unwrap();
         })
@@ -59,22 +60,13 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("fifteen_waves");
     g.sample_size(10);
     g.bench_function("45.6s_dt1e-4", |b| {
-        b.iter(|| {
-            run_with(&s.caisson, &s.foundation, s.solver, black_box(&load), 45.6, false)
-                .unwrap()
-                .summary
-                .permanent_sliding_m
-        })
+        b.iter(|| run(&s, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
     });
     // The same test with the adaptive stepper at its defaults (the wave-train default).
-    let adaptive = SolverParams { stepping: Stepping::Adaptive(AdaptiveParams::default()), ..s.solver };
+    let mut adaptive = s.clone();
+    adaptive.solver.stepping = Stepping::Adaptive(AdaptiveParams::default());
     g.bench_function("45.6s_adaptive", |b| {
-        b.iter(|| {
-            run_with(&s.caisson, &s.foundation, adaptive, black_box(&load), 45.6, false)
-                .unwrap()
-                .summary
-                .permanent_sliding_m
-        })
+        b.iter(|| run(&adaptive, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
     });
     g.finish();
 }

@@ -1,8 +1,8 @@
 //! # caisson
 //!
 //! Dynamic sliding of caisson breakwaters under breaking and non-breaking waves: the model of
-//! Cuomo, Lupoi, Shimosako & Takahashi (the "seed" paper, `../shared/seed/`), with every formula
-//! it leaves out taken from `../shared/PHYSICS.md`.
+//! Cuomo, Lupoi, Shimosako & Takahashi (the "seed" paper), with every formula it leaves out taken
+//! from `../shared/PHYSICS.md`.
 //!
 //! A rigid caisson (sliding u_x, heave u_y, rocking θ) rests on a bed of nonlinear interface
 //! springs (no tension; elastic-Coulomb friction with static and dynamic coefficients) and is
@@ -12,16 +12,132 @@
 //! moments and θ about the centre of the base, positive clockwise looking alongshore with the sea
 //! on the left (the sense in which a shoreward force overturns the caisson). SI units inside.
 //!
+//! Layers, each knowing only those below it: [`waves`] → [`loads`] → [`structure`],
+//! [`foundation`] → [`dynamics`] → [`analysis`] (the drivers) → [`report`] (the JSON contracts)
+//! and [`scenario`] (the input file, the only module that knows TOML). Each module owns its
+//! parameter types and validates them when they are built ([`ParamError`]).
+//!
 //! The library never prints and never touches files, except [`scenario`], which reads the
 //! scenario file and the force series it names.
+//!
+//! ```
+//! // Goda's pressures on the seed's PARI caisson (PHYSICS.md §11, first row).
+//! use caisson::loads::goda::{goda, GodaInput};
+//! let g = goda(&GodaInput {
+//!     height_m: 0.428, wavelength_m: 9.3214, depth_m: 1.14, depth_5h_seaward_m: 1.14,
+//!     wall_depth_m: 0.8, base_depth_m: 0.8, crest_freeboard_m: 0.32, width_m: 0.78,
+//!     angle_rad: 0.0, berm_width_m: None, lambda: [1.0; 3], rho_w: 1000.0,
+//! });
+//! assert!((g.horizontal_force_n_per_m / 1e3 - 3.552).abs() < 1e-3);
+//! ```
 
 pub mod analysis;
 pub mod dynamics;
 pub mod foundation;
 pub mod loads;
+pub mod report;
 pub mod scenario;
 pub mod structure;
 pub mod waves;
 
 /// Gravitational acceleration used throughout, m/s² (PHYSICS.md §0).
 pub const G_M_PER_S2: f64 = 9.81;
+
+/// The version of this library (and of the `caisson` tool built on it).
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// The version of the results: raised whenever a change moves any number the tool reports for
+/// the same input (a model, a default, a random stream). Outputs and checkpoints record it, so
+/// results of different versions are never mixed.
+pub const RESULTS_VERSION: u32 = 1;
+
+/// A parameter outside what the model allows: the quantity (as named in its parameter type, SI
+/// units), its value and what is allowed. The [`scenario`] module reports it under the name of
+/// the file key, in the key's unit.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{quantity} = {value}: {}", allowed.describe(1.0, ""))]
+pub struct ParamError {
+    pub quantity: &'static str,
+    pub value: f64,
+    pub allowed: Allowed,
+}
+
+/// What a parameter may be (bounds in the quantity's SI unit).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Allowed {
+    /// A finite number.
+    Finite,
+    /// A finite number > 0.
+    Positive,
+    /// A finite number ≥ 0.
+    NonNegative,
+    /// A finite number from `lo` to `hi`, both included.
+    Between { lo: f64, hi: f64 },
+    /// A whole number from `lo` to `hi`.
+    Count { lo: u64, hi: u64 },
+    /// A rule in words (its numbers in SI units).
+    Rule(String),
+}
+
+impl Allowed {
+    /// The rule in words, with bounds multiplied by `scale` and followed by `unit` (the unit of a
+    /// file key, e.g. kN for a force given in N here).
+    pub fn describe(&self, scale: f64, unit: &str) -> String {
+        let u = if unit.is_empty() { String::new() } else { format!(" ({unit})") };
+        match self {
+            Allowed::Finite => "must be a finite number".to_string(),
+            Allowed::Positive => format!("must be a finite number > 0{u}"),
+            Allowed::NonNegative => format!("must be a finite number ≥ 0{u}"),
+            Allowed::Between { lo, hi } => format!("must be between {} and {}{u}", lo * scale, hi * scale),
+            Allowed::Count { lo, hi } => format!("must be a whole number from {lo} to {hi}"),
+            Allowed::Rule(s) => s.clone(),
+        }
+    }
+}
+
+/// Range checks shared by the parameter types' validating constructors.
+pub(crate) mod check {
+    use super::{Allowed, ParamError};
+
+    pub(crate) fn fail(quantity: &'static str, value: f64, allowed: Allowed) -> ParamError {
+        ParamError { quantity, value, allowed }
+    }
+    pub(crate) fn rule(quantity: &'static str, value: f64, rule: impl Into<String>) -> ParamError {
+        ParamError { quantity, value, allowed: Allowed::Rule(rule.into()) }
+    }
+    pub(crate) fn finite(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::Finite))
+        }
+    }
+    pub(crate) fn positive(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
+        if v.is_finite() && v > 0.0 {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::Positive))
+        }
+    }
+    pub(crate) fn non_negative(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
+        if v.is_finite() && v >= 0.0 {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::NonNegative))
+        }
+    }
+    pub(crate) fn between(quantity: &'static str, v: f64, lo: f64, hi: f64) -> Result<f64, ParamError> {
+        if v.is_finite() && v >= lo && v <= hi {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::Between { lo, hi }))
+        }
+    }
+    pub(crate) fn count(quantity: &'static str, v: usize, lo: u64, hi: u64) -> Result<usize, ParamError> {
+        if (lo..=hi).contains(&(v as u64)) {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v as f64, Allowed::Count { lo, hi }))
+        }
+    }
+}

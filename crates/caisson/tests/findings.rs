@@ -4,11 +4,15 @@
 //! The PARI campaigns (15 conditions × 10 realizations × 15 waves each) run in well under a
 //! second in release mode, so the tests use them whole.
 
+mod support;
+
 use caisson::analysis::campaign::{run_campaign, ConditionResult};
 use caisson::analysis::spectrum::{log_space, sweep, SpectrumPoint};
-use caisson::scenario::campaign::validate_campaign;
-use caisson::scenario::{parse_str, validate, LoadSpec};
-use std::path::Path;
+use caisson::foundation::DampingMode;
+use caisson::loads::generator::{HeightVariability, TrainKind};
+use caisson::loads::LoadSpec;
+use caisson::scenario::Scenario;
+use support::scenario;
 
 const NONBREAKING: &str = include_str!("../../../examples/pari_nonbreaking_campaign.toml");
 const BREAKING: &str = include_str!("../../../examples/pari_breaking_campaign.toml");
@@ -17,11 +21,24 @@ const BREAKING: &str = include_str!("../../../examples/pari_breaking_campaign.to
 /// interest is far larger).
 const NO_SLIDE_M: f64 = 1e-6;
 
-fn campaign(text: &str, edit: impl Fn(&mut caisson::scenario::ScenarioFile)) -> Vec<ConditionResult> {
-    let mut f = parse_str(text, Path::new("campaign.toml")).unwrap();
-    edit(&mut f);
-    let c = validate_campaign(&f, Path::new("."), "t").unwrap();
+/// A PARI campaign example, changed by `edit` (typed), run whole.
+fn campaign(text: &str, edit: impl FnOnce(Scenario) -> Scenario) -> Vec<ConditionResult> {
+    let c = edit(scenario(text)).campaign().unwrap();
+    assert_eq!(c.setups.len(), 15, "the PARI campaigns have 15 conditions");
     run_campaign(&c.setups, &|| {}).unwrap()
+}
+
+fn same(s: Scenario) -> Scenario {
+    s
+}
+
+/// Every wave at its nominal height.
+fn nominal_heights(mut s: Scenario) -> Scenario {
+    match s.waves.as_mut().map(|w| &mut w.train.kind) {
+        Some(TrainKind::Regular { variability, .. }) => *variability = HeightVariability::None,
+        _ => panic!("the PARI campaigns are regular waves"),
+    }
+    s
 }
 
 fn mean(rs: &[ConditionResult], h: f64, w_kn: f64) -> Option<f64> {
@@ -32,8 +49,11 @@ fn mean(rs: &[ConditionResult], h: f64, w_kn: f64) -> Option<f64> {
 
 const HEIGHTS: [f64; 4] = [0.428, 0.524, 0.569, 0.619];
 
+/// Two tested (H, W) conditions and their mean slides.
+type Pair = ((f64, f64), (f64, f64), f64, f64);
+
 /// Consecutive tested pairs along H (for fixed W) or along W (for fixed H).
-fn pairs(rs: &[ConditionResult], weights: &[f64], along_height: bool) -> Vec<((f64, f64), (f64, f64), f64, f64)> {
+fn pairs(rs: &[ConditionResult], weights: &[f64], along_height: bool) -> Vec<Pair> {
     let mut out = Vec::new();
     if along_height {
         for &w in weights {
@@ -51,27 +71,36 @@ fn pairs(rs: &[ConditionResult], weights: &[f64], along_height: bool) -> Vec<((f
 
 #[test]
 fn non_breaking_sliding_grows_with_height_and_falls_with_weight() {
-    let rs = campaign(NONBREAKING, |_| {});
+    let rs = campaign(NONBREAKING, same);
     let weights = [7.5, 7.8, 8.2, 8.9];
     // Tolerance: 1 µm, so that two conditions that do not slide compare equal.
-    for (a, b, sa, sb) in pairs(&rs, &weights, true) {
-        assert!(sb >= sa - NO_SLIDE_M, "H {:?} → {:?}: {sa} → {sb} m", a, b);
+    let along_h = pairs(&rs, &weights, true);
+    for (a, b, sa, sb) in &along_h {
+        assert!(sb >= &(sa - NO_SLIDE_M), "H {:?} → {:?}: {sa} → {sb} m", a, b);
     }
-    for (a, b, sa, sb) in pairs(&rs, &weights, false) {
-        assert!(sb <= sa + NO_SLIDE_M, "W {:?} → {:?}: {sa} → {sb} m", a, b);
+    let along_w = pairs(&rs, &weights, false);
+    for (a, b, sa, sb) in &along_w {
+        assert!(sb <= &(sa + NO_SLIDE_M), "W {:?} → {:?}: {sa} → {sb} m", a, b);
     }
+    // Table 3: 15 conditions on a 4 × 4 grid less one: 11 pairs along H and 11 along W.
+    assert_eq!((along_h.len(), along_w.len()), (11, 11), "pairs checked");
     // And it does slide where Goda's static check fails (SF < 1): the finding is not vacuous.
-    for r in rs.iter().filter(|r| r.safety.sliding.is_some_and(|s| s < 0.95)) {
+    let failing: Vec<&ConditionResult> = rs.iter().filter(|r| r.safety.sliding.is_some_and(|s| s < 0.95)).collect();
+    for r in &failing {
         assert!(r.summary.sliding_m.mean > 1e-3, "{:?} slides only {} m", r.condition, r.summary.sliding_m.mean);
     }
+    assert_eq!(failing.len(), 10, "conditions with Goda SF < 0.95 checked");
 }
 
 #[test]
 fn breaking_sliding_falls_with_weight() {
-    let rs = campaign(BREAKING, |_| {});
-    for (a, b, sa, sb) in pairs(&rs, &[11.3, 13.7, 16.2, 17.8, 19.4], false) {
-        assert!(sb <= sa + NO_SLIDE_M, "W {:?} → {:?}: {sa} → {sb} m", a, b);
+    let rs = campaign(BREAKING, same);
+    let along_w = pairs(&rs, &[11.3, 13.7, 16.2, 17.8, 19.4], false);
+    for (a, b, sa, sb) in &along_w {
+        assert!(sb <= &(sa + NO_SLIDE_M), "W {:?} → {:?}: {sa} → {sb} m", a, b);
     }
+    // Table 4: 15 conditions, 4 heights at 3 to 5 weights each.
+    assert_eq!(along_w.len(), 11, "pairs along W checked");
 }
 
 /// With every wave at its nominal height, the impacts dominate where the pulsating load alone
@@ -79,7 +108,7 @@ fn breaking_sliding_falls_with_weight() {
 /// (seed Fig. 15). With 20 % variability this is masked (docs/validation.md §6).
 #[test]
 fn breaking_sliding_peaks_between_the_middle_heights_with_nominal_waves() {
-    let rs = campaign(BREAKING, |f| f.waves.as_mut().unwrap().height_variability = Some("none".into()));
+    let rs = campaign(BREAKING, nominal_heights);
     for w in [16.2, 17.8] {
         let s: Vec<f64> = HEIGHTS.iter().map(|&h| mean(&rs, h, w).unwrap()).collect();
         let (imax, _) =
@@ -91,7 +120,7 @@ fn breaking_sliding_peaks_between_the_middle_heights_with_nominal_waves() {
 
 fn table5_spectrum(peak_over_ssr: f64, ratios: &[f64]) -> Vec<SpectrumPoint> {
     let peak = peak_over_ssr * 0.6 * 8.24;
-    let text = format!(
+    let s = scenario(&format!(
         r#"
 [caisson]
 width_m = 0.78
@@ -108,10 +137,9 @@ peak_horizontal_kn = {peak}
 rise_time_s = 0.02
 horizontal_lever_m = 0.8
 "#
-    );
-    let s = validate(&parse_str(&text, Path::new("t.toml")).unwrap(), Path::new(".")).unwrap();
-    let Some(LoadSpec::Triangle(base)) = s.load.clone() else { panic!() };
-    sweep(&s.caisson, &s.foundation, s.solver, base, ratios).unwrap()
+    ));
+    let Some(LoadSpec::Triangle(base)) = s.load.clone() else { panic!("a triangle") };
+    sweep(s.structure(), base, ratios, &|| {}).unwrap()
 }
 
 /// Seed §5.2 / Fig. 8 with a pulse 10 % above the static sliding resistance: no sliding for
@@ -120,9 +148,13 @@ horizontal_lever_m = 0.8
 fn pulse_findings_of_figures_7_and_8() {
     let ratios = log_space(0.05, 10.0, 13);
     let pts = table5_spectrum(1.1, &ratios);
-    for p in pts.iter().filter(|p| p.tr_over_t0 <= 0.1) {
+    let short: Vec<&SpectrumPoint> = pts.iter().filter(|p| p.tr_over_t0 <= 0.1).collect();
+    for p in &short {
         assert!(p.permanent_sliding_m < NO_SLIDE_M, "t_r/T0 = {}: slides {} m", p.tr_over_t0, p.permanent_sliding_m);
     }
+    // 13 log-spaced ratios from 0.05 to 10: 2 at or below 0.1, 2 at or above 5.
+    assert_eq!(short.len(), 2, "short pulses checked");
+    assert_eq!(pts.iter().filter(|p| p.tr_over_t0 >= 5.0).count(), 2, "long pulses checked");
     assert!(
         pts.iter()
             .filter(|p| (0.5..=2.0).contains(&p.tr_over_t0))
@@ -146,8 +178,9 @@ fn pulse_findings_of_figures_7_and_8() {
 /// placement gives less. Both are reported in docs/validation.md.
 #[test]
 fn elastic_placement_slides_more_than_the_rigid_block_and_total_less() {
-    let elastic = campaign(NONBREAKING, |f| f.foundation.damping_mode = Some("elastic".into()));
-    let total = campaign(NONBREAKING, |_| {});
+    let elastic = campaign(NONBREAKING, |s| s.with_foundation(|f| f.damping_mode = DampingMode::Elastic).unwrap());
+    let total = campaign(NONBREAKING, same);
+    let mut checked = 0;
     for (e, t) in elastic.iter().zip(&total) {
         let rb = e.summary.rigid_block_sliding_m.mean;
         assert_eq!(rb, t.summary.rigid_block_sliding_m.mean, "the reference does not depend on the dashpot");
@@ -164,6 +197,8 @@ fn elastic_placement_slides_more_than_the_rigid_block_and_total_less() {
                 t.condition,
                 t.summary.sliding_m.mean
             );
+            checked += 1;
         }
     }
+    assert_eq!(checked, 13, "sliding conditions compared");
 }

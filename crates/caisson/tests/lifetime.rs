@@ -2,11 +2,11 @@
 //! caisson, lives do not depend on the order they run in, and the dynamic model meets the rigid
 //! block where it should.
 
-use caisson::analysis::lifetime::{simulate_life, StormOutcome, Structure};
-use caisson::scenario::design::validate_design;
-use caisson::scenario::waves::validate_waves;
-use caisson::scenario::{parse_str, validate};
-use std::path::Path;
+mod support;
+
+use caisson::analysis::lifetime::{run_lives, simulate_life, StormCase, StormOutcome};
+use std::ops::ControlFlow;
+use support::scenario;
 
 const DESIGN: &str = r#"
 [caisson]
@@ -47,19 +47,12 @@ tidal_range_m = 2.0
 "#;
 
 fn lives(screen: bool) -> Vec<StormOutcome> {
-    let f = parse_str(DESIGN, Path::new("d.toml")).unwrap();
-    let sc = validate(&f, Path::new(".")).unwrap();
-    let ws = validate_waves(&f, &sc.caisson).unwrap();
-    let spec = validate_design(&f).unwrap();
-    let st = Structure {
-        caisson: &sc.caisson,
-        foundation: &sc.foundation,
-        solver: sc.solver,
-        model: &ws.model,
-        rigid_block_mu: 0.6,
-        screen,
-    };
-    (0..spec.lives).map(|i| simulate_life(&st, &spec.life, spec.seed, i).unwrap()).collect()
+    let sc = scenario(DESIGN);
+    let d = sc.design.clone().unwrap();
+    let st = StormCase { rigid_block_mu: 0.6, ..sc.storm_case(screen).unwrap() };
+    let lives: Vec<StormOutcome> = (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect();
+    assert_eq!(lives.len(), 4);
+    lives
 }
 
 /// Every wave of a full (small) lifetime run through the dynamic model, with and without the
@@ -95,10 +88,30 @@ fn the_screen_skips_only_waves_that_do_not_slide() {
 /// models agree within 25 % where the rigid block slides more than 1 cm.
 #[test]
 fn the_dynamic_model_follows_the_rigid_block_for_long_pushes() {
+    let mut checked = 0;
     for l in lives(true) {
         if l.rigid_block_sliding_m > 0.01 {
             let r = l.sliding_m / l.rigid_block_sliding_m;
             assert!((0.75..1.25).contains(&r), "dynamic {} vs rigid block {} m", l.sliding_m, l.rigid_block_sliding_m);
+            checked += 1;
         }
     }
+    assert!(checked >= 1, "no life slid the rigid block more than 1 cm: nothing was compared");
+}
+
+/// The lives driver returns exactly the lives asked for, in index order, whatever order and
+/// thread count they run in, and stops starting lives when the callback says so.
+#[test]
+fn run_lives_is_ordered_and_stoppable() {
+    let sc = scenario(DESIGN);
+    let d = sc.design.clone().unwrap();
+    let st = sc.storm_case(true).unwrap();
+    let one_by_one: Vec<(usize, StormOutcome)> =
+        (0..4).map(|i| (i, simulate_life(&st, &d.life, d.seed, i).unwrap())).collect();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(3).build().unwrap();
+    let shuffled = pool.install(|| run_lives(&st, &d.life, d.seed, &[2, 0, 3, 1], &|_, _| ControlFlow::Continue(())));
+    assert_eq!(shuffled.unwrap(), one_by_one);
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+    let stopped = one.install(|| run_lives(&st, &d.life, d.seed, &[0, 1, 2, 3], &|_, _| ControlFlow::Break(())));
+    assert_eq!(stopped.unwrap(), one_by_one[..1].to_vec(), "one thread stops after the first life");
 }

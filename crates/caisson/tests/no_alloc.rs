@@ -5,25 +5,25 @@
 
 #[path = "support/counting_alloc.rs"]
 mod counting_alloc;
+mod support;
 
-use caisson::dynamics::{Model, Simulation};
+use caisson::dynamics::Simulation;
 use caisson::loads::model::{WaveLoadModel, WaveLoadOptions, WaveRecord, WaveSite};
 use caisson::loads::pulse::TrianglePulse;
 use caisson::loads::regime::Regime;
 use caisson::loads::shapes::LoadShape;
 use caisson::loads::{LoadHistory, WaveForce};
-use caisson::scenario::{parse_str, validate};
 use counting_alloc::count_allocations;
-use std::path::Path;
+use support::scenario;
 
 #[test]
 fn time_loop_does_not_allocate() {
     let text = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\ndamping_mode = \"elastic\"\nvertical_damping = \"springs\"\n";
-    let s = validate(&parse_str(text, Path::new("t.toml")).unwrap(), Path::new(".")).unwrap();
+    let s = scenario(text);
     // A pulse of 3 × the sliding resistance at the SWL: the caisson slides and rocks, and the
     // seaward springs lift off.
     let load = TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
-    let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+    let mut sim = Simulation::new(s.structure().model(), s.solver(), &load);
     let mut peaks = caisson::analysis::run::Peaks::default();
     let ((), allocations) = count_allocations(|| {
         for _ in 0..3000 {
@@ -38,9 +38,9 @@ fn time_loop_does_not_allocate() {
 #[test]
 fn adaptive_time_loop_does_not_allocate() {
     let text = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 15.0\nrise_time_s = 0.05\n[solver]\nstepping = \"adaptive\"\n";
-    let s = validate(&parse_str(text, Path::new("t.toml")).unwrap(), Path::new(".")).unwrap();
+    let s = scenario(text);
     let load = TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
-    let mut sim = Simulation::new(Model::new(&s.caisson, &s.foundation), s.solver, &load);
+    let mut sim = Simulation::new(s.structure().model(), s.solver(), &load);
     let mut peaks = caisson::analysis::run::Peaks::default();
     let (result, allocations) = count_allocations(|| sim.run_until(0.6, &load, &mut peaks));
     result.unwrap();

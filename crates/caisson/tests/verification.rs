@@ -1,18 +1,18 @@
 //! Verification of the dynamic engine against closed forms (PHYSICS.md §6.3 rigid block, §9.2
 //! shock spectrum), the seed's static push (§5.1, Fig. 6), Table 6, and convergence in dt.
 
-use caisson::analysis::closed_form::{rigid_block_sliding_m, shock_spectrum_psi};
-use caisson::analysis::run::{run, run_with};
-use caisson::analysis::spectrum::sweep;
-use caisson::dynamics::Model;
-use caisson::loads::pulse::TrianglePulse;
-use caisson::loads::WaveForce;
-use caisson::scenario::{parse_str, validate, LoadSpec, Scenario};
-use std::path::Path;
+mod support;
 
-fn scenario(text: &str) -> Scenario {
-    let f = parse_str(text, Path::new("test.toml")).expect("parse");
-    validate(&f, Path::new(".")).expect("validate")
+use caisson::analysis::closed_form::rigid_block_sliding_m;
+use caisson::analysis::run::{run, RunResult};
+use caisson::analysis::spectrum::sweep;
+use caisson::loads::LoadSpec;
+use caisson::scenario::Scenario;
+use support::scenario;
+
+/// Run a scenario's `[load]` for its duration.
+fn run_load(s: &Scenario, record_history: bool) -> RunResult {
+    run(s.structure(), s.load.as_ref().expect("a [load] table"), s.duration_s, record_history).unwrap()
 }
 
 /// The seed's Table 5 caisson (PHYSICS.md §8.2) with a triangle load.
@@ -32,16 +32,16 @@ density_kg_per_m3 = 2300
 #[test]
 fn table6_from_table5_inputs() {
     let s = scenario(TABLE5);
-    let k = s.foundation.stiffness;
+    let k = s.foundation().stiffness;
     // PHYSICS.md §8.2: K_y 1.404e5 kN/m, K_x 1.511e5 kN/m, M 1463.96 kg, C 598 kN·s/m
     // (Eq. 22; Table 6's 480 is the known slip). Tolerance 1 % as the issue asks.
     let rel = |a: f64, b: f64| (a / b - 1.0).abs();
     assert!(rel(k.ky_n_per_m, 1.404e8) < 0.01, "K_y {}", k.ky_n_per_m);
     assert!(rel(k.kx_n_per_m, 1.511e8) < 0.01, "K_x {}", k.kx_n_per_m);
-    assert!(rel(s.caisson.mass_kg, 1463.96) < 0.01, "M {}", s.caisson.mass_kg);
+    assert!(rel(s.caisson().mass_kg, 1463.96) < 0.01, "M {}", s.caisson().mass_kg);
     assert!(rel(k.damping_ns_per_m, 5.98e5) < 0.01, "C {}", k.damping_ns_per_m);
     // T0 rounds to the table's 0.02 s with every reading (§8.2 item 6): within 0.0195-0.0235 s.
-    let t0 = Model::new(&s.caisson, &s.foundation).natural_period_s();
+    let t0 = s.structure().model().natural_period_s();
     assert!((0.0195..0.0235).contains(&t0), "T0 {t0}");
 }
 
@@ -73,7 +73,8 @@ horizontal_lever_m = 0.0
     );
     let Some(LoadSpec::Triangle(base)) = s.load.clone() else { panic!() };
     let ratios = [0.05, 0.1, 0.2, 0.3, 0.452, 0.6, 0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.3, 5.0];
-    let pts = sweep(&s.caisson, &s.foundation, s.solver, base, &ratios).unwrap();
+    let pts = sweep(s.structure(), base, &ratios, &|| {}).unwrap();
+    assert_eq!(pts.len(), ratios.len());
     for p in pts {
         let err = (p.psi / p.psi_closed_form - 1.0).abs();
         assert!(
@@ -84,7 +85,7 @@ horizontal_lever_m = 0.0
             p.psi_closed_form,
             100.0 * err
         );
-        assert_eq!(p.permanent_sliding_m.abs() < 1e-12, true, "no sliding expected");
+        assert!(p.permanent_sliding_m.abs() < 1e-12, "no sliding expected");
     }
 }
 
@@ -123,9 +124,9 @@ dt_s = 2e-5
         u = uplift_over_w * w
     );
     let s = scenario(&text);
-    let m = Model::new(&s.caisson, &s.foundation).horizontal_mass_kg();
+    let m = s.structure().model().horizontal_mass_kg();
     let exact = rigid_block_sliding_m(ratio_a_over_b * mu * w * 1e3, mu * w * 1e3, m, 2.0 * tr);
-    let r = run(&s, false).unwrap();
+    let r = run_load(&s, false);
     (r.summary.permanent_sliding_m, exact)
 }
 
@@ -177,7 +178,7 @@ output_interval_s = 1e-3
 "#
         );
         let s = scenario(&text);
-        let r = run(&s, true).unwrap();
+        let r = run_load(&s, true);
         let h = r.history.unwrap();
         let n = h.springs();
         let first_slip = (0..h.len()).find(|&k| h.sliding_springs[k] > 0).expect("the push must slide the caisson");
@@ -205,8 +206,8 @@ output_interval_s = 1e-3
                     assert!((nk[i] - pred).abs() < 1e-6 * 8240.0, "sample {k}: reactions not linear: {nk:?}");
                 }
             }
-            for i in 0..n {
-                if nk[i] == 0.0 && !lifted_order.contains(&i) {
+            for (i, &force) in nk.iter().enumerate() {
+                if force == 0.0 && !lifted_order.contains(&i) {
                     lifted_order.push(i);
                 }
             }
@@ -223,26 +224,43 @@ fn sliding_converges_in_dt() {
         "{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\nhorizontal_lever_m = 0.3\nduration_s = 0.6\n"
     );
     let s1 = scenario(&base);
-    let mut s2 = s1.clone();
-    s2.solver.dt_s *= 0.5;
-    let a = run(&s1, false).unwrap().summary.permanent_sliding_m;
-    let b = run(&s2, false).unwrap().summary.permanent_sliding_m;
+    let half = caisson::dynamics::SolverParams { dt_s: 0.5 * s1.solver().dt_s, ..s1.solver() };
+    let s2 = s1.clone().with_solver(half).unwrap();
+    let a = run_load(&s1, false).summary.permanent_sliding_m;
+    let b = run_load(&s2, false).summary.permanent_sliding_m;
     assert!(a > 1e-4, "the case must slide: {a} m");
     assert!((a / b - 1.0).abs() < 0.005, "dt 1e-4: {a} m, dt 5e-5: {b} m");
 }
 
-/// With sliding disabled the run reports no slip event and a zero permanent slide, and the
-/// static settlement is W'/K_y.
+/// Below the sliding resistance the run reports no slip event and no permanent slide.
 #[test]
-fn no_sliding_below_resistance_and_settlement() {
+fn no_sliding_below_resistance() {
     let text = format!(
         "{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 1.0\nrise_time_s = 0.05\nduration_s = 0.3\n"
     );
-    let s = scenario(&text);
-    let r = run(&s, false).unwrap().summary;
+    let r = run_load(&scenario(&text), false).summary;
     assert_eq!(r.slip_events, 0);
-    assert!(r.permanent_sliding_m.abs() < 1e-9);
-    let ky = s.foundation.stiffness.ky_n_per_m;
-    assert!((r.foundation.static_settlement_m - 8240.0 / ky).abs() < 1e-15);
-    let _ = (shock_spectrum_psi(1.0), TrianglePulse::shape(0.0, 1.0), WaveForce::ZERO, run_with::<TrianglePulse>);
+    assert!(r.permanent_sliding_m.abs() < 1e-9, "{} m", r.permanent_sliding_m);
+}
+
+/// The simulated settlement under a held uplift U through the base centre is (W' − U)/K_y: the
+/// caisson starts at W'/K_y and must rise by U/K_y (linear springs in compression, no moment).
+/// 2 s after the 1 s ramp the heave has decayed (vertical damping ratio of order 1); tolerance
+/// 1e-6 relative, far below the 24 % change being checked.
+#[test]
+fn settlement_follows_the_held_uplift() {
+    let text = format!(
+        "{TABLE5}\n[load]\nkind = \"static\"\npeak_horizontal_kn = 0.0\npeak_uplift_kn = 2.0\nuplift_lever_m = 0.39\nramp_time_s = 1.0\nduration_s = 3.0\n"
+    );
+    let s = scenario(&text);
+    let r = run_load(&s, false).summary;
+    let ky = s.foundation().stiffness.ky_n_per_m;
+    let expected = (8240.0 - 2000.0) / ky;
+    assert!(
+        (r.final_settlement_m / expected - 1.0).abs() < 1e-6,
+        "settled {} m, (W' − U)/K_y = {expected} m",
+        r.final_settlement_m
+    );
+    assert!((r.foundation.static_settlement_m / expected - 1.0).abs() > 0.2, "the uplift must change the settlement");
+    assert_eq!(r.slip_events, 0);
 }

@@ -7,55 +7,58 @@
 //! 5-wave realization takes a few milliseconds, and the whole file well under a second in release
 //! mode (the fixed-step references about 0.2 s).
 
-use caisson::analysis::campaign::{case_of, run_campaign};
-use caisson::analysis::train::RealizationResult;
+mod support;
+
+use caisson::analysis::campaign::{run_campaign, Campaign, Condition};
+use caisson::analysis::train::{RealizationResult, TrainCase, WaveSetup};
+use caisson::dynamics::Stepping;
 use caisson::loads::generator::{realization_waves, RealizationWaves, TrainSpec};
 use caisson::loads::regime::{Regime, RegimeChoice};
-use caisson::scenario::campaign::{validate_campaign, Campaign};
-use caisson::scenario::waves::{validate_waves, WaveScenario};
-use caisson::scenario::{parse_str, validate, Stepping};
-use std::path::Path;
+use caisson::scenario::campaign::CampaignSpec;
+use support::scenario;
 
 const NONBREAKING: &str = include_str!("../../../examples/pari_nonbreaking_campaign.toml");
 const BREAKING: &str = include_str!("../../../examples/pari_breaking_campaign.toml");
 
 /// A PARI campaign file cut to `waves` waves × `realizations` realizations and the listed
 /// conditions (H m, W' kN, regime).
-fn reduced(text: &str, waves: i64, realizations: i64, conditions: &[(f64, f64, &str)]) -> Campaign {
-    let list: String = conditions
+fn reduced(text: &str, waves: usize, realizations: usize, conditions: &[(f64, f64, &str)]) -> Campaign {
+    let mut sc = scenario(text);
+    let w = sc.waves.as_mut().unwrap();
+    w.train.waves = waves;
+    w.train.realizations = realizations;
+    let conditions = conditions
         .iter()
-        .map(|(h, w, r)| format!("{{ height_m = {h}, weight_in_water_kn = {w}, regime = \"{r}\" }}, "))
+        .map(|&(h, w, r)| Condition {
+            height_m: h,
+            weight_in_water_n: w * 1e3,
+            regime: RegimeChoice::from_name(r).expect("a regime"),
+        })
         .collect();
-    let text = format!("{}[campaign]\nconditions = [{list}]\n", &text[..text.find("[campaign]").unwrap()]);
-    let mut f = parse_str(&text, Path::new("campaign.toml")).unwrap();
-    let w = f.waves.as_mut().unwrap();
-    w.waves = Some(waves);
-    w.realizations = Some(realizations);
-    validate_campaign(&f, Path::new("."), "test").unwrap()
+    sc.campaign = Some(CampaignSpec::new(None, conditions));
+    sc.campaign().unwrap()
 }
 
 /// A deep site (h_s = 30 m, T = 10 s, a 20 m wide caisson) with the given `[waves]` keys besides
 /// the period: the Miche limit at the toe (about 12 m) is far above any height drawn here, so the
 /// drawn heights are also the heights the loads see.
-fn deep_site(waves_keys: &str) -> WaveScenario {
+fn deep_site(waves_keys: &str) -> WaveSetup {
     let text = format!(
         "[caisson]\nwidth_m = 20.0\nheight_m = 30.0\nbase_depth_m = 25.0\nweight_in_water_kn = 5000.0\n\
          [foundation]\ne100_kpa = 3.5e5\n\
          [water]\ndepth_at_toe_m = 30.0\ndepth_at_wall_m = 25.0\n\
          [waves]\nperiod_s = 10.0\n{waves_keys}\n"
     );
-    let f = parse_str(&text, Path::new("deep.toml")).unwrap();
-    let s = validate(&f, Path::new(".")).unwrap();
-    validate_waves(&f, &s.caisson).unwrap()
+    scenario(&text).waves.expect("a [waves] table")
 }
 
 /// The waves of realization `index` of `spec` at the site of `w`.
-fn draw(w: &WaveScenario, spec: &TrainSpec, choice: RegimeChoice, index: usize) -> RealizationWaves {
+fn draw(w: &WaveSetup, spec: &TrainSpec, choice: RegimeChoice, index: usize) -> RealizationWaves {
     realization_waves(&w.model, spec, choice, index).unwrap()
 }
 
 /// `n` heights of realization 0 at the site of `w` (the scenario's regime).
-fn heights(w: &WaveScenario, n: usize) -> Vec<f64> {
+fn heights(w: &WaveSetup, n: usize) -> Vec<f64> {
     let spec = TrainSpec { waves: n, ..w.train };
     draw(w, &spec, w.model.options.regime, 0).records.iter().map(|r| r.height_m).collect()
 }
@@ -116,13 +119,16 @@ fn a_campaign_gives_identical_results_on_one_and_three_threads() {
 fn b_adaptive_steps_slide_as_far_as_fixed_steps_of_1e_4_s() {
     for (text, h, w) in [(NONBREAKING, 0.569, 7.8), (BREAKING, 0.524, 13.7)] {
         let c = reduced(text, 5, 1, &[(h, w, "auto")]);
-        let case = case_of(&c.setups[0]);
-        assert!(matches!(case.solver.stepping, Stepping::Adaptive(_)), "a wave campaign steps adaptively by default");
+        let case = c.setups[0].case();
+        assert!(
+            matches!(case.structure.solver.stepping, Stepping::Adaptive(_)),
+            "a wave campaign steps adaptively by default"
+        );
         let adaptive = case.run(0, None).unwrap();
-        let mut fixed_case = case;
-        fixed_case.solver.stepping = Stepping::Fixed;
-        fixed_case.solver.dt_s = 1e-4;
-        let fixed = fixed_case.run(0, None).unwrap();
+        let mut fixed_structure = case.structure.clone();
+        fixed_structure.solver.stepping = Stepping::Fixed;
+        fixed_structure.solver.dt_s = 1e-4;
+        let fixed = TrainCase { structure: &fixed_structure, ..case }.run(0, None).unwrap();
         assert!(fixed.sliding_m > 5e-3, "H = {h} m, W' = {w} kN must slide (it slides {} m)", fixed.sliding_m);
         let rel = (adaptive.sliding_m - fixed.sliding_m).abs() / fixed.sliding_m;
         assert!(
@@ -233,7 +239,7 @@ fn d_forced_non_breaking_trains_limit_heights_to_the_breaker_height_and_count_th
     // Nominal 0.3 m with COV 0.2: about 28 % of the waves reach 0.336 m.
     assert!((20..=100).contains(&limited), "{limited} of 200 waves limited");
     // A realization run reports the same count.
-    let run = case_of(s).run(0, None).unwrap();
+    let run = s.case().run(0, None).unwrap();
     assert_eq!(run.limited_waves, limited);
     assert!(run.waves.iter().all(|w| w.record.regime == Regime::NonBreaking && w.record.height_m < hbr));
 }
@@ -264,7 +270,7 @@ fn e_the_same_seed_reproduces_the_records_and_other_seeds_or_indices_differ() {
         assert!((a.height_m / 0.524 - b.height_m / 0.428).abs() < 1e-12);
     }
     // The dynamic runs repeat too.
-    let case = case_of(&c.setups[0]);
+    let case = c.setups[0].case();
     assert_eq!(case.run(3, None).unwrap(), case.run(3, None).unwrap());
 }
 
@@ -291,10 +297,10 @@ fn f_per_wave_sliding_sums_to_the_total() {
         let c = reduced(text, 6, 2, &[(h, w, "auto")]);
         let s = &c.setups[0];
         for i in 0..2 {
-            let r = case_of(s).run(i, None).unwrap();
+            let r = s.case().run(i, None).unwrap();
             assert!(r.sliding_m > 1e-3, "H = {h} m, W' = {w} kN slides only {} m", r.sliding_m);
             assert!(r.waves.iter().filter(|w| w.sliding_m > 0.0).count() >= 2, "more than one wave slides");
-            check(&r, s.waves.period_s);
+            check(&r, s.waves.period_s());
         }
     }
 }

@@ -17,7 +17,7 @@
 //!
 //! Storm j of level i draws from its own generator, `realization_rng(seed, i · storms + j)`; the
 //! (level, storm) pairs run with rayon and are collected in order, so the results do not depend
-//! on the number of threads. The library does not print: `tick` is called once per storm.
+//! on the number of threads. The library does not print: `progress` is called once per storm.
 //!
 //! **Counts.** k_i(s) = #{storms at H_i with S > s} (strictly greater), for the dynamic model and
 //! for the rigid block (Shimosako model) separately; P̂_i = k_i / n_i.
@@ -53,7 +53,8 @@
 //! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
 //! same relative accuracy.
 
-use super::lifetime::{simulate_storm, StormInput, StormOutcome, Structure};
+use super::lifetime::{simulate_storm, StormCase, StormInput, StormOutcome};
+use super::Progress;
 use crate::dynamics::SolveError;
 use crate::loads::generator::realization_rng;
 use rayon::prelude::*;
@@ -403,9 +404,9 @@ pub struct StormFailed {
 
 /// Run every storm of every height in parallel and fit the curves (module docs).
 pub fn run_fragility(
-    st: &Structure<'_>,
+    st: &StormCase<'_>,
     p: &FragilityParams,
-    tick: &(dyn Fn() + Sync),
+    progress: Progress<'_>,
 ) -> Result<FragilityResult, StormFailed> {
     let storms = p.storms;
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
@@ -419,7 +420,7 @@ pub fn run_fragility(
                 storm,
                 source,
             });
-            tick();
+            progress();
             out
         })
         .collect::<Result<_, _>>()?;

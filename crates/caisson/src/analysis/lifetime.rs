@@ -47,21 +47,23 @@
 
 use super::run::permanent_sliding_m;
 use super::train::RigidBlock;
+use super::Structure;
 use crate::dynamics::{Model, Simulation, SolveError};
-use crate::foundation::Foundation;
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{WaveEvent, WaveTrain};
 use crate::loads::model::{WaveLoadModel, WaveLoads};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
-use crate::scenario::SolverParams;
-use crate::structure::Caisson;
 use crate::waves::statistics::sample_rayleigh_m;
 use crate::waves::surf_zone::goda_surf_zone;
 use crate::G_M_PER_S2;
 use rand::Rng;
 use rand_distr::StandardNormal;
+use rayon::prelude::*;
 use std::f64::consts::PI;
+use std::ops::ControlFlow;
+use std::sync::atomic::{AtomicBool, Ordering};
+use thiserror::Error;
 
 /// Annual maxima of the deep-water significant height.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -143,12 +145,11 @@ pub struct LifeParams {
     pub errors: Errors,
 }
 
-/// What the storms act on: the caisson at still water, its foundation, the solver, the site.
+/// What the storms act on: the structure at still water, the site's wave loads, the rigid-block
+/// reference and whether to screen.
 #[derive(Debug, Clone, Copy)]
-pub struct Structure<'a> {
-    pub caisson: &'a Caisson,
-    pub foundation: &'a Foundation,
-    pub solver: SolverParams,
+pub struct StormCase<'a> {
+    pub structure: &'a Structure,
     /// The wave-load model at still water (its regime choice is used per wave).
     pub model: &'a WaveLoadModel,
     pub rigid_block_mu: f64,
@@ -216,17 +217,17 @@ fn may_slide(e: &WaveEvent, psi_q: f64, weight_n: f64, mu: f64, width_m: f64) ->
 }
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
-pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, SolveError> {
+pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, SolveError> {
     // The site and the caisson at this water level.
     let mut model = *st.model;
     model.site.depth_at_toe_m += s.tide_m;
     model.site.depth_at_wall_m += s.tide_m;
     model.site.base_depth_m += s.tide_m;
     model.site.crest_freeboard_m = (model.site.crest_freeboard_m - s.tide_m).max(0.0);
-    let mut caisson = *st.caisson;
+    let mut caisson = st.structure.caisson;
     caisson.base_depth_m += s.tide_m;
     caisson.weight_in_water_n -= model.site.rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * s.tide_m;
-    let mut foundation = st.foundation.clone();
+    let mut foundation = st.structure.foundation.clone();
     foundation.mu_static *= s.friction_factor;
     foundation.mu_dynamic *= s.friction_factor;
     let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
@@ -282,7 +283,7 @@ pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> 
                 x.reset(&train);
                 x
             }
-            None => sim.insert(Simulation::new(dyn_model.clone(), st.solver, &train)),
+            None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, &train)),
         };
         sim.run_until(s.period_s, &train, &mut ())?;
         out.sliding_m += permanent_sliding_m(sim);
@@ -293,7 +294,7 @@ pub fn simulate_storm(st: &Structure<'_>, s: &StormInput, rng: &mut LoadRng) -> 
 }
 
 /// One life of `p.life_years` storms (module docs), life `index` of the stream `seed`.
-pub fn simulate_life(st: &Structure<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, SolveError> {
+pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, SolveError> {
     let mut rng = realization_rng(seed, index);
     let mut life = StormOutcome::default();
     let site = &st.model.site;
@@ -324,6 +325,60 @@ pub fn simulate_life(st: &Structure<'_>, p: &LifeParams, seed: u64, index: usize
         life.add(&o);
     }
     Ok(life)
+}
+
+/// A design run: the life model, how many lives, their seed, the reported thresholds and the
+/// screen.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct DesignParams {
+    pub life: LifeParams,
+    pub lives: usize,
+    pub seed: u64,
+    /// Sorted sliding thresholds of the exceedance probabilities, m.
+    pub thresholds_m: Vec<f64>,
+    pub screen: bool,
+}
+
+/// A life that could not be simulated.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("life {life} failed")]
+pub struct LifeFailed {
+    pub life: usize,
+    #[source]
+    pub source: SolveError,
+}
+
+/// Simulate the lives `indices` (any subset, in any order) in parallel on rayon's current pool.
+/// Each finished life is passed to `on_life` (from the thread that ran it: the place to record
+/// it in a checkpoint and to move a progress bar); when `on_life` returns
+/// [`ControlFlow::Break`], no further life starts (the lives under way finish and are
+/// returned). The finished lives come back sorted by index. Each life depends only on the seed
+/// and its index, so the result does not depend on the thread count, the order or a split of the
+/// indices over several runs.
+pub fn run_lives(
+    st: &StormCase<'_>,
+    life: &LifeParams,
+    seed: u64,
+    indices: &[usize],
+    on_life: &(dyn Fn(usize, &StormOutcome) -> ControlFlow<()> + Sync),
+) -> Result<Vec<(usize, StormOutcome)>, LifeFailed> {
+    let stop = AtomicBool::new(false);
+    let finished: Vec<Option<(usize, StormOutcome)>> = indices
+        .par_iter()
+        .map(|&i| {
+            if stop.load(Ordering::SeqCst) {
+                return Ok(None);
+            }
+            let o = simulate_life(st, life, seed, i).map_err(|source| LifeFailed { life: i, source })?;
+            if on_life(i, &o).is_break() {
+                stop.store(true, Ordering::SeqCst);
+            }
+            Ok(Some((i, o)))
+        })
+        .collect::<Result<_, _>>()?;
+    let mut finished: Vec<(usize, StormOutcome)> = finished.into_iter().flatten().collect();
+    finished.sort_by_key(|(i, _)| *i);
+    Ok(finished)
 }
 
 /// Statistics of the life totals.

@@ -1,5 +1,11 @@
 //! Drivers: a single run, the shock spectrum, wave-train realizations and campaigns, the lifetime
 //! Monte Carlo of performance-based design and fragility curves.
+//!
+//! Every driver takes typed parameters (a [`Structure`], loads, waves) and a progress callback
+//! called once per finished item (realization, point, life, storm); none prints or writes files.
+//! Parallel drivers use rayon's current thread pool (the caller chooses it with
+//! `ThreadPool::install`) and gather their results by index, so they do not depend on the number
+//! of threads.
 
 pub mod campaign;
 pub mod closed_form;
@@ -8,3 +14,26 @@ pub mod lifetime;
 pub mod run;
 pub mod spectrum;
 pub mod train;
+
+use crate::dynamics::{Model, SolverParams};
+use crate::foundation::Foundation;
+use crate::structure::Caisson;
+
+/// What every analysis runs on: the caisson, its foundation and how the equations of motion are
+/// integrated.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Structure {
+    pub caisson: Caisson,
+    pub foundation: Foundation,
+    pub solver: SolverParams,
+}
+
+impl Structure {
+    /// The assembled dynamic model.
+    pub fn model(&self) -> Model {
+        Model::new(&self.caisson, &self.foundation)
+    }
+}
+
+/// A progress callback: called once for every finished item of a driver (from any thread).
+pub type Progress<'a> = &'a (dyn Fn() + Sync);

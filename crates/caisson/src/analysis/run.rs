@@ -12,10 +12,10 @@
 //! * **Static sliding resistance** (seed Eq. 9): μ_s (W' − F_y(t)).
 //! * **Slip event**: a step at which the caisson goes from no spring slipping to at least one.
 
+use super::Structure;
 use crate::dynamics::{Model, Observer, Simulation, SolveError, SolverStats, StepView};
 use crate::foundation::Foundation;
 use crate::loads::LoadHistory;
-use crate::scenario::{Scenario, SolverParams};
 use crate::structure::Caisson;
 
 /// At most this many slip-event times are kept (all are counted).
@@ -269,15 +269,15 @@ pub fn permanent_sliding_m(sim: &Simulation) -> f64 {
     }
 }
 
-/// Integrate `load` on the scenario's caisson and foundation for `duration_s`.
-pub fn run_with<L: LoadHistory + ?Sized>(
-    caisson: &Caisson,
-    foundation: &Foundation,
-    solver: SolverParams,
+/// Integrate `load` on `structure` for `duration_s` (from static equilibrium); with
+/// `record_history`, keep the decimated time histories.
+pub fn run<L: LoadHistory + ?Sized>(
+    structure: &Structure,
     load: &L,
     duration_s: f64,
     record_history: bool,
 ) -> Result<RunResult, SolveError> {
+    let (caisson, foundation, solver) = (&structure.caisson, &structure.foundation, structure.solver);
     let model = Model::new(caisson, foundation);
     let fsum = FoundationSummary::new(caisson, foundation, &model);
     let mut history = record_history.then(|| {
@@ -321,10 +321,4 @@ pub fn run_with<L: LoadHistory + ?Sized>(
         solver: sim.stats,
     };
     Ok(RunResult { summary, history })
-}
-
-/// Run a validated scenario with its `[load]`.
-pub fn run(s: &Scenario, record_history: bool) -> Result<RunResult, SolveError> {
-    let load = s.load.as_ref().expect("run needs a [load] table; the CLI checks this");
-    run_with(&s.caisson, &s.foundation, s.solver, load, s.duration_s, record_history)
 }

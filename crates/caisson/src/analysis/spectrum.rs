@@ -10,12 +10,10 @@
 //! Each run uses dt = min(scenario dt, T0/200, t_r/20) and lasts 4 t_r + 10 T0.
 
 use super::closed_form::{rigid_block_sliding_m, shimosako_sliding_m, shock_spectrum_psi};
-use super::run::run_with;
-use crate::dynamics::{Model, SolveError};
-use crate::foundation::Foundation;
+use super::run::run;
+use super::{Progress, Structure};
+use crate::dynamics::{SolveError, SolverParams};
 use crate::loads::pulse::TrianglePulse;
-use crate::scenario::SolverParams;
-use crate::structure::Caisson;
 use rayon::prelude::*;
 
 /// One point of the spectrum.
@@ -41,29 +39,32 @@ pub fn log_space(from: f64, to: f64, count: usize) -> Vec<f64> {
     (0..count).map(|i| (a + (b - a) * i as f64 / (count - 1) as f64).exp()).collect()
 }
 
-/// Sweep `ratios` of t_r/T0 for the pulse `base` (its rise time is replaced).
+/// Sweep `ratios` of t_r/T0 for the pulse `base` (its rise time is replaced); `progress` is
+/// called once per finished point.
 pub fn sweep(
-    caisson: &Caisson,
-    foundation: &Foundation,
-    solver: SolverParams,
+    structure: &Structure,
     base: TrianglePulse,
     ratios: &[f64],
+    progress: Progress<'_>,
 ) -> Result<Vec<SpectrumPoint>, SolveError> {
-    let model = Model::new(caisson, foundation);
+    let model = structure.model();
     let t0 = model.natural_period_s();
     let m_x = model.horizontal_mass_kg();
     let ust = base.peak.fx_n.abs() / model.kx_n_per_m;
-    let mu = foundation.mu_dynamic;
+    let mu = structure.foundation.mu_dynamic;
     let a = base.peak.fx_n.abs() + mu * base.peak.fy_n;
-    let b = mu * caisson.weight_in_water_n;
+    let b = mu * structure.caisson.weight_in_water_n;
+    let solver = structure.solver;
     ratios
         .par_iter()
         .map(|&ratio| {
             let tr = ratio * t0;
             let pulse = TrianglePulse { peak: base.peak, rise_s: tr, start_s: 0.0 };
             let dt = solver.dt_s.min(t0 / 200.0).min(tr / 20.0);
-            let s = SolverParams { dt_s: dt, output_interval_s: dt, ..solver };
-            let r = run_with(caisson, foundation, s, &pulse, 4.0 * tr + 10.0 * t0, false)?;
+            let point =
+                Structure { solver: SolverParams { dt_s: dt, output_interval_s: dt, ..solver }, ..structure.clone() };
+            let r = run(&point, &pulse, 4.0 * tr + 10.0 * t0, false)?;
+            progress();
             Ok(SpectrumPoint {
                 tr_over_t0: ratio,
                 rise_time_s: tr,

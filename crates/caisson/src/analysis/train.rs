@@ -18,15 +18,16 @@
 //!   the static resistance (max P ≤ μ_s (W' − max U)) is skipped: it cannot slide the block.
 
 use super::run::{permanent_sliding_m, Both, History, Peaks};
-use crate::dynamics::{Model, Observer, Simulation, SolveError, SolverStats, StepView};
+use super::{Progress, Structure};
+use crate::dynamics::{Observer, Simulation, SolveError, SolverStats, StepView};
 use crate::foundation::Foundation;
 use crate::loads::generator::{realization_waves, TrainSpec};
 use crate::loads::history::WaveEvent;
 use crate::loads::model::{WaveLoadError, WaveLoadModel, WaveRecord};
 use crate::loads::regime::{RegimeChoice, RegimeError};
 use crate::loads::LoadHistory;
-use crate::scenario::SolverParams;
 use crate::structure::Caisson;
+use rayon::prelude::*;
 use thiserror::Error;
 
 /// Added-mass coefficient of the rigid-block model (both faces, PHYSICS.md §6.3).
@@ -180,27 +181,55 @@ impl Observer for Three<'_> {
     }
 }
 
-/// Everything a realization needs besides its index.
+/// The waves of a site: its load model (with the regime choice), the trains, and the friction
+/// coefficient of the rigid-block reference.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct WaveSetup {
+    pub model: WaveLoadModel,
+    pub train: TrainSpec,
+    /// μ of the rigid block; `None`: the foundation's μ_s.
+    pub rigid_block_mu: Option<f64>,
+}
+
+impl WaveSetup {
+    /// The nominal (regular) or significant (irregular) wave height, m.
+    pub fn height_m(&self) -> f64 {
+        self.train.height_m()
+    }
+    /// The wave period (T1/3 for irregular waves), s.
+    pub fn period_s(&self) -> f64 {
+        self.train.period_s
+    }
+    /// How the regime of each wave is chosen.
+    pub fn regime(&self) -> RegimeChoice {
+        self.model.options.regime
+    }
+    /// μ of the rigid-block reference on `foundation`.
+    pub fn rigid_block_mu(&self, foundation: &Foundation) -> f64 {
+        self.rigid_block_mu.unwrap_or(foundation.mu_static)
+    }
+}
+
+/// A wave-train test: a structure and its waves (realizations are numbered from 0).
 #[derive(Debug, Clone, Copy)]
 pub struct TrainCase<'a> {
-    pub caisson: &'a Caisson,
-    pub foundation: &'a Foundation,
-    pub solver: SolverParams,
-    pub model: &'a WaveLoadModel,
-    pub spec: &'a TrainSpec,
-    pub regime: RegimeChoice,
-    /// Friction coefficient of the rigid-block reference.
-    pub rigid_block_mu: f64,
+    pub structure: &'a Structure,
+    pub waves: &'a WaveSetup,
 }
 
 impl TrainCase<'_> {
+    /// μ of the rigid-block reference.
+    pub fn rigid_block_mu(&self) -> f64 {
+        self.waves.rigid_block_mu(&self.structure.foundation)
+    }
+
     /// Run realization `index`; with `history`, record its decimated time histories.
     pub fn run(&self, index: usize, history: Option<&mut History>) -> Result<RealizationResult, TrainRunError> {
-        let drawn = realization_waves(self.model, self.spec, self.regime, index)?;
-        let train = self.model.train(&drawn.records)?;
-        let block = RigidBlock::new(self.caisson, self.model.site.rho_w, self.rigid_block_mu);
-        let model = Model::new(self.caisson, self.foundation);
-        let mut sim = Simulation::new(model, self.solver, &train);
+        let w = self.waves;
+        let drawn = realization_waves(&w.model, &w.train, w.regime(), index)?;
+        let train = w.model.train(&drawn.records)?;
+        let block = RigidBlock::new(&self.structure.caisson, w.model.site.rho_w, self.rigid_block_mu());
+        let mut sim = Simulation::new(self.structure.model(), self.structure.solver, &train);
         let mut peaks = Peaks::default();
         let mut history = history;
         if let Some(h) = history.as_deref_mut() {
@@ -242,10 +271,24 @@ impl TrainCase<'_> {
         })
     }
 
-    /// Duration of realization `index`'s train, s (for sizing a history).
+    /// Duration of a realization's train, s (for sizing a history).
     pub fn duration_s(&self) -> f64 {
-        self.spec.waves as f64 * self.spec.period_s
+        self.waves.train.waves as f64 * self.waves.train.period_s
     }
+}
+
+/// Run every realization of `case` in parallel (module docs of [`super`]); `progress` is called
+/// once per finished realization.
+pub fn run_realizations(case: &TrainCase<'_>, progress: Progress<'_>) -> Result<TrainSummary, TrainRunError> {
+    let rs: Vec<RealizationResult> = (0..case.waves.train.realizations)
+        .into_par_iter()
+        .map(|r| {
+            let out = case.run(r, None);
+            progress();
+            out
+        })
+        .collect::<Result<_, _>>()?;
+    Ok(TrainSummary::new(rs))
 }
 
 /// Mean, minimum and maximum of a sample.

@@ -39,9 +39,12 @@
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
 
+mod params;
+
+pub use params::{AdaptiveParams, SolverParams, Stepping, MAX_FIXED_STEPS};
+
 use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
 use crate::loads::{LoadHistory, WaveForce};
-use crate::scenario::{AdaptiveParams, SolverParams, Stepping};
 use crate::structure::Caisson;
 use nalgebra::{Matrix3, Vector3};
 use thiserror::Error;

@@ -14,7 +14,7 @@
 //! depth h' (the wetted height of the seaward face).
 
 /// Added-mass matrix terms (totals).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
 pub struct AddedMass {
     /// kg, on u_x.
     pub translation_kg: f64,

@@ -22,6 +22,10 @@ pub use hydro::AddedMass;
 pub use soil::{FoundationStiffness, Soil};
 pub use spring::{SpringLaw, SpringResponse, SpringState};
 
+use crate::check::{between, count, non_negative, positive, rule};
+use crate::structure::Caisson;
+use crate::ParamError;
+
 /// Where the horizontal foundation dashpot acts (PHYSICS.md §10 item 30).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -51,8 +55,125 @@ pub enum VerticalDamping {
     Springs,
 }
 
+/// The hydrodynamic added mass of the water in front of the wall ([`hydro`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AddedMassSpec {
+    /// No added mass.
+    Off,
+    /// Westergaard's added mass for water `depth_m` deep; `None`: the base depth h'.
+    Westergaard { depth_m: Option<f64> },
+}
+
+/// The foundation as specified (SI, totals): what [`Foundation`] is derived from for a given
+/// caisson. The stiffness and damping come from the soil (seed Eqs. 20-23, which depend on the
+/// caisson's weight in water and base) unless given; each given value overrides the soil's.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct FoundationSpec {
+    /// Number of interface springs n (2 to 1000).
+    pub springs: usize,
+    pub mu_static: f64,
+    /// `None`: min(0.4, μ_s).
+    pub mu_dynamic: Option<f64>,
+    pub soil: Option<Soil>,
+    /// K_x, N/m (overrides the soil's).
+    pub kx_n_per_m: Option<f64>,
+    /// K_y, N/m (overrides the soil's).
+    pub ky_n_per_m: Option<f64>,
+    /// C, N·s/m (overrides the soil's; 0 allowed).
+    pub damping_ns_per_m: Option<f64>,
+    /// Factor on C for the vertical and rotational dashpots (seed: 10).
+    pub vertical_damping_factor: f64,
+    pub damping_mode: DampingMode,
+    pub vertical_damping: VerticalDamping,
+    pub added_mass: AddedMassSpec,
+}
+
+impl Default for FoundationSpec {
+    /// The seed's defaults, without a soil or a stiffness (one of them must be set).
+    fn default() -> Self {
+        FoundationSpec {
+            springs: 10,
+            mu_static: 0.6,
+            mu_dynamic: None,
+            soil: None,
+            kx_n_per_m: None,
+            ky_n_per_m: None,
+            damping_ns_per_m: None,
+            vertical_damping_factor: 10.0,
+            damping_mode: DampingMode::Total,
+            vertical_damping: VerticalDamping::Seed,
+            added_mass: AddedMassSpec::Westergaard { depth_m: None },
+        }
+    }
+}
+
+impl FoundationSpec {
+    /// The foundation of `caisson` in water of density `rho_w` (kg/m³), every quantity checked.
+    pub fn build(&self, caisson: &Caisson, rho_w: f64) -> Result<Foundation, ParamError> {
+        let springs = count("springs", self.springs, 2, 1000)?;
+        let mu_static = between("mu_static", self.mu_static, 1e-6, 10.0)?;
+        let mu_dynamic = match self.mu_dynamic {
+            Some(v) => between("mu_dynamic", v, 1e-6, 10.0)?,
+            None => 0.4f64.min(mu_static),
+        };
+        if mu_dynamic > mu_static {
+            return Err(rule(
+                "mu_dynamic",
+                mu_dynamic,
+                format!("must not exceed mu_static = {mu_static} (dynamic friction is at most static friction)"),
+            ));
+        }
+        let derived = match &self.soil {
+            Some(s) => {
+                Some(s.checked()?.derive(caisson.weight_in_water_n, caisson.width_m, caisson.length_m).stiffness)
+            }
+            None => None,
+        };
+        let pick = |quantity: &'static str, given: Option<f64>, from_soil: Option<f64>, allow_zero: bool| match (
+            given, from_soil,
+        ) {
+            (Some(v), _) if allow_zero => non_negative(quantity, v),
+            (Some(v), _) => positive(quantity, v),
+            (None, Some(v)) => Ok(v),
+            (None, None) => Err(rule(quantity, f64::NAN, "give the soil or the stiffnesses and damping")),
+        };
+        let stiffness = FoundationStiffness {
+            kx_n_per_m: pick("kx_n_per_m", self.kx_n_per_m, derived.map(|d| d.kx_n_per_m), false)?,
+            ky_n_per_m: pick("ky_n_per_m", self.ky_n_per_m, derived.map(|d| d.ky_n_per_m), false)?,
+            damping_ns_per_m: pick(
+                "damping_ns_per_m",
+                self.damping_ns_per_m,
+                derived.map(|d| d.damping_ns_per_m),
+                true,
+            )?,
+        };
+        let vertical_damping_factor = between("vertical_damping_factor", self.vertical_damping_factor, 0.0, 1e3)?;
+        let added_mass = match self.added_mass {
+            AddedMassSpec::Off => AddedMass::default(),
+            AddedMassSpec::Westergaard { depth_m } => {
+                let d = match depth_m {
+                    Some(v) => between("added_mass_depth_m", v, 0.0, 1e3)?,
+                    None => caisson.base_depth_m,
+                };
+                AddedMass::new(rho_w, d, caisson.length_m)
+            }
+        };
+        Ok(Foundation {
+            springs,
+            mu_static,
+            mu_dynamic,
+            stiffness,
+            vertical_damping_factor,
+            damping_mode: self.damping_mode,
+            vertical_damping: self.vertical_damping,
+            added_mass,
+        })
+    }
+}
+
 /// Validated foundation parameters (SI, totals).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Foundation {
     /// Number of interface springs n ≥ 2.
     pub springs: usize,

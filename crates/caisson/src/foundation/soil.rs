@@ -14,8 +14,11 @@
 //! damping exactly; Table 6's damping (480 kN·s/m) is a known slip: Eq. 22 gives 598 kN·s/m
 //! (PHYSICS.md §8.2 item 7, §10 item 14).
 
+use crate::check::{between, positive};
+use crate::ParamError;
+
 /// Soil parameters (SI).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Soil {
     /// E100, Young's modulus at the reference effective stress, Pa.
     pub e100_pa: f64,
@@ -48,6 +51,16 @@ pub struct SoilDerived {
 }
 
 impl Soil {
+    /// The soil with every parameter checked: E100 and σ'v0 > 0, 0 ≤ ν ≤ 0.49, 500 ≤ ρ_s ≤ 5000.
+    pub fn checked(&self) -> Result<Soil, ParamError> {
+        Ok(Soil {
+            e100_pa: positive("e100_pa", self.e100_pa)?,
+            poisson: between("poisson", self.poisson, 0.0, 0.49)?,
+            density_kg_per_m3: between("density_kg_per_m3", self.density_kg_per_m3, 500.0, 5000.0)?,
+            reference_stress_pa: positive("reference_stress_pa", self.reference_stress_pa)?,
+        })
+    }
+
     /// Apply the seed's recipe for a caisson of weight in water `w_n` (N), base width `b_m` and
     /// alongshore length `l_m`.
     pub fn derive(&self, w_n: f64, b_m: f64, l_m: f64) -> SoilDerived {

@@ -29,7 +29,11 @@
 use super::model::{WaveLoadModel, WaveRecord};
 use super::regime::{Regime, RegimeChoice, RegimeError};
 use super::risetime::LoadRng;
+use crate::check::rule;
+use crate::waves::breaking::MICHE_STEEPNESS;
+use crate::waves::dispersion::deep_water_wavelength_m;
 use crate::waves::statistics::sample_rayleigh_m;
+use crate::ParamError;
 use rand::{Rng, SeedableRng};
 use rand_distr::StandardNormal;
 
@@ -83,13 +87,26 @@ impl TrainSpec {
         }
     }
 
-    /// The same spec with another nominal / significant height.
-    pub fn with_height(mut self, h: f64) -> Self {
+    /// The same spec with another nominal (regular) or significant (irregular) height `h` (m): a
+    /// finite number > 0 below the deep-water breaking limit 0.142 L0 for the period (no wave is
+    /// steeper).
+    pub fn with_height_m(mut self, h: f64) -> Result<Self, ParamError> {
+        let limit = MICHE_STEEPNESS * deep_water_wavelength_m(self.period_s);
+        if !(h.is_finite() && h > 0.0 && h < limit) {
+            return Err(rule(
+                "height_m",
+                h,
+                format!(
+                    "must be a finite number > 0 and below the deep-water breaking limit 0.142 L0 = {limit:.4} m for period_s = {} s (no wave is steeper)",
+                    self.period_s
+                ),
+            ));
+        }
         match &mut self.kind {
             TrainKind::Regular { height_m, .. } => *height_m = h,
             TrainKind::Irregular { significant_height_m } => *significant_height_m = h,
         }
-        self
+        Ok(self)
     }
 }
 

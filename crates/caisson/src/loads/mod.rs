@@ -27,6 +27,39 @@ pub mod sainflou;
 pub mod series;
 pub mod shapes;
 
+/// The load of a single run (a `[load]` table): an analytic pulse or a measured series.
+#[derive(Debug, Clone)]
+pub enum LoadSpec {
+    Triangle(pulse::TrianglePulse),
+    Static(pulse::StaticRamp),
+    Series(series::ForceSeries),
+}
+
+impl LoadHistory for LoadSpec {
+    #[inline]
+    fn at(&self, t_s: f64) -> WaveForce {
+        match self {
+            LoadSpec::Triangle(l) => l.at(t_s),
+            LoadSpec::Static(l) => l.at(t_s),
+            LoadSpec::Series(l) => l.at(t_s),
+        }
+    }
+    fn end_time_s(&self) -> Option<f64> {
+        match self {
+            LoadSpec::Triangle(l) => l.end_time_s(),
+            LoadSpec::Static(l) => l.end_time_s(),
+            LoadSpec::Series(l) => l.end_time_s(),
+        }
+    }
+    fn next_breakpoint_s(&self, t_s: f64) -> f64 {
+        match self {
+            LoadSpec::Triangle(l) => l.next_breakpoint_s(t_s),
+            LoadSpec::Static(l) => l.next_breakpoint_s(t_s),
+            LoadSpec::Series(l) => l.next_breakpoint_s(t_s),
+        }
+    }
+}
+
 /// Wave forces on the caisson at one instant (SI, totals; sign conventions in the module docs).
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct WaveForce {

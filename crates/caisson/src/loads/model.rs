@@ -68,7 +68,7 @@ pub struct WaveSite {
 }
 
 /// Model options (defaults as in the seed / PHYSICS.md).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct WaveLoadOptions {
     pub regime: RegimeChoice,
     /// Breaking criterion for d_b, H_br and the regime (default Miche).
@@ -167,7 +167,7 @@ pub enum WaveLoadError {
 }
 
 /// A site with its options: evaluates loads and builds histories.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct WaveLoadModel {
     pub site: WaveSite,
     pub options: WaveLoadOptions,

@@ -7,6 +7,8 @@
 //!   held, for the quasi-static push of the seed's §5.1 (Fig. 6).
 
 use super::{LoadHistory, WaveForce};
+use crate::check::{between, finite, positive};
+use crate::ParamError;
 
 /// Symmetric triangular pulse (seed Eq. 37) starting at `start_s`.
 #[derive(Debug, Clone, Copy)]
@@ -20,6 +22,16 @@ pub struct TrianglePulse {
 }
 
 impl TrianglePulse {
+    /// A pulse of finite peak forces rising over `rise_s` > 0 from `start_s` (0 to 1e6 s).
+    pub fn new(peak: WaveForce, rise_s: f64, start_s: f64) -> Result<Self, ParamError> {
+        finite_force(&peak)?;
+        Ok(TrianglePulse {
+            peak,
+            rise_s: positive("rise_time_s", rise_s)?,
+            start_s: between("start_time_s", start_s, 0.0, 1e6)?,
+        })
+    }
+
     /// Unit shape of Eq. 37 at time `t` after the start.
     #[inline]
     pub fn shape(t: f64, rise_s: f64) -> f64 {
@@ -53,6 +65,21 @@ pub struct StaticRamp {
     pub peak: WaveForce,
     /// Ramp time, s (> 0).
     pub ramp_s: f64,
+}
+
+impl StaticRamp {
+    /// Finite peak forces reached after `ramp_s` > 0.
+    pub fn new(peak: WaveForce, ramp_s: f64) -> Result<Self, ParamError> {
+        finite_force(&peak)?;
+        Ok(StaticRamp { peak, ramp_s: positive("ramp_time_s", ramp_s)? })
+    }
+}
+
+fn finite_force(w: &WaveForce) -> Result<(), ParamError> {
+    finite("peak_horizontal_n", w.fx_n)?;
+    finite("peak_uplift_n", w.fy_n)?;
+    finite("peak_moment_nm", w.m_nm)?;
+    Ok(())
 }
 
 impl LoadHistory for StaticRamp {

@@ -39,6 +39,32 @@ pub enum RegimeChoice {
     Forced(Regime),
 }
 
+impl RegimeChoice {
+    /// The scenario name: `"auto"`, `"breaking"` or `"non-breaking"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            RegimeChoice::Auto => "auto",
+            RegimeChoice::Forced(r) => r.name(),
+        }
+    }
+
+    /// The choice of a scenario name (see [`Self::name`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "auto" => Some(RegimeChoice::Auto),
+            "breaking" => Some(RegimeChoice::Forced(Regime::Breaking)),
+            "non-breaking" => Some(RegimeChoice::Forced(Regime::NonBreaking)),
+            _ => None,
+        }
+    }
+}
+
+impl serde::Serialize for RegimeChoice {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
 /// The decision for one wave, with the numbers behind it.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct RegimeDecision {

@@ -42,7 +42,7 @@ pub enum RiseTimeModel {
 }
 
 /// Parameters of Eqs. 35-36.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct RiseTimeParams {
     pub model: RiseTimeModel,
     pub a_mu: f64,

@@ -7,11 +7,11 @@
 //! Either the grid `heights_m` × `weights_in_water_kn` × `regimes`, or an explicit `conditions`
 //! list (not both).
 
-use super::waves::{validate_waves, WaveScenario};
-use super::{validate, Scenario, ScenarioError, ScenarioFile};
-use crate::loads::regime::{Regime, RegimeChoice};
+use super::{Scenario, ScenarioError, ScenarioFile};
+use crate::analysis::campaign::{Campaign, Condition, ConditionSetup};
+use crate::loads::generator::TrainKind;
+use crate::loads::regime::RegimeChoice;
 use serde::Deserialize;
-use std::path::Path;
 
 type R<T> = Result<T, ScenarioError>;
 
@@ -40,56 +40,33 @@ pub struct ConditionTable {
     pub regime: Option<String>,
 }
 
-/// A validated test condition.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Condition {
-    /// Nominal (regular) or significant (irregular) wave height, m.
-    pub height_m: f64,
-    /// Weight in water W', N.
-    pub weight_in_water_n: f64,
-    #[serde(serialize_with = "regime_name")]
-    pub regime: RegimeChoice,
+/// A validated `[campaign]`: its title (`None`: the caller names it, e.g. after the file) and
+/// its conditions in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CampaignSpec {
+    pub title: Option<String>,
+    pub conditions: Vec<Condition>,
+    /// Where each condition is in the file, for messages.
+    places: Vec<String>,
 }
 
-fn regime_name<S: serde::Serializer>(r: &RegimeChoice, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(choice_name(*r))
+impl CampaignSpec {
+    /// A campaign of `conditions` (named `conditions[i]` in messages).
+    pub fn new(title: Option<String>, conditions: Vec<Condition>) -> Self {
+        let places = (0..conditions.len()).map(|i| format!("[campaign] conditions[{i}]")).collect();
+        CampaignSpec { title, conditions, places }
+    }
 }
 
 /// The scenario name of a regime choice.
 pub fn choice_name(r: RegimeChoice) -> &'static str {
-    match r {
-        RegimeChoice::Auto => "auto",
-        RegimeChoice::Forced(Regime::Breaking) => "breaking",
-        RegimeChoice::Forced(Regime::NonBreaking) => "non-breaking",
-    }
-}
-
-/// A condition with its validated scenario.
-#[derive(Debug, Clone)]
-pub struct ConditionSetup {
-    pub condition: Condition,
-    pub scenario: Scenario,
-    pub waves: WaveScenario,
-}
-
-/// A validated campaign.
-#[derive(Debug, Clone)]
-pub struct Campaign {
-    pub title: String,
-    pub setups: Vec<ConditionSetup>,
+    r.name()
 }
 
 fn regime_of(key: &str, v: &str) -> R<RegimeChoice> {
-    match v {
-        "auto" => Ok(RegimeChoice::Auto),
-        "breaking" => Ok(RegimeChoice::Forced(Regime::Breaking)),
-        "non-breaking" => Ok(RegimeChoice::Forced(Regime::NonBreaking)),
-        _ => Err(ScenarioError::range(
-            key,
-            format!("\"{v}\""),
-            "must be one of \"auto\", \"breaking\", \"non-breaking\"",
-        )),
-    }
+    RegimeChoice::from_name(v).ok_or_else(|| {
+        ScenarioError::range(key, format!("\"{v}\""), "must be one of \"auto\", \"breaking\", \"non-breaking\"")
+    })
 }
 
 fn positive_list(key: &str, v: &[f64], unit: &str) -> R<()> {
@@ -108,8 +85,8 @@ fn positive_list(key: &str, v: &[f64], unit: &str) -> R<()> {
     Ok(())
 }
 
-/// Validate `[campaign]` and every condition's scenario. `base_dir` as in [`validate`].
-pub fn validate_campaign(file: &ScenarioFile, base_dir: &Path, default_title: &str) -> R<Campaign> {
+/// Validate `[campaign]`: its conditions (each condition's setup is checked by [`build`]).
+pub(super) fn validate_campaign(file: &ScenarioFile) -> R<CampaignSpec> {
     let c = file.campaign.as_ref().ok_or_else(|| {
         ScenarioError::missing(
             "[campaign]",
@@ -124,7 +101,6 @@ pub fn validate_campaign(file: &ScenarioFile, base_dir: &Path, default_title: &s
     let wave_table = file.waves.as_ref().ok_or_else(|| {
         ScenarioError::missing("[waves]", "a campaign needs a [waves] table (kind, period_s, waves, realizations, ...)")
     })?;
-    let irregular = wave_table.kind == "irregular";
     let default_regime = match &wave_table.regime {
         Some(r) => regime_of("[waves] regime", r)?,
         None => RegimeChoice::Auto,
@@ -199,23 +175,45 @@ pub fn validate_campaign(file: &ScenarioFile, base_dir: &Path, default_title: &s
     if conditions.len() > 100_000 {
         return Err(ScenarioError::range("[campaign]", conditions.len(), "at most 100000 conditions"));
     }
-    let mut setups = Vec::with_capacity(conditions.len());
-    for (key, cond) in conditions {
-        let mut f = file.clone();
-        f.caisson.weight_in_water_kn = Some(cond.weight_in_water_n / 1e3);
-        f.caisson.mass_kg = None;
-        let waves = f.waves.as_mut().expect("checked above");
-        if irregular {
-            waves.significant_height_m = Some(cond.height_m);
-        } else {
-            waves.height_m = Some(cond.height_m);
-        }
-        waves.regime = Some(choice_name(cond.regime).to_string());
-        f.campaign = None;
-        let prefix = |e: ScenarioError| ScenarioError::Conflict { message: format!("{}: {e}", key.trim_end()) };
-        let scenario = validate(&f, base_dir).map_err(prefix)?;
-        let waves = validate_waves(&f, &scenario.caisson).map_err(prefix)?;
-        setups.push(ConditionSetup { condition: cond, scenario, waves });
+    let (places, conditions) = conditions.into_iter().map(|(k, c)| (k.trim_end().to_string(), c)).unzip();
+    Ok(CampaignSpec { title: c.title.clone(), conditions, places })
+}
+
+/// The setup of every condition of the scenario's campaign: the scenario's caisson with the
+/// condition's weight in water (the mass, and a soil-derived foundation, follow), its waves with
+/// the condition's height and regime. Errors are prefixed with the condition's place in the file.
+pub(super) fn build(sc: &Scenario) -> R<Campaign> {
+    let spec = sc.campaign.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[campaign]",
+            "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
+        )
+    })?;
+    let mut setups = Vec::with_capacity(spec.conditions.len());
+    for (i, cond) in spec.conditions.iter().enumerate() {
+        let place = spec.places.get(i).cloned().unwrap_or_else(|| format!("[campaign] conditions[{i}]"));
+        let prefix = |e: ScenarioError| ScenarioError::Conflict { message: format!("{place}: {e}") };
+        let c = sc.clone().with_caisson(|c| *c = c.with_weight_in_water_n(cond.weight_in_water_n)).map_err(prefix)?;
+        let mut waves = c.waves_for("a campaign")?.clone();
+        let height_key = match waves.train.kind {
+            TrainKind::Regular { .. } => "[waves] height_m",
+            TrainKind::Irregular { .. } => "[waves] significant_height_m",
+        };
+        waves.train = waves
+            .train
+            .with_height_m(cond.height_m)
+            .map_err(|e| prefix(ScenarioError::range(height_key, e.value, e.allowed.describe(1.0, ""))))?;
+        waves.model.options.regime = cond.regime;
+        // A forced regime must agree with the breaking criterion (non-breaking above the limit).
+        waves.model.evaluate(waves.height_m(), waves.period_s()).map_err(|e| {
+            prefix(ScenarioError::range(
+                "[waves] regime",
+                "\"non-breaking\"",
+                format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
+            ))
+        })?;
+        setups.push(ConditionSetup { condition: *cond, structure: c.structure().clone(), waves });
     }
-    Ok(Campaign { title: c.title.clone().unwrap_or_else(|| default_title.to_string()), setups })
+    let title = spec.title.clone().unwrap_or_else(|| "campaign".to_string());
+    Ok(Campaign { title, setups })
 }

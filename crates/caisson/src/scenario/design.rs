@@ -1,11 +1,11 @@
 //! `[design]`: the lifetime Monte Carlo of performance-based design (PHYSICS.md §6.4), validated
-//! into [`LifeParams`] and the run controls. Every key is documented in `docs/design.md`; the
+//! into [`DesignParams`] (the life model and the run controls). Every key is documented in `docs/design.md`; the
 //! defaults are the values PHYSICS.md §6.4 cites (Goda & Takagi 2000; Takayama & Ikeda 1992 via
 //! Shimosako & Takahashi 1999; Kim & Takayama 2003 for the truncation).
 
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
-use crate::analysis::lifetime::{ErrorModel, Errors, LifeParams, StormDistribution};
+use crate::analysis::lifetime::{DesignParams, ErrorModel, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
@@ -40,17 +40,6 @@ pub struct DesignTable {
     pub screen: Option<bool>,
 }
 
-/// The validated design run.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DesignSpec {
-    pub life: LifeParams,
-    pub lives: usize,
-    pub seed: u64,
-    /// Sorted thresholds, m (the standard five and the user's).
-    pub thresholds_m: Vec<f64>,
-    pub screen: bool,
-}
-
 /// Takahashi's performance grades (PHYSICS.md §6.4 step 8), m.
 pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
 
@@ -73,7 +62,7 @@ fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
 }
 
 /// Validate `[design]`.
-pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
+pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let t = file.design.as_ref().ok_or_else(|| {
         ScenarioError::missing(
             "[design]",
@@ -183,7 +172,7 @@ pub fn validate_design(file: &ScenarioFile) -> R<DesignSpec> {
     thresholds_m.sort_by(f64::total_cmp);
     thresholds_m.dedup();
     let seed = seed_of("[design] seed", t.seed)?;
-    Ok(DesignSpec {
+    Ok(DesignParams {
         life: LifeParams {
             life_years: count("life_years", t.life_years, 50, 1000)?,
             storms,

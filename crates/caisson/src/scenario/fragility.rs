@@ -6,13 +6,12 @@
 //! and the train keys `waves`, `realizations` and `seed` of `[waves]` are not used (the storms
 //! have their own duration and seed), so they are rejected rather than silently ignored.
 
-use super::waves::{validate_waves, WaveScenario};
-use super::{validate, Scenario, ScenarioError, ScenarioFile};
+use super::{Scenario, ScenarioError, ScenarioFile};
 use crate::analysis::fragility::FragilityParams;
+use crate::loads::generator::TrainKind;
 use crate::waves::breaking::MICHE_STEEPNESS;
 use crate::waves::dispersion::deep_water_wavelength_m;
 use serde::Deserialize;
-use std::path::Path;
 
 type R<T> = Result<T, ScenarioError>;
 
@@ -32,14 +31,6 @@ pub struct FragilityTable {
     pub period_s: Option<f64>,
     /// Seed of the storms' generators. Default 1.
     pub seed: Option<i64>,
-}
-
-/// A validated fragility analysis: the structure, its site and the storms.
-#[derive(Debug, Clone)]
-pub struct FragilitySetup {
-    pub scenario: Scenario,
-    pub waves: WaveScenario,
-    pub params: FragilityParams,
 }
 
 /// At most this many heights and limits.
@@ -74,8 +65,8 @@ fn increasing(key: &str, v: &[f64], hi: f64, unit: &str) -> R<()> {
     Ok(())
 }
 
-/// Validate the scenario, its waves and `[fragility]`. `base_dir` as in [`validate`].
-pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySetup> {
+/// Validate `[fragility]` for the validated rest of the file `sc`.
+pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<FragilityParams> {
     let t = file.fragility.as_ref().ok_or_else(|| {
         ScenarioError::missing(
             "[fragility]",
@@ -107,9 +98,8 @@ pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySe
             });
         }
     }
-    let scenario = validate(file, base_dir)?;
-    let waves = validate_waves(file, &scenario.caisson)?;
-    if wt.kind != "irregular" {
+    let waves = sc.waves_for("a fragility")?;
+    if !matches!(waves.train.kind, TrainKind::Irregular { .. }) {
         return Err(ScenarioError::range(
             "[waves] kind",
             format!("\"{}\"", wt.kind),
@@ -117,7 +107,7 @@ pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySe
         ));
     }
     let period_s = match t.period_s {
-        None => waves.period_s,
+        None => waves.period_s(),
         Some(v) if v.is_finite() && v > 0.0 && v <= 1e3 => v,
         Some(v) => {
             return Err(ScenarioError::range("[fragility] period_s", v, "must be a finite number > 0 and ≤ 1000 (s)"))
@@ -169,14 +159,13 @@ pub fn validate_fragility(file: &ScenarioFile, base_dir: &Path) -> R<FragilitySe
         }
     } * 3600.0;
     let seed = super::waves::seed_of("[fragility] seed", t.seed)?;
-    let params = FragilityParams { heights_m: heights.clone(), storms, limits_m, storm_duration_s, period_s, seed };
-    Ok(FragilitySetup { scenario, waves, params })
+    Ok(FragilityParams { heights_m: heights.clone(), storms, limits_m, storm_duration_s, period_s, seed })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenario::parse_str;
+    use std::path::Path;
 
     const BASE: &str = r#"
 [caisson]
@@ -198,8 +187,8 @@ period_s = 12.0
 significant_heights_m = [4.0, 6.0, 8.0]
 "#;
 
-    fn run(text: &str) -> R<FragilitySetup> {
-        validate_fragility(&parse_str(text, Path::new("f.toml"))?, Path::new("."))
+    fn run(text: &str) -> R<FragilityParams> {
+        Scenario::from_toml(text, Path::new("f.toml"), Path::new("."))?.fragility_for("this test").cloned()
     }
 
     fn key_of(text: &str) -> String {
@@ -211,7 +200,7 @@ significant_heights_m = [4.0, 6.0, 8.0]
 
     #[test]
     fn defaults() {
-        let p = run(BASE).unwrap().params;
+        let p = run(BASE).unwrap();
         assert_eq!(
             p,
             FragilityParams {
@@ -228,7 +217,7 @@ significant_heights_m = [4.0, 6.0, 8.0]
             "[4.0, 6.0, 8.0]",
             "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9",
         );
-        let p = run(&text).unwrap().params;
+        let p = run(&text).unwrap();
         assert_eq!(
             (p.storms, p.limits_m.clone(), p.storm_duration_s, p.period_s, p.seed, p.waves_per_storm()),
             (7, vec![0.05], 5400.0, 10.0, 9, 540)

@@ -4,6 +4,14 @@
 //! their unit (`weight_in_water_kn`); values are converted to SI here and nowhere else. Unknown
 //! keys are rejected. Validation errors name the key, the value and what is allowed
 //! ([`ScenarioError`]).
+//!
+//! This is the only module that knows the file format. [`load`] reads and parses a file once and
+//! validates every table it holds into a [`Scenario`]: the typed parameters each module owns
+//! ([`CaissonSpec`] and [`FoundationSpec`] with the [`Structure`] built from them,
+//! [`SolverParams`], [`LoadSpec`], [`WaveSetup`], the campaign conditions, [`DesignParams`],
+//! [`FragilityParams`]). Anything that varies a scenario (campaigns, the validation report, sweeps)
+//! changes those typed fields ([`Scenario::with_caisson`], [`Scenario::with_foundation`], ...),
+//! never the file's text.
 
 pub mod campaign;
 pub mod design;
@@ -11,14 +19,22 @@ pub mod fragility;
 mod validate;
 pub mod waves;
 
-pub use validate::{validate, AdaptiveParams, LoadSpec, Scenario, SolverParams, Stepping};
-
+use crate::analysis::campaign::Campaign;
+use crate::analysis::fragility::FragilityParams;
+use crate::analysis::lifetime::{DesignParams, StormCase};
+use crate::analysis::train::{TrainCase, WaveSetup};
+use crate::analysis::Structure;
+use crate::dynamics::SolverParams;
+use crate::foundation::{Foundation, FoundationSpec};
+use crate::loads::LoadSpec;
+use crate::structure::{Caisson, CaissonSpec};
+use crate::ParamError;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 /// Errors in a scenario file. `Display` gives a message that says what to fix.
-#[derive(Debug, Error)]
+#[derive(Debug, Clone, PartialEq, Error)]
 pub enum ScenarioError {
     #[error("cannot read scenario file {path}: {message}")]
     Read { path: PathBuf, message: String },
@@ -48,6 +64,65 @@ impl ScenarioError {
             _ => None,
         }
     }
+}
+
+/// How the quantities of a parameter type are named in a table of the file: (quantity, key,
+/// divisor from SI to the key's unit, the key's unit).
+type KeyMap = &'static [(&'static str, &'static str, f64, &'static str)];
+
+const CAISSON_KEYS: KeyMap = &[
+    ("width_m", "width_m", 1.0, "m"),
+    ("length_m", "length_m", 1.0, "m"),
+    ("height_m", "height_m", 1.0, "m"),
+    ("base_depth_m", "base_depth_m", 1.0, "m"),
+    ("weight_in_water_n", "weight_in_water_kn", 1e3, "kN"),
+    ("mass_kg", "mass_kg", 1.0, "kg"),
+    ("cog_height_m", "cog_height_m", 1.0, "m above the base"),
+    ("inertia_cog_kg_m2", "inertia_kg_m2", 1.0, "kg·m² about the centre of gravity"),
+];
+
+const FOUNDATION_KEYS: KeyMap = &[
+    ("springs", "springs", 1.0, ""),
+    ("mu_static", "mu_static", 1.0, "-"),
+    ("mu_dynamic", "mu_dynamic", 1.0, "-"),
+    ("e100_pa", "e100_kpa", 1e3, "kPa"),
+    ("poisson", "poisson", 1.0, "-"),
+    ("density_kg_per_m3", "density_kg_per_m3", 1.0, "kg/m³"),
+    ("reference_stress_pa", "reference_stress_kpa", 1e3, "kPa"),
+    ("kx_n_per_m", "kx_kn_per_m", 1e3, "kN/m"),
+    ("ky_n_per_m", "ky_kn_per_m", 1e3, "kN/m"),
+    ("damping_ns_per_m", "damping_kns_per_m", 1e3, "kN·s/m"),
+    ("vertical_damping_factor", "vertical_damping_factor", 1.0, "-"),
+    ("added_mass_depth_m", "added_mass_depth_m", 1.0, "m"),
+];
+
+const SOLVER_KEYS: KeyMap = &[
+    ("dt_s", "dt_s", 1.0, "s"),
+    ("gamma", "gamma", 1.0, "-"),
+    ("beta", "beta", 1.0, "-"),
+    ("max_iterations", "max_iterations", 1.0, ""),
+    ("max_substep_levels", "max_substep_levels", 1.0, ""),
+    ("tolerance", "tolerance", 1.0, "relative to the weight in water"),
+    ("output_interval_s", "output_interval_s", 1.0, "s"),
+    ("dt_min_s", "dt_min_s", 1.0, "s"),
+    ("dt_max_s", "dt_max_s", 1.0, "s"),
+    ("error_tolerance_m", "error_tolerance_m", 1.0, "m of local displacement error per step"),
+];
+
+const LOAD_KEYS: KeyMap = &[
+    ("rise_time_s", "rise_time_s", 1.0, "s"),
+    ("start_time_s", "start_time_s", 1.0, "s"),
+    ("ramp_time_s", "ramp_time_s", 1.0, "s"),
+    ("peak_horizontal_n", "peak_horizontal_kn", 1e3, "kN"),
+    ("peak_uplift_n", "peak_uplift_kn", 1e3, "kN"),
+    ("peak_moment_nm", "peak_horizontal_kn", 1e3, "kN"),
+];
+
+/// A parameter error reported under the key of `table` (e.g. `[caisson]`), in the key's unit.
+pub(crate) fn keyed(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
+    let (key, divisor, unit) =
+        map.iter().find(|(q, ..)| *q == e.quantity).map(|(_, k, d, u)| (*k, *d, *u)).unwrap_or((e.quantity, 1.0, ""));
+    ScenarioError::range(&format!("{table} {key}"), e.value / divisor, e.allowed.describe(1.0 / divisor, unit))
 }
 
 /// The whole scenario file as written (units as in the keys).
@@ -189,15 +264,165 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
     })
 }
 
-/// Read and parse a scenario file (no validation).
-pub fn read_file(path: &Path) -> Result<ScenarioFile, ScenarioError> {
+/// Read a scenario file, parse it once and validate every table it holds. Relative file names
+/// in it (a force series) are taken from the file's directory.
+pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| ScenarioError::Read { path: path.to_path_buf(), message: e.to_string() })?;
-    parse_str(&text, path)
+    Scenario::from_toml(&text, path, path.parent().unwrap_or(Path::new(".")))
 }
 
-/// Read, parse and validate a scenario file for the dynamic engine.
-pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
-    let file = read_file(path)?;
-    validate(&file, path.parent().unwrap_or(Path::new(".")))
+/// A validated scenario: the typed parameters of every table of the file (module docs).
+///
+/// The caisson and the foundation are kept as specified ([`CaissonSpec`], [`FoundationSpec`]) and
+/// as built ([`Structure`]); change them with [`Self::with_caisson`] and [`Self::with_foundation`],
+/// which rebuild what depends on them (the mass from the weight, a soil-derived stiffness, the
+/// wave site), so the two never disagree.
+#[derive(Debug, Clone)]
+pub struct Scenario {
+    water_density_kg_per_m3: f64,
+    caisson_spec: CaissonSpec,
+    foundation_spec: FoundationSpec,
+    structure: Structure,
+    /// The `[load]` table; `None` for a scenario that only describes waves.
+    pub load: Option<LoadSpec>,
+    /// Simulated time of a `[load]` run, s.
+    pub duration_s: f64,
+    /// `[water]` and `[waves]`.
+    pub waves: Option<WaveSetup>,
+    /// `[campaign]`: its title and conditions ([`Self::campaign`] builds their setups).
+    pub campaign: Option<campaign::CampaignSpec>,
+    /// `[design]`.
+    pub design: Option<DesignParams>,
+    /// `[fragility]`.
+    pub fragility: Option<FragilityParams>,
+}
+
+impl Scenario {
+    /// Parse and validate scenario text. `path` names the file in messages; `base_dir` resolves
+    /// relative file names (the force series).
+    pub fn from_toml(text: &str, path: &Path, base_dir: &Path) -> Result<Scenario, ScenarioError> {
+        validate::validate(&parse_str(text, path)?, base_dir)
+    }
+
+    /// ρ_w, kg/m³.
+    pub fn water_density_kg_per_m3(&self) -> f64 {
+        self.water_density_kg_per_m3
+    }
+    /// The structure (caisson, foundation, solver) every analysis runs on.
+    pub fn structure(&self) -> &Structure {
+        &self.structure
+    }
+    pub fn caisson(&self) -> &Caisson {
+        &self.structure.caisson
+    }
+    pub fn foundation(&self) -> &Foundation {
+        &self.structure.foundation
+    }
+    pub fn solver(&self) -> SolverParams {
+        self.structure.solver
+    }
+    /// The caisson as specified.
+    pub fn caisson_spec(&self) -> &CaissonSpec {
+        &self.caisson_spec
+    }
+    /// The foundation as specified.
+    pub fn foundation_spec(&self) -> &FoundationSpec {
+        &self.foundation_spec
+    }
+
+    /// The scenario with the caisson changed by `change`: the caisson, its foundation (a
+    /// soil-derived stiffness follows the weight and base) and the wave site are rebuilt. Errors
+    /// name the `[caisson]` or `[foundation]` key.
+    pub fn with_caisson(self, change: impl FnOnce(&mut CaissonSpec)) -> Result<Scenario, ScenarioError> {
+        let (mut spec, foundation) = (self.caisson_spec, self.foundation_spec);
+        change(&mut spec);
+        self.rebuilt(spec, foundation)
+    }
+
+    /// The scenario with the foundation changed by `change` (rebuilt for the same caisson).
+    pub fn with_foundation(self, change: impl FnOnce(&mut FoundationSpec)) -> Result<Scenario, ScenarioError> {
+        let (caisson, mut spec) = (self.caisson_spec, self.foundation_spec);
+        change(&mut spec);
+        self.rebuilt(caisson, spec)
+    }
+
+    /// The scenario with other solver controls, checked against the run's duration.
+    pub fn with_solver(mut self, solver: SolverParams) -> Result<Scenario, ScenarioError> {
+        solver.check_run(self.duration_s).map_err(|e| keyed("[solver]", SOLVER_KEYS, e))?;
+        self.structure.solver = solver;
+        Ok(self)
+    }
+
+    fn rebuilt(
+        mut self,
+        caisson_spec: CaissonSpec,
+        foundation_spec: FoundationSpec,
+    ) -> Result<Scenario, ScenarioError> {
+        let rho_w = self.water_density_kg_per_m3;
+        let caisson = caisson_spec.build(rho_w).map_err(|e| keyed("[caisson]", CAISSON_KEYS, e))?;
+        let foundation =
+            foundation_spec.build(&caisson, rho_w).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
+        if let Some(w) = self.waves.as_mut() {
+            waves::place_caisson(&mut w.model.site, &caisson);
+        }
+        self.caisson_spec = caisson_spec;
+        self.foundation_spec = foundation_spec;
+        self.structure.caisson = caisson;
+        self.structure.foundation = foundation;
+        Ok(self)
+    }
+
+    /// The `[waves]` of the scenario, or an error saying that `what` needs them.
+    pub fn waves_for(&self, what: &str) -> Result<&WaveSetup, ScenarioError> {
+        self.waves.as_ref().ok_or_else(|| {
+            ScenarioError::missing(
+                "[waves]",
+                format!("{what} needs a [waves] table (kind, height, period_s) and the depths of [water]"),
+            )
+        })
+    }
+
+    /// The `[design]` of the scenario, or an error saying it is missing.
+    pub fn design_for(&self, what: &str) -> Result<&DesignParams, ScenarioError> {
+        self.design.as_ref().ok_or_else(|| {
+            ScenarioError::missing(
+                "[design]",
+                format!("{what} needs a [design] table: storm_distribution, its parameters, life_years, lives"),
+            )
+        })
+    }
+
+    /// The `[fragility]` of the scenario, or an error saying it is missing.
+    pub fn fragility_for(&self, what: &str) -> Result<&FragilityParams, ScenarioError> {
+        self.fragility.as_ref().ok_or_else(|| {
+            ScenarioError::missing(
+                "[fragility]",
+                format!("{what} needs a [fragility] table with significant_heights_m (and storms, limits_m, ...)"),
+            )
+        })
+    }
+
+    /// The wave-train test of the scenario's `[waves]`.
+    pub fn train_case(&self) -> Result<TrainCase<'_>, ScenarioError> {
+        Ok(TrainCase { structure: &self.structure, waves: self.waves_for("a wave-train run")? })
+    }
+
+    /// The storms' case of a design or fragility run: the structure, the site's wave loads and
+    /// the rigid-block μ (`[waves] rigid_block_mu`, default μ_s).
+    pub fn storm_case(&self, screen: bool) -> Result<StormCase<'_>, ScenarioError> {
+        let w = self.waves_for("a design or fragility run")?;
+        Ok(StormCase {
+            structure: &self.structure,
+            model: &w.model,
+            rigid_block_mu: w.rigid_block_mu(&self.structure.foundation),
+            screen,
+        })
+    }
+
+    /// The conditions of `[campaign]` with their structures and waves (each condition's height,
+    /// weight in water and regime set on this scenario's typed parameters).
+    pub fn campaign(&self) -> Result<Campaign, ScenarioError> {
+        campaign::build(self)
+    }
 }

@@ -1,11 +1,12 @@
 //! `[waves]` (and the wave keys of `[water]`): the incident waves and the options of the wave-load
-//! models, validated into a [`WaveScenario`] (a [`WaveLoadModel`] plus the design wave).
+//! models, validated into a [`WaveSetup`] (a [`WaveLoadModel`], the design wave and its trains).
 //!
 //! Every key, with unit, default and allowed range, is documented in `docs/waves.md`. The caisson
 //! geometry comes from `[caisson]`: base depth h' = `base_depth_m`, crest freeboard
 //! h_c = `height_m − base_depth_m`, width B, alongshore length.
 
 use super::{ScenarioError, ScenarioFile};
+use crate::analysis::train::WaveSetup;
 use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
 use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveSite};
 use crate::loads::regime::{Regime, RegimeChoice};
@@ -69,18 +70,13 @@ pub struct WavesTable {
     pub rigid_block_mu: Option<f64>,
 }
 
-/// The validated wave scenario: the load model of the site, the design wave and its trains.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct WaveScenario {
-    pub model: WaveLoadModel,
-    /// Incident wave height H (regular) or significant height H1/3 (irregular), m.
-    pub height_m: f64,
-    /// Period T (or T1/3), s.
-    pub period_s: f64,
-    /// The wave trains (waves per realization, realizations, height variability, seed).
-    pub train: TrainSpec,
-    /// Friction coefficient of the rigid-block (Shimosako) reference; `None`: the foundation's μ_s.
-    pub rigid_block_mu: Option<f64>,
+/// Put `caisson` at the site: the geometry the wave loads see (base depth, crest freeboard,
+/// width, length) follows the caisson.
+pub(crate) fn place_caisson(site: &mut WaveSite, caisson: &Caisson) {
+    site.base_depth_m = caisson.base_depth_m;
+    site.crest_freeboard_m = caisson.height_m - caisson.base_depth_m;
+    site.width_m = caisson.width_m;
+    site.length_m = caisson.length_m;
 }
 
 /// A finite number in (lo, hi] (`lo_open`) or [lo, hi], else a keyed range error.
@@ -116,7 +112,7 @@ pub(super) fn seed_of(key: &str, v: Option<i64>) -> R<u64> {
 }
 
 /// Validate `[water]` (depths, slope, berm) and `[waves]` against the validated caisson.
-pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario> {
+pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSetup> {
     let w = &file.water;
     let t = file.waves.as_ref().ok_or_else(|| {
         ScenarioError::missing("[waves]", "add a [waves] table with kind = \"regular\", height_m and period_s")
@@ -300,17 +296,18 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
         angle_rad: angle_deg.to_radians(),
         lambda: d_opt.lambda,
     };
-    let site = WaveSite {
+    let mut site = WaveSite {
         rho_w,
         depth_at_toe_m: hs,
         depth_at_wall_m: d,
         base_depth_m: hp,
-        crest_freeboard_m: caisson.height_m - hp,
-        width_m: caisson.width_m,
-        length_m: caisson.length_m,
+        crest_freeboard_m: 0.0,
+        width_m: 0.0,
+        length_m: 0.0,
         seabed_slope: slope,
         berm_width_m: berm,
     };
+    place_caisson(&mut site, caisson);
     let model = WaveLoadModel { site, options };
     let count = |key: &str, v: Option<i64>, default: usize| -> R<usize> {
         match v {
@@ -366,13 +363,13 @@ pub fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveScenario>
     })?;
     let rigid_block_mu =
         t.rigid_block_mu.map(|v| number("[waves] rigid_block_mu", v, 0.0, 2.0, true, "-")).transpose()?;
-    Ok(WaveScenario { model, height_m, period_s, train, rigid_block_mu })
+    Ok(WaveSetup { model, train, rigid_block_mu })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenario::{parse_str, validate};
+    use crate::scenario::Scenario;
     use std::path::Path;
 
     const PARI: &str = r#"
@@ -393,10 +390,9 @@ height_m = 0.428
 period_s = 3.04
 "#;
 
-    fn run(text: &str) -> R<WaveScenario> {
-        let f = parse_str(text, Path::new("t.toml"))?;
-        let s = validate(&f, Path::new("."))?;
-        validate_waves(&f, &s.caisson)
+    fn run(text: &str) -> R<WaveSetup> {
+        let s = Scenario::from_toml(text, Path::new("t.toml"), Path::new("."))?;
+        s.waves_for("this test").cloned()
     }
 
     fn key_of(text: &str) -> String {
@@ -410,7 +406,7 @@ period_s = 3.04
     fn pari_breaking_scenario_validates() {
         let w = run(PARI).unwrap();
         assert_eq!(w.model.site.crest_freeboard_m, 1.12 - 0.8);
-        assert_eq!(w.height_m, 0.428);
+        assert_eq!(w.height_m(), 0.428);
         assert_eq!(w.model.options.load_shape, LoadShape::Seed);
     }
 

@@ -16,7 +16,8 @@
 //! Mass and weight in water are related through the displaced water (PHYSICS.md §8.2, item 5):
 //! m_c = W'/g + ρ_w B l h', with h' the base depth below still water.
 
-use crate::G_M_PER_S2;
+use crate::check::{between, positive, rule};
+use crate::{ParamError, G_M_PER_S2};
 
 /// How the rigid-body mass matrix is formed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -28,8 +29,105 @@ pub enum MassMatrix {
     Diagonal,
 }
 
+/// How the caisson's mass is given: the other of mass and weight in water follows from the
+/// displaced water, m_c = W'/g + ρ_w B l h' (PHYSICS.md §8.2 item 5).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MassSpec {
+    /// Weight in water W', N; the mass follows.
+    WeightInWater { weight_in_water_n: f64 },
+    /// Mass in air, kg; the weight in water follows.
+    MassInAir { mass_kg: f64 },
+    /// Both given (no check that they agree with the displaced water).
+    Both { mass_kg: f64, weight_in_water_n: f64 },
+}
+
+/// The caisson as specified (SI, totals): what [`Caisson`] is derived from. Vary a field and
+/// [`CaissonSpec::build`] again to get a consistent caisson (the mass follows the weight, the
+/// default inertia follows the mass).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct CaissonSpec {
+    /// B, base width in the wave direction, m.
+    pub width_m: f64,
+    /// Alongshore length, m.
+    pub length_m: f64,
+    pub height_m: f64,
+    /// h', depth of the base below still water, m (0 to the height).
+    pub base_depth_m: f64,
+    pub mass: MassSpec,
+    /// y_G, m above the base; `None`: half the height.
+    pub cog_height_m: Option<f64>,
+    /// I_G, kg·m² about the centre of gravity; `None`: a uniform block, m (B² + h²)/12.
+    pub inertia_cog_kg_m2: Option<f64>,
+    pub mass_matrix: MassMatrix,
+}
+
+impl CaissonSpec {
+    /// The caisson in water of density `rho_w` (kg/m³), every quantity checked.
+    pub fn build(&self, rho_w: f64) -> Result<Caisson, ParamError> {
+        let width_m = positive("width_m", self.width_m)?;
+        let length_m = positive("length_m", self.length_m)?;
+        let height_m = positive("height_m", self.height_m)?;
+        let base_depth_m = self.base_depth_m;
+        if !(base_depth_m.is_finite() && (0.0..=height_m).contains(&base_depth_m)) {
+            return Err(rule(
+                "base_depth_m",
+                base_depth_m,
+                format!("must be between 0 and the caisson height {height_m} m (a base deeper than the caisson is tall leaves it under water)"),
+            ));
+        }
+        let displaced = Caisson::displaced_water_kg(width_m, length_m, base_depth_m, height_m, rho_w);
+        let (mass_kg, weight_in_water_n) = match self.mass {
+            MassSpec::WeightInWater { weight_in_water_n } => {
+                let w = positive("weight_in_water_n", weight_in_water_n)?;
+                (Caisson::mass_from_weight_in_water(w, displaced), w)
+            }
+            MassSpec::MassInAir { mass_kg } => {
+                let m = positive("mass_kg", mass_kg)?;
+                if m <= displaced {
+                    return Err(rule(
+                        "mass_kg",
+                        m,
+                        format!("must exceed the {displaced:.1} kg of water the caisson displaces, or it floats"),
+                    ));
+                }
+                (m, (m - displaced) * G_M_PER_S2)
+            }
+            MassSpec::Both { mass_kg, weight_in_water_n } => {
+                (positive("mass_kg", mass_kg)?, positive("weight_in_water_n", weight_in_water_n)?)
+            }
+        };
+        let cog_height_m = match self.cog_height_m {
+            Some(v) => between("cog_height_m", v, 0.0, height_m)?,
+            None => 0.5 * height_m,
+        };
+        let inertia_cog_kg_m2 = match self.inertia_cog_kg_m2 {
+            Some(v) => positive("inertia_cog_kg_m2", v)?,
+            None => Caisson::uniform_block_inertia_kg_m2(mass_kg, width_m, height_m),
+        };
+        Ok(Caisson {
+            width_m,
+            length_m,
+            height_m,
+            base_depth_m,
+            mass_kg,
+            weight_in_water_n,
+            cog_height_m,
+            inertia_cog_kg_m2,
+            mass_matrix: self.mass_matrix,
+        })
+    }
+
+    /// The same caisson with another weight in water (N): the mass then follows from the
+    /// displaced water, as for a caisson given by its weight.
+    pub fn with_weight_in_water_n(mut self, weight_in_water_n: f64) -> Self {
+        self.mass = MassSpec::WeightInWater { weight_in_water_n };
+        self
+    }
+}
+
 /// Validated caisson parameters (SI, totals).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Caisson {
     /// B, base width in the wave direction, m.
     pub width_m: f64,

@@ -27,7 +27,8 @@ pub const GODA_BREAKER_A: f64 = 0.17;
 pub const MCCOWAN_GAMMA: f64 = 0.78;
 
 /// A breaking criterion: which limit decides the breaker height and the breaking depth.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
 pub enum BreakerCriterion {
     /// Miche (1944), PHYSICS.md §3.1 (default, as recommended in §4.2).
     Miche,

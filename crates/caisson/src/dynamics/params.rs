@@ -1,0 +1,165 @@
+//! Controls of the time integration (PHYSICS.md §9.1): the Newmark constants, the Newton-Raphson
+//! iteration, sub-stepping and the step length, fixed or adaptive. Each `with_*` setter checks
+//! what it sets and names the quantity when it refuses ([`ParamError`]).
+
+use crate::check::{between, count, fail, positive, rule};
+use crate::{Allowed, ParamError};
+
+/// How the step length is chosen (see [`crate::dynamics`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum Stepping {
+    /// Every step is `dt_s` (halved only when Newton-Raphson fails).
+    Fixed,
+    /// Local error control (Zienkiewicz & Xie 1991), landing on the load's breakpoints.
+    Adaptive(AdaptiveParams),
+}
+
+/// Controls of the adaptive stepper.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct AdaptiveParams {
+    /// Smallest step, s: a step this short is accepted whatever its error estimate.
+    pub dt_min_s: f64,
+    /// Largest step, s.
+    pub dt_max_s: f64,
+    /// Allowed local displacement error per step, m (rotation counted as θ·B/2).
+    pub tolerance_m: f64,
+}
+
+impl Default for AdaptiveParams {
+    fn default() -> Self {
+        AdaptiveParams { dt_min_s: 1e-6, dt_max_s: 5e-3, tolerance_m: 1e-8 }
+    }
+}
+
+impl AdaptiveParams {
+    /// The defaults adjusted to a first step `dt_s`: dt_min ≤ dt_s ≤ dt_max.
+    pub fn for_first_step(dt_s: f64) -> Self {
+        let d = AdaptiveParams::default();
+        AdaptiveParams { dt_min_s: d.dt_min_s.min(dt_s), dt_max_s: d.dt_max_s.max(dt_s), ..d }
+    }
+}
+
+/// Newmark and Newton-Raphson controls (PHYSICS.md §9.1).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct SolverParams {
+    /// Time step (fixed stepping) or first step (adaptive stepping), s.
+    pub dt_s: f64,
+    pub stepping: Stepping,
+    /// Newmark γ (default ½) and β (default ¼): average acceleration.
+    pub gamma: f64,
+    pub beta: f64,
+    /// Newton iterations allowed per (sub)step before the step is sub-stepped.
+    pub max_iterations: usize,
+    /// Times a failing step may be halved (2^levels sub-steps at most) before the run fails.
+    pub max_substep_levels: usize,
+    /// Convergence tolerance on the residual, relative to the weight in water W'.
+    pub tolerance: f64,
+    /// Interval between recorded history samples, s.
+    pub output_interval_s: f64,
+}
+
+impl Default for SolverParams {
+    fn default() -> Self {
+        SolverParams {
+            dt_s: 1e-4,
+            stepping: Stepping::Fixed,
+            gamma: 0.5,
+            beta: 0.25,
+            max_iterations: 30,
+            max_substep_levels: 8,
+            tolerance: 1e-9,
+            output_interval_s: 1e-3,
+        }
+    }
+}
+
+/// At most this many fixed steps in one run.
+pub const MAX_FIXED_STEPS: f64 = 1e9;
+
+impl SolverParams {
+    /// The defaults with fixed steps of `dt_s` (> 0); the output interval is at least `dt_s`.
+    pub fn fixed(dt_s: f64) -> Result<Self, ParamError> {
+        let dt_s = positive("dt_s", dt_s)?;
+        let d = SolverParams::default();
+        Ok(SolverParams { dt_s, output_interval_s: d.output_interval_s.max(dt_s), ..d })
+    }
+
+    /// Adaptive steps starting with `dt_s`: dt_max from dt_s to 1 s, dt_min from 1e-9 s to dt_s,
+    /// the tolerance from 1e-12 to 1e-3 m.
+    pub fn with_adaptive(mut self, p: AdaptiveParams) -> Result<Self, ParamError> {
+        let dt = self.dt_s;
+        if !(p.dt_max_s.is_finite() && p.dt_max_s >= dt && p.dt_max_s <= 1.0) {
+            return Err(rule("dt_max_s", p.dt_max_s, format!("must be between {dt} and 1 (s, from dt_s to 1 s)")));
+        }
+        if !(p.dt_min_s.is_finite() && p.dt_min_s >= 1e-9 && p.dt_min_s <= dt) {
+            return Err(rule(
+                "dt_min_s",
+                p.dt_min_s,
+                format!("must be between 1e-9 and {dt} (s, from 1e-9 s to dt_s)"),
+            ));
+        }
+        between("error_tolerance_m", p.tolerance_m, 1e-12, 1e-3)?;
+        self.stepping = Stepping::Adaptive(p);
+        Ok(self)
+    }
+
+    /// Newmark γ from ½ to 1 and β from γ/2 to ½ (unconditionally stable).
+    pub fn with_newmark(mut self, gamma: f64, beta: f64) -> Result<Self, ParamError> {
+        self.gamma = between("gamma", gamma, 0.5, 1.0)?;
+        if !(beta.is_finite() && beta >= 0.5 * gamma && beta <= 0.5) {
+            return Err(rule(
+                "beta",
+                beta,
+                format!("must be between {} and 0.5 (-; unconditional stability needs 2·beta ≥ gamma)", 0.5 * gamma),
+            ));
+        }
+        self.beta = beta;
+        Ok(self)
+    }
+
+    /// Newton iterations per step (1 to 1000), and halvings of a failing step (0 to 20).
+    pub fn with_iterations(mut self, max_iterations: usize, max_substep_levels: usize) -> Result<Self, ParamError> {
+        self.max_iterations = count("max_iterations", max_iterations, 1, 1000)?;
+        self.max_substep_levels = count("max_substep_levels", max_substep_levels, 0, 20)?;
+        Ok(self)
+    }
+
+    /// The convergence tolerance relative to W', from 1e-15 to 1e-2.
+    pub fn with_tolerance(mut self, tolerance: f64) -> Result<Self, ParamError> {
+        self.tolerance = between("tolerance", tolerance, 1e-15, 1e-2)?;
+        Ok(self)
+    }
+
+    /// The history sampling interval (checked against the run's duration by [`Self::check_run`]).
+    pub fn with_output_interval_s(mut self, output_interval_s: f64) -> Self {
+        self.output_interval_s = output_interval_s;
+        self
+    }
+
+    /// Check the controls against a run of `duration_s`: dt_s at most the duration, at most 1e9
+    /// fixed steps, and an output interval from dt_s to the duration.
+    pub fn check_run(&self, duration_s: f64) -> Result<(), ParamError> {
+        positive("dt_s", self.dt_s)?;
+        if self.dt_s > duration_s {
+            return Err(rule("dt_s", self.dt_s, format!("must not exceed the simulated time {duration_s} s")));
+        }
+        if self.stepping == Stepping::Fixed && duration_s / self.dt_s > MAX_FIXED_STEPS {
+            return Err(rule(
+                "dt_s",
+                self.dt_s,
+                format!("gives {:.2e} steps for {duration_s} s; at most 1e9", duration_s / self.dt_s),
+            ));
+        }
+        let hi = duration_s.max(self.dt_s);
+        if !(self.output_interval_s.is_finite() && self.output_interval_s >= self.dt_s && self.output_interval_s <= hi)
+        {
+            return Err(fail(
+                "output_interval_s",
+                self.output_interval_s,
+                Allowed::Rule(format!("must be between {} and {hi} (s, from dt_s to the simulated time)", self.dt_s)),
+            ));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,174 @@
+//! `caisson fragility`: `fragility.json` (keys in docs/fragility.md).
+
+use super::Provenance;
+use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
+use crate::analysis::train::WaveSetup;
+use crate::analysis::Structure;
+use serde::Serialize;
+
+/// Goda's static sliding safety factor (μ_s) under the wave H_max = 1.8 H1/3, if defined.
+pub fn goda_sliding_safety(structure: &Structure, waves: &WaveSetup, h13_m: f64, period_s: f64) -> Option<f64> {
+    let m = &waves.model;
+    let loads = m.evaluate_with(HMAX_RATIO * h13_m, period_s, m.options.regime).ok()?;
+    m.safety(&loads, structure.caisson.weight_in_water_n, structure.foundation.mu_static).sliding
+}
+
+/// A lognormal fit, or why there is none.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum FitReport {
+    Fitted { fitted: bool, median_m: f64, beta: f64, ln_median_se: f64, beta_se: f64, log_likelihood: f64 },
+    Refused { fitted: bool, reason: FitFailure, message: String },
+}
+
+impl From<&Result<LognormalFit, FitFailure>> for FitReport {
+    fn from(f: &Result<LognormalFit, FitFailure>) -> Self {
+        match f {
+            Ok(f) => FitReport::Fitted {
+                fitted: true,
+                median_m: f.median,
+                beta: f.beta,
+                ln_median_se: f.ln_median_se,
+                beta_se: f.beta_se,
+                log_likelihood: f.log_likelihood,
+            },
+            Err(e) => FitReport::Refused { fitted: false, reason: *e, message: e.to_string() },
+        }
+    }
+}
+
+/// The counts of one limit at one height.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LevelExceedance {
+    pub limit_m: f64,
+    pub dynamic_count: u64,
+    pub dynamic_probability: f64,
+    pub rigid_block_count: u64,
+    pub rigid_block_probability: f64,
+}
+
+/// The storms of one height.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LevelReport {
+    pub significant_height_m: f64,
+    pub hmax_m: f64,
+    pub storms: usize,
+    pub mean_sliding_m: f64,
+    pub max_sliding_m: f64,
+    pub mean_rigid_block_sliding_m: f64,
+    pub max_rigid_block_sliding_m: f64,
+    pub screened_share: f64,
+    pub simulated_waves: u64,
+    pub exceedance: Vec<LevelExceedance>,
+    pub storm_sliding_m: Vec<f64>,
+    pub storm_rigid_block_sliding_m: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub goda_sliding_safety_factor: Option<f64>,
+}
+
+impl LevelReport {
+    fn new(l: &LevelResult, limits_m: &[f64], goda: Option<f64>) -> Self {
+        let n = l.storms.len() as f64;
+        LevelReport {
+            significant_height_m: l.h13_m,
+            hmax_m: l.hmax_m,
+            storms: l.storms.len(),
+            mean_sliding_m: l.mean_sliding_m(),
+            max_sliding_m: l.storms.iter().map(|o| o.sliding_m).fold(0.0, f64::max),
+            mean_rigid_block_sliding_m: l.mean_rigid_block_sliding_m(),
+            max_rigid_block_sliding_m: l.storms.iter().map(|o| o.rigid_block_sliding_m).fold(0.0, f64::max),
+            screened_share: l.screened_share(),
+            simulated_waves: l.storms.iter().map(|o| o.simulated).sum(),
+            exceedance: limits_m
+                .iter()
+                .enumerate()
+                .map(|(j, &limit_m)| LevelExceedance {
+                    limit_m,
+                    dynamic_count: l.dynamic_exceedances[j],
+                    dynamic_probability: l.dynamic_exceedances[j] as f64 / n,
+                    rigid_block_count: l.rigid_block_exceedances[j],
+                    rigid_block_probability: l.rigid_block_exceedances[j] as f64 / n,
+                })
+                .collect(),
+            storm_sliding_m: l.storms.iter().map(|o| o.sliding_m).collect(),
+            storm_rigid_block_sliding_m: l.storms.iter().map(|o| o.rigid_block_sliding_m).collect(),
+            goda_sliding_safety_factor: goda,
+        }
+    }
+}
+
+/// The design wave of a fragility file.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DesignWaveReport {
+    pub significant_height_m: f64,
+    pub hmax_m: f64,
+    pub period_s: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub goda_sliding_safety_factor: Option<f64>,
+}
+
+/// The fits of one limit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LimitFitReport {
+    pub limit_m: f64,
+    pub dynamic: FitReport,
+    pub rigid_block: FitReport,
+}
+
+/// The results of a fragility analysis.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FragilityReport {
+    #[serde(flatten)]
+    pub provenance: Provenance,
+    pub scenario: String,
+    pub period_s: f64,
+    pub storm_duration_h: f64,
+    pub waves_per_storm: usize,
+    pub hmax_ratio: f64,
+    pub storms: usize,
+    pub seed: u64,
+    pub limits_m: Vec<f64>,
+    pub rigid_block_mu: f64,
+    pub design_wave: DesignWaveReport,
+    pub levels: Vec<LevelReport>,
+    pub fits: Vec<LimitFitReport>,
+}
+
+impl FragilityReport {
+    /// The report of `r`, the fragility `p` of `structure` under `waves` (file `name`).
+    pub fn new(name: &str, structure: &Structure, waves: &WaveSetup, p: &FragilityParams, r: &FragilityResult) -> Self {
+        let (h, t) = (waves.height_m(), waves.period_s());
+        FragilityReport {
+            provenance: Provenance::CURRENT,
+            scenario: name.to_string(),
+            period_s: p.period_s,
+            storm_duration_h: p.storm_duration_s / 3600.0,
+            waves_per_storm: p.waves_per_storm(),
+            hmax_ratio: HMAX_RATIO,
+            storms: p.storms,
+            seed: p.seed,
+            limits_m: p.limits_m.clone(),
+            rigid_block_mu: waves.rigid_block_mu(&structure.foundation),
+            design_wave: DesignWaveReport {
+                significant_height_m: h,
+                hmax_m: HMAX_RATIO * h,
+                period_s: t,
+                goda_sliding_safety_factor: goda_sliding_safety(structure, waves, h, t),
+            },
+            levels: r
+                .levels
+                .iter()
+                .map(|l| LevelReport::new(l, &p.limits_m, goda_sliding_safety(structure, waves, l.h13_m, p.period_s)))
+                .collect(),
+            fits: r
+                .fits
+                .iter()
+                .map(|f| LimitFitReport {
+                    limit_m: f.limit_m,
+                    dynamic: FitReport::from(&f.dynamic),
+                    rigid_block: FitReport::from(&f.rigid_block),
+                })
+                .collect(),
+        }
+    }
+}

@@ -1,0 +1,265 @@
+//! `caisson loads`: `loads.json` (keys in docs/waves.md). Per metre of breakwater; kN, kPa, m.
+
+use super::{kn, Provenance};
+use crate::analysis::train::WaveSetup;
+use crate::loads::model::WaveLoads;
+use crate::loads::regime::Regime;
+use crate::loads::risetime::RiseTimeModel;
+use crate::loads::safety::SafetyFactors;
+use serde::Serialize;
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WaveInfo {
+    pub kind: &'static str,
+    pub incident_height_m: f64,
+    pub height_at_toe_m: f64,
+    pub limited_at_toe: bool,
+    pub toe_breaker_height_m: f64,
+    pub period_s: f64,
+    pub angle_deg: f64,
+    pub toe_wavelength_m: f64,
+    pub deep_water_wavelength_m: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SiteInfo {
+    pub water_density_kg_per_m3: f64,
+    pub depth_at_toe_m: f64,
+    pub depth_at_wall_m: f64,
+    pub base_depth_m: f64,
+    pub crest_freeboard_m: f64,
+    pub width_m: f64,
+    pub length_m: f64,
+    pub seabed_slope: f64,
+    pub berm_width_m: Option<f64>,
+    pub depth_5h_seaward_m: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RegimeInfo {
+    pub regime: Regime,
+    pub forced: bool,
+    pub breaker_criterion: &'static str,
+    pub breaker_height_at_wall_m: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GodaInfo {
+    pub alpha1: f64,
+    pub alpha2: f64,
+    pub alpha3: f64,
+    pub alpha_i: Option<f64>,
+    pub alpha_star: f64,
+    pub eta_star_m: f64,
+    pub p1_kpa: f64,
+    pub p2_kpa: f64,
+    pub p3_kpa: f64,
+    pub p4_kpa: f64,
+    pub pu_kpa: f64,
+    pub horizontal_force_kn_per_m: f64,
+    pub horizontal_moment_base_kn_m_per_m: f64,
+    pub horizontal_lever_m: f64,
+    pub uplift_force_kn_per_m: f64,
+    pub uplift_moment_heel_kn_m_per_m: f64,
+    pub uplift_from_heel_m: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SainflouInfo {
+    pub depth_m: f64,
+    pub h0_m: f64,
+    pub pb_kpa: f64,
+    pub crest_force_kn_per_m: f64,
+    pub crest_moment_base_kn_m_per_m: f64,
+    pub trough_base_pressure_kpa: f64,
+    pub trough_force_kn_per_m: f64,
+    pub trough_moment_base_kn_m_per_m: f64,
+    pub trough_lever_m: f64,
+    pub suction_uplift_kn_per_m: f64,
+    pub suction_moment_heel_kn_m_per_m: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ImpactInfo {
+    pub applied: bool,
+    pub breaking_depth_m: Option<f64>,
+    pub breaker_height_m: f64,
+    pub reduction: f64,
+    pub alpha_max: f64,
+    pub a_imp: f64,
+    pub horizontal_force_kn_per_m: f64,
+    pub p1_kpa: f64,
+    pub horizontal_moment_base_kn_m_per_m: f64,
+    pub horizontal_lever_m: f64,
+    pub uplift_force_kn_per_m: f64,
+    pub uplift_moment_heel_kn_m_per_m: f64,
+    pub uplift_from_heel_m: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RiseTimeInfo {
+    pub model: RiseTimeModel,
+    pub f_star: f64,
+    pub impulsive: bool,
+    pub median_s: Option<f64>,
+    pub log_std: Option<f64>,
+    pub max_s: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TimeHistoryInfo {
+    pub load_shape: &'static str,
+    pub alpha_qs: f64,
+    pub duration_ratio: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SafetyInfo {
+    pub mu: f64,
+    pub weight_in_water_kn_per_m: f64,
+    pub sliding: Option<f64>,
+    pub overturning: Option<f64>,
+    pub heel_pressure_kpa: Option<f64>,
+    pub resultant_from_heel_m: Option<f64>,
+}
+
+/// A generated force history (`--history`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HistoryInfo {
+    pub waves: usize,
+    pub seed: u64,
+    pub rise_times_s: Vec<Option<f64>>,
+    pub csv: &'static str,
+    pub svg: &'static str,
+}
+
+/// The loads of one wave on the caisson.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoadsReport {
+    #[serde(flatten)]
+    pub provenance: Provenance,
+    pub wave: WaveInfo,
+    pub site: SiteInfo,
+    pub regime: RegimeInfo,
+    pub goda: GodaInfo,
+    pub sainflou: SainflouInfo,
+    pub impact: ImpactInfo,
+    pub rise_time: RiseTimeInfo,
+    pub time_history: TimeHistoryInfo,
+    pub safety: SafetyInfo,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub history: Option<HistoryInfo>,
+}
+
+impl LoadsReport {
+    /// The report of the loads `l` of the scenario's wave at the site of `waves`, with Goda's
+    /// static checks `sf` for a caisson of weight in water `weight_in_water_n` (total, N) and
+    /// friction `mu`.
+    pub fn new(waves: &WaveSetup, l: &WaveLoads, sf: &SafetyFactors, weight_in_water_n: f64, mu: f64) -> Self {
+        let site = &waves.model.site;
+        let o = &waves.model.options;
+        let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
+        let breaking = l.regime.regime == Regime::Breaking;
+        LoadsReport {
+            provenance: Provenance::CURRENT,
+            wave: WaveInfo {
+                kind: "regular",
+                incident_height_m: l.height_incident_m,
+                height_at_toe_m: l.height_m,
+                limited_at_toe: l.limited_at_toe,
+                toe_breaker_height_m: l.toe_breaker_height_m,
+                period_s: l.period_s,
+                angle_deg: o.angle_rad.to_degrees(),
+                toe_wavelength_m: l.toe_wavelength_m,
+                deep_water_wavelength_m: l.deep_water_wavelength_m,
+            },
+            site: SiteInfo {
+                water_density_kg_per_m3: site.rho_w,
+                depth_at_toe_m: site.depth_at_toe_m,
+                depth_at_wall_m: site.depth_at_wall_m,
+                base_depth_m: site.base_depth_m,
+                crest_freeboard_m: site.crest_freeboard_m,
+                width_m: site.width_m,
+                length_m: site.length_m,
+                seabed_slope: site.seabed_slope,
+                berm_width_m: site.berm_width_m,
+                depth_5h_seaward_m: l.depth_5h_seaward_m,
+            },
+            regime: RegimeInfo {
+                regime: l.regime.regime,
+                forced: l.regime.forced,
+                breaker_criterion: o.criterion.name(),
+                breaker_height_at_wall_m: l.regime.breaker_height_at_wall_m,
+            },
+            goda: GodaInfo {
+                alpha1: g.alpha1,
+                alpha2: g.alpha2,
+                alpha3: g.alpha3,
+                alpha_i: g.alpha_i,
+                alpha_star: g.alpha_star,
+                eta_star_m: g.eta_star_m,
+                p1_kpa: kn(g.p1_pa),
+                p2_kpa: kn(g.p2_pa),
+                p3_kpa: kn(g.p3_pa),
+                p4_kpa: kn(g.p4_pa),
+                pu_kpa: kn(g.pu_pa),
+                horizontal_force_kn_per_m: kn(g.horizontal_force_n_per_m),
+                horizontal_moment_base_kn_m_per_m: kn(g.horizontal_moment_base_nm_per_m),
+                horizontal_lever_m: g.horizontal_lever_m,
+                uplift_force_kn_per_m: kn(g.uplift_force_n_per_m),
+                uplift_moment_heel_kn_m_per_m: kn(g.uplift_moment_heel_nm_per_m),
+                uplift_from_heel_m: g.uplift_from_heel_m,
+            },
+            sainflou: SainflouInfo {
+                depth_m: l.sainflou_depth_m,
+                h0_m: s.h0_m,
+                pb_kpa: kn(s.pb_pa),
+                crest_force_kn_per_m: kn(s.crest_force_n_per_m),
+                crest_moment_base_kn_m_per_m: kn(s.crest_moment_base_nm_per_m),
+                trough_base_pressure_kpa: kn(s.trough_base_pressure_pa),
+                trough_force_kn_per_m: kn(s.trough_force_n_per_m),
+                trough_moment_base_kn_m_per_m: kn(s.trough_moment_base_nm_per_m),
+                trough_lever_m: s.trough_lever_m,
+                suction_uplift_kn_per_m: kn(s.suction_uplift_n_per_m),
+                suction_moment_heel_kn_m_per_m: kn(s.suction_moment_heel_nm_per_m),
+            },
+            impact: ImpactInfo {
+                applied: breaking && l.rise_time.is_some(),
+                breaking_depth_m: i.breaking_depth_m,
+                breaker_height_m: i.breaker_height_m,
+                reduction: i.reduction,
+                alpha_max: o.alpha_max,
+                a_imp: o.a_imp,
+                horizontal_force_kn_per_m: kn(i.horizontal_force_n_per_m),
+                p1_kpa: kn(i.p1_pa),
+                horizontal_moment_base_kn_m_per_m: kn(i.horizontal_moment_base_nm_per_m),
+                horizontal_lever_m: i.horizontal_lever_m,
+                uplift_force_kn_per_m: kn(i.uplift_force_n_per_m),
+                uplift_moment_heel_kn_m_per_m: kn(i.uplift_moment_heel_nm_per_m),
+                uplift_from_heel_m: i.uplift_from_heel_m,
+            },
+            rise_time: RiseTimeInfo {
+                model: o.rise_time.model,
+                f_star: l.f_star,
+                impulsive: l.rise_time.is_some(),
+                median_s: l.rise_time.map(|d| d.median_clamped_s()),
+                log_std: l.rise_time.map(|d| d.log_std),
+                max_s: 0.25 * l.period_s,
+            },
+            time_history: TimeHistoryInfo {
+                load_shape: if breaking { o.load_shape.name() } else { "eq29" },
+                alpha_qs: if breaking { o.alpha_qs_breaking } else { o.alpha_qs_nonbreaking },
+                duration_ratio: o.duration_ratio,
+            },
+            safety: SafetyInfo {
+                mu,
+                weight_in_water_kn_per_m: kn(weight_in_water_n / site.length_m),
+                sliding: sf.sliding,
+                overturning: sf.overturning,
+                heel_pressure_kpa: sf.heel_pressure_pa.map(kn),
+                resultant_from_heel_m: sf.resultant_from_heel_m,
+            },
+            history: None,
+        }
+    }
+}

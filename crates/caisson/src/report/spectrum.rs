@@ -1,0 +1,61 @@
+//! `caisson spectrum`: `spectrum.json` (keys in docs/cli.md).
+
+use super::{kn, Provenance};
+use crate::analysis::spectrum::SpectrumPoint;
+use crate::loads::pulse::TrianglePulse;
+use serde::Serialize;
+
+/// One point of the spectrum.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SpectrumPointReport {
+    pub tr_over_t0: f64,
+    pub rise_time_s: f64,
+    pub psi: f64,
+    pub psi_closed_form: f64,
+    pub permanent_sliding_m: f64,
+    pub shimosako_sliding_m: f64,
+    pub rigid_block_sliding_m: f64,
+    pub max_horizontal_reaction_kn: f64,
+}
+
+impl From<&SpectrumPoint> for SpectrumPointReport {
+    fn from(p: &SpectrumPoint) -> Self {
+        SpectrumPointReport {
+            tr_over_t0: p.tr_over_t0,
+            rise_time_s: p.rise_time_s,
+            psi: p.psi,
+            psi_closed_form: p.psi_closed_form,
+            permanent_sliding_m: p.permanent_sliding_m,
+            shimosako_sliding_m: p.shimosako_sliding_m,
+            rigid_block_sliding_m: p.rigid_block_sliding_m,
+            max_horizontal_reaction_kn: kn(p.max_horizontal_reaction_n),
+        }
+    }
+}
+
+/// The shock spectrum of a caisson under a triangular pulse.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SpectrumReport {
+    #[serde(flatten)]
+    pub provenance: Provenance,
+    pub natural_period_s: f64,
+    pub peak_horizontal_kn: f64,
+    pub peak_uplift_kn: f64,
+    pub static_sliding_resistance_kn: f64,
+    pub points: Vec<SpectrumPointReport>,
+}
+
+impl SpectrumReport {
+    /// The report of `points` swept with the pulse `base` on a caisson of natural period
+    /// `natural_period_s` and static sliding resistance μ_s W' (N).
+    pub fn new(natural_period_s: f64, base: &TrianglePulse, resistance_n: f64, points: &[SpectrumPoint]) -> Self {
+        SpectrumReport {
+            provenance: Provenance::CURRENT,
+            natural_period_s,
+            peak_horizontal_kn: kn(base.peak.fx_n),
+            peak_uplift_kn: kn(base.peak.fy_n),
+            static_sliding_resistance_kn: kn(resistance_n),
+            points: points.iter().map(SpectrumPointReport::from).collect(),
+        }
+    }
+}
