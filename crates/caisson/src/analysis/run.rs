@@ -11,6 +11,31 @@
 //!   horizontal dashpot); its peak is the "effective design load" of the seed.
 //! * **Static sliding resistance** (seed Eq. 9): μ_s (W' − F_y(t)).
 //! * **Slip event**: a step at which the caisson goes from no spring slipping to at least one.
+//!
+//! ```
+//! // The seed's Table 5 caisson under a triangular impact of 2.4 × its sliding resistance
+//! // (examples/table5_triangle.toml): it slides a few millimetres.
+//! use caisson::analysis::run::run;
+//! use caisson::scenario::Scenario;
+//! use std::path::Path;
+//! let text = r#"
+//! [caisson]
+//! width_m = 0.78
+//! height_m = 1.12
+//! base_depth_m = 0.8
+//! weight_in_water_kn = 8.24
+//! [foundation]
+//! e100_kpa = 3.5e5
+//! [load]
+//! kind = "triangle"
+//! peak_horizontal_kn = 11.9
+//! rise_time_s = 0.05
+//! "#;
+//! let sc = Scenario::from_toml(text, Path::new("doc.toml"), Path::new(".")).unwrap();
+//! let r = run(sc.structure(), sc.load.as_ref().unwrap(), sc.duration_s, false).unwrap();
+//! assert!(r.summary.slip_events > 0 && r.summary.permanent_sliding_m > 0.0);
+//! assert!(r.summary.max_horizontal_reaction_n > 0.6 * 8240.0);
+//! ```
 
 use super::Structure;
 use crate::dynamics::{Model, Observer, Simulation, SolveError, SolverStats, StepView};

@@ -559,3 +559,111 @@ impl Simulation {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::foundation::{AddedMassSpec, FoundationSpec};
+    use crate::loads::WaveForce;
+    use crate::structure::{CaissonSpec, MassMatrix, MassSpec};
+
+    /// The seed's Table 5 caisson on its Table 6 foundation with the given dashpot placements.
+    fn simulation(mode: DampingMode, vertical: VerticalDamping) -> Simulation {
+        let caisson = CaissonSpec {
+            width_m: 0.78,
+            length_m: 1.0,
+            height_m: 1.12,
+            base_depth_m: 0.8,
+            mass: MassSpec::WeightInWater { weight_in_water_n: 8240.0 },
+            cog_height_m: None,
+            inertia_cog_kg_m2: None,
+            mass_matrix: MassMatrix::Coupled,
+        }
+        .build(1000.0)
+        .unwrap();
+        let foundation = FoundationSpec {
+            kx_n_per_m: Some(1.511e8),
+            ky_n_per_m: Some(1.404e8),
+            damping_ns_per_m: Some(5.98e5),
+            damping_mode: mode,
+            vertical_damping: vertical,
+            added_mass: AddedMassSpec::Off,
+            ..FoundationSpec::default()
+        }
+        .build(&caisson, 1000.0)
+        .unwrap();
+        Simulation::new(Model::new(&caisson, &foundation), SolverParams::default(), &WaveForceAt(WaveForce::ZERO))
+    }
+
+    struct WaveForceAt(WaveForce);
+    impl LoadHistory for WaveForceAt {
+        fn at(&self, _: f64) -> WaveForce {
+            self.0
+        }
+    }
+
+    /// The tangent of the assembled resisting force (springs with their shear, normal and
+    /// rotation coupling, and the per-spring dashpots of the `elastic` and `springs` placements)
+    /// against central finite differences, for both horizontal and both vertical dashpot
+    /// placements, at a state where the caisson is rotated so that the two seaward springs are
+    /// lifted, some springs stick and some slip (every spring well away from a kink: the
+    /// response is linear or bilinear there, so the differences are exact to rounding). The
+    /// velocity follows the displacement as in a Newmark step, v = v0 + γ/(β h) (u − u0).
+    #[test]
+    fn assembled_tangent_matches_finite_differences() {
+        let h = 1e-4;
+        let mut checked = 0;
+        for mode in [DampingMode::Total, DampingMode::Elastic] {
+            for vertical in [VerticalDamping::Seed, VerticalDamping::Springs] {
+                let mut sim = simulation(mode, vertical);
+                let law = sim.model.law;
+                let settle = sim.model.static_settlement_m();
+                // Committed state: shifted shoreward, springs at assorted slip positions.
+                sim.state.u = [2e-4, -settle, 0.0];
+                for (i, s) in sim.state.springs.iter_mut().enumerate() {
+                    let e = law.stick_limit_m * [0.3, -0.4, 2.5, -3.0, 0.1, 1.8, -0.2, 4.0, -2.2, 0.5][i];
+                    *s = SpringState { slip_m: sim.state.u[0] - e, sliding: i % 3 == 0 };
+                }
+                let x = sim.model.x_m.clone();
+                // Trial: a small further shoreward push (the elastic-mode dashpot c/(n h) turns
+                // large pushes into slip), settlement, and a rotation lifting the two
+                // seaward springs (u_y,i = u_y − θ x_i > 0 for x_i < −0.25 B).
+                let theta = settle / (0.3 * 0.78);
+                let u0 = [2.0e-4 + 1e-3 * law.stick_limit_m, -settle - 1e-7, theta];
+                assert!(x.iter().filter(|&&xi| u0[1] - u0[2] * xi > 0.0).count() == 2, "two springs lifted");
+                let v0 = [0.01, -0.002, 0.03];
+                let dv_du = sim.solver.gamma / (sim.solver.beta * h);
+                let (_, k) = sim.assemble(u0, v0, h);
+                let contact = sim.trial.iter().filter(|r| r.normal_n > 0.0);
+                let sliding = contact.clone().filter(|r| r.state.sliding).count();
+                let sticking = contact.filter(|r| !r.state.sliding).count();
+                assert!(
+                    sliding >= 2 && sticking >= 2 && sliding + sticking == 8,
+                    "{sliding} sliding, {sticking} sticking"
+                );
+                let scale = k.abs().max();
+                for j in 0..3 {
+                    let eps = if j == 2 { 1e-9 / 0.78 } else { 1e-9 };
+                    let mut f_at = |sign: f64| {
+                        let mut u = u0;
+                        u[j] += sign * eps;
+                        let mut v = v0;
+                        v[j] += sign * eps * dv_du;
+                        sim.assemble(u, v, h).0
+                    };
+                    let fd = (f_at(1.0) - f_at(-1.0)) / (2.0 * eps);
+                    for r in 0..3 {
+                        assert!(
+                            (fd[r] - k[(r, j)]).abs() <= 1e-6 * scale,
+                            "{mode:?}/{vertical:?}: ∂f_{r}/∂q_{j} = {} by differences, {} assembled",
+                            fd[r],
+                            k[(r, j)]
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 4 * 9);
+    }
+}
