@@ -31,6 +31,9 @@ pub enum SeriesError {
 pub struct ForceSeries {
     t_s: Vec<f64>,
     f: Vec<WaveForce>,
+    /// Samples per second on average, (n − 1)/(t_last − t_first): the first guess of the sample
+    /// after a time (exact for evenly spaced samples).
+    rate_per_s: f64,
 }
 
 impl ForceSeries {
@@ -77,13 +80,34 @@ impl ForceSeries {
         if t_s.len() < 2 {
             return Err(SeriesError::TooShort { rows: t_s.len() });
         }
-        Ok(ForceSeries { t_s, f })
+        Ok(Self::from_samples(t_s, f))
     }
 
-    /// Build directly from samples (SI). Times must be strictly increasing.
+    /// Build directly from samples (SI): at least two, times strictly increasing.
     pub fn from_samples(t_s: Vec<f64>, f: Vec<WaveForce>) -> Self {
-        assert_eq!(t_s.len(), f.len());
-        ForceSeries { t_s, f }
+        assert!(t_s.len() == f.len() && t_s.len() >= 2, "two samples or more, one force per time");
+        let rate_per_s = (t_s.len() - 1) as f64 / (t_s[t_s.len() - 1] - t_s[0]);
+        ForceSeries { t_s, f, rate_per_s }
+    }
+
+    /// The index of the first sample strictly after `t_s` (`t_s.len()` if none): the binary
+    /// search's answer, found from a guess by the mean sampling rate and a short walk (evenly
+    /// spaced samples need at most one step), or by bisection if the walk is long.
+    #[inline]
+    fn index_after(&self, t_s: f64) -> usize {
+        let n = self.t_s.len();
+        let guess = ((t_s - self.t_s[0]) * self.rate_per_s).floor();
+        let mut j = if guess.is_finite() { (guess.max(0.0) as usize + 1).min(n) } else { 0 };
+        for _ in 0..4 {
+            if j > 0 && self.t_s[j - 1] > t_s {
+                j -= 1;
+            } else if j < n && self.t_s[j] <= t_s {
+                j += 1;
+            } else {
+                return j;
+            }
+        }
+        self.t_s.partition_point(|&x| x <= t_s)
     }
 
     pub fn first_time_s(&self) -> f64 {
@@ -103,8 +127,7 @@ impl LoadHistory for ForceSeries {
         if t_s >= self.t_s[n - 1] {
             return self.f[n - 1];
         }
-        // Binary search: index of the first sample strictly after t.
-        let j = self.t_s.partition_point(|&x| x <= t_s);
+        let j = self.index_after(t_s);
         let (t0, t1) = (self.t_s[j - 1], self.t_s[j]);
         let w = (t_s - t0) / (t1 - t0);
         self.f[j - 1].scaled(1.0 - w) + self.f[j].scaled(w)
@@ -113,14 +136,34 @@ impl LoadHistory for ForceSeries {
         Some(self.last_time_s())
     }
     fn next_breakpoint_s(&self, t_s: f64) -> f64 {
-        let j = self.t_s.partition_point(|&x| x <= t_s);
-        self.t_s.get(j).copied().unwrap_or(f64::INFINITY)
+        self.t_s.get(self.index_after(t_s)).copied().unwrap_or(f64::INFINITY)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The guessed index is the binary search's, for even and uneven sampling, at and between
+    /// samples and beyond both ends.
+    #[test]
+    fn the_index_guess_is_the_binary_search() {
+        let even: Vec<f64> = (0..1000).map(|k| 0.01 * k as f64).collect();
+        let uneven: Vec<f64> = (0..1000).map(|k| (k as f64).powf(1.7) * 1e-3).collect();
+        let mut checked = 0;
+        for t in [even, uneven] {
+            let s = ForceSeries::from_samples(t.clone(), vec![WaveForce::ZERO; t.len()]);
+            let (lo, hi) = (t[0] - 1.0, t[t.len() - 1] + 1.0);
+            for k in 0..20_000 {
+                let x = lo + (hi - lo) * k as f64 / 19_999.0;
+                for x in [x, t[k % t.len()]] {
+                    assert_eq!(s.index_after(x), t.partition_point(|&v| v <= x), "t = {x}");
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 80_000);
+    }
 
     #[test]
     fn interpolates_linearly_and_holds_ends() {
