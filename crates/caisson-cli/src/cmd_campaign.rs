@@ -24,7 +24,7 @@ pub fn load_campaign(path: &Path, damping_mode: Option<&str>) -> Result<Campaign
             "elastic" => DampingMode::Elastic,
             _ => return Err(input_err(format!("--damping-mode \"{m}\": must be \"total\" or \"elastic\""))),
         };
-        sc = sc.with_foundation(|f| f.damping_mode = mode).map_err(input_err)?;
+        sc = sc.with_foundation(|f| f.damping_mode = Some(mode)).map_err(input_err)?;
     }
     let mut c = sc.campaign().map_err(input_err)?;
     if sc.campaign.as_ref().is_some_and(|s| s.title.is_none()) {

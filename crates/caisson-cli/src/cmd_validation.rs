@@ -55,7 +55,7 @@ fn table5_pulse(mode: DampingMode, peak_kn: f64, mu: f64, lever_m: f64) -> Resul
             s.with_foundation(|f| {
                 f.mu_static = mu;
                 f.mu_dynamic = Some(mu);
-                f.damping_mode = mode;
+                f.damping_mode = Some(mode);
             })
         })
         .map_err(input_err)?;
@@ -74,7 +74,7 @@ fn run_spectrum(s: &Scenario, ratios: &[f64]) -> Result<Vec<SpectrumPoint>> {
 /// at its nominal height (no height variability).
 fn campaign(text: &str, mode: DampingMode, nominal_heights: bool) -> Result<Vec<ConditionResult>> {
     let mut sc = Scenario::from_toml(text, Path::new("campaign.toml"), Path::new("."))
-        .and_then(|s| s.with_foundation(|f| f.damping_mode = mode))
+        .and_then(|s| s.with_foundation(|f| f.damping_mode = Some(mode)))
         .map_err(input_err)?;
     if nominal_heights {
         if let Some(TrainKind::Regular { variability, .. }) = sc.waves.as_mut().map(|w| &mut w.train.kind) {
@@ -240,7 +240,7 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let ratios = log_space(0.05, 5.0, 30);
     let undamped = table5_pulse(DampingMode::Total, 2.0, 10.0, 0.0)?
         .with_foundation(|f| f.damping_ns_per_m = Some(0.0))
-        .and_then(|s| s.with_caisson(|c| c.mass_matrix = MassMatrix::Diagonal))
+        .and_then(|s| s.with_caisson(|c| c.mass_matrix = Some(MassMatrix::Diagonal)))
         .map_err(input_err)?;
     let psi = run_spectrum(&undamped, &ratios)?;
     let worst = psi.iter().map(|p| (p.psi / p.psi_closed_form - 1.0).abs()).fold(0.0, f64::max);

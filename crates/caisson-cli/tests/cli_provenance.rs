@@ -65,7 +65,7 @@ fn every_json_output_records_the_versions() {
     for args in commands {
         let out = caisson().args(args).assert().success().get_output().stdout.clone();
         let doc: Value = serde_json::from_slice(&out).unwrap_or_else(|e| panic!("{args:?}: {e}"));
-        assert_eq!(versions(&doc), (env!("CARGO_PKG_VERSION").to_string(), 1), "{args:?}");
+        assert_eq!(versions(&doc), (caisson::VERSION.to_string(), caisson::RESULTS_VERSION as u64), "{args:?}");
         checked += 1;
     }
     assert_eq!(checked, 7);
@@ -84,9 +84,12 @@ fn resume_refuses_another_results_version_and_names_it() {
     let cp = out.join("checkpoint.jsonl");
     let text = std::fs::read_to_string(&cp).unwrap();
     let header: Value = serde_json::from_str(text.lines().next().unwrap()).unwrap();
-    assert_eq!(header["results_version"], 1);
-    assert_eq!(header["caisson_version"], env!("CARGO_PKG_VERSION"));
-    std::fs::write(&cp, text.replacen("\"results_version\":1", "\"results_version\":0", 1)).unwrap();
+    let (current, old) = (caisson::RESULTS_VERSION, caisson::RESULTS_VERSION - 1);
+    assert_eq!(header["results_version"], current);
+    assert_eq!(header["caisson_version"], caisson::VERSION);
+    let edited = text.replacen(&format!("\"results_version\":{current}"), &format!("\"results_version\":{old}"), 1);
+    assert_ne!(edited, text);
+    std::fs::write(&cp, edited).unwrap();
     let o = caisson()
         .args(["design", design.to_str().unwrap(), "--lives", "3", "--resume", "--out", out.to_str().unwrap()])
         .assert()
@@ -95,7 +98,9 @@ fn resume_refuses_another_results_version_and_names_it() {
         .clone();
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
-        err.starts_with("Error:") && err.contains("results version 0") && err.contains("results version 1"),
+        err.starts_with("Error:")
+            && err.contains(&format!("results version {old}"))
+            && err.contains(&format!("results version {current}")),
         "{err}"
     );
     assert!(!out.join("design.json").exists());

@@ -577,20 +577,20 @@ mod tests {
             mass: MassSpec::WeightInWater { weight_in_water_n: 8240.0 },
             cog_height_m: None,
             inertia_cog_kg_m2: None,
-            mass_matrix: MassMatrix::Coupled,
+            mass_matrix: Some(MassMatrix::Coupled),
         }
-        .build(1000.0)
+        .build(1000.0, crate::Profile::Consistent)
         .unwrap();
         let foundation = FoundationSpec {
             kx_n_per_m: Some(1.511e8),
             ky_n_per_m: Some(1.404e8),
             damping_ns_per_m: Some(5.98e5),
-            damping_mode: mode,
-            vertical_damping: vertical,
+            damping_mode: Some(mode),
+            vertical_damping: Some(vertical),
             added_mass: AddedMassSpec::Off,
             ..FoundationSpec::default()
         }
-        .build(&caisson, 1000.0)
+        .build(&caisson, 1000.0, crate::Profile::Consistent)
         .unwrap();
         Simulation::new(Model::new(&caisson, &foundation), SolverParams::default(), &WaveForceAt(WaveForce::ZERO))
     }

@@ -24,20 +24,24 @@ pub use spring::{SpringLaw, SpringResponse, SpringState};
 
 use crate::check::{between, count, non_negative, positive, rule};
 use crate::structure::Caisson;
-use crate::ParamError;
+use crate::{ParamError, Profile};
 
 /// Where the horizontal foundation dashpot acts (PHYSICS.md §10 item 30).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DampingMode {
     /// On the caisson's total horizontal velocity, in parallel with the friction slider (seed
-    /// Eq. 15 as written).
+    /// Eq. 15 as written; profile `seed-2011`). While the caisson slides, the base shear is
+    /// μN + C v, above the friction force: at prototype scale the dashpot, not friction, limits
+    /// sliding (the run warns when it does).
     Total,
     /// In series with the slider: each contact spring's dashpot (C/n) acts beside its elastic
     /// spring, on the rate of its elastic deformation, and friction caps the force of both (a
     /// Kelvin element on the slider, [`spring`]), so that a sliding caisson is resisted by
-    /// friction, not by the dashpot. A lifted spring carries no damping. The validation report
-    /// (`docs/validation.md`) compares both placements; `Total` stays the default.
+    /// friction, not by the dashpot. A lifted spring carries no damping. Profile `consistent`
+    /// (the default): every independent implementation keeps radiation damping off the slip
+    /// (OpenSees `PySimple1`, Proteus `CaissonBody`, the SLAMMER coupled block), and the
+    /// rigid-plastic sliding models have no dashpot in the sliding phase.
     Elastic,
 }
 
@@ -73,7 +77,7 @@ pub struct FoundationSpec {
     /// Number of interface springs n (2 to 1000).
     pub springs: usize,
     pub mu_static: f64,
-    /// `None`: min(0.4, μ_s).
+    /// `None`: the profile's: μ_s (`consistent`), min(0.4, μ_s) (`seed-2011`).
     pub mu_dynamic: Option<f64>,
     pub soil: Option<Soil>,
     /// K_x, N/m (overrides the soil's).
@@ -84,13 +88,16 @@ pub struct FoundationSpec {
     pub damping_ns_per_m: Option<f64>,
     /// Factor on C for the vertical and rotational dashpots (seed: 10).
     pub vertical_damping_factor: f64,
-    pub damping_mode: DampingMode,
-    pub vertical_damping: VerticalDamping,
+    /// `None`: the profile's (`elastic` for `consistent`, `total` for `seed-2011`).
+    pub damping_mode: Option<DampingMode>,
+    /// `None`: the profile's (`springs` for `consistent`, `seed` for `seed-2011`).
+    pub vertical_damping: Option<VerticalDamping>,
     pub added_mass: AddedMassSpec,
 }
 
 impl Default for FoundationSpec {
-    /// The seed's defaults, without a soil or a stiffness (one of them must be set).
+    /// The seed's numbers (10 springs, μ_s = 0.6, 10 C), the profile's choices, no soil and no
+    /// stiffness (one of them must be set).
     fn default() -> Self {
         FoundationSpec {
             springs: 10,
@@ -101,21 +108,23 @@ impl Default for FoundationSpec {
             ky_n_per_m: None,
             damping_ns_per_m: None,
             vertical_damping_factor: 10.0,
-            damping_mode: DampingMode::Total,
-            vertical_damping: VerticalDamping::Seed,
+            damping_mode: None,
+            vertical_damping: None,
             added_mass: AddedMassSpec::Westergaard { depth_m: None },
         }
     }
 }
 
 impl FoundationSpec {
-    /// The foundation of `caisson` in water of density `rho_w` (kg/m³), every quantity checked.
-    pub fn build(&self, caisson: &Caisson, rho_w: f64) -> Result<Foundation, ParamError> {
+    /// The foundation of `caisson` in water of density `rho_w` (kg/m³), every quantity checked,
+    /// with the defaults of `profile`.
+    pub fn build(&self, caisson: &Caisson, rho_w: f64, profile: Profile) -> Result<Foundation, ParamError> {
         let springs = count("springs", self.springs, 2, 1000)?;
         let mu_static = between("mu_static", self.mu_static, 1e-6, 10.0)?;
-        let mu_dynamic = match self.mu_dynamic {
-            Some(v) => between("mu_dynamic", v, 1e-6, 10.0)?,
-            None => 0.4f64.min(mu_static),
+        let mu_dynamic = match (self.mu_dynamic, profile) {
+            (Some(v), _) => between("mu_dynamic", v, 1e-6, 10.0)?,
+            (None, Profile::Consistent) => mu_static,
+            (None, Profile::Seed2011) => 0.4f64.min(mu_static),
         };
         if mu_dynamic > mu_static {
             return Err(rule(
@@ -165,8 +174,14 @@ impl FoundationSpec {
             mu_dynamic,
             stiffness,
             vertical_damping_factor,
-            damping_mode: self.damping_mode,
-            vertical_damping: self.vertical_damping,
+            damping_mode: self.damping_mode.unwrap_or(match profile {
+                Profile::Consistent => DampingMode::Elastic,
+                Profile::Seed2011 => DampingMode::Total,
+            }),
+            vertical_damping: self.vertical_damping.unwrap_or(match profile {
+                Profile::Consistent => VerticalDamping::Springs,
+                Profile::Seed2011 => VerticalDamping::Seed,
+            }),
             added_mass,
         })
     }

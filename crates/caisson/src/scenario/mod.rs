@@ -28,7 +28,7 @@ use crate::dynamics::SolverParams;
 use crate::foundation::{Foundation, FoundationSpec};
 use crate::loads::LoadSpec;
 use crate::structure::{Caisson, CaissonSpec};
-use crate::ParamError;
+use crate::{ParamError, Profile};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
@@ -129,6 +129,8 @@ pub(crate) fn keyed(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct ScenarioFile {
+    #[serde(default)]
+    pub model: ModelTable,
     pub caisson: CaissonTable,
     #[serde(default)]
     pub foundation: FoundationTable,
@@ -141,6 +143,14 @@ pub struct ScenarioFile {
     pub campaign: Option<campaign::CampaignTable>,
     pub design: Option<design::DesignTable>,
     pub fragility: Option<fragility::FragilityTable>,
+}
+
+/// `[model]`: which reading of the seed sets the defaults.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct ModelTable {
+    /// `"consistent"` (default) or `"seed-2011"` ([`crate::Profile`]).
+    pub profile: Option<String>,
 }
 
 /// `[caisson]`: geometry and mass (PHYSICS.md §8.2).
@@ -163,8 +173,8 @@ pub struct CaissonTable {
     pub cog_height_m: Option<f64>,
     /// Rotational inertia about the centre of gravity, kg·m². Default a uniform block.
     pub inertia_kg_m2: Option<f64>,
-    /// `"coupled"` (exact rigid-body mass matrix about the base centre, default) or `"diagonal"`
-    /// (the seed's Eq. 24).
+    /// `"coupled"` (exact rigid-body mass matrix about the base centre) or `"diagonal"` (the
+    /// seed's Eq. 24). Default: the profile's.
     pub mass_matrix: Option<String>,
 }
 
@@ -280,6 +290,7 @@ pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
 /// wave site), so the two never disagree.
 #[derive(Debug, Clone)]
 pub struct Scenario {
+    profile: Profile,
     water_density_kg_per_m3: f64,
     caisson_spec: CaissonSpec,
     foundation_spec: FoundationSpec,
@@ -303,6 +314,19 @@ impl Scenario {
     /// relative file names (the force series).
     pub fn from_toml(text: &str, path: &Path, base_dir: &Path) -> Result<Scenario, ScenarioError> {
         validate::validate(&parse_str(text, path)?, base_dir)
+    }
+
+    /// The profile that sets the defaults (`[model] profile`).
+    pub fn profile(&self) -> Profile {
+        self.profile
+    }
+
+    /// The scenario under another profile: every choice the file left to the profile changes
+    /// (the keys it gave stay), and everything is rebuilt.
+    pub fn with_profile(mut self, profile: Profile) -> Result<Scenario, ScenarioError> {
+        self.profile = profile;
+        let (c, f) = (self.caisson_spec, self.foundation_spec);
+        self.rebuilt(c, f)
     }
 
     /// ρ_w, kg/m³.
@@ -359,10 +383,10 @@ impl Scenario {
         caisson_spec: CaissonSpec,
         foundation_spec: FoundationSpec,
     ) -> Result<Scenario, ScenarioError> {
-        let rho_w = self.water_density_kg_per_m3;
-        let caisson = caisson_spec.build(rho_w).map_err(|e| keyed("[caisson]", CAISSON_KEYS, e))?;
+        let (rho_w, profile) = (self.water_density_kg_per_m3, self.profile);
+        let caisson = caisson_spec.build(rho_w, profile).map_err(|e| keyed("[caisson]", CAISSON_KEYS, e))?;
         let foundation =
-            foundation_spec.build(&caisson, rho_w).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
+            foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
         if let Some(w) = self.waves.as_mut() {
             waves::place_caisson(&mut w.model.site, &caisson);
         }

@@ -14,6 +14,7 @@ use crate::loads::pulse::{StaticRamp, TrianglePulse};
 use crate::loads::series::ForceSeries;
 use crate::loads::{LoadSpec, WaveForce};
 use crate::structure::{Caisson, CaissonSpec, MassMatrix, MassSpec};
+use crate::Profile;
 use std::path::Path;
 
 type R<T> = Result<T, ScenarioError>;
@@ -56,10 +57,15 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         Some(v) => within("[water] density_kg_per_m3", v, 500.0, 2000.0, "kg/m³")?,
         None => 1000.0,
     };
+    let profile = match &f.model.profile {
+        Some(p) => choice("[model] profile", p, &Profile::ALL)?,
+        None => Profile::default(),
+    };
     let caisson_spec = caisson_spec(f)?;
-    let caisson = caisson_spec.build(rho_w).map_err(|e| keyed("[caisson]", CAISSON_KEYS, e))?;
+    let caisson = caisson_spec.build(rho_w, profile).map_err(|e| keyed("[caisson]", CAISSON_KEYS, e))?;
     let foundation_spec = foundation_spec(f)?;
-    let foundation = foundation_spec.build(&caisson, rho_w).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
+    let foundation =
+        foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
     let wave_setup = match f.waves {
         Some(_) => Some(waves::validate_waves(f, &caisson)?),
         None => None,
@@ -78,6 +84,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
     };
     let solver = validate_solver(f, duration_s)?;
     let mut sc = Scenario {
+        profile,
         water_density_kg_per_m3: rho_w,
         caisson_spec,
         foundation_spec,
@@ -132,10 +139,12 @@ fn caisson_spec(f: &ScenarioFile) -> R<CaissonSpec> {
         }
     };
     let mass_matrix = match &c.mass_matrix {
-        Some(s) => {
-            choice("[caisson] mass_matrix", s, &[("coupled", MassMatrix::Coupled), ("diagonal", MassMatrix::Diagonal)])?
-        }
-        None => MassMatrix::Coupled,
+        Some(s) => Some(choice(
+            "[caisson] mass_matrix",
+            s,
+            &[("coupled", MassMatrix::Coupled), ("diagonal", MassMatrix::Diagonal)],
+        )?),
+        None => None,
     };
     Ok(CaissonSpec {
         width_m,
@@ -201,19 +210,19 @@ fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
         damping_ns_per_m: kilo("damping_kns_per_m", t.damping_kns_per_m, "kN·s/m", true)?,
         vertical_damping_factor: t.vertical_damping_factor.unwrap_or(d.vertical_damping_factor),
         damping_mode: match &t.damping_mode {
-            Some(s) => choice(
+            Some(s) => Some(choice(
                 "[foundation] damping_mode",
                 s,
                 &[("total", DampingMode::Total), ("elastic", DampingMode::Elastic)],
-            )?,
+            )?),
             None => d.damping_mode,
         },
         vertical_damping: match &t.vertical_damping {
-            Some(s) => choice(
+            Some(s) => Some(choice(
                 "[foundation] vertical_damping",
                 s,
                 &[("seed", VerticalDamping::Seed), ("springs", VerticalDamping::Springs)],
-            )?,
+            )?),
             None => d.vertical_damping,
         },
         added_mass: if t.added_mass.unwrap_or(true) {

@@ -17,15 +17,17 @@
 //! m_c = W'/g + ρ_w B l h', with h' the base depth below still water.
 
 use crate::check::{between, positive, rule};
-use crate::{ParamError, G_M_PER_S2};
+use crate::{ParamError, Profile, G_M_PER_S2};
 
 /// How the rigid-body mass matrix is formed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum MassMatrix {
-    /// Exact rigid-body coupling between u_x and θ about the base centre (default).
+    /// Exact rigid-body coupling between u_x and θ about the base centre (profile `consistent`).
     Coupled,
-    /// The seed's diagonal form (Eq. 24).
+    /// The seed's diagonal form (Eq. 24; profile `seed-2011`). Its θ entry is the inertia about
+    /// the base, I_G + m y_G² (+ the water's), not the seed's m_c + m_hyd,θ, which is not an
+    /// inertia (PHYSICS.md §10 item 9).
     Diagonal,
 }
 
@@ -59,12 +61,14 @@ pub struct CaissonSpec {
     pub cog_height_m: Option<f64>,
     /// I_G, kg·m² about the centre of gravity; `None`: a uniform block, m (B² + h²)/12.
     pub inertia_cog_kg_m2: Option<f64>,
-    pub mass_matrix: MassMatrix,
+    /// `None`: the profile's (coupled for `consistent`, diagonal for `seed-2011`).
+    pub mass_matrix: Option<MassMatrix>,
 }
 
 impl CaissonSpec {
-    /// The caisson in water of density `rho_w` (kg/m³), every quantity checked.
-    pub fn build(&self, rho_w: f64) -> Result<Caisson, ParamError> {
+    /// The caisson in water of density `rho_w` (kg/m³), every quantity checked, with the
+    /// defaults of `profile`.
+    pub fn build(&self, rho_w: f64, profile: Profile) -> Result<Caisson, ParamError> {
         let width_m = positive("width_m", self.width_m)?;
         let length_m = positive("length_m", self.length_m)?;
         let height_m = positive("height_m", self.height_m)?;
@@ -114,7 +118,10 @@ impl CaissonSpec {
             weight_in_water_n,
             cog_height_m,
             inertia_cog_kg_m2,
-            mass_matrix: self.mass_matrix,
+            mass_matrix: self.mass_matrix.unwrap_or(match profile {
+                Profile::Consistent => MassMatrix::Coupled,
+                Profile::Seed2011 => MassMatrix::Diagonal,
+            }),
         })
     }
 
