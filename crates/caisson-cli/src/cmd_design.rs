@@ -1,5 +1,5 @@
 //! `caisson design FILE.toml [--json] [--out DIR] [--threads N] [--resume] [--brute-force]`: the
-//! lifetime Monte Carlo of performance-based design (PHYSICS.md §6.4), lives in parallel, with a
+//! lifetime Monte Carlo of performance-based design (docs/model.md §6.4), lives in parallel, with a
 //! checkpoint that keeps every finished life.
 //!
 //! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the

@@ -1,5 +1,5 @@
 //! `caisson fragility FILE.toml [--json] [--out DIR] [--threads N]`: fragility curves for sliding
-//! (PHYSICS.md §7). For each H1/3 of the grid, many storms through the dynamic model and the
+//! (docs/model.md §7). For each H1/3 of the grid, many storms through the dynamic model and the
 //! rigid block; the share of storms whose sliding exceeds each limit; the lognormal curve fitted
 //! by maximum likelihood. A table, JSON (keys in docs/fragility.md), CSV and a plot of the points
 //! with their fitted curves.

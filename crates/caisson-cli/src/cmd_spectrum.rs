@@ -80,7 +80,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
                 p.max_horizontal_reaction_n / 1e3
             );
         }
-        crate::sayln!("Ψ closed: undamped SDOF (PHYSICS.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
+        crate::sayln!("Ψ closed: undamped SDOF (docs/model.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
     }
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;

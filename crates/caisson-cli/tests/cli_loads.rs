@@ -1,5 +1,5 @@
 //! End-to-end tests of `caisson loads`: the JSON keys of docs/waves.md with the values of
-//! `../shared/PHYSICS.md` §11, §2.4, §5.1 for the PARI examples; the history files; and bad
+//! docs/model.md §11, §2.4, §5.1 for the PARI examples; the history files; and bad
 //! inputs, each a clear `Error:` naming the key (exit code 2, no panic).
 
 use assert_cmd::Command;
@@ -28,11 +28,11 @@ fn num(v: &Value, path: &str) -> f64 {
     x.as_f64().unwrap_or_else(|| panic!("{path} = {x} is not a number"))
 }
 
-/// Within max(rel, half a unit of the last printed digit) of the PHYSICS.md value.
+/// Within max(rel, half a unit of the last printed digit) of the docs/model.md value.
 fn close(v: &Value, path: &str, want: f64, rel: f64, decimals: i32) {
     let got = num(v, path);
     let tol = (rel * want.abs()).max(0.5 * 10f64.powi(-decimals));
-    assert!((got - want).abs() <= tol, "{path}: got {got}, PHYSICS.md {want}");
+    assert!((got - want).abs() <= tol, "{path}: got {got}, docs/model.md {want}");
 }
 
 #[test]

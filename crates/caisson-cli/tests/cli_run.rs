@@ -417,12 +417,12 @@ fn triangle_example_reports_the_contract_keys_and_the_table6_foundation() {
     let j = run_json(&["run", "examples/table5_triangle.toml", "--json"]);
     assert_contract_keys(&j);
 
-    // Seed Table 6 from the Table 5 inputs (PHYSICS.md §8.2), 1 %.
+    // Seed Table 6 from the Table 5 inputs (docs/model.md §8.2), 1 %.
     within_rel("K_x (kN/m)", num(&j, "foundation.kx_kn_per_m"), 1.511e5, 0.01);
     within_rel("K_y (kN/m)", num(&j, "foundation.ky_kn_per_m"), 1.404e5, 0.01);
     within_rel("C (kN·s/m), Eq. 22", num(&j, "foundation.damping_kns_per_m"), 598.0, 0.01);
     within_rel("mass in air (kg)", num(&j, "foundation.mass_kg"), 1464.0, 0.01);
-    // Added mass 0.543 ρ_w d² l = 0.543 × 1000 × 0.8² (PHYSICS.md §8.3), 1 %.
+    // Added mass 0.543 ρ_w d² l = 0.543 × 1000 × 0.8² (docs/model.md §8.3), 1 %.
     within_rel("added mass (kg)", num(&j, "foundation.added_mass_kg"), 0.543 * 1000.0 * 0.64, 0.01);
     // Static sliding resistance μ_s W' = 0.6 × 8.24 kN, to 1e-9 kN.
     let resistance = num(&j, "foundation.static_sliding_resistance_kn");

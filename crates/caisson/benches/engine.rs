@@ -12,7 +12,7 @@ use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::path::Path;
 
 /// A regular non-breaking wave train in the shape of seed Eq. 29: 0.8 × Goda on the crest
-/// half, Sainflou on the trough half (PARI H = 0.569 m values, PHYSICS.md §11 and §2.4).
+/// half, Sainflou on the trough half (PARI H = 0.569 m values, docs/model.md §11 and §2.4).
 struct RegularTrain;
 
 impl LoadHistory for RegularTrain {

@@ -2,7 +2,7 @@
 //!
 //! Dynamic sliding of caisson breakwaters under breaking and non-breaking waves: the model of
 //! Cuomo, Lupoi, Shimosako & Takahashi (the "seed" paper), with every formula it leaves out taken
-//! from `../shared/PHYSICS.md`.
+//! from docs/model.md.
 //!
 //! A rigid caisson (sliding u_x, heave u_y, rocking θ) rests on a bed of nonlinear interface
 //! springs (no tension; elastic-Coulomb friction with static and dynamic coefficients) and is
@@ -21,7 +21,7 @@
 //! scenario file and the force series it names.
 //!
 //! ```
-//! // Goda's pressures on the seed's PARI caisson (PHYSICS.md §11, first row).
+//! // Goda's pressures on the seed's PARI caisson (docs/model.md §11, first row).
 //! use caisson::loads::goda::{goda, GodaInput};
 //! let g = goda(&GodaInput {
 //!     height_m: 0.428, wavelength_m: 9.3214, depth_m: 1.14, depth_5h_seaward_m: 1.14,
@@ -40,7 +40,7 @@ pub mod scenario;
 pub mod structure;
 pub mod waves;
 
-/// Gravitational acceleration used throughout, m/s² (PHYSICS.md §0).
+/// Gravitational acceleration used throughout, m/s² (docs/model.md §0).
 pub const G_M_PER_S2: f64 = 9.81;
 
 /// The version of this library (and of the `caisson` tool built on it).

@@ -1,4 +1,4 @@
-//! Lifetime Monte Carlo (PHYSICS.md §6.4): the screen skips only waves that do not slide the
+//! Lifetime Monte Carlo (docs/model.md §6.4): the screen skips only waves that do not slide the
 //! caisson, lives do not depend on the order they run in, and the dynamic model meets the rigid
 //! block where it should.
 

@@ -1,4 +1,4 @@
-//! Regression and verification tests of the wave-load models against `../shared/PHYSICS.md`
+//! Regression and verification tests of the wave-load models against docs/model.md
 //! (§2.4, §4.2, §4.3, §5.1, §5.3, §11), and of the time histories (seed Eqs. 29, 31, Table 2).
 //!
 //! Tolerances: the tables print 3-4 significant digits. A value is checked to the relative
@@ -24,7 +24,7 @@ const HS: f64 = 1.14;
 /// |got − want| ≤ max(rel·|want|, half a unit of the last printed digit).
 fn close(what: &str, got: f64, want: f64, rel: f64, printed_decimals: i32) {
     let tol = (rel * want.abs()).max(0.5 * 10f64.powi(-printed_decimals));
-    assert!((got - want).abs() <= tol, "{what}: got {got:.6}, PHYSICS.md {want} (tolerance {tol:.2e})");
+    assert!((got - want).abs() <= tol, "{what}: got {got:.6}, docs/model.md {want} (tolerance {tol:.2e})");
 }
 
 fn goda_pari(h: f64, d: f64) -> GodaInput {
@@ -186,7 +186,7 @@ fn integrate(p: impl Fn(f64) -> f64, z0: f64, z1: f64, hp: f64, n: usize) -> (f6
 
 #[test]
 fn closed_form_forces_equal_numerical_integrals_of_the_pressures() {
-    // Pressures written pointwise from the PHYSICS.md definitions (independent of the library's
+    // Pressures written pointwise from the docs/model.md definitions (independent of the library's
     // polylines), integrated by the midpoint rule on 4e5 cells: the error is O(Δz²) at the
     // kinks, below 1e-7 relative. Tolerance 1e-6.
     let n = 400_000;
@@ -395,7 +395,7 @@ fn rise_time_sampler_reproduces_median_and_log_std() {
 
 #[test]
 fn pari_model_f_star_and_regular_train_reproducibility() {
-    // PHYSICS.md §5.3: F* = 3.45 for H = 0.428 m (15.33 / 4.448); F* < 1 at H = 0.569 and 0.619.
+    // docs/model.md §5.3: F* = 3.45 for H = 0.428 m (15.33 / 4.448); F* < 1 at H = 0.569 and 0.619.
     let model = WaveLoadModel { site: pari_site(0.4), options: WaveLoadOptions::default() };
     let l = model.evaluate(0.428, T).unwrap();
     close("F*", l.f_star, 3.45, 5e-3, 2);

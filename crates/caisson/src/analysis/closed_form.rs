@@ -1,14 +1,14 @@
 //! Closed forms used as oracles and shown beside the dynamic results.
 //!
 //! * [`shock_spectrum_psi`]: undamped SDOF under the symmetric triangular pulse (seed Eq. 37),
-//!   Ψ = max|u|/u_st (seed Eq. 38; PHYSICS.md §9.2, Chopra §4.11):
+//!   Ψ = max|u|/u_st (seed Eq. 38; docs/model.md §9.2, Chopra §4.11):
 //!   u(t)/u_st = [r(t) − 2 r(t − t_r) + r(t − 2t_r)]/t_r, r(s) = s − sin(ωs)/ω for s > 0.
 //! * [`rigid_block_sliding_m`]: the exact rigid-plastic slide of a block under the same pulse
-//!   (PHYSICS.md §6.3): with A = P_max + μ U_max, B = μ W', t_d = 2 t_r,
+//!   (docs/model.md §6.3): with A = P_max + μ U_max, B = μ W', t_d = 2 t_r,
 //!   S = (3 + 2√2) t_d² (A − B)³ / (12 M A²)            if A/B ≤ 1 + 1/√2 (stops before t_d),
 //!   S = t_d² [12 A² (A − B)² − B⁴] / (96 M A² B)       otherwise.
 //! * [`shimosako_sliding_m`]: Shimosako & Takahashi (1999), the seed's Eq. 8 with the uplift
-//!   corrected (PHYSICS.md §10 item 4): S = t_d² (A − B)³ (A + B) / (8 M A² B). It always
+//!   corrected (docs/model.md §10 item 4): S = t_d² (A − B)³ (A + B) / (8 M A² B). It always
 //!   underestimates the exact slide (§10 item 31); it is reported as "Shimosako (1999) closed
 //!   form", never as the reference.
 
@@ -87,7 +87,7 @@ pub fn shimosako_sliding_m(a_n: f64, b_n: f64, m_kg: f64, td_s: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// PHYSICS.md §9.2 table, printed to 3 decimals: tolerance 0.0006 (half a unit in the last
+    /// docs/model.md §9.2 table, printed to 3 decimals: tolerance 0.0006 (half a unit in the last
     /// printed digit plus rounding).
     #[test]
     fn spectrum_table() {
@@ -115,7 +115,7 @@ mod tests {
     }
 
     /// The two rigid-block regimes meet continuously at A/B = 1 + 1/√2 (to 1e-12 relative),
-    /// and Shimosako's form is the fraction of the exact value quoted in PHYSICS.md §10 item 31
+    /// and Shimosako's form is the fraction of the exact value quoted in docs/model.md §10 item 31
     /// (0.53, 0.64, 0.77, 0.89 at A/B = 1.05, 1.5, 2, 3; printed to 2 decimals → ±0.006).
     #[test]
     fn rigid_block_regimes_and_shimosako_ratio() {

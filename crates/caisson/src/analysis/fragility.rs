@@ -1,4 +1,4 @@
-//! Fragility curves for sliding (PHYSICS.md §7; the generic method of Lupoi et al. 2007 and
+//! Fragility curves for sliding (docs/model.md §7; the generic method of Lupoi et al. 2007 and
 //! similar): for a grid of significant heights at the structure, many storms each; the
 //! probability that a storm's sliding exceeds each limit; a lognormal curve fitted to the counts.
 //!
@@ -11,7 +11,7 @@
 //! * T1/3 = `period_s` for every wave, N = round(duration / T1/3) waves (at least 1);
 //! * no tide, no estimation errors (force and friction factors 1): a fragility is conditional
 //!   on the IM, and the spread comes from the wave sequence and the rise times only. The
-//!   estimation errors of PHYSICS.md §6.4 belong to the life integral (§7 step 5, `lifetime.rs`);
+//!   estimation errors of docs/model.md §6.4 belong to the life integral (§7 step 5, `lifetime.rs`);
 //! * the conservative screen of [`simulate_storm`] (waves that provably cannot slide either
 //!   model are skipped; the share is reported).
 //!
@@ -22,7 +22,7 @@
 //! **Counts.** k_i(s) = #{storms at H_i with S > s} (strictly greater), for the dynamic model and
 //! for the rigid block (Shimosako model) separately; P̂_i = k_i / n_i.
 //!
-//! **Lognormal fit** (PHYSICS.md §7 step 4): P(S > s | IM) = Φ((ln IM − ln θ)/β), θ the median
+//! **Lognormal fit** (docs/model.md §7 step 4): P(S > s | IM) = Φ((ln IM − ln θ)/β), θ the median
 //! capacity (m of H1/3) and β the log-standard deviation, by maximum likelihood on the binomial
 //! counts,
 //!

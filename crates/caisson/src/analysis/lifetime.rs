@@ -1,8 +1,8 @@
 //! Performance-based design: the sliding of a caisson over its service life by Monte Carlo, with
 //! the dynamic model for every wave that can slide it (Shimosako & Takahashi 1999; Goda & Takagi
-//! 2000; PHYSICS.md §6.4), and the storms of a fragility analysis (PHYSICS.md §7).
+//! 2000; docs/model.md §6.4), and the storms of a fragility analysis (docs/model.md §7).
 //!
-//! **One life** (`life_years` storms, one per year, PHYSICS.md §6.4 steps 1-7):
+//! **One life** (`life_years` storms, one per year, docs/model.md §6.4 steps 1-7):
 //!
 //! 1. annual maximum deep-water significant height H0 from an extreme-value distribution,
 //!    by inversion of a uniform U: Weibull F(H) = 1 − exp[−((H − B)/A)^k] (H ≥ B), or Gumbel
@@ -22,7 +22,7 @@
 //!    sliding added; the rigid block (Shimosako model, [`super::train::RigidBlock`]) beside it.
 //!
 //! Estimation errors are multipliers 1 + bias + COV·z, z standard normal truncated at ±k
-//! (Kim & Takayama 2003, doubly truncated; PHYSICS.md §6.4 step 4), drawn once per storm.
+//! (Kim & Takayama 2003, doubly truncated; docs/model.md §6.4 step 4), drawn once per storm.
 //!
 //! **The screen** skips waves that provably cannot slide the caisson. A wave can slide it only
 //! if its effective load exceeds the friction resistance, P_eff > μ_s (W' − U_eff), with
@@ -109,7 +109,7 @@ impl ErrorModel {
     }
 }
 
-/// The four estimation errors of PHYSICS.md §6.4 step 4.
+/// The four estimation errors of docs/model.md §6.4 step 4.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Errors {
     pub deep_water_height: ErrorModel,
@@ -130,7 +130,7 @@ impl Default for Errors {
     }
 }
 
-/// The life model (PHYSICS.md §6.4), every coefficient a parameter.
+/// The life model (docs/model.md §6.4), every coefficient a parameter.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LifeParams {
     pub life_years: usize,

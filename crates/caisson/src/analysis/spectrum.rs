@@ -1,6 +1,6 @@
 //! Shock spectrum of the caisson (seed §5.2, Figs. 7-8): sweep the rise time of a symmetric
 //! triangular pulse (seed Eq. 37) over t_r/T0 and record the amplification Ψ = max|u_x|/(F/K_x)
-//! (seed Eq. 38, PHYSICS.md §10 item 28) and the permanent sliding, with the closed forms beside
+//! (seed Eq. 38, docs/model.md §10 item 28) and the permanent sliding, with the closed forms beside
 //! them (undamped SDOF Ψ, §9.2; exact rigid block and Shimosako 1999, §6.3).
 //!
 //! T0 = 2π sqrt(m_x/K_x), m_x the caisson mass plus the horizontal added mass. The closed-form

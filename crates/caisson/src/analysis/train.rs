@@ -1,12 +1,12 @@
 //! One realization of a wave-train test: N_z waves from [`crate::loads::generator`] against the
 //! caisson in **one continuous simulation** (the state carries from wave to wave), the sliding of
-//! each wave, and the rigid-block reference beside it (seed §6; PHYSICS.md §6.3).
+//! each wave, and the rigid-block reference beside it (seed §6; docs/model.md §6.3).
 //!
 //! * **Sliding per wave**: the permanent sliding ([`super::run::permanent_sliding_m`]) at the end
 //!   of the wave minus that at its start. Every wave shape ends at zero load (τ = T), so the
 //!   measure is taken with the caisson unloaded.
 //! * **Rigid-block reference** ("Shimosako model"): the rigid-plastic block of Shimosako et al.
-//!   (1994) / Shimosako & Takahashi (1999), PHYSICS.md §6.3, integrated on each wave's own load
+//!   (1994) / Shimosako & Takahashi (1999), docs/model.md §6.3, integrated on each wave's own load
 //!   history from rest: it starts when P(t) > μ (W' − U(t)) and moves shoreward under
 //!   (m_c + M_a) ẍ = P(t) − μ (W' − U(t)) until it stops, M_a = 1.0855 ρ_w h'² l, with one
 //!   friction coefficient μ as in Shimosako & Takahashi's design practice (`[waves]
@@ -30,7 +30,7 @@ use crate::structure::Caisson;
 use rayon::prelude::*;
 use thiserror::Error;
 
-/// Added-mass coefficient of the rigid-block model (both faces, PHYSICS.md §6.3).
+/// Added-mass coefficient of the rigid-block model (both faces, docs/model.md §6.3).
 pub const RIGID_BLOCK_ADDED_MASS_COEFF: f64 = 1.0855;
 
 /// Why a realization could not be run.
@@ -56,7 +56,7 @@ pub struct WaveOutcome {
     pub start_s: f64,
     /// Permanent sliding during this wave (dynamic model), m.
     pub sliding_m: f64,
-    /// Rigid-block sliding under this wave's load (PHYSICS.md §6.3), m.
+    /// Rigid-block sliding under this wave's load (docs/model.md §6.3), m.
     pub rigid_block_sliding_m: f64,
     /// Peak effective horizontal reaction during this wave, N.
     pub max_horizontal_reaction_n: f64,
@@ -78,7 +78,7 @@ pub struct RealizationResult {
     pub solver: SolverStats,
 }
 
-/// The rigid-block model of one caisson (PHYSICS.md §6.3).
+/// The rigid-block model of one caisson (docs/model.md §6.3).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RigidBlock {
     /// m_c + M_a, kg.
@@ -345,7 +345,7 @@ mod tests {
     use crate::loads::shapes::{Impulse, LoadShape};
 
     /// A pure triangular impulse (Shimosako-Takahashi 1994 shape, no quasi-static or trough part)
-    /// against the rigid block reproduces the exact closed form of PHYSICS.md §6.3 in both regimes.
+    /// against the rigid block reproduces the exact closed form of docs/model.md §6.3 in both regimes.
     #[test]
     fn rigid_block_matches_the_exact_triangle_closed_form() {
         let (m, w, mu) = (1800.0, 8240.0, 0.6);

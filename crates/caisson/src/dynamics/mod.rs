@@ -1,5 +1,5 @@
 //! Time integration: Newmark-β with Newton-Raphson and a consistent tangent (seed §3.1;
-//! PHYSICS.md §9.1, after Chopra 2001 §5.7 and Ch. 15).
+//! docs/model.md §9.1, after Chopra 2001 §5.7 and Ch. 15).
 //!
 //! Equation of motion for q = (u_x, u_y, θ) of the base centre (see [`crate::structure`]):
 //!
@@ -9,7 +9,7 @@
 //!
 //! M is the caisson mass matrix plus the added mass of the water, C the linear dashpots
 //! ([`crate::foundation`]), f_S the interface springs (and, in the `elastic` damping mode, their
-//! dashpots), p the wave forces and W' the weight in water (PHYSICS.md §10 item 6).
+//! dashpots), p the wave forces and W' the weight in water (docs/model.md §10 item 6).
 //!
 //! Each step t → t + h is explicit in its phases: **load** p(t + h) → **predictor** δ = 0 →
 //! **Newton corrector** on the displacement increment δ = q_{n+1} − q_n, with

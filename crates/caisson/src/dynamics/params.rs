@@ -1,4 +1,4 @@
-//! Controls of the time integration (PHYSICS.md §9.1): the Newmark constants, the Newton-Raphson
+//! Controls of the time integration (docs/model.md §9.1): the Newmark constants, the Newton-Raphson
 //! iteration, sub-stepping and the step length, fixed or adaptive. Each `with_*` setter checks
 //! what it sets and names the quantity when it refuses ([`ParamError`]).
 
@@ -40,7 +40,7 @@ impl AdaptiveParams {
     }
 }
 
-/// Newmark and Newton-Raphson controls (PHYSICS.md §9.1).
+/// Newmark and Newton-Raphson controls (docs/model.md §9.1).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SolverParams {
     /// Time step (fixed stepping) or first step (adaptive stepping), s.

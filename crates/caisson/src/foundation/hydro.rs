@@ -1,4 +1,4 @@
-//! Hydrodynamic (added) mass of the water in front of the wall (seed Eqs. 18-19; PHYSICS.md §8.3).
+//! Hydrodynamic (added) mass of the water in front of the wall (seed Eqs. 18-19; docs/model.md §8.3).
 //!
 //! Westergaard's problem solved exactly by the cosine series (rigid wall, water depth d on one
 //! side, free surface φ = 0): per metre of wall,
@@ -6,8 +6,8 @@
 //! ```text
 //! m_hyd,x  = 0.54275 ρ_w d²     translation (seed Eq. 18, Pedersen 1997: 0.543)
 //! s_hyd    = 0.21787 ρ_w d³     static moment about the base (the seed's Eq. 19 "0.218",
-//!                               read as a coupling, PHYSICS.md §10 item 8)
-//! I_hyd    = 0.1031  ρ_w d⁴     rotational inertia about the base (PHYSICS.md §10 item 9)
+//!                               read as a coupling, docs/model.md §10 item 8)
+//! I_hyd    = 0.1031  ρ_w d⁴     rotational inertia about the base (docs/model.md §10 item 9)
 //! ```
 //!
 //! multiplied by the alongshore length. One face only, as in the seed. d defaults to the base
@@ -61,7 +61,7 @@ impl AddedMass {
 mod tests {
     use super::*;
 
-    /// PHYSICS.md §8.3: 0.54275, 0.21787, 0.1031 (to the digits printed there; the series is
+    /// docs/model.md §8.3: 0.54275, 0.21787, 0.1031 (to the digits printed there; the series is
     /// summed to 20000 terms, truncation < 1e-9).
     #[test]
     fn series_coefficients_match_physics_md() {

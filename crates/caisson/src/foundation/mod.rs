@@ -1,17 +1,17 @@
 //! The foundation: soil stiffness and damping, hydrodynamic mass, and the interface springs.
 //!
-//! * [`soil`]: K_x, K_y, C from soil parameters (seed Eqs. 20-23, PHYSICS.md §8.2).
-//! * [`hydro`]: added mass of the water in front of the wall (seed Eqs. 18-19, PHYSICS.md §8.3).
-//! * [`spring`]: the nonlinear interface spring (seed Eqs. 27-28, PHYSICS.md §10 item 12).
+//! * [`soil`]: K_x, K_y, C from soil parameters (seed Eqs. 20-23, docs/model.md §8.2).
+//! * [`hydro`]: added mass of the water in front of the wall (seed Eqs. 18-19, docs/model.md §8.3).
+//! * [`spring`]: the nonlinear interface spring (seed Eqs. 27-28, docs/model.md §10 item 12).
 //!
 //! Springs are spread evenly across the base width B at the centres of n equal strips,
 //! x_i = −B/2 + (i + ½) B/n (x shoreward from the base centre), so that Σ x_i² / n = B²/12 ·
 //! (1 − 1/n²) tends to the continuous Winkler value. The vertical displacement of spring i is
 //! u_y,i = u_y − θ x_i (θ clockwise positive: a positive θ lifts the seaward toe), and all springs
-//! share u_x (PHYSICS.md §10 items 5, 7, 11).
+//! share u_x (docs/model.md §10 items 5, 7, 11).
 //!
 //! Damping (seed Eqs. 24-25): C on u_x, `vertical_damping_factor`·C (10 C) on u_y and on θ.
-//! Where the horizontal dashpot acts is a [`DampingMode`] (PHYSICS.md §10 item 30); how the
+//! Where the horizontal dashpot acts is a [`DampingMode`] (docs/model.md §10 item 30); how the
 //! vertical and rotational dashpots are formed is a [`VerticalDamping`] (§10 item 10).
 
 pub mod hydro;
@@ -26,7 +26,7 @@ use crate::check::{between, count, non_negative, positive, rule};
 use crate::structure::Caisson;
 use crate::{ParamError, Profile};
 
-/// Where the horizontal foundation dashpot acts (PHYSICS.md §10 item 30).
+/// Where the horizontal foundation dashpot acts (docs/model.md §10 item 30).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DampingMode {
@@ -45,7 +45,7 @@ pub enum DampingMode {
     Elastic,
 }
 
-/// How the vertical and rotational dashpots are formed (PHYSICS.md §10 item 10).
+/// How the vertical and rotational dashpots are formed (docs/model.md §10 item 10).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum VerticalDamping {

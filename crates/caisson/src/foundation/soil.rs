@@ -1,4 +1,4 @@
-//! Foundation stiffness and damping from soil parameters (seed Eqs. 20-23; PHYSICS.md §8.1-8.2).
+//! Foundation stiffness and damping from soil parameters (seed Eqs. 20-23; docs/model.md §8.1-8.2).
 //!
 //! ```text
 //! q    = W' / (B l)                                   mean contact stress under the caisson
@@ -9,10 +9,10 @@
 //! C    = 3.4/(1 − ν) · r0² · sqrt(G ρ_s),  r0² = B l / π   (seed Eq. 22, Lysmer & Richart 1966)
 //! ```
 //!
-//! σ'v0 is the 100 kPa reference stress of E100 (PHYSICS.md §10 item 15), a parameter
+//! σ'v0 is the 100 kPa reference stress of E100 (docs/model.md §10 item 15), a parameter
 //! (`reference_stress_kpa`). This recipe reproduces the seed's Table 6 K_y, K_x and the Fig. 10
 //! damping exactly; Table 6's damping (480 kN·s/m) is a known slip: Eq. 22 gives 598 kN·s/m
-//! (PHYSICS.md §8.2 item 7, §10 item 14).
+//! (docs/model.md §8.2 item 7, §10 item 14).
 
 use crate::check::{between, positive};
 use crate::ParamError;
@@ -91,7 +91,7 @@ mod tests {
         Soil { e100_pa: 3.5e8, poisson: 0.33, density_kg_per_m3: 2300.0, reference_stress_pa: 1e5 }
     }
 
-    /// Seed Table 6 from the Table 5 inputs (PHYSICS.md §8.2): K_y = 1.404e5, K_x = 1.511e5 kN/m,
+    /// Seed Table 6 from the Table 5 inputs (docs/model.md §8.2): K_y = 1.404e5, K_x = 1.511e5 kN/m,
     /// C = 598 kN·s/m (Eq. 22; the table's 480 is the known slip). Tolerance 0.2 %: the
     /// reference values are given to 3-4 significant figures.
     #[test]
@@ -104,7 +104,7 @@ mod tests {
         assert!(rel(d.stiffness.damping_ns_per_m, 5.98e5) < 2e-3, "C {}", d.stiffness.damping_ns_per_m);
     }
 
-    /// Fig. 10 cross-check (PHYSICS.md §8.2 item 8): W = 16.17 kN gives K_y 1.468e5, K_x 1.579e5,
+    /// Fig. 10 cross-check (docs/model.md §8.2 item 8): W = 16.17 kN gives K_y 1.468e5, K_x 1.579e5,
     /// C 6.11e2 kN·s/m. Tolerance 0.3 % (reference values to 3-4 figures).
     #[test]
     fn fig10_cross_check() {

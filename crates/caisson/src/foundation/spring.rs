@@ -1,5 +1,5 @@
 //! The interface spring: no-tension vertical spring plus elastic-Coulomb horizontal friction
-//! (seed Eqs. 27-28, read as its Fig. 4: PHYSICS.md §10 item 12).
+//! (seed Eqs. 27-28, read as its Fig. 4: docs/model.md §10 item 12).
 //!
 //! With u_y,i the spring's vertical displacement (negative = compression) and u_x its
 //! horizontal displacement:
@@ -18,7 +18,7 @@
 //! trial falls back within e_d), when it sticks again with capacity μ_s N. A lifted spring
 //! (N = 0) carries nothing and re-contacts with zero shear (s_i = u_x).
 //!
-//! **Dashpot with the spring (`damping_mode = "elastic"`, PHYSICS.md §10 item 30)**: the
+//! **Dashpot with the spring (`damping_mode = "elastic"`, docs/model.md §10 item 30)**: the
 //! horizontal dashpot c_d acts in parallel with the elastic spring and both in series with the
 //! slider (a Kelvin element on a friction slider). Over a step of length h from the committed
 //! elastic displacement e_n, with the dashpot rate (e − e_n)/h:

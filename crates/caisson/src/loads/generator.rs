@@ -1,15 +1,15 @@
 //! Wave trains of one test condition: N_z waves per realization, with the height variability of
 //! the seed's PARI simulations or Rayleigh heights, the regime of each wave and its rise time
-//! (seed §6 "Comparison of predictions"; PHYSICS.md §5.3, §6.4 step 5, §10 item 26).
+//! (seed §6 "Comparison of predictions"; docs/model.md §5.3, §6.4 step 5, §10 item 26).
 //!
 //! * **Regular** waves of nominal height H and period T. Each wave's height is H (1 + δ):
 //!   - `Normal` (default): δ = c z, z standard normal truncated at ±k (rejection), c = 0.2, k = 2
-//!     (PHYSICS.md §10 item 26: "about 20 % of the nominal height" read as a COV);
+//!     (docs/model.md §10 item 26: "about 20 % of the nominal height" read as a COV);
 //!   - `Uniform`: δ uniform on [−c, c] (the other reading, ±20 %);
 //!   - `None`: δ = 0 (the monochromatic test as specified).
 //! * **Irregular** waves: Rayleigh heights from the significant height H1/3,
 //!   P(H > x) = exp[−2 (x/H1/3)²], i.e. H = H1/3 √(−ln U / 2) with U uniform on (0, 1]
-//!   (PHYSICS.md §6.4 step 5); every wave has the period T1/3. A height below 10⁻³ H1/3 is raised to
+//!   (docs/model.md §6.4 step 5); every wave has the period T1/3. A height below 10⁻³ H1/3 is raised to
 //!   it (a wave must have a height; such a wave carries no load that matters).
 //!
 //! The regime of each wave follows the model's choice: `auto` decides per wave by the breaking

@@ -1,5 +1,5 @@
 //! Goda (1974, 2000) pressure formula on an upright section, with Takahashi, Tanimoto &
-//! Shimosako's (1994) impulsive coefficient α_I (PHYSICS.md §1; verified there against the
+//! Shimosako's (1994) impulsive coefficient α_I (docs/model.md §1; verified there against the
 //! `breakwater` package and the Deltares toolbox).
 //!
 //! ```text
@@ -18,9 +18,9 @@
 //! h is the depth at the toe (wavelength L taken there), h_b the depth 5 H1/3 seaward
 //! (h + 5 H tan θ for regular waves), d the depth above the berm, h' the base depth, h_c the crest
 //! freeboard, B the base width. β is rotated by up to 15° toward the normal:
-//! β_use = max(0, |β| − 15°) (PHYSICS.md §1.1). λ1 = λ2 = λ3 = 1 for a plain caisson.
+//! β_use = max(0, |β| − 15°) (docs/model.md §1.1). λ1 = λ2 = λ3 = 1 for a plain caisson.
 //!
-//! Takahashi's α_I (PHYSICS.md §1.4), used when the berm width B_M is given:
+//! Takahashi's α_I (docs/model.md §1.4), used when the berm width B_M is given:
 //! δ11 = 0.93 (B_M/L − 0.12) + 0.36 (0.4 − d/h), δ22 = −0.36 (B_M/L − 0.12) + 0.93 (0.4 − d/h);
 //! δ1 = 20 δ11 (δ11 ≤ 0) or 15 δ11; δ2 = 4.9 δ22 (δ22 ≤ 0) or 3 δ22;
 //! α_I1 = cos δ2 / cosh δ1 (δ22 ≤ 0) or 1/(cosh δ1 √cosh δ2); α_I0 = H/d (H ≤ 2d) or 2;
@@ -99,7 +99,7 @@ pub struct GodaResult {
     pub base_depth_m: f64,
 }
 
-/// Takahashi's impulsive pressure coefficient α_I (PHYSICS.md §1.4).
+/// Takahashi's impulsive pressure coefficient α_I (docs/model.md §1.4).
 pub fn takahashi_alpha_i(height_m: f64, wavelength_m: f64, depth_m: f64, wall_depth_m: f64, berm_width_m: f64) -> f64 {
     let bl = berm_width_m / wavelength_m - 0.12;
     let dh = 0.4 - wall_depth_m / depth_m;

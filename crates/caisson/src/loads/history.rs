@@ -1,5 +1,5 @@
 //! Force time histories of trains of waves: F_x, F_y and the moment, consistently (seed Eqs. 29
-//! and 31 and the Table 2 shapes of [`super::shapes`]; PHYSICS.md §6.1, §10 items 16-18).
+//! and 31 and the Table 2 shapes of [`super::shapes`]; docs/model.md §6.1, §10 items 16-18).
 //!
 //! Each wave is a [`WaveEvent`]: its start time, period, the three load components (totals on the
 //! caisson, already multiplied by the alongshore length) and, for an impulsive wave, its
@@ -10,8 +10,8 @@
 //!
 //! * `quasi`: α_qs F_qs+ (Goda P and U with their lever arms, scaled by α_qs of the regime);
 //! * `trough`: F_qs− as positive magnitudes (minus the Sainflou trough force and suction), so that
-//!   F_qs− sin(2πτ/T) < 0 for τ in (T/2, T) (PHYSICS.md §10 item 16);
-//! * `impact`: F_x,max (seed Eq. 30) and F_y,max (Eq. 32) with the lever arms of PHYSICS.md §4.3.
+//!   F_qs− sin(2πτ/T) < 0 for τ in (T/2, T) (docs/model.md §10 item 16);
+//! * `impact`: F_x,max (seed Eq. 30) and F_y,max (Eq. 32) with the lever arms of docs/model.md §4.3.
 //!
 //! A [`WaveTrain`] is a list of events ordered by start time; `at(t)` finds the wave by binary
 //! search and evaluates its shape. Nothing is allocated after construction. Between events (if the
@@ -70,7 +70,7 @@ pub struct WaveEvent {
 
 impl WaveEvent {
     /// Build an event. `quasi_plus` is F_qs+ (unscaled) and `alpha_qs` its reduction factor
-    /// (PHYSICS.md §10 item 17); `trough_magnitude` is F_qs− (positive). For an impulsive wave,
+    /// (docs/model.md §10 item 17); `trough_magnitude` is F_qs− (positive). For an impulsive wave,
     /// t_r is clamped to T/4 and t_d to [t_r, T/2] here (t_d = 2 t_r for the symmetric shapes).
     pub fn new(
         start_s: f64,
@@ -98,7 +98,7 @@ impl WaveEvent {
     }
 
     /// The same wave with every force and moment multiplied by `k` (an estimation error of the
-    /// wave force, PHYSICS.md §6.4 step 4).
+    /// wave force, docs/model.md §6.4 step 4).
     pub fn scaled(&self, k: f64) -> WaveEvent {
         WaveEvent { quasi: self.quasi.scaled(k), trough: self.trough.scaled(k), impact: self.impact.scaled(k), ..*self }
     }

@@ -1,6 +1,6 @@
 //! Breaking-wave impact: Cuomo et al. (2010) horizontal impact force (seed Eq. 30), the impact
 //! uplift of Oumeraci et al. (2001) as simplified by the seed (Eq. 32), and the lever arms of the
-//! PROVERBS simplified impact distribution (PHYSICS.md §4.2, §4.3, §5.1, §10 item 19).
+//! PROVERBS simplified impact distribution (docs/model.md §4.2, §4.3, §5.1, §10 item 19).
 //!
 //! ```text
 //! F_x,max = a_imp · α_max · ρ_w g · H · L(d_s) · max{0, 1 − |d_b − d| / d}          (seed Eq. 30)
@@ -12,11 +12,11 @@
 //! * H is the wave height at the toe (Miche-limited at d_s by the caller), L(d_s) the wavelength
 //!   at the toe depth for T (regular waves: T = T_m).
 //! * d_b is the breaking depth of H and H_br = H_b(d) the breaker height at the wall, both from
-//!   the chosen breaking criterion (default Miche: PHYSICS.md §4.2 recommendation; the seed's
+//!   the chosen breaking criterion (default Miche: docs/model.md §4.2 recommendation; the seed's
 //!   PROVERBS recipe was not recovered). If the criterion gives no breaking depth, the reduction
 //!   factor is 0.
 //! * α_max = 1/1.8 for regular waves (seed), 1 with H = H_s for random waves; `a_imp` = 1 as in
-//!   the seed (PHYSICS.md §5.1, §12: the coefficient of Cuomo et al. (2010) is unconfirmed).
+//!   the seed (docs/model.md §5.1, §12: the coefficient of Cuomo et al. (2010) is unconfirmed).
 //! * The distribution behind M_h: zero at 0.8 H_br above still water, p1 at still water,
 //!   0.45 p1 at the base; above still water it is cut at the crest h_c if 0.8 H_br > h_c. The lever
 //!   y_L = M_h / F_x,max (the 0.7 in p1 approximates 0.725, as in the seed). The uplift is a
@@ -77,7 +77,7 @@ pub struct ImpactResult {
     pub uplift_moment_heel_nm_per_m: f64,
 }
 
-/// Seed Eq. 30 reduction factor max{0, 1 − |d_b − d|/d} (PHYSICS.md §10 item 19: clamped at 0).
+/// Seed Eq. 30 reduction factor max{0, 1 − |d_b − d|/d} (docs/model.md §10 item 19: clamped at 0).
 #[inline]
 pub fn eq30_reduction(breaking_depth_m: Option<f64>, wall_depth_m: f64) -> f64 {
     breaking_depth_m.map_or(0.0, |db| (1.0 - (db - wall_depth_m).abs() / wall_depth_m).max(0.0))
@@ -115,7 +115,7 @@ pub fn impact_with_breaking(i: &ImpactInput, hbr: f64) -> ImpactResult {
     }
 }
 
-/// The PROVERBS simplified impact distribution (PHYSICS.md §4.3) for a given p1: zero at
+/// The PROVERBS simplified impact distribution (docs/model.md §4.3) for a given p1: zero at
 /// 0.8 H_br above still water (cut at the crest h_c), p1 at still water, 0.45 p1 at the base h'.
 pub fn impact_profile(p1_pa: f64, breaker_height_m: f64, base_depth_m: f64, crest_freeboard_m: f64) -> Profile {
     let top = 0.8 * breaker_height_m;

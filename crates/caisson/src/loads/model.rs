@@ -1,5 +1,5 @@
 //! The wave-load model of one site: every pressure model evaluated for a wave, and the wave
-//! trains built from per-wave records (seed §4; PHYSICS.md §1-§6.1).
+//! trains built from per-wave records (seed §4; docs/model.md §1-§6.1).
 //!
 //! For a wave of incident height H and period T at a site (toe depth h_s, wall depth d, base depth
 //! h', crest freeboard h_c, base width B, seabed slope, berm width):
@@ -34,7 +34,7 @@ use rand_distr::StandardNormal;
 use std::f64::consts::PI;
 use thiserror::Error;
 
-/// Which depth the Sainflou standing wave forms in (PHYSICS.md §10 item 21).
+/// Which depth the Sainflou standing wave forms in (docs/model.md §10 item 21).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SainflouDepth {
@@ -67,7 +67,7 @@ pub struct WaveSite {
     pub berm_width_m: Option<f64>,
 }
 
-/// Model options (defaults as in the seed / PHYSICS.md).
+/// Model options (defaults as in the seed / docs/model.md).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct WaveLoadOptions {
     pub regime: RegimeChoice,

@@ -3,7 +3,7 @@
 //! A profile is a polyline of (z, p) points, z the depth below still water (m, positive down),
 //! p the net wave pressure (Pa, positive = pushing the wall shoreward). Each model (Goda,
 //! Sainflou, impact) describes its pressure this way; the force and its moment are then the exact
-//! integrals of the polyline, segment by segment (PHYSICS.md §2.4, "a sum of trapezoids"):
+//! integrals of the polyline, segment by segment (docs/model.md §2.4, "a sum of trapezoids"):
 //!
 //! ```text
 //! F   = Σ ℓ (p_a + p_b)/2                                  (N/m)

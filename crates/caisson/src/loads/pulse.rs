@@ -2,7 +2,7 @@
 //!
 //! * [`TrianglePulse`]: the symmetric triangle of the seed's Eq. 37, peak at `t_r`, zero at `2 t_r`
 //!   (also Shimosako & Takahashi 1994 in the seed's Table 2). The uplift, if any, has the same
-//!   time shape (PHYSICS.md §6.3, §10 item 18).
+//!   time shape (docs/model.md §6.3, §10 item 18).
 //! * [`StaticRamp`]: a force raised linearly from zero to its peak over a ramp time and then
 //!   held, for the quasi-static push of the seed's §5.1 (Fig. 6).
 

@@ -1,4 +1,4 @@
-//! Breaking or non-breaking: which load model applies to a wave (seed §4.1-4.2; PHYSICS.md §4.2).
+//! Breaking or non-breaking: which load model applies to a wave (seed §4.1-4.2; docs/model.md §4.2).
 //!
 //! The seed classifies its tests by set-up (d = 0.4 m with the extra berm: breaking; d = 0.8 m:
 //! non-breaking). Here the regime is decided by the breaking criterion at the wall, or forced:

@@ -1,4 +1,4 @@
-//! Impact rise time: the seed's log-normal model (Eqs. 34-36), read as in PHYSICS.md §5.3 and
+//! Impact rise time: the seed's log-normal model (Eqs. 34-36), read as in docs/model.md §5.3 and
 //! §10 item 20.
 //!
 //! ```text
@@ -10,7 +10,7 @@
 //!   ln t* ~ N(ln μ, σ²), so t_r = T μ exp(σ Z) with Z ~ N(0, 1). F* = 3.45 gives a median
 //!   t_r = 0.015 s at T = 3.04 s; F* = 1 gives 0.34 T.
 //! * [`RiseTimeModel::Literal`]: Eq. 34 as printed, ln t* ~ N(μ, σ²); its median exp(μ) is between
-//!   1 and 1.4 for every F* ≥ 1 (t_r ≥ T), which PHYSICS.md §5.3 calls absurd. Kept as an option.
+//!   1 and 1.4 for every F* ≥ 1 (t_r ≥ T), which docs/model.md §5.3 calls absurd. Kept as an option.
 //!
 //! Every draw is clamped to t_r ≤ T/4, so that the impact (duration 2 t_r) fits in the first
 //! half-period. A wave with F* ≤ 1 is **non-impulsive** ([`RiseTimeParams::distribution`] returns
@@ -35,7 +35,7 @@ pub fn load_rng(seed: u64) -> LoadRng {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum RiseTimeModel {
-    /// μ is the median of t* (PHYSICS.md §5.3 recommendation; default).
+    /// μ is the median of t* (docs/model.md §5.3 recommendation; default).
     Median,
     /// μ is the mean of ln t* (Eq. 34 as printed).
     Literal,

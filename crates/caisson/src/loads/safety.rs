@@ -1,5 +1,5 @@
 //! Static stability checks of an upright section under the Goda loads (Goda 2000 conventions;
-//! PHYSICS.md §1.5, seed Eqs. 9-11). Per metre of breakwater.
+//! docs/model.md §1.5, seed Eqs. 9-11). Per metre of breakwater.
 //!
 //! ```text
 //! sliding       SF_s = μ (W' − U) / P                          (Goda: ≥ 1.2)

@@ -1,5 +1,5 @@
 //! Sainflou (1928) standing-wave (clapotis) pressures, simplified linear form (SPM/CEM, ACES),
-//! on a composite caisson (PHYSICS.md §2). The seed (§4.1-4.2) takes the seaward force F_qs− and
+//! on a composite caisson (docs/model.md §2). The seed (§4.1-4.2) takes the seaward force F_qs− and
 //! the suction under the base from it.
 //!
 //! ```text
@@ -26,12 +26,12 @@
 //! M_Ut = (2/3) B U_t about the heel.
 //!
 //! Depth h: the seed does not say whether h is the toe depth h_s or the depth d in front of the
-//! wall (PHYSICS.md §10 item 21). The caller chooses; the default (scenario key
+//! wall (docs/model.md §10 item 21). The caller chooses; the default (scenario key
 //! `sainflou_depth = "toe"`) is h = h_s, the depth Goda uses. With h = d < h' the seabed pressure
 //! is held constant down the embedded part of the face (d < z ≤ h'); this is an assumption.
 //!
 //! Signs: the trough results are stored with their physical signs (seaward force < 0, suction
-//! < 0). The time histories use their magnitudes as F_qs− (PHYSICS.md §10 item 16).
+//! < 0). The time histories use their magnitudes as F_qs− (docs/model.md §10 item 16).
 
 use super::profile::Profile;
 use crate::G_M_PER_S2;
@@ -151,7 +151,7 @@ impl SainflouResult {
     }
 }
 
-/// Closed forms for a wall reaching the seabed (PHYSICS.md §2.3), magnitudes, moments about the
+/// Closed forms for a wall reaching the seabed (docs/model.md §2.3), magnitudes, moments about the
 /// seabed: (F_crest, M_crest, F_trough, M_trough).
 pub fn full_depth_closed_forms(height_m: f64, wavelength_m: f64, depth_m: f64, rho_w: f64) -> (f64, f64, f64, f64) {
     let (h0, pb) = clapotis_quantities(height_m, wavelength_m, depth_m, rho_w);

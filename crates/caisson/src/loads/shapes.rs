@@ -1,4 +1,4 @@
-//! Time shapes of one wave's load (seed §2.3 Table 2, Eqs. 29 and 31; PHYSICS.md §6.1, §4.4,
+//! Time shapes of one wave's load (seed §2.3 Table 2, Eqs. 29 and 31; docs/model.md §6.1, §4.4,
 //! §10 items 16-18). Local time τ runs from 0 at the start of the wave to its period T.
 //!
 //! | name | source | shape (F_max impact, F_qs+ quasi-static, t_r rise, t_d duration) |
@@ -8,15 +8,15 @@
 //! | `goda-1994` | Goda (1994) | F_max τ/t_r (τ < t_r); linear from F_max to F_qs+ (t_r ≤ τ < t_d); F_qs+ (t_d ≤ τ < T/2); 0 after |
 //! | `oumeraci-kortenhaus-1994` | Oumeraci & Kortenhaus (1994) | F_max τ/t_r (τ < t_r); F_max (t_d − τ)/(t_d − t_r) (t_r ≤ τ < t_d); 0 after |
 //! | `shimosako-takahashi-1994` | Shimosako & Takahashi (1994) | F_max τ/t_r (τ < t_r); F_max (2 − τ/t_r) (t_r ≤ τ < 2t_r); 0 after |
-//! | `oumeraci-2001` | Oumeraci et al. (2001), the "church roof" (PHYSICS.md §4.4) | as `oumeraci-kortenhaus-1994` for τ < t_d, then F_qs+ for t_d ≤ τ < T/2; 0 after |
+//! | `oumeraci-2001` | Oumeraci et al. (2001), the "church roof" (docs/model.md §4.4) | as `oumeraci-kortenhaus-1994` for τ < t_d, then F_qs+ for t_d ≤ τ < T/2; 0 after |
 //!
 //! Choices where Table 2 is silent or garbled (documented, configurable through t_d):
 //! * Goda (1994): the table gives only the rise and the F_qs+ plateau "for t ≥ t_d"; the segment
 //!   t_r…t_d is taken as a linear decay from F_max to F_qs+.
 //! * The F_qs+ plateaus (Goda 1994, Oumeraci et al. 2001) end at T/2, the end of the shoreward
 //!   half-wave; the table gives no end.
-//! * t_d defaults to 2 t_r (PHYSICS.md §4.4, §12: the seed's symmetric triangle); t_r ≤ T/4 and
-//!   t_d ≤ T/2 (PHYSICS.md §5.3, §10 item 18).
+//! * t_d defaults to 2 t_r (docs/model.md §4.4, §12: the seed's symmetric triangle); t_r ≤ T/4 and
+//!   t_d ≤ T/2 (docs/model.md §5.3, §10 item 18).
 //! * Eq. 31 is continuous: at τ = t_r both triangle branches give F_max, at 2t_r the triangle is
 //!   zero and the sine takes over, at T/2 both halves are zero. The max in Eq. 31 is taken per
 //!   axis (F_x and F_y separately, as the seed applies Eq. 31 to each); the moment follows the

@@ -1,7 +1,7 @@
 //! `[campaign]`: a grid (or list) of test conditions run on one scenario, as in the seed's PARI
 //! campaigns (seed Tables 3 and 4). Each condition overrides the wave height of `[waves]`
 //! (`height_m`, or `significant_height_m` for irregular waves), the caisson's weight in water
-//! (the mass then follows from the displaced water, PHYSICS.md §8.2) and the regime; everything
+//! (the mass then follows from the displaced water, docs/model.md §8.2) and the regime; everything
 //! else comes from the scenario's tables. Keys are documented in `docs/campaign.md`.
 //!
 //! Either the grid `heights_m` × `weights_in_water_kn` × `regimes`, or an explicit `conditions`

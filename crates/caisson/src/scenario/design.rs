@@ -1,6 +1,6 @@
-//! `[design]`: the lifetime Monte Carlo of performance-based design (PHYSICS.md §6.4), validated
+//! `[design]`: the lifetime Monte Carlo of performance-based design (docs/model.md §6.4), validated
 //! into [`DesignParams`] (the life model and the run controls). Every key is documented in `docs/design.md`; the
-//! defaults are the values PHYSICS.md §6.4 cites (Goda & Takagi 2000; Takayama & Ikeda 1992 via
+//! defaults are the values docs/model.md §6.4 cites (Goda & Takagi 2000; Takayama & Ikeda 1992 via
 //! Shimosako & Takahashi 1999; Kim & Takayama 2003 for the truncation).
 
 use super::waves::{self, number, seed_of};
@@ -40,7 +40,7 @@ pub struct DesignTable {
     pub screen: Option<bool>,
 }
 
-/// Takahashi's performance grades (PHYSICS.md §6.4 step 8), m.
+/// Takahashi's performance grades (docs/model.md §6.4 step 8), m.
 pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
 
 fn num(key: &str, v: Option<f64>, default: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {

@@ -1,4 +1,4 @@
-//! `[fragility]`: the storms of a fragility analysis (PHYSICS.md §7), validated with the wave
+//! `[fragility]`: the storms of a fragility analysis (docs/model.md §7), validated with the wave
 //! scenario they act on into [`FragilityParams`]. Every key is documented in `docs/fragility.md`.
 //!
 //! The rest of the file is a wave scenario (`[caisson]`, `[foundation]`, `[water]`, `[waves]` with

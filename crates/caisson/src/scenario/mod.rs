@@ -153,7 +153,7 @@ pub struct ModelTable {
     pub profile: Option<String>,
 }
 
-/// `[caisson]`: geometry and mass (PHYSICS.md §8.2).
+/// `[caisson]`: geometry and mass (docs/model.md §8.2).
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct CaissonTable {

@@ -57,7 +57,7 @@ pub struct WavesTable {
     pub waves: Option<i64>,
     /// Realizations (independent wave trains). Default 10.
     pub realizations: Option<i64>,
-    /// Regular waves: `"normal"` (default), `"uniform"` or `"none"` (PHYSICS.md §10 item 26).
+    /// Regular waves: `"normal"` (default), `"uniform"` or `"none"` (docs/model.md §10 item 26).
     pub height_variability: Option<String>,
     /// COV of the normal variability, or half-width of the uniform one, as a fraction of H.
     /// Default 0.2.

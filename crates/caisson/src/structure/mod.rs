@@ -3,7 +3,7 @@
 //! Degrees of freedom q = (u_x, u_y, θ) of the **centre of the base**: u_x shoreward, u_y upward,
 //! θ clockwise (shoreward overturning) positive. With the centre of gravity a height y_G above the
 //! base, its horizontal displacement is u_x + y_G θ (small rotations), so the exact mass matrix
-//! about the base centre is (PHYSICS.md §10 item 9)
+//! about the base centre is (docs/model.md §10 item 9)
 //!
 //! ```text
 //!     | m      0   m y_G          |
@@ -13,7 +13,7 @@
 //!
 //! The seed's Eq. 24 drops the coupling: M = diag(m, m, I_G + m y_G²) ([`MassMatrix::Diagonal`]).
 //!
-//! Mass and weight in water are related through the displaced water (PHYSICS.md §8.2, item 5):
+//! Mass and weight in water are related through the displaced water (docs/model.md §8.2, item 5):
 //! m_c = W'/g + ρ_w B l h', with h' the base depth below still water.
 
 use crate::check::{between, positive, rule};
@@ -27,12 +27,12 @@ pub enum MassMatrix {
     Coupled,
     /// The seed's diagonal form (Eq. 24; profile `seed-2011`). Its θ entry is the inertia about
     /// the base, I_G + m y_G² (+ the water's), not the seed's m_c + m_hyd,θ, which is not an
-    /// inertia (PHYSICS.md §10 item 9).
+    /// inertia (docs/model.md §10 item 9).
     Diagonal,
 }
 
 /// How the caisson's mass is given: the other of mass and weight in water follows from the
-/// displaced water, m_c = W'/g + ρ_w B l h' (PHYSICS.md §8.2 item 5).
+/// displaced water, m_c = W'/g + ρ_w B l h' (docs/model.md §8.2 item 5).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MassSpec {
@@ -165,7 +165,7 @@ impl Caisson {
         mass_kg * (width_m * width_m + height_m * height_m) / 12.0
     }
 
-    /// Mass in air from the weight in water (PHYSICS.md §8.2 item 5).
+    /// Mass in air from the weight in water (docs/model.md §8.2 item 5).
     pub fn mass_from_weight_in_water(weight_in_water_n: f64, displaced_kg: f64) -> f64 {
         weight_in_water_n / G_M_PER_S2 + displaced_kg
     }
@@ -189,11 +189,11 @@ mod tests {
 
     #[test]
     fn table6_mass_from_weight_in_water() {
-        // PHYSICS.md §8.2 item 5: 8.24 kN in water, 0.78 × 1.0 × 0.8 m displaced → 1463.96 kg.
+        // docs/model.md §8.2 item 5: 8.24 kN in water, 0.78 × 1.0 × 0.8 m displaced → 1463.96 kg.
         let disp = Caisson::displaced_water_kg(0.78, 1.0, 0.8, 1.12, 1000.0);
         let m = Caisson::mass_from_weight_in_water(8240.0, disp);
         assert!((m - 1463.96).abs() < 0.01, "{m}");
-        // Inertia about the base mid-point 686 kg·m², about the CoG 227 kg·m² (PHYSICS.md §8.3).
+        // Inertia about the base mid-point 686 kg·m², about the CoG 227 kg·m² (docs/model.md §8.3).
         let ig = Caisson::uniform_block_inertia_kg_m2(1464.0, 0.78, 1.12);
         assert!((ig - 227.3).abs() < 0.5, "{ig}");
         assert!((ig + 1464.0 * 0.56 * 0.56 - 686.0).abs() < 1.0);

@@ -1,27 +1,27 @@
 //! Breaking criteria: breaker height H_b at a depth, and its inversion, the breaking depth d_b of a
-//! wave of height H (PHYSICS.md §3.1, §3.2, §4.2).
+//! wave of height H (docs/model.md §3.1, §3.2, §4.2).
 //!
-//! * **Miche (1944)**, PHYSICS.md §3.1: H_b / L_b = 0.142 tanh(2π h_b / L_b), L_b the linear
+//! * **Miche (1944)**, docs/model.md §3.1: H_b / L_b = 0.142 tanh(2π h_b / L_b), L_b the linear
 //!   wavelength at h_b. Because tanh(k h) = k0/k by the dispersion relation (k0 = ω²/g), this is
-//!   H_b = 0.142 · 2π k0 / k(h_b)², so the inversion has a closed form (PHYSICS.md label D, derived):
+//!   H_b = 0.142 · 2π k0 / k(h_b)², so the inversion has a closed form (docs/model.md label D, derived):
 //!   k_b = √(0.142 · 2π k0 / H), d_b = artanh(k0/k_b) / k_b, defined for H < 0.142 L0 (the
 //!   deep-water limit). [`breaking_depth_bisect`] gives the same root by bisection (the left side
 //!   increases monotonically with depth, §3.1); the tests check the two agree to 1e-12.
-//! * **Goda (1970; 2000) breaker index**, PHYSICS.md §3.2:
+//! * **Goda (1970; 2000) breaker index**, docs/model.md §3.2:
 //!   H_b / L0 = A {1 − exp[−1.5π (h_b/L0)(1 + 15 tan^{4/3} θ)]}, A = 0.17 for regular waves,
 //!   θ the seabed slope. Inversion: h_b = −L0 ln(1 − H/(A L0)) / [1.5π (1 + 15 tan^{4/3} θ)].
 //! * **McCowan**: H_b = γ_b h_b, γ_b = 0.78.
 //!
 //! The seed (§4.2.1) limits the wave height at the toe with Miche and takes d_b and the breaker
 //! height H_br = H_b(d) at the wall from "the breaking criteria of Oumeraci et al. (2001)", which
-//! were not recovered; PHYSICS.md §4.2 recommends Miche for both, with the criterion pluggable.
+//! were not recovered; docs/model.md §4.2 recommends Miche for both, with the criterion pluggable.
 
 use super::dispersion::{deep_water_wavelength_m, deep_water_wavenumber, wavenumber};
 use std::f64::consts::PI;
 
 /// Miche's limiting steepness 0.142 (≈ 1/7).
 pub const MICHE_STEEPNESS: f64 = 0.142;
-/// Goda's breaker-index coefficient for regular waves (PHYSICS.md §3.2).
+/// Goda's breaker-index coefficient for regular waves (docs/model.md §3.2).
 pub const GODA_BREAKER_A: f64 = 0.17;
 /// McCowan's breaker index H_b / h_b.
 pub const MCCOWAN_GAMMA: f64 = 0.78;
@@ -30,9 +30,9 @@ pub const MCCOWAN_GAMMA: f64 = 0.78;
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum BreakerCriterion {
-    /// Miche (1944), PHYSICS.md §3.1 (default, as recommended in §4.2).
+    /// Miche (1944), docs/model.md §3.1 (default, as recommended in §4.2).
     Miche,
-    /// Goda's breaker index, PHYSICS.md §3.2, with coefficient `a` (0.17 regular waves) and the
+    /// Goda's breaker index, docs/model.md §3.2, with coefficient `a` (0.17 regular waves) and the
     /// seabed slope tan θ.
     Goda { a: f64, slope: f64 },
     /// McCowan, H_b = `gamma` · h_b.
@@ -71,7 +71,7 @@ impl BreakerCriterion {
     }
 }
 
-/// Miche breaker height H_b = 0.142 L tanh(2π h/L) (m) at depth `depth_m` (PHYSICS.md §3.1).
+/// Miche breaker height H_b = 0.142 L tanh(2π h/L) (m) at depth `depth_m` (docs/model.md §3.1).
 #[inline]
 pub fn miche_breaker_height_m(depth_m: f64, period_s: f64) -> f64 {
     miche_breaker_height_from_wavenumber_m(wavenumber(period_s, depth_m), period_s)
@@ -97,7 +97,7 @@ pub fn miche_breaking_depth_m(height_m: f64, period_s: f64) -> Option<f64> {
     (r < 1.0).then(|| r.atanh() / kb)
 }
 
-/// Goda breaker height (m), PHYSICS.md §3.2, with coefficient `a` and seabed slope tan θ.
+/// Goda breaker height (m), docs/model.md §3.2, with coefficient `a` and seabed slope tan θ.
 #[inline]
 pub fn goda_breaker_height_m(depth_m: f64, period_s: f64, slope: f64, a: f64) -> f64 {
     let l0 = deep_water_wavelength_m(period_s);
@@ -122,7 +122,7 @@ fn goda_slope_factor(slope: f64) -> f64 {
 }
 
 /// Breaking depth by bisection on any breaker-height function increasing with depth
-/// (PHYSICS.md §3.1). The bracket [0, d_hi] is found by doubling d_hi from `height_m`; the
+/// (docs/model.md §3.1). The bracket [0, d_hi] is found by doubling d_hi from `height_m`; the
 /// interval is then halved until it is below 1e-14 of d_hi. `None` if `height_m` ≤ 0 or the limit
 /// is never reached (the wave is too steep for any depth).
 pub fn breaking_depth_bisect(height_m: f64, breaker_height_m: impl Fn(f64) -> f64) -> Option<f64> {
@@ -163,7 +163,7 @@ mod tests {
 
     #[test]
     fn miche_values_of_physics_md_4_2() {
-        // PHYSICS.md §4.2 (T = 3.04 s): values given to 3 digits → 0.5 % as the issue asks.
+        // docs/model.md §4.2 (T = 3.04 s): values given to 3 digits → 0.5 % as the issue asks.
         let t = 3.04;
         let hbr = miche_breaker_height_m(0.4, t);
         assert!((hbr - 0.336).abs() / 0.336 < 0.005, "H_br(0.4) = {hbr}");

@@ -1,7 +1,7 @@
 //! Linear (Airy) dispersion relation at any depth.
 //!
 //! ```text
-//!     ω² = g k tanh(k h),      ω = 2π/T,   L = 2π/k,   L0 = g T²/(2π)      (PHYSICS.md §0)
+//!     ω² = g k tanh(k h),      ω = 2π/T,   L = 2π/k,   L0 = g T²/(2π)      (docs/model.md §0)
 //! ```
 //!
 //! With x = k0 h = ω² h/g and y = k h the relation reads y tanh y = x. It is solved by Halley's
@@ -13,7 +13,7 @@
 //! y = x. The unit tests check the residual of y tanh y = x to a few ulp for x from 1e-8 to 1e6.
 //!
 //! Also: the linear shoaling coefficient K_si = [tanh(kh) · 2n]^{−1/2},
-//! n = ½ (1 + 2kh / sinh 2kh) (PHYSICS.md §3.3).
+//! n = ½ (1 + 2kh / sinh 2kh) (docs/model.md §3.3).
 
 use crate::G_M_PER_S2;
 use std::f64::consts::PI;
@@ -94,7 +94,7 @@ pub fn group_velocity_ratio(kh: f64) -> f64 {
     0.5 * (1.0 + 2.0 * kh / (2.0 * kh).sinh())
 }
 
-/// Linear shoaling coefficient K_si = [tanh(kh) · 2n]^{−1/2} (PHYSICS.md §3.3).
+/// Linear shoaling coefficient K_si = [tanh(kh) · 2n]^{−1/2} (docs/model.md §3.3).
 #[inline]
 pub fn linear_shoaling_coefficient(period_s: f64, depth_m: f64) -> f64 {
     let kh = wavenumber(period_s, depth_m) * depth_m;
@@ -120,7 +120,7 @@ mod tests {
 
     #[test]
     fn pari_wavelength_matches_physics_md() {
-        // PHYSICS.md §11: T = 3.04 s, h = 1.14 m → L = 9.3214 m (given to 5 digits → 1e-5 relative).
+        // docs/model.md §11: T = 3.04 s, h = 1.14 m → L = 9.3214 m (given to 5 digits → 1e-5 relative).
         let l = wavelength_m(3.04, 1.14);
         assert!((l - 9.3214).abs() / 9.3214 < 1e-5, "L = {l}");
     }

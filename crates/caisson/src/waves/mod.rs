@@ -1,4 +1,4 @@
-//! Linear wave theory, breaking criteria and wave-height statistics (PHYSICS.md §3, §4.2).
+//! Linear wave theory, breaking criteria and wave-height statistics (docs/model.md §3, §4.2).
 //!
 //! * [`dispersion`]: the linear dispersion relation ω² = g k tanh(k h) at any depth, solved to
 //!   machine precision.

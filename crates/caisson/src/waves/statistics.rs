@@ -1,4 +1,4 @@
-//! Rayleigh distribution of individual wave heights (PHYSICS.md §6.4 item 5).
+//! Rayleigh distribution of individual wave heights (docs/model.md §6.4 item 5).
 //!
 //! ```text
 //! P(H > x) = exp[−2 (x / H1/3)²]          quantile:  x(p) = H1/3 √(−ln p / 2)

@@ -1,5 +1,5 @@
 //! Goda's (2000) surf-zone wave heights for random waves, with Kweon & Goda (1996) nonlinear
-//! shoaling (PHYSICS.md §3.3; verified against the `breakwater` package, BW).
+//! shoaling (docs/model.md §3.3; verified against the `breakwater` package, BW).
 //!
 //! ```text
 //! H1/3  = min{ β0 H0' + β1 h,   β_max H0',   K_s H0' }          (h/L0 < 0.2; else K_s H0')
@@ -28,7 +28,7 @@ pub struct SurfZoneHeights {
     pub shoaling: f64,
 }
 
-/// Kweon & Goda (1996) nonlinear shoaling coefficient K_s (PHYSICS.md §3.3).
+/// Kweon & Goda (1996) nonlinear shoaling coefficient K_s (docs/model.md §3.3).
 #[inline]
 pub fn kweon_goda_shoaling(depth_m: f64, period_s: f64, h0_prime_m: f64) -> f64 {
     let l0 = deep_water_wavelength_m(period_s);
@@ -58,7 +58,7 @@ pub fn goda_surf_zone(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) 
     SurfZoneHeights { h13_m, hmax_m, shoaling: ks }
 }
 
-/// Design heights for Goda's pressure formula (PHYSICS.md §1.3, §3.3): H1/3 at the site depth
+/// Design heights for Goda's pressure formula (docs/model.md §1.3, §3.3): H1/3 at the site depth
 /// `depth_m`, and H_max at h_b = h + 5 H1/3 tan θ. Returns (H1/3 at h, H_max at h_b, h_b), m.
 pub fn design_heights(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) -> (f64, f64, f64) {
     let at_site = goda_surf_zone(h0_prime_m, period_s, depth_m, slope);
@@ -87,7 +87,7 @@ mod tests {
 
     #[test]
     fn surf_zone_heights_are_the_smallest_of_goda_s_three_terms() {
-        // PHYSICS.md §3.3 example by hand: H0' = 3 m, T = 10 s, tan θ = 0.02, h = 5 m.
+        // docs/model.md §3.3 example by hand: H0' = 3 m, T = 10 s, tan θ = 0.02, h = 5 m.
         let (t, h0, s, h) = (10.0f64, 3.0f64, 0.02f64, 5.0f64);
         let l0 = deep_water_wavelength_m(t);
         let st = h0 / l0;
