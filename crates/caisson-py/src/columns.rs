@@ -16,7 +16,8 @@ enum Col {
     Float(Vec<f64>),
     Int(Vec<i64>),
     Bool(Vec<Option<bool>>),
-    Str(Vec<Option<String>>),
+    /// Codes into the column's distinct values (`u32::MAX`: null): few distinct strings.
+    Str(Vec<u32>, Vec<String>),
 }
 
 enum Cell<'a> {
@@ -43,7 +44,9 @@ impl Col {
                         }
                     }
                     Cell::Bool(v) => Col::Bool(std::iter::repeat_n(None, n).chain([Some(v)]).collect()),
-                    Cell::Str(v) => Col::Str(std::iter::repeat_n(None, n).chain([Some(v.to_string())]).collect()),
+                    Cell::Str(v) => {
+                        Col::Str(std::iter::repeat_n(u32::MAX, n).chain([0]).collect(), vec![v.to_string()])
+                    }
                     Cell::Null => unreachable!(),
                 }
             }
@@ -63,8 +66,17 @@ impl Col {
             }
             (Col::Bool(v), Cell::Bool(x)) => v.push(Some(x)),
             (Col::Bool(v), Cell::Null) => v.push(None),
-            (Col::Str(v), Cell::Str(x)) => v.push(Some(x.to_string())),
-            (Col::Str(v), Cell::Null) => v.push(None),
+            (Col::Str(codes, values), Cell::Str(x)) => {
+                let code = match values.iter().position(|v| v == x) {
+                    Some(i) => i,
+                    None => {
+                        values.push(x.to_string());
+                        values.len() - 1
+                    }
+                };
+                codes.push(code as u32);
+            }
+            (Col::Str(codes, _), Cell::Null) => codes.push(u32::MAX),
             _ => return Err("a column changes type between rows".into()),
         }
         Ok(())
@@ -100,7 +112,7 @@ impl Columns {
             self.names.push(self.path.join("."));
             self.leaves.push(leaf.to_string());
             self.cols.push(Col::Null(0));
-        } else if self.leaves.get(self.pos).map(String::as_str) != Some(leaf) {
+        } else if leaf != ANY_KEY && self.leaves.get(self.pos).map(String::as_str) != Some(leaf) {
             return Err(Error(format!(
                 "row {} has key `{}` where the first row has another",
                 self.rows,
@@ -127,7 +139,9 @@ impl Columns {
                         PyArray1::from_vec(py, v.into_iter().map(|b| b.unwrap_or(false)).collect()).into_any().unbind()
                     }
                     Col::Bool(v) => v.into_pyobject(py)?.into_any().unbind(),
-                    Col::Str(v) => v.into_pyobject(py)?.into_any().unbind(),
+                    Col::Str(codes, values) => {
+                        (PyArray1::from_vec(py, codes), values).into_pyobject(py)?.into_any().unbind()
+                    }
                 })
             })
             .collect::<PyResult<_>>()?;
@@ -151,6 +165,9 @@ impl ser::Error for Error {
 }
 
 type R = Result<(), Error>;
+
+/// The path element of a map key after the first row (not compared).
+const ANY_KEY: &str = "\u{0}";
 
 fn unsupported(what: &str) -> Error {
     Error(format!("a report row cannot hold {what}"))
@@ -309,12 +326,20 @@ impl ser::SerializeMap for MapRow<'_> {
     type Ok = ();
     type Error = Error;
     fn serialize_key<T: ?Sized + Serialize>(&mut self, key: &T) -> R {
+        if self.table.rows > 0 {
+            // The keys are those of the first row (checked by their count at the end of the row).
+            self.key = None;
+            return Ok(());
+        }
         let v = serde_json::to_value(key).map_err(|e| Error(e.to_string()))?;
         self.key = Some(v.as_str().map(str::to_string).ok_or_else(|| unsupported("a map with non-string keys"))?);
         Ok(())
     }
     fn serialize_value<T: ?Sized + Serialize>(&mut self, v: &T) -> R {
-        self.table.path.push(Cow::Owned(self.key.take().unwrap_or_default()));
+        self.table.path.push(match self.key.take() {
+            Some(k) => Cow::Owned(k),
+            None => Cow::Borrowed(ANY_KEY),
+        });
         v.serialize(&mut *self.table)?;
         self.table.path.pop();
         Ok(())

@@ -652,6 +652,22 @@ fn fit_lognormal(py: Python<'_>, im: Vec<f64>, k: Vec<u64>, n: Vec<u64>) -> PyRe
     }
 }
 
+/// Benchmark helper (BENCHMARKS.md, not API): seconds per `run` of the scenario's `[load]` inside
+/// Rust (the engine and the summary, no history), mean over `repeats` runs.
+#[pyfunction]
+fn _bench_run_s(py: Python<'_>, sc: &CoreScenario, repeats: usize) -> PyResult<f64> {
+    let sc = &sc.sc;
+    let load = sc.load.as_ref().ok_or_else(|| PyValueError::new_err("needs a [load]"))?;
+    py.detach(|| {
+        let t0 = std::time::Instant::now();
+        for _ in 0..repeats.max(1) {
+            let r = run_engine(sc.structure(), load, sc.duration_s, false).map_err(run_error)?;
+            std::hint::black_box(RunReport::new(&r.summary, sc.foundation().spring_positions(sc.caisson().width_m)));
+        }
+        Ok(t0.elapsed().as_secs_f64() / repeats.max(1) as f64)
+    })
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -674,5 +690,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_run_s, m)?)?;
     Ok(())
 }

@@ -35,7 +35,13 @@ def evaluate(scenario, heights_m: Any, period_s: Any = None) -> pd.DataFrame:
     h = np.ascontiguousarray(h).ravel()
     t = np.ascontiguousarray(t).ravel()
     names, cols = _core.loads_columns(scenario._core, h, t)
-    data = dict(zip(names, cols))
+    data = {}
+    for name, col in zip(names, cols):
+        if isinstance(col, tuple):  # text: (codes, distinct values); code 2^32 - 1 is null
+            codes, values = col
+            lookup = np.array(list(values) + [None], dtype=object)
+            col = lookup[np.minimum(codes, len(values))]
+        data[name] = col
     attrs = {k: data.pop(k)[0] if len(h) else None for k in ("caisson_version", "results_version")}
     frame = pd.DataFrame(data, copy=False)
     frame.attrs.update(attrs)
