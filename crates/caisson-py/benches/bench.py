@@ -1,0 +1,69 @@
+"""Benchmarks of the Python layer (BENCHMARKS.md, "Python package"): not tests, nothing asserted.
+
+    .venv/bin/python crates/caisson-py/benches/bench.py [--dask]
+
+1. Call overhead of caisson.run on a short scenario (table5_triangle.toml cut to 100 steps, no
+   history) against the same run timed inside Rust in the same process.
+2. caisson.loads.evaluate on 10^5 heights.
+3. (--dask) The Dask sweep (examples/python/sweep_dask.py) on 1 and 2 workers.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+import caisson
+from caisson import _core
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+def best_of(f, repeats: int, number: int) -> float:
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            f()
+        times.append((time.perf_counter() - t0) / number)
+    return statistics.median(times)
+
+
+def main() -> None:
+    a = argparse.ArgumentParser()
+    a.add_argument("--dask", action="store_true")
+    a.add_argument("--sweep-args", default="--lives 96 --years 50 --shard 8 --widths 18 20 22")
+    args = a.parse_args()
+
+    sc = caisson.Scenario.from_toml(ROOT / "examples" / "table5_triangle.toml").replace(load={"duration_s": 0.01})
+    py = best_of(lambda: caisson.run(sc, history=False), repeats=7, number=300)
+    rust = statistics.median(_core._bench_run_s(sc._core, 300) for _ in range(7))
+    print(f"caisson.run, 100 steps, no history: Python {py * 1e6:.1f} µs per call, Rust {rust * 1e6:.1f} µs, overhead {(py - rust) * 1e6:.1f} µs")
+
+    pari = caisson.Scenario.from_toml(ROOT / "examples" / "pari_breaking_loads.toml")
+    heights = np.linspace(0.01, 0.6, 100_000)
+    caisson.loads.evaluate(pari, heights[:1000])
+    t = best_of(lambda: caisson.loads.evaluate(pari, heights), repeats=5, number=1)
+    print(f"caisson.loads.evaluate, 1e5 heights: {t:.3f} s ({t / 1e5 * 1e6:.2f} µs per wave)")
+
+    if args.dask:
+        secs = {}
+        for w in (1, 2):
+            out = subprocess.run(
+                [sys.executable, str(ROOT / "examples/python/sweep_dask.py"), "--workers", str(w), *args.sweep_args.split()],
+                capture_output=True, text=True, check=True,
+            ).stdout
+            secs[w] = float(re.search(r"in ([0-9.]+) s", out).group(1))
+            print(f"dask sweep ({args.sweep_args}), {w} worker(s): {secs[w]:.2f} s")
+        print(f"speed-up {secs[1] / secs[2]:.2f}, efficiency {secs[1] / secs[2] / 2 * 100:.0f} %")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,526 @@
+"""caisson: how far a caisson breakwater slides under waves (Python bindings of the Rust engine).
+
+A thin layer: every number is computed by the Rust library (the same code as the ``caisson``
+command); this package only assembles its results into dicts, pandas DataFrames and xarray
+Datasets. Units are in every key and column name (``sliding_m``, ``fx_kn``); summaries are dicts
+with exactly the keys of the CLI's JSON (docs/cli.md, docs/design.md, docs/fragility.md).
+
+Objects are validated when built, immutable and picklable. Every run releases the GIL; parallel
+drivers run on a local pool of ``threads`` worker threads (default 1, 0 = one per core), never on
+a global pool, so Dask and Ray workers can each run one task per core. ``progress(done, total)``
+is called from the calling thread about every 0.1 s while work finishes.
+
+>>> import caisson
+>>> sc = caisson.Scenario.from_toml("examples/table5_triangle.toml")
+>>> r = caisson.run(sc)
+>>> r.summary["permanent_sliding_m"], r.history[["time_s", "fx_kn", "ux_m"]]
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import pandas as pd
+
+from . import _core, _toml
+from ._core import FitError, RunError, ScenarioError
+
+__all__ = [
+    "Scenario",
+    "ScenarioError",
+    "RunError",
+    "FitError",
+    "RunResult",
+    "run",
+    "campaign",
+    "Design",
+    "Fragility",
+    "FragilityResult",
+    "fit_lognormal",
+    "loads",
+    "waves",
+    "__version__",
+    "RESULTS_VERSION",
+]
+
+__version__: str = _core.VERSION
+#: Raised whenever a change moves any number for the same input; results of different versions
+#: are never comparable.
+RESULTS_VERSION: int = _core.RESULTS_VERSION
+
+Progress = Optional[Callable[[int, int], Any]]
+
+if sys.version_info >= (3, 11):
+    import tomllib as _tomllib
+else:  # pragma: no cover
+    _tomllib = None
+
+
+def _looks_like_text(s: str) -> bool:
+    return "\n" in s or "=" in s or s.lstrip().startswith("[")
+
+
+class Scenario:
+    """A validated scenario file (docs/scenario.md): immutable, picklable (by its TOML text).
+
+    Build it with :meth:`from_toml` (a path or TOML text) or :meth:`from_dict`; change it with
+    :meth:`replace`. Bad input raises :class:`ScenarioError` (a ``ValueError``) whose message is
+    the CLI's and whose ``.key``, ``.value`` and ``.allowed`` say what to fix.
+    """
+
+    __slots__ = ("_text", "_path", "_base_dir", "_core")
+
+    def __init__(self, text: str, *, path: str = "scenario.toml", base_dir: Union[str, os.PathLike] = ".") -> None:
+        core = _core.CoreScenario(text, str(path), str(base_dir))
+        object.__setattr__(self, "_text", text)
+        object.__setattr__(self, "_path", str(path))
+        object.__setattr__(self, "_base_dir", str(base_dir))
+        object.__setattr__(self, "_core", core)
+
+    @classmethod
+    def from_toml(cls, source: Union[str, os.PathLike], *, base_dir: Union[str, os.PathLike, None] = None) -> "Scenario":
+        """A scenario from a TOML file (a path) or TOML text. Relative file names in it (a force
+        series) are taken from the file's directory, or from ``base_dir`` (default: the current
+        directory for text)."""
+        if isinstance(source, os.PathLike) or (isinstance(source, str) and not _looks_like_text(source)):
+            p = Path(source)
+            text = p.read_text(encoding="utf-8")
+            return cls(text, path=str(source), base_dir=base_dir if base_dir is not None else (p.parent or Path(".")))
+        return cls(str(source), base_dir=base_dir if base_dir is not None else ".")
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any], *, base_dir: Union[str, os.PathLike] = ".") -> "Scenario":
+        """A scenario from a dictionary of tables, as :meth:`to_dict` gives (``{"caisson":
+        {"width_m": 0.78, ...}, ...}``; ``None`` values are left out)."""
+        return cls(_toml.dumps(d), base_dir=base_dir)
+
+    def to_dict(self) -> dict:
+        """The scenario's tables as written (keys and units of the file)."""
+        if _tomllib is None:  # pragma: no cover
+            raise RuntimeError("to_dict needs Python 3.11 (tomllib)")
+        return _tomllib.loads(self._text)
+
+    def to_toml(self) -> str:
+        """The TOML text of the scenario."""
+        return self._text
+
+    def replace(self, **tables: Mapping[str, Any]) -> "Scenario":
+        """A new scenario with keys of tables changed, e.g. ``sc.replace(caisson={"width_m": 22.0},
+        design={"lives": 100})``; a value ``None`` removes the key. Validated again: errors name the
+        file key (``[caisson] width_m``)."""
+        d = self.to_dict()
+        for table, keys in tables.items():
+            if keys is None:
+                d.pop(table, None)
+                continue
+            t = dict(d.get(table, {}))
+            for k, v in keys.items():
+                if v is None:
+                    t.pop(k, None)
+                else:
+                    t[k] = v
+            d[table] = t
+        return Scenario(_toml.dumps(d), path=self._path, base_dir=self._base_dir)
+
+    @property
+    def path(self) -> str:
+        """The file it was read from (``scenario.toml`` for text)."""
+        return self._path
+
+    @property
+    def base_dir(self) -> str:
+        return self._base_dir
+
+    @property
+    def has_load(self) -> bool:
+        return self._core.has_load
+
+    @property
+    def has_waves(self) -> bool:
+        return self._core.has_waves
+
+    @property
+    def has_campaign(self) -> bool:
+        return self._core.has_campaign
+
+    @property
+    def has_design(self) -> bool:
+        return self._core.has_design
+
+    @property
+    def has_fragility(self) -> bool:
+        return self._core.has_fragility
+
+    @property
+    def duration_s(self) -> float:
+        """Simulated time of a ``[load]`` run, s."""
+        return self._core.duration_s
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Scenario is immutable: use replace()")
+
+    def __reduce__(self):
+        return (_restore_scenario, (self._text, self._path, self._base_dir))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Scenario) and (self._text, self._base_dir) == (other._text, other._base_dir)
+
+    def __hash__(self) -> int:
+        return hash((self._text, self._base_dir))
+
+    def __repr__(self) -> str:
+        tables = [t for t in ("load", "waves", "campaign", "design", "fragility") if getattr(self, f"has_{t}")]
+        return f"Scenario({self._path!r}, tables: caisson, foundation, {', '.join(tables)})"
+
+
+def _restore_scenario(text: str, path: str, base_dir: str) -> Scenario:
+    return Scenario(text, path=path, base_dir=base_dir)
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """The results of :func:`run`.
+
+    ``summary``: the CLI's ``summary.json`` (``caisson run --json``) as a dict. For a ``[load]``
+    run, ``history``: one row every ``[solver] output_interval_s`` with the columns of
+    ``history.csv`` (``time_s``, ``ux_m``, ``fx_kn``, ...), and ``springs``: an xarray Dataset
+    (dims ``time_s`` × ``spring``; ``normal_kn``, ``shear_kn``, ``uy_m``; coordinate ``x_m``).
+    For a ``[waves]`` run, ``waves``: one row per wave of every realization.
+    """
+
+    summary: dict
+    history: Optional[pd.DataFrame] = None
+    springs: Any = None
+    waves: Optional[pd.DataFrame] = None
+
+
+def _springs_dataset(time_s: np.ndarray, s: dict):
+    import xarray as xr
+
+    n = len(s["x_m"])
+    return xr.Dataset(
+        {
+            "normal_kn": (("time_s", "spring"), s["normal_kn"]),
+            "shear_kn": (("time_s", "spring"), s["shear_kn"]),
+            "uy_m": (("time_s", "spring"), s["uy_m"]),
+        },
+        coords={"time_s": time_s, "spring": np.arange(1, n + 1), "x_m": ("spring", s["x_m"])},
+        attrs={
+            "normal_kn": "normal force of each spring, compression +",
+            "shear_kn": "shear force, + when it pushes the caisson seaward",
+            "uy_m": "vertical displacement of each spring, up +",
+            "x_m": "spring position from the base centre, shoreward +",
+        },
+    )
+
+
+def _waves_frame(summary: dict) -> pd.DataFrame:
+    rows = []
+    for r in summary["realizations"]:
+        for j, w in enumerate(r["waves"]):
+            rows.append(
+                {
+                    "realization": r["index"],
+                    "wave": j,
+                    "start_s": w["start_s"],
+                    "height_m": w["height_m"],
+                    "regime": w["regime"],
+                    "rise_time_s": w.get("rise_time_s", np.nan),
+                    "sliding_m": w["sliding_m"],
+                    "rigid_block_sliding_m": w["rigid_block_sliding_m"],
+                    "max_horizontal_reaction_kn": w["max_horizontal_reaction_kn"],
+                }
+            )
+    return pd.DataFrame(rows)
+
+
+def _array(name: str, v: Any) -> np.ndarray:
+    a = np.ascontiguousarray(np.asarray(v, dtype=np.float64))
+    if a.ndim != 1:
+        raise ScenarioError(f"`{name}`: must be a one-dimensional series")
+    return a
+
+
+def run(
+    scenario: Scenario,
+    *,
+    t_s: Any = None,
+    fx_kn: Any = None,
+    fy_kn: Any = None,
+    moment_knm: Any = None,
+    duration_s: Optional[float] = None,
+    history: bool = True,
+    threads: int = 1,
+    progress: Progress = None,
+) -> RunResult:
+    """One dynamic run (``caisson run``).
+
+    With ``t_s`` (s) and ``fx_kn`` (kN, shoreward +) and optionally ``fy_kn`` (uplift, kN, up +)
+    and ``moment_knm`` (kN·m about the base centre, clockwise +), totals on the caisson: that force
+    series is run instead of the scenario's ``[load]`` (linear between samples, held outside
+    them, as ``[load] kind = "series"``) for ``duration_s`` (default: to the last sample).
+    A scenario with ``[waves]`` and no ``[load]`` runs its wave trains (``threads``, ``progress``:
+    per realization). See :class:`RunResult`.
+    """
+    if t_s is not None or fx_kn is not None:
+        if t_s is None or fx_kn is None:
+            raise ScenarioError("a force series needs both t_s and fx_kn")
+        t = _array("t_s", t_s)
+        zeros = np.zeros_like(t)
+        series = (
+            t,
+            _array("fx_kn", fx_kn),
+            _array("fy_kn", zeros if fy_kn is None else fy_kn),
+            _array("moment_knm", zeros if moment_knm is None else moment_knm),
+        )
+        return _run_load(scenario, series, duration_s, history)
+    if scenario.has_load or not scenario.has_waves:
+        return _run_load(scenario, None, duration_s, history)
+    summary = json.loads(_core.run_trains(scenario._core, threads, progress))
+    return RunResult(summary=summary, waves=_waves_frame(summary))
+
+
+def _run_load(scenario: Scenario, series, duration_s, history: bool) -> RunResult:
+    text, cols = _core.run_load(scenario._core, series, duration_s, history)
+    summary = json.loads(text)
+    if cols is None:
+        return RunResult(summary=summary)
+    h, s = cols
+    frame = pd.DataFrame(h)
+    return RunResult(summary=summary, history=frame, springs=_springs_dataset(h["time_s"], s))
+
+
+def campaign(
+    scenario: Scenario,
+    *,
+    damping_mode: Optional[str] = None,
+    threads: int = 1,
+    progress: Progress = None,
+):
+    """The scenario's ``[campaign]`` (``caisson campaign``) as an ``xarray.Dataset``.
+
+    Dims ``condition`` × ``realization``. Per condition and realization: ``sliding_m``,
+    ``rigid_block_sliding_m``, ``max_horizontal_reaction_kn``, ``slip_events``. Per condition:
+    ``height_m``, ``weight_in_water_kn``, ``regime``, ``nominal_regime``,
+    ``goda_horizontal_force_kn_per_m``, ``goda_uplift_force_kn_per_m``,
+    ``impact_horizontal_force_kn_per_m``, ``sliding_safety_factor`` (NaN if undefined) and the
+    spreads of ``campaign.csv`` (``sliding_mean_m``, ...). ``attrs["report_json"]`` is the text of
+    ``campaign.json``. ``progress``: per realization.
+    """
+    import xarray as xr
+
+    stem = Path(scenario.path).stem or "campaign"
+    report = json.loads(_core.campaign(scenario._core, stem, damping_mode, threads, progress))
+    conds = report["conditions"]
+    nr = max(len(c["realization_sliding_m"]) for c in conds)
+
+    def per_real(get) -> np.ndarray:
+        a = np.full((len(conds), nr), np.nan)
+        for i, c in enumerate(conds):
+            v = [get(r) for r in c["realizations"]]
+            a[i, : len(v)] = v
+        return a
+
+    dims = ("condition", "realization")
+    data = {
+        "sliding_m": (dims, per_real(lambda r: r["sliding_m"])),
+        "rigid_block_sliding_m": (dims, per_real(lambda r: r["rigid_block_sliding_m"])),
+        "max_horizontal_reaction_kn": (dims, per_real(lambda r: r["max_horizontal_reaction_kn"])),
+        "slip_events": (dims, per_real(lambda r: r["slip_events"])),
+    }
+    col = lambda f: ("condition", np.array([f(c) for c in conds]))  # noqa: E731
+    for key in (
+        "height_m",
+        "weight_in_water_kn",
+        "regime",
+        "nominal_regime",
+        "goda_horizontal_force_kn_per_m",
+        "goda_uplift_force_kn_per_m",
+        "impact_horizontal_force_kn_per_m",
+    ):
+        data[key] = col(lambda c, k=key: c[k])
+    data["sliding_safety_factor"] = col(lambda c: c.get("sliding_safety_factor", np.nan))
+    for name, key, unit in (
+        ("sliding", "sliding_m", "m"),
+        ("rigid_block", "rigid_block_sliding_m", "m"),
+        ("max_horizontal_reaction", "max_horizontal_reaction_kn", "kn"),
+    ):
+        for stat in ("mean", "min", "max"):
+            data[f"{name}_{stat}_{unit}"] = col(lambda c, k=key, s=stat: c[k][s])
+    data["slip_events_mean"] = col(lambda c: c["slip_events"]["mean"])
+    attrs = {
+        "title": report["title"],
+        "waves_description": report["waves"]["description"],
+        "waves": report["waves"]["waves"],
+        "realizations": report["waves"]["realizations"],
+        "seed": report["waves"]["seed"],
+        "damping_mode": report["damping_mode"],
+        "caisson_version": report["caisson_version"],
+        "results_version": report["results_version"],
+        "report_json": json.dumps(report),
+    }
+    return xr.Dataset(data, coords={"condition": np.arange(len(conds)), "realization": np.arange(nr)}, attrs=attrs)
+
+
+_LIFE_COLUMNS = (
+    "sliding_m",
+    "rigid_block_sliding_m",
+    "max_storm_sliding_m",
+    "waves",
+    "simulated_waves",
+    "screened_waves",
+)
+
+
+class Design:
+    """Performance-based design (``caisson design``, docs/design.md): lives of the scenario's
+    ``[design]``, each from its own random stream keyed by its index, so lives can be simulated
+    in any order, on any number of machines, and gathered.
+
+    >>> d = caisson.Design(sc)                      # lives = [design] lives, or Design(sc, lives=N)
+    >>> part = d.simulate_lives(range(0, 50))       # a DataFrame, one row per life
+    >>> d.statistics([part, d.simulate_lives(range(50, 100))])   # == design.json of 100 lives
+    """
+
+    __slots__ = ("_scenario", "_lives")
+
+    def __init__(self, scenario: Scenario, *, lives: Optional[int] = None) -> None:
+        if not scenario.has_design:
+            _core.design_fingerprint_of(scenario._core)  # raises the library's ScenarioError
+        n = scenario._core.design_lives if lives is None else int(lives)
+        if n < 1:
+            raise ScenarioError(f"`lives` = {n}: must be at least 1")
+        object.__setattr__(self, "_scenario", scenario)
+        object.__setattr__(self, "_lives", n)
+
+    @property
+    def scenario(self) -> Scenario:
+        return self._scenario
+
+    @property
+    def lives(self) -> int:
+        """How many lives the design has (``[design] lives`` unless given)."""
+        return self._lives
+
+    @property
+    def fingerprint(self) -> str:
+        """What every life depends on (the checkpoint fingerprint of ``caisson design``)."""
+        return _core.design_fingerprint_of(self._scenario._core)
+
+    def simulate_lives(self, indices: Optional[Iterable[int]] = None, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
+        """Simulate lives ``indices`` (default: all, 0 .. lives − 1), in any order: one row per
+        life, sorted by ``life``, with the columns of ``lives.csv`` (``sliding_m``,
+        ``rigid_block_sliding_m``, ``max_storm_sliding_m`` in m; ``waves``, ``simulated_waves``,
+        ``screened_waves``)."""
+        idx = list(range(self._lives)) if indices is None else [int(i) for i in indices]
+        if any(i < 0 for i in idx):
+            raise ScenarioError("life indices must be ≥ 0")
+        cols = _core.design_lives(self._scenario._core, idx, threads, progress)
+        return pd.DataFrame(cols)
+
+    def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> dict:
+        """``design.json`` (the dict of ``caisson design --json``) of the lives given (one
+        DataFrame or several, e.g. shards from workers, in any order). The statistics of lives
+        0 .. N − 1 are exactly those of ``caisson design`` with N lives."""
+        frame = lives if isinstance(lives, pd.DataFrame) else pd.concat(list(lives), ignore_index=True)
+        if frame["life"].duplicated().any():
+            dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
+            raise ValueError(f"life {dup} appears more than once")
+        frame = frame.sort_values("life", kind="stable")
+        args = [frame[c].to_numpy(dtype=np.float64 if c.endswith("_m") else np.uint64).tolist() for c in _LIFE_COLUMNS]
+        return json.loads(_core.design_statistics(self._scenario._core, *args))
+
+    def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
+        """All lives at once: (``design.json`` dict, lives DataFrame)."""
+        lives = self.simulate_lives(threads=threads, progress=progress)
+        return self.statistics(lives), lives
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Design is immutable")
+
+    def __reduce__(self):
+        return (_restore_design, (self._scenario, self._lives))
+
+    def __repr__(self) -> str:
+        return f"Design({self._scenario.path!r}, lives={self._lives})"
+
+
+def _restore_design(scenario: Scenario, lives: int) -> Design:
+    return Design(scenario, lives=lives)
+
+
+@dataclass(frozen=True)
+class FragilityResult:
+    """The results of :meth:`Fragility.run`: ``summary`` (``fragility.json``), ``levels`` (one row
+    per height), ``storms`` (one row per storm: ``level``, ``significant_height_m``, ``storm``,
+    ``sliding_m``, ``rigid_block_sliding_m``) and ``fits`` (one row per limit and model)."""
+
+    summary: dict
+    levels: pd.DataFrame
+    storms: pd.DataFrame
+    fits: pd.DataFrame
+
+
+class Fragility:
+    """Fragility curves for sliding (``caisson fragility``, docs/fragility.md)."""
+
+    __slots__ = ("_scenario",)
+
+    def __init__(self, scenario: Scenario) -> None:
+        if not scenario.has_fragility:
+            raise ScenarioError(
+                "missing key `[fragility]`: Fragility needs a [fragility] table with significant_heights_m (and storms, limits_m, ...)"
+            )
+        object.__setattr__(self, "_scenario", scenario)
+
+    @property
+    def scenario(self) -> Scenario:
+        return self._scenario
+
+    def run(self, *, threads: int = 1, progress: Progress = None) -> FragilityResult:
+        """Every storm of every height (``progress``: per storm), counts and lognormal fits."""
+        name = Path(self._scenario.path).name or "fragility"
+        s = json.loads(_core.fragility(self._scenario._core, name, threads, progress))
+        levels = pd.DataFrame(
+            [{k: v for k, v in lv.items() if k not in ("exceedance", "storm_sliding_m", "storm_rigid_block_sliding_m")} for lv in s["levels"]]
+        )
+        storms = pd.DataFrame(
+            [
+                {"level": i, "significant_height_m": lv["significant_height_m"], "storm": j, "sliding_m": a, "rigid_block_sliding_m": b}
+                for i, lv in enumerate(s["levels"])
+                for j, (a, b) in enumerate(zip(lv["storm_sliding_m"], lv["storm_rigid_block_sliding_m"]))
+            ]
+        )
+        fits = pd.DataFrame(
+            [{"limit_m": f["limit_m"], "model": m, **f[m]} for f in s["fits"] for m in ("dynamic", "rigid_block")]
+        )
+        return FragilityResult(summary=s, levels=levels, storms=storms, fits=fits)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Fragility is immutable")
+
+    def __reduce__(self):
+        return (Fragility, (self._scenario,))
+
+
+def fit_lognormal(im: Any, k: Any, n: Any) -> dict:
+    """Maximum-likelihood lognormal fragility P(IM) = Φ((ln IM − ln θ)/β) from ``k[i]``
+    exceedances in ``n[i]`` trials at intensities ``im[i]`` > 0 (docs/fragility.md). Returns
+    ``{"median", "beta", "ln_median_se", "beta_se", "log_likelihood"}`` (median in the unit of
+    IM); raises :class:`FitError` (``.reason``) when the counts do not determine the fit."""
+    im_l = [float(x) for x in np.asarray(im, dtype=np.float64).ravel()]
+    k_l = [int(x) for x in np.asarray(k).ravel()]
+    n_l = [int(x) for x in np.asarray(n).ravel()]
+    if any(x < 0 for x in k_l + n_l):
+        raise ValueError("counts must be ≥ 0")
+    median, beta, se_m, se_b, ll = _core.fit_lognormal(im_l, k_l, n_l)
+    return {"median": median, "beta": beta, "ln_median_se": se_m, "beta_se": se_b, "log_likelihood": ll}
+
+
+from . import loads, waves  # noqa: E402  (submodules use the names above)

@@ -1,0 +1,94 @@
+import os
+from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
+
+import pandas as pd
+import xarray as xr
+
+from . import loads as loads, waves as waves
+
+__version__: str
+RESULTS_VERSION: int
+
+Progress = Optional[Callable[[int, int], Any]]
+
+class ScenarioError(ValueError):
+    key: Optional[str]
+    value: Optional[str]
+    allowed: Optional[str]
+
+class RunError(RuntimeError): ...
+
+class FitError(ValueError):
+    reason: Optional[str]
+
+class Scenario:
+    def __init__(self, text: str, *, path: str = ..., base_dir: Union[str, os.PathLike] = ...) -> None: ...
+    @classmethod
+    def from_toml(cls, source: Union[str, os.PathLike], *, base_dir: Union[str, os.PathLike, None] = ...) -> Scenario: ...
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any], *, base_dir: Union[str, os.PathLike] = ...) -> Scenario: ...
+    def to_dict(self) -> dict: ...
+    def to_toml(self) -> str: ...
+    def replace(self, **tables: Optional[Mapping[str, Any]]) -> Scenario: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def base_dir(self) -> str: ...
+    @property
+    def has_load(self) -> bool: ...
+    @property
+    def has_waves(self) -> bool: ...
+    @property
+    def has_campaign(self) -> bool: ...
+    @property
+    def has_design(self) -> bool: ...
+    @property
+    def has_fragility(self) -> bool: ...
+    @property
+    def duration_s(self) -> float: ...
+
+class RunResult:
+    summary: dict
+    history: Optional[pd.DataFrame]
+    springs: Optional[xr.Dataset]
+    waves: Optional[pd.DataFrame]
+
+def run(
+    scenario: Scenario,
+    *,
+    t_s: Any = ...,
+    fx_kn: Any = ...,
+    fy_kn: Any = ...,
+    moment_knm: Any = ...,
+    duration_s: Optional[float] = ...,
+    history: bool = ...,
+    threads: int = ...,
+    progress: Progress = ...,
+) -> RunResult: ...
+def campaign(scenario: Scenario, *, damping_mode: Optional[str] = ..., threads: int = ..., progress: Progress = ...) -> xr.Dataset: ...
+
+class Design:
+    def __init__(self, scenario: Scenario, *, lives: Optional[int] = ...) -> None: ...
+    @property
+    def scenario(self) -> Scenario: ...
+    @property
+    def lives(self) -> int: ...
+    @property
+    def fingerprint(self) -> str: ...
+    def simulate_lives(self, indices: Optional[Iterable[int]] = ..., *, threads: int = ..., progress: Progress = ...) -> pd.DataFrame: ...
+    def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> dict: ...
+    def run(self, *, threads: int = ..., progress: Progress = ...) -> tuple[dict, pd.DataFrame]: ...
+
+class FragilityResult:
+    summary: dict
+    levels: pd.DataFrame
+    storms: pd.DataFrame
+    fits: pd.DataFrame
+
+class Fragility:
+    def __init__(self, scenario: Scenario) -> None: ...
+    @property
+    def scenario(self) -> Scenario: ...
+    def run(self, *, threads: int = ..., progress: Progress = ...) -> FragilityResult: ...
+
+def fit_lognormal(im: Any, k: Any, n: Any) -> dict: ...

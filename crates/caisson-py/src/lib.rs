@@ -1,0 +1,695 @@
+//! `caisson._core`: the Python extension of the `caisson` package (a thin layer over the library).
+//!
+//! Every function here takes a validated [`CoreScenario`], calls one library driver with the GIL
+//! released, and hands back either the JSON text of the library's report struct (the one the CLI
+//! prints, so the keys and the numbers are the CLI's) or columns of numbers (numpy arrays) that
+//! the Python package assembles into pandas and xarray objects. There is no physics here.
+//!
+//! Threads: a parallel driver runs on a local rayon pool of `threads` workers (0: one per core),
+//! never on the global pool. Progress: the driver counts finished items; the calling thread wakes
+//! every 0.1 s (GIL released), and when the count moved it takes the GIL and calls
+//! `progress(done, total)`.
+
+mod columns;
+
+use caisson::analysis::campaign::run_campaign;
+use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
+use caisson::analysis::lifetime::{run_lives, StormOutcome};
+use caisson::analysis::run::{run as run_engine, History};
+use caisson::analysis::train::run_realizations;
+use caisson::foundation::DampingMode;
+use caisson::loads::series::ForceSeries;
+use caisson::loads::{LoadSpec, WaveForce};
+use caisson::report::campaign::CampaignReport;
+use caisson::report::design::{design_fingerprint, DesignReport};
+use caisson::report::fragility::FragilityReport;
+use caisson::report::loads::LoadsReport;
+use caisson::report::run::RunReport;
+use caisson::report::train::TrainRunReport;
+use caisson::scenario::{Scenario, ScenarioError as LibError};
+use caisson::waves::{breaking, dispersion, surf_zone};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::ops::ControlFlow;
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Duration;
+
+create_exception!(
+    caisson,
+    ScenarioError,
+    PyValueError,
+    "Bad scenario input: `str(e)` is the CLI's message; `.key` the file key (`\"[caisson] width_m\"`), `.value` the value as written, `.allowed` what is allowed (each may be None)."
+);
+create_exception!(
+    caisson,
+    FitError,
+    PyValueError,
+    "The counts do not determine a lognormal fit: `.reason` (\"no-exceedance\", \"all-exceed\", \"separated\", \"at-bounds\") and the message."
+);
+create_exception!(
+    caisson,
+    RunError,
+    PyRuntimeError,
+    "A run failed (Newton-Raphson did not converge): the CLI's message."
+);
+
+/// A Python `ScenarioError` with its attributes.
+fn scenario_error(
+    py: Python<'_>,
+    message: String,
+    key: Option<String>,
+    value: Option<String>,
+    allowed: Option<String>,
+) -> PyErr {
+    let e = ScenarioError::new_err(message);
+    let v = e.value(py);
+    let _ = v.setattr("key", key);
+    let _ = v.setattr("value", value);
+    let _ = v.setattr("allowed", allowed);
+    e
+}
+
+/// The table and key of line `line` (1-based) of TOML `text`: `"[table] key"`, `"[table]"` for a
+/// table header, or `"key"` before any table.
+fn key_at_line(text: &str, line: usize) -> Option<String> {
+    let lines: Vec<&str> = text.lines().collect();
+    let here = lines.get(line.checked_sub(1)?)?.trim();
+    let header = |l: &str| {
+        let l = l.trim();
+        (l.starts_with('[')).then(|| l.trim_start_matches('[').split(']').next().unwrap_or("").trim().to_string())
+    };
+    if let Some(h) = header(here) {
+        return Some(format!("[{h}]"));
+    }
+    let key = here.split('=').next()?.trim().trim_matches('"').to_string();
+    if key.is_empty() || !here.contains('=') {
+        return None;
+    }
+    match lines[..line - 1].iter().rev().find_map(|l| header(l)) {
+        Some(t) => Some(format!("[{t}] {key}")),
+        None => Some(key),
+    }
+}
+
+/// A library scenario error as a Python `ScenarioError` (message = the CLI's words after `Error: `).
+fn lib_error(py: Python<'_>, e: LibError, text: Option<&str>) -> PyErr {
+    let message = e.to_string();
+    match e {
+        LibError::OutOfRange { key, value, allowed } => {
+            scenario_error(py, message, Some(key), Some(value), Some(allowed))
+        }
+        LibError::Missing { key, hint } => scenario_error(py, message, Some(key), None, Some(hint)),
+        LibError::Syntax { line, .. } => {
+            let key = text.and_then(|t| key_at_line(t, line));
+            scenario_error(py, message, key, None, None)
+        }
+        LibError::Series { path, .. } => {
+            scenario_error(py, message, Some("[load] file".into()), Some(path.display().to_string()), None)
+        }
+        LibError::Read { .. } | LibError::Conflict { .. } => scenario_error(py, message, None, None, None),
+    }
+}
+
+fn run_error(e: impl std::fmt::Display) -> PyErr {
+    RunError::new_err(e.to_string())
+}
+
+/// A validated scenario (the library's `Scenario`). Immutable; the Python `caisson.Scenario`
+/// keeps the TOML text beside it (pickling, `to_dict`, `replace`).
+#[pyclass(frozen, module = "caisson._core")]
+struct CoreScenario {
+    sc: Scenario,
+}
+
+#[pymethods]
+impl CoreScenario {
+    /// Parse and validate TOML `text`; `name` names it in messages, `base_dir` resolves relative
+    /// file names (a force series).
+    #[new]
+    fn new(py: Python<'_>, text: &str, name: &str, base_dir: &str) -> PyResult<Self> {
+        Scenario::from_toml(text, Path::new(name), Path::new(base_dir))
+            .map(|sc| CoreScenario { sc })
+            .map_err(|e| lib_error(py, e, Some(text)))
+    }
+    #[getter]
+    fn has_load(&self) -> bool {
+        self.sc.load.is_some()
+    }
+    #[getter]
+    fn has_waves(&self) -> bool {
+        self.sc.waves.is_some()
+    }
+    #[getter]
+    fn has_campaign(&self) -> bool {
+        self.sc.campaign.is_some()
+    }
+    #[getter]
+    fn has_design(&self) -> bool {
+        self.sc.design.is_some()
+    }
+    #[getter]
+    fn has_fragility(&self) -> bool {
+        self.sc.fragility.is_some()
+    }
+    /// Simulated time of a `[load]` run, s.
+    #[getter]
+    fn duration_s(&self) -> f64 {
+        self.sc.duration_s
+    }
+    /// Lives of `[design]` (None without it).
+    #[getter]
+    fn design_lives(&self) -> Option<usize> {
+        self.sc.design.as_ref().map(|d| d.lives)
+    }
+    /// The typed parameters as the library holds them (SI), JSON text (for inspection only).
+    fn structure_json(&self) -> PyResult<String> {
+        serde_json::to_string(self.sc.structure()).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    }
+}
+
+/// JSON text of a report, refusing non-finite numbers as the CLI does.
+fn report_json<T: serde::Serialize>(report: &T, what: &str) -> PyResult<String> {
+    let v = serde_json::to_value(report).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    fn finite(v: &serde_json::Value) -> bool {
+        match v {
+            serde_json::Value::Null => false,
+            serde_json::Value::Object(m) => m.values().all(finite),
+            serde_json::Value::Array(a) => a.iter().all(finite),
+            _ => true,
+        }
+    }
+    if !finite(&v) {
+        return Err(PyRuntimeError::new_err(format!("internal error: {what} has a non-finite number")));
+    }
+    Ok(v.to_string())
+}
+
+/// Run `job` on a local pool of `threads` workers with the GIL released; `progress(done, total)`
+/// is called from this thread (GIL held) at most every 0.1 s while the count moves, and once at
+/// the end.
+fn drive<T: Send>(
+    py: Python<'_>,
+    threads: usize,
+    total: usize,
+    progress: Option<Py<PyAny>>,
+    job: impl FnOnce(&(dyn Fn() + Sync)) -> T + Send,
+) -> PyResult<T> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| PyRuntimeError::new_err(format!("starting the worker threads: {e}")))?;
+    let done = AtomicUsize::new(0);
+    let tick = || {
+        done.fetch_add(1, Ordering::Relaxed);
+    };
+    let Some(progress) = progress else {
+        return Ok(py.detach(|| pool.install(|| job(&tick))));
+    };
+    let mut reported = usize::MAX;
+    let mut report = |n: usize| -> PyResult<()> {
+        if n != reported {
+            reported = n;
+            Python::attach(|py| progress.call1(py, (n, total)).map(|_| ()))?;
+        }
+        Ok(())
+    };
+    let (result, callback_error) = py.detach(|| {
+        std::thread::scope(|s| {
+            let (tx, rx) = std::sync::mpsc::channel();
+            let worker = s.spawn(move || {
+                let out = pool.install(|| job(&tick));
+                let _ = tx.send(());
+                out
+            });
+            let mut callback_error = None;
+            loop {
+                let finished = rx.recv_timeout(Duration::from_millis(100)).is_ok();
+                if callback_error.is_none() {
+                    callback_error = report(done.load(Ordering::Relaxed)).err();
+                }
+                if finished {
+                    break;
+                }
+            }
+            (worker.join(), callback_error)
+        })
+    });
+    let result = result.map_err(|_| PyRuntimeError::new_err("a worker thread panicked"))?;
+    match callback_error {
+        Some(e) => Err(e),
+        None => Ok(result),
+    }
+}
+
+/// Columns of a run history with the CLI's names and units (`history.csv`), and the springs.
+fn history_columns<'py>(py: Python<'py>, h: &History) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let d = PyDict::new(py);
+    let kn = |v: &[f64]| v.iter().map(|x| x / 1e3).collect::<Vec<f64>>();
+    d.set_item("time_s", PyArray1::from_slice(py, &h.t_s))?;
+    d.set_item("ux_m", PyArray1::from_slice(py, &h.ux_m))?;
+    d.set_item("uy_m", PyArray1::from_slice(py, &h.uy_m))?;
+    d.set_item("theta_rad", PyArray1::from_slice(py, &h.theta_rad))?;
+    d.set_item("vx_m_per_s", PyArray1::from_slice(py, &h.vx_m_per_s))?;
+    d.set_item("fx_kn", PyArray1::from_vec(py, kn(&h.fx_n)))?;
+    d.set_item("fy_kn", PyArray1::from_vec(py, kn(&h.fy_n)))?;
+    d.set_item("moment_knm", PyArray1::from_vec(py, kn(&h.m_nm)))?;
+    d.set_item("reaction_x_kn", PyArray1::from_vec(py, kn(&h.reaction_x_n)))?;
+    d.set_item("reaction_y_kn", PyArray1::from_vec(py, kn(&h.reaction_y_n)))?;
+    d.set_item("reaction_moment_knm", PyArray1::from_vec(py, kn(&h.reaction_m_nm)))?;
+    d.set_item("sliding_resistance_kn", PyArray1::from_vec(py, kn(&h.sliding_resistance_n)))?;
+    d.set_item("sliding_springs", PyArray1::from_slice(py, &h.sliding_springs))?;
+    let n = h.springs();
+    let rows = h.len();
+    let pick = |offset: usize| -> Vec<Vec<f64>> {
+        (0..rows)
+            .map(|k| h.spring_forces_n[k * 2 * n + offset..k * 2 * n + offset + n].iter().map(|v| v / 1e3).collect())
+            .collect()
+    };
+    let uy: Vec<Vec<f64>> = (0..rows).map(|k| h.spring_uy_m[k * n..(k + 1) * n].to_vec()).collect();
+    let s = PyDict::new(py);
+    let arr2 = |v: Vec<Vec<f64>>| -> PyResult<Bound<'py, PyArray2<f64>>> {
+        if v.is_empty() {
+            return PyArray1::from_vec(py, Vec::<f64>::new()).reshape([0, n]);
+        }
+        PyArray2::from_vec2(py, &v).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    };
+    s.set_item("x_m", PyArray1::from_slice(py, &h.spring_x_m))?;
+    s.set_item("normal_kn", arr2(pick(0))?)?;
+    s.set_item("shear_kn", arr2(pick(n))?)?;
+    s.set_item("uy_m", arr2(uy)?)?;
+    Ok((d, s))
+}
+
+/// A force series from numpy columns (s, kN, kN, kN·m), checked as the CSV reader checks it.
+fn series_from(py: Python<'_>, t_s: &[f64], fx_kn: &[f64], fy_kn: &[f64], moment_knm: &[f64]) -> PyResult<ForceSeries> {
+    let n = t_s.len();
+    let bad = |key: &str, value: String, allowed: &str| {
+        scenario_error(
+            py,
+            format!("`{key}` = {value}: {allowed}"),
+            Some(key.to_string()),
+            Some(value),
+            Some(allowed.to_string()),
+        )
+    };
+    for (name, v) in [("fx_kn", fx_kn), ("fy_kn", fy_kn), ("moment_knm", moment_knm)] {
+        if v.len() != n {
+            return Err(bad(name, format!("{} values", v.len()), &format!("must have one value per time ({n})")));
+        }
+        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+            return Err(bad(name, format!("{x} (sample {i})"), "must be a finite number"));
+        }
+    }
+    if n < 2 {
+        return Err(bad("t_s", format!("{n} samples"), "at least 2 samples are needed"));
+    }
+    for i in 0..n {
+        if !t_s[i].is_finite() || (i > 0 && t_s[i] <= t_s[i - 1]) {
+            return Err(bad("t_s", format!("{} (sample {i})", t_s[i]), "times must be finite and strictly increasing"));
+        }
+    }
+    let f =
+        (0..n).map(|i| WaveForce { fx_n: fx_kn[i] * 1e3, fy_n: fy_kn[i] * 1e3, m_nm: moment_knm[i] * 1e3 }).collect();
+    Ok(ForceSeries::from_samples(t_s.to_vec(), f))
+}
+
+type Series<'py> =
+    (PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>);
+
+/// One dynamic run of the scenario's `[load]`, or of the force series `series` (t_s, fx_kn,
+/// fy_kn, moment_knm) for `duration_s` (default: to the last sample). Returns the `summary.json`
+/// text, the history columns and the springs.
+#[pyfunction]
+#[pyo3(signature = (sc, series=None, duration_s=None, history=true))]
+#[allow(clippy::type_complexity)]
+fn run_load<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    series: Option<Series<'py>>,
+    duration_s: Option<f64>,
+    history: bool,
+) -> PyResult<(String, Option<(Bound<'py, PyDict>, Bound<'py, PyDict>)>)> {
+    let sc = &sc.sc;
+    let own;
+    let (load, duration) = match series {
+        Some((t, fx, fy, m)) => {
+            let s = series_from(py, t.as_slice()?, fx.as_slice()?, fy.as_slice()?, m.as_slice()?)?;
+            let d = duration_s.unwrap_or_else(|| s.last_time_s());
+            own = LoadSpec::Series(s);
+            (&own, d)
+        }
+        None => {
+            let load = sc.load.as_ref().ok_or_else(|| {
+                scenario_error(
+                    py,
+                    "missing key `[load]`: a single run needs a [load] table (kind = \"triangle\", \"static\" or \"series\") or a force series (t_s=, fx_kn=, fy_kn=, moment_knm=)".into(),
+                    Some("[load]".into()),
+                    None,
+                    None,
+                )
+            })?;
+            (load, duration_s.unwrap_or(sc.duration_s))
+        }
+    };
+    if !(duration.is_finite() && duration > 0.0) {
+        return Err(scenario_error(
+            py,
+            format!("`duration_s` = {duration}: must be a finite number > 0 (s)"),
+            Some("duration_s".into()),
+            Some(duration.to_string()),
+            Some("must be a finite number > 0 (s)".into()),
+        ));
+    }
+    sc.solver().check_run(duration).map_err(|e| {
+        let allowed = e.allowed.describe(1.0, "");
+        scenario_error(
+            py,
+            format!("`[solver] {}` = {}: {allowed}", e.quantity, e.value),
+            Some(format!("[solver] {}", e.quantity)),
+            Some(e.value.to_string()),
+            Some(allowed),
+        )
+    })?;
+    let result = py.detach(|| run_engine(sc.structure(), load, duration, history)).map_err(run_error)?;
+    let x = sc.foundation().spring_positions(sc.caisson().width_m);
+    let json = report_json(&RunReport::new(&result.summary, x), "summary")?;
+    let cols = match &result.history {
+        Some(h) => Some(history_columns(py, h)?),
+        None => None,
+    };
+    Ok((json, cols))
+}
+
+/// The wave-train realizations of a `[waves]` scenario: the wave-train `summary.json` text.
+#[pyfunction]
+#[pyo3(signature = (sc, threads=1, progress=None))]
+fn run_trains(py: Python<'_>, sc: &CoreScenario, threads: usize, progress: Option<Py<PyAny>>) -> PyResult<String> {
+    let case = sc.sc.train_case().map_err(|e| lib_error(py, e, None))?;
+    let total = case.waves.train.realizations;
+    let summary = drive(py, threads, total, progress, |tick| run_realizations(&case, tick))?.map_err(run_error)?;
+    report_json(&TrainRunReport::new(case.structure, case.waves, &summary), "summary")
+}
+
+/// `caisson loads --json` text of the scenario's wave.
+#[pyfunction]
+fn loads_report(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
+    let sc = &sc.sc;
+    let ws = sc.waves_for("`caisson loads`").map_err(|e| lib_error(py, e, None))?;
+    let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).map_err(|e| regime_error(py, e))?;
+    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
+    let safety = ws.model.safety(&loads, w, mu);
+    serde_json::to_string(&LoadsReport::new(ws, &loads, &safety, w, mu))
+        .map_err(|e| PyRuntimeError::new_err(e.to_string()))
+}
+
+fn regime_error(py: Python<'_>, e: caisson::loads::regime::RegimeError) -> PyErr {
+    scenario_error(py, e.to_string(), Some("[waves] regime".into()), None, None)
+}
+
+/// The `caisson loads --json` quantities of many waves (heights and periods of equal length) as
+/// columns: (flattened key names, values). Keys are joined by "." (`goda.horizontal_force_kn_per_m`).
+#[pyfunction]
+fn loads_columns<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    heights_m: PyReadonlyArray1<'py, f64>,
+    periods_s: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Vec<String>, Vec<Py<PyAny>>)> {
+    let sc = &sc.sc;
+    let ws = sc.waves_for("caisson.loads.evaluate").map_err(|e| lib_error(py, e, None))?;
+    let (h, t) = (heights_m.as_slice()?, periods_s.as_slice()?);
+    if h.len() != t.len() {
+        return Err(PyValueError::new_err("heights_m and periods_s must have the same length"));
+    }
+    for (key, v) in [("heights_m", h), ("periods_s", t)] {
+        if let Some(x) = v.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
+            return Err(scenario_error(
+                py,
+                format!("`{key}` = {x}: must be a finite number > 0"),
+                Some(key.into()),
+                Some(x.to_string()),
+                Some("must be a finite number > 0".into()),
+            ));
+        }
+    }
+    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
+    let table = py.detach(|| -> Result<columns::Columns, String> {
+        let mut table = columns::Columns::default();
+        for (&h, &t) in h.iter().zip(t) {
+            let loads = ws.model.evaluate(h, t).map_err(|e| e.to_string())?;
+            let safety = ws.model.safety(&loads, w, mu);
+            table.push_row(&LoadsReport::new(ws, &loads, &safety, w, mu))?;
+        }
+        Ok(table)
+    });
+    let table = table.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))?;
+    table.into_python(py)
+}
+
+/// Linear wavelength L(T, h), m, element-wise.
+#[pyfunction]
+fn wavelength_m<'py>(
+    py: Python<'py>,
+    period_s: PyReadonlyArray1<'py, f64>,
+    depth_m: PyReadonlyArray1<'py, f64>,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let (t, d) = (period_s.as_slice()?, depth_m.as_slice()?);
+    Ok(PyArray1::from_vec(py, t.iter().zip(d).map(|(&t, &d)| dispersion::wavelength_m(t, d)).collect()))
+}
+
+/// Breaker height H_b(h, T), m, element-wise, by criterion 0 Miche, 1 Goda (a, slope), 2 McCowan (gamma).
+#[pyfunction]
+fn breaker_height_m<'py>(
+    py: Python<'py>,
+    criterion: u8,
+    depth_m: PyReadonlyArray1<'py, f64>,
+    period_s: PyReadonlyArray1<'py, f64>,
+    slope: PyReadonlyArray1<'py, f64>,
+    coefficient: f64,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let (d, t, s) = (depth_m.as_slice()?, period_s.as_slice()?, slope.as_slice()?);
+    let out = (0..d.len())
+        .map(|i| match criterion {
+            0 => breaking::miche_breaker_height_m(d[i], t[i]),
+            1 => breaking::goda_breaker_height_m(d[i], t[i], s[i], coefficient),
+            _ => coefficient * d[i],
+        })
+        .collect();
+    Ok(PyArray1::from_vec(py, out))
+}
+
+/// Goda's surf-zone H1/3 and H_max at depth h (PHYSICS.md §3.3), m, element-wise.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn surf_zone_heights<'py>(
+    py: Python<'py>,
+    h0_m: PyReadonlyArray1<'py, f64>,
+    period_s: PyReadonlyArray1<'py, f64>,
+    depth_m: PyReadonlyArray1<'py, f64>,
+    slope: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)> {
+    let (h, t, d, s) = (h0_m.as_slice()?, period_s.as_slice()?, depth_m.as_slice()?, slope.as_slice()?);
+    let z: Vec<surf_zone::SurfZoneHeights> =
+        (0..h.len()).map(|i| surf_zone::goda_surf_zone(h[i], t[i], d[i], s[i])).collect();
+    Ok((
+        PyArray1::from_vec(py, z.iter().map(|z| z.h13_m).collect()),
+        PyArray1::from_vec(py, z.iter().map(|z| z.hmax_m).collect()),
+    ))
+}
+
+/// The `[campaign]` of the scenario run in parallel: `campaign.json` text (with every realization).
+#[pyfunction]
+#[pyo3(signature = (sc, title, damping_mode=None, threads=1, progress=None))]
+fn campaign(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    title: &str,
+    damping_mode: Option<&str>,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<String> {
+    let mut scen = sc.sc.clone();
+    if let Some(m) = damping_mode {
+        let mode = match m {
+            "total" => DampingMode::Total,
+            "elastic" => DampingMode::Elastic,
+            _ => {
+                return Err(scenario_error(
+                    py,
+                    format!("`damping_mode` = \"{m}\": must be \"total\" or \"elastic\""),
+                    Some("damping_mode".into()),
+                    Some(m.into()),
+                    Some("\"total\" or \"elastic\"".into()),
+                ))
+            }
+        };
+        scen = scen.with_foundation(|f| f.damping_mode = mode).map_err(|e| lib_error(py, e, None))?;
+    }
+    let mut c = scen.campaign().map_err(|e| lib_error(py, e, None))?;
+    if scen.campaign.as_ref().is_some_and(|s| s.title.is_none()) {
+        c.title = title.to_string();
+    }
+    let total = c.setups.iter().map(|s| s.waves.train.realizations).sum();
+    let results = drive(py, threads, total, progress, |tick| run_campaign(&c.setups, tick))?.map_err(run_error)?;
+    report_json(&CampaignReport::new(&c, &results, true), "campaign")
+}
+
+/// The lives `indices` of the scenario's `[design]` (any subset, any order): columns sorted by
+/// life index (life, sliding_m, rigid_block_sliding_m, max_storm_sliding_m, waves,
+/// simulated_waves, screened_waves).
+#[pyfunction]
+#[pyo3(signature = (sc, indices, threads=1, progress=None))]
+fn design_lives<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    indices: Vec<usize>,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
+    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    let total = indices.len();
+    let lives = drive(py, threads, total, progress, |tick| {
+        run_lives(&case, &design.life, design.seed, &indices, &|_, _| {
+            tick();
+            ControlFlow::Continue(())
+        })
+    })?
+    .map_err(|e| run_error(format!("{e}: {}", e.source)))?;
+    let d = PyDict::new(py);
+    let col = |f: fn(&StormOutcome) -> f64| lives.iter().map(|(_, o)| f(o)).collect::<Vec<f64>>();
+    let count = |f: fn(&StormOutcome) -> u64| lives.iter().map(|(_, o)| f(o)).collect::<Vec<u64>>();
+    d.set_item("life", PyArray1::from_vec(py, lives.iter().map(|(i, _)| *i as u64).collect::<Vec<u64>>()))?;
+    d.set_item("sliding_m", PyArray1::from_vec(py, col(|o| o.sliding_m)))?;
+    d.set_item("rigid_block_sliding_m", PyArray1::from_vec(py, col(|o| o.rigid_block_sliding_m)))?;
+    d.set_item("max_storm_sliding_m", PyArray1::from_vec(py, col(|o| o.max_storm_sliding_m)))?;
+    d.set_item("waves", PyArray1::from_vec(py, count(|o| o.waves)))?;
+    d.set_item("simulated_waves", PyArray1::from_vec(py, count(|o| o.simulated)))?;
+    d.set_item("screened_waves", PyArray1::from_vec(py, count(|o| o.screened)))?;
+    Ok(d)
+}
+
+/// `design.json` text of the lives given as columns (in life order).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+fn design_statistics(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    sliding_m: Vec<f64>,
+    rigid_block_sliding_m: Vec<f64>,
+    max_storm_sliding_m: Vec<f64>,
+    waves: Vec<u64>,
+    simulated_waves: Vec<u64>,
+    screened_waves: Vec<u64>,
+) -> PyResult<String> {
+    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
+    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    let lives: Vec<StormOutcome> = (0..sliding_m.len())
+        .map(|i| StormOutcome {
+            sliding_m: sliding_m[i],
+            rigid_block_sliding_m: rigid_block_sliding_m[i],
+            waves: waves[i],
+            simulated: simulated_waves[i],
+            screened: screened_waves[i],
+            max_storm_sliding_m: max_storm_sliding_m[i],
+        })
+        .collect();
+    report_json(&DesignReport::new(design, case.rigid_block_mu, &lives), "design")
+}
+
+/// The fingerprint of the design's lives (what every life depends on).
+#[pyfunction]
+fn design_fingerprint_of(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
+    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
+    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    Ok(design_fingerprint(&case, design))
+}
+
+/// The scenario's `[fragility]`: `fragility.json` text (`name`: the scenario file's name).
+#[pyfunction]
+#[pyo3(signature = (sc, name, threads=1, progress=None))]
+fn fragility(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    name: &str,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<String> {
+    let p = sc.sc.fragility_for("Fragility").map_err(|e| lib_error(py, e, None))?;
+    let case = sc.sc.storm_case(true).map_err(|e| lib_error(py, e, None))?;
+    let ws = sc.sc.waves_for("Fragility").map_err(|e| lib_error(py, e, None))?;
+    let total = p.heights_m.len() * p.storms;
+    let r = drive(py, threads, total, progress, |tick| run_fragility(&case, p, tick))?
+        .map_err(|e| run_error(format!("{e}: {}", e.source)))?;
+    report_json(&FragilityReport::new(name, sc.sc.structure(), ws, p, &r), "fragility")
+}
+
+/// Maximum-likelihood lognormal fit of `k` exceedances in `n` trials at intensities `im`:
+/// (median, beta, ln_median_se, beta_se, log_likelihood), or `FitError`.
+#[pyfunction]
+fn fit_lognormal(py: Python<'_>, im: Vec<f64>, k: Vec<u64>, n: Vec<u64>) -> PyResult<(f64, f64, f64, f64, f64)> {
+    if im.len() != k.len() || k.len() != n.len() {
+        return Err(PyValueError::new_err("im, k and n must have the same length"));
+    }
+    if let Some(x) = im.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
+        return Err(PyValueError::new_err(format!("im = {x}: intensities must be finite numbers > 0")));
+    }
+    if let Some(i) = (0..k.len()).find(|&i| k[i] > n[i]) {
+        return Err(PyValueError::new_err(format!("k[{i}] = {} exceeds n[{i}] = {}", k[i], n[i])));
+    }
+    match py.detach(|| fit(&im, &k, &n)) {
+        Ok(f) => Ok((f.median, f.beta, f.ln_median_se, f.beta_se, f.log_likelihood)),
+        Err(e) => {
+            let err = FitError::new_err(e.to_string());
+            let reason = serde_json::to_value(e).ok().and_then(|v| v.as_str().map(str::to_string));
+            let _ = err.value(py).setattr("reason", reason);
+            Err(err)
+        }
+    }
+}
+
+/// Benchmark helper (BENCHMARKS.md, not API): seconds per `run` of the scenario's `[load]` inside
+/// Rust (the engine and the summary, no history), mean over `repeats` runs.
+#[pyfunction]
+fn _bench_run_s(py: Python<'_>, sc: &CoreScenario, repeats: usize) -> PyResult<f64> {
+    let sc = &sc.sc;
+    let load = sc.load.as_ref().ok_or_else(|| PyValueError::new_err("needs a [load]"))?;
+    py.detach(|| {
+        let t0 = std::time::Instant::now();
+        for _ in 0..repeats.max(1) {
+            let r = run_engine(sc.structure(), load, sc.duration_s, false).map_err(run_error)?;
+            std::hint::black_box(RunReport::new(&r.summary, sc.foundation().spring_positions(sc.caisson().width_m)));
+        }
+        Ok(t0.elapsed().as_secs_f64() / repeats.max(1) as f64)
+    })
+}
+
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("ScenarioError", py.get_type::<ScenarioError>())?;
+    m.add("FitError", py.get_type::<FitError>())?;
+    m.add("RunError", py.get_type::<RunError>())?;
+    m.add("VERSION", caisson::VERSION)?;
+    m.add("RESULTS_VERSION", caisson::RESULTS_VERSION)?;
+    m.add_class::<CoreScenario>()?;
+    m.add_function(wrap_pyfunction!(run_load, m)?)?;
+    m.add_function(wrap_pyfunction!(run_trains, m)?)?;
+    m.add_function(wrap_pyfunction!(loads_report, m)?)?;
+    m.add_function(wrap_pyfunction!(loads_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(wavelength_m, m)?)?;
+    m.add_function(wrap_pyfunction!(breaker_height_m, m)?)?;
+    m.add_function(wrap_pyfunction!(surf_zone_heights, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign, m)?)?;
+    m.add_function(wrap_pyfunction!(design_lives, m)?)?;
+    m.add_function(wrap_pyfunction!(design_statistics, m)?)?;
+    m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
+    m.add_function(wrap_pyfunction!(fragility, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_run_s, m)?)?;
+    Ok(())
+}

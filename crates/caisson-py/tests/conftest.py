@@ -1,0 +1,66 @@
+"""Shared fixtures: the repository root, the `caisson` CLI (built by scripts/test.sh before pytest)
+and helpers to run it."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLES = ROOT / "examples"
+
+
+def cli_path() -> Path:
+    p = Path(os.environ.get("CAISSON_BIN", ROOT / "target" / "release" / "caisson"))
+    if not p.exists():
+        pytest.fail(f"the caisson CLI is not built at {p}: run `cargo build --release -p caisson-cli` (scripts/test.sh does)")
+    return p
+
+
+def cli(*args: str, check: bool = True) -> subprocess.CompletedProcess:
+    r = subprocess.run([str(cli_path()), *map(str, args)], capture_output=True, text=True, cwd=ROOT)
+    if check and r.returncode != 0:
+        raise AssertionError(f"caisson {' '.join(map(str, args))} failed ({r.returncode}): {r.stderr}")
+    return r
+
+
+def cli_json(*args: str) -> dict:
+    return json.loads(cli(*args, "--json").stdout)
+
+
+@pytest.fixture
+def examples() -> Path:
+    return EXAMPLES
+
+
+def read_csv_exact(path) -> "pd.DataFrame":
+    """A CSV of the CLI with every number parsed by Python's float (exact: the CLI writes the
+    shortest text that reads back to the same double); whole-number columns as int64."""
+    import csv
+
+    import pandas as pd
+
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    cols = {}
+    for j, name in enumerate(rows[0]):
+        text = [r[j] for r in rows[1:]]
+        try:
+            cols[name] = [int(t) for t in text]
+        except ValueError:
+            cols[name] = [float(t) for t in text]
+    return pd.DataFrame(cols)
+
+
+def short_design_toml(tmp_path: Path, lives: int = 40, years: int = 20) -> Path:
+    """A short copy of examples/design_breakwater.toml (few lives and years: seconds)."""
+    import caisson
+
+    sc = caisson.Scenario.from_toml(EXAMPLES / "design_breakwater.toml").replace(design={"lives": lives, "life_years": years})
+    p = tmp_path / "design_short.toml"
+    p.write_text(sc.to_toml())
+    return p

@@ -1,0 +1,106 @@
+"""caisson.loads and caisson.waves against `caisson loads --json`, broadcasting, vectorisation."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import caisson
+from conftest import EXAMPLES, cli_json
+
+LOAD_EXAMPLES = ["pari_breaking_loads.toml", "pari_nonbreaking_loads.toml", "design_breakwater.toml", "fragility.toml"]
+
+
+def flatten(d: dict, prefix: str = "") -> dict:
+    out = {}
+    for k, v in d.items():
+        key = f"{prefix}{k}"
+        if isinstance(v, dict):
+            out.update(flatten(v, key + "."))
+        else:
+            out[key] = v
+    return out
+
+
+@pytest.mark.parametrize("name", LOAD_EXAMPLES)
+def test_report_and_evaluate_match_caisson_loads_json(name):
+    p = EXAMPLES / name
+    sc = caisson.Scenario.from_toml(p)
+    want = cli_json("loads", p)
+    assert caisson.loads.report(sc) == want
+    flat = flatten(want)
+    frame = caisson.loads.evaluate(sc, [want["wave"]["incident_height_m"]])
+    assert frame.attrs == {"caisson_version": want["caisson_version"], "results_version": want["results_version"]}
+    row = frame.iloc[0].to_dict()
+    flat.pop("caisson_version"), flat.pop("results_version")
+    assert sorted(row) == sorted(flat)  # the CLI sorts the keys; the frame keeps the struct order
+    for k, v in flat.items():
+        if v is None:
+            assert row[k] is None or (isinstance(row[k], float) and math.isnan(row[k])), k
+        else:
+            assert row[k] == v, k  # exact
+
+
+def test_evaluate_is_the_report_of_each_height():
+    p = EXAMPLES / "pari_breaking_loads.toml"
+    sc = caisson.Scenario.from_toml(p)
+    heights = np.linspace(0.05, 0.5, 7)
+    frame = caisson.loads.evaluate(sc, heights)
+    assert len(frame) == 7 and np.array_equal(frame["wave.incident_height_m"].to_numpy(), heights)
+    for i, h in enumerate(heights):
+        one = caisson.loads.report(sc.replace(waves={"height_m": float(h)}))
+        assert frame["goda.horizontal_force_kn_per_m"][i] == one["goda"]["horizontal_force_kn_per_m"]
+        assert frame["regime.regime"][i] == one["regime"]["regime"]
+    # Regimes change along the heights (the example has both).
+    assert set(frame["regime.regime"]) == {"breaking", "non-breaking"}
+
+
+def test_evaluate_broadcasts_heights_and_periods():
+    sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
+    h = np.array([[0.1], [0.2]])
+    t = np.array([2.0, 3.0, 4.0])
+    f = caisson.loads.evaluate(sc, h, t)
+    assert len(f) == 6
+    assert list(f["wave.period_s"]) == [2.0, 3.0, 4.0] * 2
+    assert list(f["wave.incident_height_m"]) == [0.1] * 3 + [0.2] * 3
+
+
+def test_evaluate_refuses_bad_heights():
+    sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
+    with pytest.raises(caisson.ScenarioError) as e:
+        caisson.loads.evaluate(sc, [0.1, -0.2])
+    assert e.value.key == "heights_m"
+
+
+def test_wave_functions_match_the_loads_report_and_broadcast():
+    p = EXAMPLES / "pari_breaking_loads.toml"
+    rep = cli_json("loads", p)
+    t, hs, d = rep["wave"]["period_s"], rep["site"]["depth_at_toe_m"], rep["site"]["depth_at_wall_m"]
+    assert caisson.waves.wavelength_m(t, hs) == rep["wave"]["toe_wavelength_m"]
+    assert caisson.waves.breaker_height_m(d, t) == rep["regime"]["breaker_height_at_wall_m"]
+    assert caisson.waves.breaker_height_m(hs, t) == rep["wave"]["toe_breaker_height_m"] or math.isclose(
+        caisson.waves.breaker_height_m(hs, t), rep["wave"]["toe_breaker_height_m"], rel_tol=1e-12
+    )
+    # Deep water: L0 = g T² / 2π.
+    assert math.isclose(caisson.waves.wavelength_m(10.0, 1e4), 9.81 * 100 / (2 * math.pi), rel_tol=1e-12)
+    grid = caisson.waves.wavelength_m(np.array([[4.0], [8.0]]), np.array([5.0, 10.0, 20.0]))
+    assert grid.shape == (2, 3) and grid[1, 2] == caisson.waves.wavelength_m(8.0, 20.0)
+    assert np.all(np.diff(grid, axis=1) > 0)  # longer in deeper water
+    assert caisson.waves.breaker_height_m(2.0, 8.0, "mccowan") == 0.78 * 2.0
+    g = caisson.waves.breaker_height_m(np.array([1.0, 2.0]), 8.0, "goda", slope=0.01)
+    assert g.shape == (2,) and g[1] > g[0]
+    with pytest.raises(ValueError):
+        caisson.waves.breaker_height_m(1.0, 8.0, "oumeraci")
+
+
+def test_surf_zone_heights_are_goda_s_and_broadcast():
+    h13, hmax = caisson.waves.surf_zone_heights(np.array([3.0, 6.0, 9.0]), 12.8, 20.0, 0.01)
+    assert h13.shape == (3,) and np.all(hmax > h13) and np.all(np.diff(h13) > 0)
+    # Outside the surf zone (h/L0 ≥ 0.2) H_max = 1.8 H1/3 (PHYSICS.md §3.3).
+    a, b = caisson.waves.surf_zone_heights(2.0, 6.0, 20.0, 0.01)
+    assert b == 1.8 * a
+    # Deep inside it the depth limits H1/3 (β0 H0' + β1 h < K_s H0').
+    a, _ = caisson.waves.surf_zone_heights(8.0, 12.0, 4.0, 0.0)
+    assert a < 0.6 * 8.0
