@@ -195,7 +195,9 @@ pub fn run(args: CampaignArgs) -> Result<()> {
     let results =
         with_threads(args.threads, || run_campaign(&campaign.setups, &|| pb.inc(1)))?.context("the campaign failed")?;
     pb.finish_and_clear();
-    let json = report_json(&CampaignReport::new(&campaign, &results, false), "campaign")?;
+    let report = CampaignReport::new(&campaign, &results, false);
+    crate::output::print_warnings(&report.warnings);
+    let json = report_json(&report, "campaign")?;
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -260,7 +260,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
         );
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
-    let report = DesignReport::new(&design, case.rigid_block_mu, &lives);
+    let mut report = DesignReport::new(&design, case.rigid_block_mu, &lives);
+    report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
+    crate::output::print_warnings(&report.warnings);
     let json = report_json(&report, "design")?;
     if args.json {
         crate::sayln!("{}", pretty(&json)?);

@@ -49,6 +49,8 @@ pub fn run(args: LoadsArgs) -> Result<()> {
         None
     };
     let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
+    report.warnings = caisson::analysis::checks::structure_warnings(sc.structure());
+    crate::output::print_warnings(&report.warnings);
     if let Some((records, _)) = &history {
         report.history = Some(HistoryInfo {
             waves: args.waves,

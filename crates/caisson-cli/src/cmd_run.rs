@@ -5,6 +5,7 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
+use caisson::analysis::checks::{response_warnings, structure_warnings, Response};
 use caisson::analysis::run::{self as engine, History, RunSummary};
 use caisson::loads::LoadSpec;
 use caisson::report::run::RunReport;
@@ -235,7 +236,11 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     let result =
         engine::run(sc.structure(), load, sc.duration_s, args.out.is_some()).context("the dynamic run failed")?;
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
-    let json = report_json(&RunReport::new(&result.summary, x), "summary")?;
+    let s = sc.structure();
+    let mut warnings = structure_warnings(s);
+    warnings.extend(response_warnings(s, &Response::from(&result.summary)));
+    crate::output::print_warnings(&warnings);
+    let json = report_json(&RunReport::new(&result.summary, x, warnings), "summary")?;
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

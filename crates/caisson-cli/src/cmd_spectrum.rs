@@ -45,7 +45,10 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     pb.finish_and_clear();
     let model = sc.structure().model();
     let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
-    let json = report_json(&SpectrumReport::new(model.natural_period_s(), &base, resistance_n, &pts), "spectrum")?;
+    let warnings = caisson::analysis::checks::structure_warnings(sc.structure());
+    crate::output::print_warnings(&warnings);
+    let json =
+        report_json(&SpectrumReport::new(model.natural_period_s(), &base, resistance_n, &pts, warnings), "spectrum")?;
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -97,3 +97,10 @@ pub fn progress(len: u64, what: &str, items: &str) -> indicatif::ProgressBar {
     pb.set_message(what.to_string());
     pb
 }
+
+/// Print plausibility warnings on standard error, one `Warning:` line each.
+pub fn print_warnings(warnings: &[caisson::analysis::checks::Warning]) {
+    for w in warnings {
+        eprintln!("Warning: {}", w.message);
+    }
+}

@@ -187,7 +187,9 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
     let pb = progress(case.waves.train.realizations as u64, "wave trains", "realizations");
     let summary = run_realizations(&case, &|| pb.inc(1)).context("the dynamic run failed")?;
     pb.finish_and_clear();
-    let json = report_json(&TrainRunReport::new(case.structure, case.waves, &summary), "summary")?;
+    let report = TrainRunReport::new(case.structure, case.waves, &summary);
+    crate::output::print_warnings(&report.warnings);
+    let json = report_json(&report, "summary")?;
     if json_out {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -13,6 +13,7 @@
 mod columns;
 
 use caisson::analysis::campaign::run_campaign;
+use caisson::analysis::checks::{response_warnings, structure_warnings, Response};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, StormOutcome};
 use caisson::analysis::run::{run as run_engine, History};
@@ -376,7 +377,10 @@ fn run_load<'py>(
     })?;
     let result = py.detach(|| run_engine(sc.structure(), load, duration, history)).map_err(run_error)?;
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
-    let json = report_json(&RunReport::new(&result.summary, x), "summary")?;
+    let s = sc.structure();
+    let mut warnings = structure_warnings(s);
+    warnings.extend(response_warnings(s, &Response::from(&result.summary)));
+    let json = report_json(&RunReport::new(&result.summary, x, warnings), "summary")?;
     let cols = match &result.history {
         Some(h) => Some(history_columns(py, h)?),
         None => None,
@@ -402,8 +406,9 @@ fn loads_report(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
     let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).map_err(|e| regime_error(py, e))?;
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
     let safety = ws.model.safety(&loads, w, mu);
-    serde_json::to_string(&LoadsReport::new(ws, &loads, &safety, w, mu))
-        .map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
+    report.warnings = structure_warnings(sc.structure());
+    serde_json::to_string(&report).map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
 fn regime_error(py: Python<'_>, e: caisson::loads::regime::RegimeError) -> PyErr {
@@ -527,7 +532,7 @@ fn campaign(
                 ))
             }
         };
-        scen = scen.with_foundation(|f| f.damping_mode = mode).map_err(|e| lib_error(py, e, None))?;
+        scen = scen.with_foundation(|f| f.damping_mode = Some(mode)).map_err(|e| lib_error(py, e, None))?;
     }
     let mut c = scen.campaign().map_err(|e| lib_error(py, e, None))?;
     if scen.campaign.as_ref().is_some_and(|s| s.title.is_none()) {
@@ -598,7 +603,9 @@ fn design_statistics(
             max_storm_sliding_m: max_storm_sliding_m[i],
         })
         .collect();
-    report_json(&DesignReport::new(design, case.rigid_block_mu, &lives), "design")
+    let mut report = DesignReport::new(design, case.rigid_block_mu, &lives);
+    report.warnings = structure_warnings(case.structure);
+    report_json(&report, "design")
 }
 
 /// The fingerprint of the design's lives (what every life depends on).
@@ -662,7 +669,8 @@ fn _bench_run_s(py: Python<'_>, sc: &CoreScenario, repeats: usize) -> PyResult<f
         let t0 = std::time::Instant::now();
         for _ in 0..repeats.max(1) {
             let r = run_engine(sc.structure(), load, sc.duration_s, false).map_err(run_error)?;
-            std::hint::black_box(RunReport::new(&r.summary, sc.foundation().spring_positions(sc.caisson().width_m)));
+            let x = sc.foundation().spring_positions(sc.caisson().width_m);
+            std::hint::black_box(RunReport::new(&r.summary, x, Vec::new()));
         }
         Ok(t0.elapsed().as_secs_f64() / repeats.max(1) as f64)
     })

@@ -8,6 +8,7 @@
 //! of threads.
 
 pub mod campaign;
+pub mod checks;
 pub mod closed_form;
 pub mod fragility;
 pub mod lifetime;

@@ -107,6 +107,12 @@ pub struct RunSummary {
     pub duration_s: f64,
     pub foundation: FoundationSummary,
     pub solver: SolverStats,
+    /// Largest ratio of the total-velocity dashpot force to the friction force while sliding.
+    pub max_dashpot_over_friction: f64,
+    /// Largest |moment| of the vertical and rotational dashpots, N·m.
+    pub max_dashpot_moment_nm: f64,
+    /// Largest |wave moment| about the base centre, N·m.
+    pub max_wave_moment_nm: f64,
 }
 
 /// Peak tracker (observer). Allocation-free per step once `slip_times` has its capacity.
@@ -121,6 +127,13 @@ pub struct Peaks {
     pub max_n: f64,
     pub min_n: f64,
     pub max_shear: f64,
+    /// Largest ratio of the total-velocity dashpot force to the friction force while the caisson
+    /// slides (every spring in contact slipping).
+    pub max_dashpot_over_friction: f64,
+    /// Largest |moment| of the vertical and rotational dashpots, N·m.
+    pub max_dashpot_moment_nm: f64,
+    /// Largest |wave moment| about the base centre, N·m.
+    pub max_wave_moment_nm: f64,
     was_sliding: bool,
 }
 
@@ -136,6 +149,9 @@ impl Default for Peaks {
             max_n: 0.0,
             min_n: f64::INFINITY,
             max_shear: 0.0,
+            max_dashpot_over_friction: 0.0,
+            max_dashpot_moment_nm: 0.0,
+            max_wave_moment_nm: 0.0,
             was_sliding: false,
         }
     }
@@ -160,11 +176,19 @@ impl Observer for Peaks {
             }
         }
         self.was_sliding = sliding;
+        let mut friction = 0.0;
         for r in s.springs {
             self.max_n = self.max_n.max(r.normal_n);
             self.min_n = self.min_n.min(r.normal_n);
             self.max_shear = self.max_shear.max(r.shear_n.abs());
+            friction += r.shear_n.abs();
         }
+        if sliding && s.reaction.sliding_springs == s.reaction.contact_springs && friction > 0.0 {
+            self.max_dashpot_over_friction =
+                self.max_dashpot_over_friction.max(s.reaction.dashpot_horizontal_n.abs() / friction);
+        }
+        self.max_dashpot_moment_nm = self.max_dashpot_moment_nm.max(s.reaction.dashpot_moment_nm.abs());
+        self.max_wave_moment_nm = self.max_wave_moment_nm.max(s.load.m_nm.abs());
     }
 }
 
@@ -344,6 +368,9 @@ pub fn run<L: LoadHistory + ?Sized>(
         duration_s,
         foundation: fsum,
         solver: sim.stats,
+        max_dashpot_over_friction: peaks.max_dashpot_over_friction,
+        max_dashpot_moment_nm: peaks.max_dashpot_moment_nm,
+        max_wave_moment_nm: peaks.max_wave_moment_nm,
     };
     Ok(RunResult { summary, history })
 }

@@ -17,6 +17,7 @@
 //!   the velocity. The per-wave slides are summed (§6.3). A wave whose peak forces cannot reach
 //!   the static resistance (max P ≤ μ_s (W' − max U)) is skipped: it cannot slide the block.
 
+use super::checks::{response_warnings, Response, Warning};
 use super::run::{permanent_sliding_m, Both, History, Peaks};
 use super::{Progress, Structure};
 use crate::dynamics::{Observer, Simulation, SolveError, SolverStats, StepView};
@@ -76,6 +77,8 @@ pub struct RealizationResult {
     pub limited_waves: usize,
     pub waves: Vec<WaveOutcome>,
     pub solver: SolverStats,
+    /// What the plausibility checks need ([`super::checks::Response`]).
+    pub response: Response,
 }
 
 /// The rigid-block model of one caisson (docs/model.md §6.3).
@@ -266,6 +269,14 @@ impl TrainCase<'_> {
             max_horizontal_reaction_n: peaks.max_rx,
             slip_events: peaks.slip_events,
             limited_waves: drawn.limited_waves,
+            response: Response {
+                sliding_m: before,
+                slip_events: peaks.slip_events,
+                max_rotation_rad: peaks.max_theta,
+                max_dashpot_over_friction: peaks.max_dashpot_over_friction,
+                max_dashpot_moment_nm: peaks.max_dashpot_moment_nm,
+                max_wave_moment_nm: peaks.max_wave_moment_nm,
+            },
             waves,
             solver: sim.stats,
         })
@@ -275,6 +286,31 @@ impl TrainCase<'_> {
     pub fn duration_s(&self) -> f64 {
         self.waves.train.waves as f64 * self.waves.train.period_s
     }
+}
+
+/// The plausibility warnings of realizations `rs` of `case`: each code once, from the first
+/// realization that raises it, with the count of realizations that do.
+pub fn realization_warnings(case: &TrainCase<'_>, rs: &[RealizationResult]) -> Vec<Warning> {
+    let mut out: Vec<(Warning, usize)> = Vec::new();
+    for r in rs {
+        for w in response_warnings(case.structure, &r.response) {
+            match out.iter_mut().find(|(x, _)| x.code == w.code) {
+                Some((_, n)) => *n += 1,
+                None => {
+                    let mut w = w;
+                    w.message = format!("realization {}: {}", r.index, w.message);
+                    out.push((w, 1));
+                }
+            }
+        }
+    }
+    out.into_iter()
+        .map(|(mut w, n)| {
+            w.message.push_str(&format!(" ({n} of {} realizations)", rs.len()));
+            w.numbers.insert("realizations", n as f64);
+            w
+        })
+        .collect()
 }
 
 /// Run every realization of `case` in parallel (module docs of [`super`]); `progress` is called

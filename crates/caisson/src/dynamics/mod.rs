@@ -166,6 +166,12 @@ pub struct Reaction {
     pub sliding_springs: usize,
     /// Springs in contact.
     pub contact_springs: usize,
+    /// The horizontal dashpot on the total velocity (`damping_mode = "total"`), C u̇_x, N (0 in
+    /// the `elastic` mode, whose dashpots are inside the springs' capped shear).
+    pub dashpot_horizontal_n: f64,
+    /// The moment of the vertical and rotational dashpots about the base centre, N·m, clockwise +
+    /// (both `vertical_damping` forms).
+    pub dashpot_moment_nm: f64,
 }
 
 /// What an observer sees after each committed (sub)step.
@@ -321,6 +327,7 @@ impl Simulation {
                 let kd = cdy * dv_du;
                 f[1] += fd;
                 f[2] -= x * fd;
+                reaction.dashpot_moment_nm -= x * fd;
                 k[(1, 1)] += kd;
                 k[(1, 2)] -= x * kd;
                 k[(2, 1)] -= x * kd;
@@ -343,7 +350,9 @@ impl Simulation {
             reaction.sliding_springs += (r.state.sliding && r.normal_n > 0.0) as usize;
             *out = r;
         }
-        reaction.horizontal_n += self.model.damping[(0, 0)] * v[0];
+        reaction.dashpot_horizontal_n = self.model.damping[(0, 0)] * v[0];
+        reaction.horizontal_n += reaction.dashpot_horizontal_n;
+        reaction.dashpot_moment_nm += self.model.damping[(2, 2)] * v[2];
         self.reaction = reaction;
         (f, k)
     }

@@ -3,6 +3,8 @@
 use super::train::{describe_train, RealizationReport};
 use super::{kn, Provenance, SpreadReport};
 use crate::analysis::campaign::{Campaign, ConditionResult};
+use crate::analysis::checks::{structure_warnings, Warning};
+use crate::analysis::train::realization_warnings;
 use crate::foundation::DampingMode;
 use crate::loads::regime::{Regime, RegimeChoice};
 use serde::Serialize;
@@ -70,6 +72,9 @@ pub struct CampaignReport {
     pub waves: CampaignWavesReport,
     pub damping_mode: DampingMode,
     pub conditions: Vec<ConditionReport>,
+    /// Plausibility warnings of the conditions' structures and realizations (numbered as the
+    /// conditions, from 1).
+    pub warnings: Vec<Warning>,
 }
 
 impl CampaignReport {
@@ -88,6 +93,20 @@ impl CampaignReport {
             },
             damping_mode: first.structure.foundation.damping_mode,
             conditions: results.iter().map(|r| ConditionReport::new(r, with_realizations)).collect(),
+            warnings: c
+                .setups
+                .iter()
+                .zip(results)
+                .enumerate()
+                .flat_map(|(i, (s, r))| {
+                    let mut w = structure_warnings(&s.structure);
+                    w.extend(realization_warnings(&s.case(), &r.summary.realizations));
+                    w.into_iter().map(move |mut w| {
+                        w.message = format!("condition {}: {}", i + 1, w.message);
+                        w
+                    })
+                })
+                .collect(),
         }
     }
 }

@@ -1,6 +1,7 @@
 //! `caisson design`: `design.json` (keys in docs/design.md).
 
 use super::{fingerprint, Provenance};
+use crate::analysis::checks::Warning;
 use crate::analysis::lifetime::{life_statistics, DesignParams, LifeParams, LifeStatistics, StormCase, StormOutcome};
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
@@ -88,6 +89,8 @@ pub struct DesignReport {
     pub simulated_waves: u64,
     pub screened_waves: u64,
     pub screened_share: f64,
+    /// Plausibility warnings (filled by the caller).
+    pub warnings: Vec<Warning>,
 }
 
 impl DesignReport {
@@ -111,6 +114,7 @@ impl DesignReport {
             simulated_waves: lives.iter().map(|l| l.simulated).sum(),
             screened_waves: screened,
             screened_share: screened as f64 / waves.max(1) as f64,
+            warnings: Vec::new(),
         }
     }
 }

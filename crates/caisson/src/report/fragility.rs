@@ -1,6 +1,7 @@
 //! `caisson fragility`: `fragility.json` (keys in docs/fragility.md).
 
 use super::Provenance;
+use crate::analysis::checks::{structure_warnings, Warning};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
 use crate::analysis::train::WaveSetup;
 use crate::analysis::Structure;
@@ -132,6 +133,8 @@ pub struct FragilityReport {
     pub design_wave: DesignWaveReport,
     pub levels: Vec<LevelReport>,
     pub fits: Vec<LimitFitReport>,
+    /// Plausibility warnings of the structure.
+    pub warnings: Vec<Warning>,
 }
 
 impl FragilityReport {
@@ -169,6 +172,7 @@ impl FragilityReport {
                     rigid_block: FitReport::from(&f.rigid_block),
                 })
                 .collect(),
+            warnings: structure_warnings(structure),
         }
     }
 }

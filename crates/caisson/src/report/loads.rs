@@ -1,6 +1,7 @@
 //! `caisson loads`: `loads.json` (keys in docs/waves.md). Per metre of breakwater; kN, kPa, m.
 
 use super::{kn, Provenance};
+use crate::analysis::checks::Warning;
 use crate::analysis::train::WaveSetup;
 use crate::loads::model::WaveLoads;
 use crate::loads::regime::Regime;
@@ -149,6 +150,8 @@ pub struct LoadsReport {
     pub safety: SafetyInfo,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub history: Option<HistoryInfo>,
+    /// Plausibility warnings of the structure (filled by the caller).
+    pub warnings: Vec<Warning>,
 }
 
 impl LoadsReport {
@@ -260,6 +263,7 @@ impl LoadsReport {
                 resultant_from_heel_m: sf.resultant_from_heel_m,
             },
             history: None,
+            warnings: Vec::new(),
         }
     }
 }

@@ -1,6 +1,7 @@
 //! `caisson run` on a `[load]` scenario: `summary.json` (keys in docs/cli.md).
 
 use super::{kn, FoundationReport, Provenance};
+use crate::analysis::checks::Warning;
 use crate::analysis::run::RunSummary;
 use serde::Serialize;
 
@@ -36,11 +37,13 @@ pub struct RunReport {
     pub spring_positions_m: Vec<f64>,
     pub foundation: FoundationReport,
     pub solver: RunSolverReport,
+    /// Plausibility warnings ([`crate::analysis::checks`]).
+    pub warnings: Vec<Warning>,
 }
 
 impl RunReport {
-    /// The report of run `s` on springs at `spring_positions_m`.
-    pub fn new(s: &RunSummary, spring_positions_m: Vec<f64>) -> Self {
+    /// The report of run `s` on springs at `spring_positions_m`, with its `warnings`.
+    pub fn new(s: &RunSummary, spring_positions_m: Vec<f64>, warnings: Vec<Warning>) -> Self {
         RunReport {
             provenance: Provenance::CURRENT,
             permanent_sliding_m: s.permanent_sliding_m,
@@ -65,6 +68,7 @@ impl RunReport {
                 substeps: s.solver.substeps,
                 max_residual: s.solver.max_residual,
             },
+            warnings,
         }
     }
 }

@@ -1,6 +1,7 @@
 //! `caisson spectrum`: `spectrum.json` (keys in docs/cli.md).
 
 use super::{kn, Provenance};
+use crate::analysis::checks::Warning;
 use crate::analysis::spectrum::SpectrumPoint;
 use crate::loads::pulse::TrianglePulse;
 use serde::Serialize;
@@ -43,12 +44,20 @@ pub struct SpectrumReport {
     pub peak_uplift_kn: f64,
     pub static_sliding_resistance_kn: f64,
     pub points: Vec<SpectrumPointReport>,
+    /// Plausibility warnings of the structure.
+    pub warnings: Vec<Warning>,
 }
 
 impl SpectrumReport {
     /// The report of `points` swept with the pulse `base` on a caisson of natural period
     /// `natural_period_s` and static sliding resistance μ_s W' (N).
-    pub fn new(natural_period_s: f64, base: &TrianglePulse, resistance_n: f64, points: &[SpectrumPoint]) -> Self {
+    pub fn new(
+        natural_period_s: f64,
+        base: &TrianglePulse,
+        resistance_n: f64,
+        points: &[SpectrumPoint],
+        warnings: Vec<Warning>,
+    ) -> Self {
         SpectrumReport {
             provenance: Provenance::CURRENT,
             natural_period_s,
@@ -56,6 +65,7 @@ impl SpectrumReport {
             peak_uplift_kn: kn(base.peak.fy_n),
             static_sliding_resistance_kn: kn(resistance_n),
             points: points.iter().map(SpectrumPointReport::from).collect(),
+            warnings,
         }
     }
 }

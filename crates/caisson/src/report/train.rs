@@ -1,8 +1,9 @@
 //! `caisson run` on a `[waves]` scenario: the wave-train `summary.json` (keys in docs/cli.md).
 
 use super::{kn, FoundationReport, Provenance, SpreadReport};
+use crate::analysis::checks::{structure_warnings, Warning};
 use crate::analysis::run::FoundationSummary;
-use crate::analysis::train::{RealizationResult, TrainSummary, WaveSetup};
+use crate::analysis::train::{realization_warnings, RealizationResult, TrainCase, TrainSummary, WaveSetup};
 use crate::analysis::Structure;
 use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
 use crate::loads::regime::{Regime, RegimeChoice};
@@ -145,6 +146,8 @@ pub struct TrainRunReport {
     pub realizations: Vec<RealizationReport>,
     pub foundation: FoundationReport,
     pub solver: TrainSolverReport,
+    /// Plausibility warnings of the structure and of the realizations.
+    pub warnings: Vec<Warning>,
 }
 
 impl TrainRunReport {
@@ -164,6 +167,11 @@ impl TrainRunReport {
             realizations: s.realizations.iter().map(RealizationReport::from).collect(),
             foundation: FoundationReport::from(&f),
             solver: TrainSolverReport::of(&s.realizations),
+            warnings: {
+                let mut w = structure_warnings(structure);
+                w.extend(realization_warnings(&TrainCase { structure, waves }, &s.realizations));
+                w
+            },
         }
     }
 }

@@ -1,0 +1,185 @@
+//! Plausibility checks: results and inputs that are valid but that an engineer should not accept
+//! without a second look. Each is a [`Warning`] (never an error): a code, a message that says
+//! what to check, and the numbers behind it. The CLI prints them as `Warning:` lines and every
+//! JSON output lists them under `warnings`.
+//!
+//! | code | fires when | why |
+//! |---|---|---|
+//! | `implausible-settlement` | W'/K_y > 0.2 m | a caisson on a rubble mound settles by millimetres to centimetres; 24.7 m is E100 given in MPa |
+//! | `implausible-natural-period` | T0 outside 2 ms to 3 s | flume caissons sway at about 0.02 s, prototypes at 0.1-1 s |
+//! | `implausible-base-pressure` | W'/(B l) outside 1 to 1000 kPa | flume caissons bear about 10 kPa, prototypes 100-400 kPa; a weight in MN or N gives 1000 × less or more |
+//! | `undamped-adaptive` | C = 0 with adaptive steps | the stepper's error estimate assumes damped transients; without damping an independent check found −1.90 mm adaptive against −0.094 mm fixed |
+//! | `dashpot-exceeds-friction` | C u̇_x > μ N while sliding (`damping_mode = "total"`) | a Coulomb interface carries no more than μN; the dashpot then limits the slide (docs/model.md §10 item 30) |
+//! | `rotational-dashpot-moment` | with `vertical_damping = "seed"`, the dashpots' moment > ½ the largest wave moment | they, not the springs, hold the caisson upright (the seed's 10C as N·m·s/rad, item 10) |
+//! | `rocking-without-slip` | a displacement above 1 µm with no slip event | it comes from rocking: lifted springs re-contact at a displaced base |
+//! | `rocking` | rotation above 0.01 rad | the seaward heel lifts by θB/2; beyond small rotations the model's kinematics and foundation do not hold, and the landing can slide the caisson seaward (docs/design.md) |
+//! | `beyond-failure` | \|sliding\| above 0.25 B | a quarter of the base has left the bedding the model describes |
+
+use super::run::RunSummary;
+use super::Structure;
+use crate::dynamics::Stepping;
+use crate::foundation::VerticalDamping;
+use std::collections::BTreeMap;
+
+/// A result or input to check (module docs).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Warning {
+    pub code: &'static str,
+    pub message: String,
+    /// The numbers behind it, named with their unit.
+    pub numbers: BTreeMap<&'static str, f64>,
+}
+
+impl Warning {
+    fn new(code: &'static str, message: String, numbers: &[(&'static str, f64)]) -> Self {
+        Warning { code, message, numbers: numbers.iter().copied().collect() }
+    }
+}
+
+/// Largest plausible static settlement W'/K_y, m.
+pub const MAX_SETTLEMENT_M: f64 = 0.2;
+/// Plausible natural periods T0 of the horizontal mode, s.
+pub const NATURAL_PERIOD_RANGE_S: (f64, f64) = (2e-3, 3.0);
+/// Plausible mean base pressures W'/(B l), Pa.
+pub const BASE_PRESSURE_RANGE_PA: (f64, f64) = (1e3, 1e6);
+/// Rotation beyond which the caisson is rocking, not vibrating, rad.
+pub const ROCKING_LIMIT_RAD: f64 = 0.01;
+/// Sliding beyond which the caisson has failed, as a fraction of the base width.
+pub const FAILURE_FRACTION_OF_WIDTH: f64 = 0.25;
+
+/// Checks of the structure itself (before any run).
+pub fn structure_warnings(s: &Structure) -> Vec<Warning> {
+    let mut out = Vec::new();
+    let model = s.model();
+    let settlement = model.static_settlement_m();
+    if settlement > MAX_SETTLEMENT_M {
+        out.push(Warning::new(
+            "implausible-settlement",
+            format!(
+                "the static settlement W'/K_y is {settlement:.3} m, where a caisson on a rubble mound settles by millimetres to centimetres: is `[foundation] e100_kpa` (or `ky_kn_per_m`) in kPa (kN/m)?"
+            ),
+            &[("static_settlement_m", settlement), ("limit_m", MAX_SETTLEMENT_M)],
+        ));
+    }
+    let t0 = model.natural_period_s();
+    let (lo, hi) = NATURAL_PERIOD_RANGE_S;
+    if !(lo..=hi).contains(&t0) {
+        out.push(Warning::new(
+            "implausible-natural-period",
+            format!(
+                "the natural period T0 = 2π √(m/K_x) is {t0:.4} s, outside the {lo} to {hi} s of caissons from flume models to prototypes: are `[foundation] e100_kpa` (or `kx_kn_per_m`) and `[caisson] weight_in_water_kn` in kPa and kN?"
+            ),
+            &[("natural_period_s", t0), ("low_s", lo), ("high_s", hi)],
+        ));
+    }
+    let c = &s.caisson;
+    let q = c.weight_in_water_n / (c.width_m * c.length_m);
+    let (lo, hi) = BASE_PRESSURE_RANGE_PA;
+    if !(lo..=hi).contains(&q) {
+        out.push(Warning::new(
+            "implausible-base-pressure",
+            format!(
+                "the mean base pressure W'/(B l) is {:.4} kPa, outside the {} to {} kPa of caissons from flume models to prototypes: is `[caisson] weight_in_water_kn` in kN (not MN or N)?",
+                q / 1e3,
+                lo / 1e3,
+                hi / 1e3
+            ),
+            &[("base_pressure_kpa", q / 1e3), ("low_kpa", lo / 1e3), ("high_kpa", hi / 1e3)],
+        ));
+    }
+    if s.foundation.stiffness.damping_ns_per_m == 0.0 && matches!(s.solver.stepping, Stepping::Adaptive(_)) {
+        out.push(Warning::new(
+            "undamped-adaptive",
+            "the foundation is undamped (`damping_kns_per_m = 0`) and the steps are adaptive: the stepper's error control does not hold without damping (an undamped check moved by millimetres); use `[solver] stepping = \"fixed\"`".to_string(),
+            &[],
+        ));
+    }
+    out
+}
+
+/// What a run (or the worst of several) found, for [`response_warnings`].
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct Response {
+    /// Permanent sliding (or the largest in magnitude), m.
+    pub sliding_m: f64,
+    pub slip_events: u64,
+    pub max_rotation_rad: f64,
+    pub max_dashpot_over_friction: f64,
+    pub max_dashpot_moment_nm: f64,
+    pub max_wave_moment_nm: f64,
+}
+
+impl From<&RunSummary> for Response {
+    fn from(r: &RunSummary) -> Self {
+        Response {
+            sliding_m: r.permanent_sliding_m,
+            slip_events: r.slip_events,
+            max_rotation_rad: r.max_rotation_rad,
+            max_dashpot_over_friction: r.max_dashpot_over_friction,
+            max_dashpot_moment_nm: r.max_dashpot_moment_nm,
+            max_wave_moment_nm: r.max_wave_moment_nm,
+        }
+    }
+}
+
+/// Checks of a run's response on `s` (module docs).
+pub fn response_warnings(s: &Structure, r: &Response) -> Vec<Warning> {
+    let mut out = Vec::new();
+    if r.max_dashpot_over_friction > 1.0 {
+        out.push(Warning::new(
+            "dashpot-exceeds-friction",
+            format!(
+                "while the caisson slid, the foundation dashpot on its total velocity carried up to {:.2} times the friction force: the dashpot, not friction, limits the slide (`damping_mode = \"total\"`, the seed's literal Eq. 15); the consistent placement is `damping_mode = \"elastic\"`, the default profile's",
+                r.max_dashpot_over_friction
+            ),
+            &[("max_dashpot_over_friction", r.max_dashpot_over_friction)],
+        ));
+    }
+    let global_rotational = s.foundation.vertical_damping == VerticalDamping::Seed;
+    if global_rotational && r.max_wave_moment_nm > 0.0 && r.max_dashpot_moment_nm > 0.5 * r.max_wave_moment_nm {
+        out.push(Warning::new(
+            "rotational-dashpot-moment",
+            format!(
+                "the vertical and rotational dashpots carried up to {:.4} kN·m, {:.0} % of the largest wave moment {:.4} kN·m: they, not the springs, hold the caisson against overturning (with `vertical_damping = \"seed\"` the seed's 10 C is used as N·m·s/rad); the consistent form is `vertical_damping = \"springs\"`, the default profile's",
+                r.max_dashpot_moment_nm / 1e3,
+                100.0 * r.max_dashpot_moment_nm / r.max_wave_moment_nm,
+                r.max_wave_moment_nm / 1e3
+            ),
+            &[("max_dashpot_moment_kn_m", r.max_dashpot_moment_nm / 1e3), ("max_wave_moment_kn_m", r.max_wave_moment_nm / 1e3)],
+        ));
+    }
+    if r.slip_events == 0 && r.sliding_m.abs() > 1e-6 {
+        out.push(Warning::new(
+            "rocking-without-slip",
+            format!(
+                "the caisson ends {:.3} mm from where it started although no spring slipped: the displacement comes from rocking (lifted springs re-contact at a displaced base), not from sliding",
+                r.sliding_m * 1e3
+            ),
+            &[("sliding_m", r.sliding_m)],
+        ));
+    }
+    let b = s.caisson.width_m;
+    if r.max_rotation_rad > ROCKING_LIMIT_RAD {
+        out.push(Warning::new(
+            "rocking",
+            format!(
+                "the caisson rocked up to {:.4} rad (its heel lifted {:.3} m): beyond small rotations the model's kinematics and its foundation (the weight on part of the base) do not hold, and the landing can slide it seaward (docs/design.md); read it as an overturning failure",
+                r.max_rotation_rad,
+                r.max_rotation_rad * b
+            ),
+            &[("max_rotation_rad", r.max_rotation_rad), ("limit_rad", ROCKING_LIMIT_RAD)],
+        ));
+    }
+    let limit = FAILURE_FRACTION_OF_WIDTH * b;
+    if r.sliding_m.abs() > limit {
+        out.push(Warning::new(
+            "beyond-failure",
+            format!(
+                "the caisson slid {:.3} m, beyond the failure limit of a quarter of its base width ({limit:.3} m): it has left the bedding the model describes, and the model no longer holds",
+                r.sliding_m
+            ),
+            &[("sliding_m", r.sliding_m), ("limit_m", limit)],
+        ));
+    }
+    out
+}
