@@ -166,6 +166,258 @@ pub fn check_finite(v: &serde_json::Value, path: &str) -> Result<()> {
     }
 }
 
+/// Refuse a non-finite number anywhere in `report` (`what` names the report in the error), for
+/// reports whose JSON has `null` for an absent value (`loads`): serde_json writes NaN and ±inf as
+/// `null` too, so the check walks the report itself, not its JSON. The error names the field.
+pub fn check_finite_fields<T: serde::Serialize>(report: &T, what: &str) -> std::result::Result<(), String> {
+    let mut path = vec![what.to_string()];
+    report.serialize(finite::Check { path: &mut path }).map_err(|e| e.0)
+}
+
+/// A serde serializer that writes nothing and fails at the first non-finite f32 or f64, with the
+/// path of the field (`loads.safety.heel_pressure_pa`).
+mod finite {
+    use serde::ser::{self, Serialize};
+
+    #[derive(Debug)]
+    pub struct NotFinite(pub String);
+    impl std::fmt::Display for NotFinite {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            f.write_str(&self.0)
+        }
+    }
+    impl std::error::Error for NotFinite {}
+    impl ser::Error for NotFinite {
+        fn custom<T: std::fmt::Display>(msg: T) -> Self {
+            NotFinite(msg.to_string())
+        }
+    }
+
+    pub struct Check<'a> {
+        pub path: &'a mut Vec<String>,
+    }
+
+    pub struct Compound<'a> {
+        path: &'a mut Vec<String>,
+        index: usize,
+        key: Option<String>,
+    }
+
+    impl Compound<'_> {
+        fn visit<T: Serialize + ?Sized>(&mut self, step: String, v: &T) -> Result<(), NotFinite> {
+            self.path.push(step);
+            v.serialize(Check { path: &mut *self.path })?;
+            self.path.pop();
+            Ok(())
+        }
+        fn element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.index += 1;
+            self.visit(format!("[{}]", self.index - 1), v)
+        }
+    }
+
+    impl<'a> ser::Serializer for Check<'a> {
+        type Ok = ();
+        type Error = NotFinite;
+        type SerializeSeq = Compound<'a>;
+        type SerializeTuple = Compound<'a>;
+        type SerializeTupleStruct = Compound<'a>;
+        type SerializeTupleVariant = Compound<'a>;
+        type SerializeMap = Compound<'a>;
+        type SerializeStruct = Compound<'a>;
+        type SerializeStructVariant = Compound<'a>;
+
+        fn serialize_f64(self, v: f64) -> Result<(), NotFinite> {
+            if v.is_finite() {
+                Ok(())
+            } else {
+                Err(NotFinite(format!("{} is {v}", self.path.concat())))
+            }
+        }
+        fn serialize_f32(self, v: f32) -> Result<(), NotFinite> {
+            self.serialize_f64(v as f64)
+        }
+        fn serialize_bool(self, _: bool) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i8(self, _: i8) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i16(self, _: i16) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i32(self, _: i32) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i64(self, _: i64) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u8(self, _: u8) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u16(self, _: u16) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u32(self, _: u32) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u64(self, _: u64) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_char(self, _: char) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_str(self, _: &str) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_bytes(self, _: &[u8]) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_none(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_some<T: Serialize + ?Sized>(self, v: &T) -> Result<(), NotFinite> {
+            v.serialize(self)
+        }
+        fn serialize_unit(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_unit_struct(self, _: &'static str) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_newtype_struct<T: Serialize + ?Sized>(self, _: &'static str, v: &T) -> Result<(), NotFinite> {
+            v.serialize(self)
+        }
+        fn serialize_newtype_variant<T: Serialize + ?Sized>(
+            self,
+            _: &'static str,
+            _: u32,
+            variant: &'static str,
+            v: &T,
+        ) -> Result<(), NotFinite> {
+            Compound { path: self.path, index: 0, key: None }.visit(format!(".{variant}"), v)
+        }
+        fn serialize_seq(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_tuple(self, _: usize) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_tuple_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_map(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_struct_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+    }
+
+    impl ser::SerializeSeq for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeTuple for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeTupleStruct for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeTupleVariant for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeMap for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_key<T: Serialize + ?Sized>(&mut self, k: &T) -> Result<(), NotFinite> {
+            // The key names the value (a flattened struct serializes as a map).
+            self.key = match serde_json::to_value(k) {
+                Ok(serde_json::Value::String(s)) => Some(s),
+                _ => None,
+            };
+            self.visit("[key]".into(), k)
+        }
+        fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            match self.key.take() {
+                Some(k) => self.visit(format!(".{k}"), v),
+                None => self.element(v),
+            }
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeStruct for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
+            self.visit(format!(".{key}"), v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeStructVariant for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
+            self.visit(format!(".{key}"), v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+}
+
 /// Pretty JSON text of a value.
 pub fn pretty(v: &serde_json::Value) -> Result<String> {
     Ok(serde_json::to_string_pretty(v)?)
