@@ -79,8 +79,11 @@ with open(path, "rb") as f:
     raw = f.read().replace(prefix, b"OUT/")
 if path.endswith(".jsonl"):
     # A checkpoint: one line per finished life, in the order they finished (any order), after a
-    # header that names the format and the versions (no results).
-    sys.stdout.buffer.write(b"\n".join(sorted(l for l in raw.splitlines() if b"caisson_design_checkpoint" not in l)))
+    # header that names the format and the versions (no results). Format 2 ends each life line
+    # with its check (a hash of the header and the line), which is not a result: removed.
+    import re
+    lines = (re.sub(rb',"check":"[0-9a-f]{16}"}$', b"}", l) for l in raw.splitlines())
+    sys.stdout.buffer.write(b"\n".join(sorted(l for l in lines if b"caisson_design_checkpoint" not in l)))
     sys.exit(0)
 try:
     doc = json.loads(raw)

@@ -1,7 +1,32 @@
-//! Command-line definitions (clap). Thin: every option is validated in the command modules.
+//! Command-line definitions (clap). Thin: the counts are bounded here (a finite allowed range for
+//! every numeric option, refused by the parser with an `Error:` naming the option); everything
+//! that needs the scenario is validated in the command modules.
 
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
+
+/// Most worker threads `--threads` accepts (0: one per core).
+pub const MAX_THREADS: usize = 256;
+/// Most lives `--lives` accepts: the cap of `[design] lives`.
+pub const MAX_LIVES: usize = 10_000_000;
+
+/// A whole number from `lo` to `hi`, or a message that gives the range.
+fn whole_in(s: &str, lo: usize, hi: usize) -> Result<usize, String> {
+    match s.trim().parse::<u64>() {
+        Ok(n) if (lo as u64..=hi as u64).contains(&n) => Ok(n as usize),
+        _ => Err(format!("must be a whole number from {lo} to {hi}")),
+    }
+}
+
+/// `--threads`: 0 (one per core) to [`MAX_THREADS`].
+fn threads(s: &str) -> Result<usize, String> {
+    whole_in(s, 0, MAX_THREADS).map_err(|e| format!("{e} (0: one per core)"))
+}
+
+/// `--lives`: 1 to [`MAX_LIVES`], as `[design] lives`.
+fn lives(s: &str) -> Result<usize, String> {
+    whole_in(s, 1, MAX_LIVES).map_err(|e| format!("{e}, as `[design] lives`"))
+}
 
 #[derive(Parser, Debug)]
 #[command(
@@ -43,7 +68,7 @@ pub struct RunArgs {
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Worker threads for wave-train realizations (0: one per core). Results do not depend on it.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
 }
 
@@ -58,10 +83,10 @@ pub struct DesignArgs {
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Worker threads (0: one per core). Results do not depend on it.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
-    /// Override `[design] lives`.
-    #[arg(long)]
+    /// Override `[design] lives` (1 to 10000000).
+    #[arg(long, value_parser = lives)]
     pub lives: Option<usize>,
     /// Complete an interrupted run from its checkpoint (identical results).
     #[arg(long)]
@@ -88,7 +113,7 @@ pub struct FragilityArgs {
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Worker threads (0: one per core). Results do not depend on it.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
 }
 
@@ -110,7 +135,7 @@ pub struct CampaignArgs {
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Worker threads (0: one per core). Results do not depend on it.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
     /// Override the foundation's damping_mode for every condition ("total" or "elastic").
     #[arg(long, value_name = "MODE")]
@@ -142,7 +167,7 @@ pub struct LoadsArgs {
     /// Also generate the force time history of a train of waves (needs --out).
     #[arg(long)]
     pub history: bool,
-    /// Number of waves in the generated history.
+    /// Number of waves in the generated history (1 to 1030: at most 500000 rows).
     #[arg(long, default_value_t = 5)]
     pub waves: usize,
     /// Seed of the random generator (rise times).

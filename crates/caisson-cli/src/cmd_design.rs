@@ -5,10 +5,21 @@
 //! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the
 //! fingerprint of what every life depends on (the typed scenario, the screen and the stepping of
 //! `--brute-force`; [`design_fingerprint`]) and the tool and results versions, then one JSON line
-//! per finished life, written and flushed as each life ends. A run killed at any moment (Ctrl-C,
-//! `kill`) leaves the lives it finished; a partly written last line is ignored. `--resume` reads
-//! them, runs only the missing lives and reports exactly what an uninterrupted run reports (each
-//! life depends only on the seed and its index; f64 values round-trip exactly through JSON).
+//! per finished life, written whole (one `write`) as each life ends. Each life line ends with
+//! `"check"`: the FNV-1a of the header line and of the line itself, so a line edited, copied from
+//! another checkpoint or merged with another is refused by `--resume` with an `Error:` naming it;
+//! so is a life that appears twice. A run killed at any moment (Ctrl-C, `kill`) leaves the lives
+//! it finished; a last line cut short (no newline) is cut away by `--resume` before it appends.
+//! `--resume` runs only the missing lives and reports exactly what an uninterrupted run reports
+//! (each life depends only on the seed and its index; f64 values round-trip exactly through JSON,
+//! serde_json's `float_roundtrip`), so every output file is byte-identical.
+//!
+//! **Lock**: while a run writes a checkpoint it holds `CHECKPOINT.lock` (created with
+//! `create_new`, holding the process id); a second run on the same checkpoint refuses up front.
+//! The lock is removed when the run ends (also on an error or Ctrl-C). A lock left by a run that
+//! died without removing it (`kill -9`, a crash) is stale: on Linux its process id is no longer
+//! running and the next run removes it (with a note on stderr); elsewhere the error says to
+//! remove it by hand.
 
 use crate::cli::DesignArgs;
 use crate::input_err;
@@ -27,6 +38,9 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
+/// The checkpoint format written: 2 adds the check of every life line (format 1 had none).
+const CHECKPOINT_FORMAT: u32 = 2;
+
 #[derive(serde::Serialize, serde::Deserialize)]
 struct Header {
     caisson_design_checkpoint: u32,
@@ -43,21 +57,84 @@ struct LifeLine {
     outcome: StormOutcome,
 }
 
-/// Lives already in a checkpoint (an input error if it belongs to another run).
-fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<BTreeMap<usize, StormOutcome>> {
+/// The key that ends every life line: `,"check":"<16 hex digits>"}`.
+const CHECK_KEY: &str = ",\"check\":\"";
+const CHECK_TAIL_LEN: usize = CHECK_KEY.len() + 16 + 2;
+
+/// The check of a life line: FNV-1a of the header line, a newline and the life's JSON.
+fn line_check(header_line: &str, body: &str) -> String {
+    let mut bytes = Vec::with_capacity(header_line.len() + 1 + body.len());
+    bytes.extend_from_slice(header_line.as_bytes());
+    bytes.push(b'\n');
+    bytes.extend_from_slice(body.as_bytes());
+    format!("{:016x}", caisson::report::fnv1a_64(&bytes))
+}
+
+/// A finished life as a checkpoint line, newline included: its JSON with `"check"` last.
+fn life_line(header_line: &str, life: usize, outcome: &StormOutcome) -> String {
+    let body = serde_json::to_string(&LifeLine { life, outcome: *outcome }).expect("a life serializes");
+    let check = line_check(header_line, &body);
+    format!("{}{CHECK_KEY}{check}\"}}\n", &body[..body.len() - 1])
+}
+
+/// A complete checkpoint line (without its newline) back to its life, or why it is refused.
+fn parse_life_line(header_line: &str, line: &str) -> Result<(usize, StormOutcome), String> {
+    let not_a_life = || "is not a life line of a caisson design checkpoint".to_string();
+    let cut = line.len().checked_sub(CHECK_TAIL_LEN).filter(|&c| line.is_char_boundary(c)).ok_or_else(not_a_life)?;
+    let (head, tail) = line.split_at(cut);
+    let check = tail.strip_prefix(CHECK_KEY).and_then(|t| t.strip_suffix("\"}")).ok_or_else(not_a_life)?;
+    let body = format!("{head}}}");
+    if line_check(header_line, &body) != check {
+        return Err("does not match its check: it was edited, or it comes from another checkpoint".into());
+    }
+    let l: LifeLine = serde_json::from_str(&body).map_err(|_| not_a_life())?;
+    Ok((l.life, l.outcome))
+}
+
+/// What `--resume` reads from a checkpoint.
+struct Checkpoint {
+    /// The header line as written (the lines' checks depend on it).
+    header_line: String,
+    lives: BTreeMap<usize, StormOutcome>,
+    /// Length of the header and the complete lines, bytes: a torn last line starts here.
+    complete_len: u64,
+    /// Bytes of a last line cut short (0: none).
+    torn_bytes: u64,
+}
+
+/// Read a checkpoint for `--resume`: every complete line must be a life of this run, each life
+/// once (an input error naming the line otherwise); a last line without its newline is torn.
+fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<Checkpoint> {
     let file = std::fs::File::open(path)
         .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
-    let mut lines = std::io::BufReader::new(file).lines();
-    let header: Header = lines.next().and_then(|l| l.ok()).and_then(|l| serde_json::from_str(&l).ok()).ok_or_else(|| {
+    let mut reader = std::io::BufReader::new(file);
+    let mut buf = Vec::new();
+    let mut read_line = |buf: &mut Vec<u8>| -> Result<bool> {
+        buf.clear();
+        reader.read_until(b'\n', buf).with_context(|| format!("reading the checkpoint {}", path.display()))?;
+        Ok(buf.last() == Some(&b'\n'))
+    };
+    let again = "run without --resume to start again";
+    let complete = read_line(&mut buf)?;
+    let header_line = std::str::from_utf8(&buf).unwrap_or("").trim_end_matches('\n').to_string();
+    let header: Header = serde_json::from_str(&header_line).ok().filter(|_| complete).ok_or_else(|| {
         input_err(format!(
-            "--resume: {} line 1 is not a caisson design checkpoint header (of results version {}); run without --resume to start again",
+            "--resume: {} line 1 is not a caisson design checkpoint header (of results version {}); {again}",
             path.display(),
             caisson::RESULTS_VERSION
         ))
     })?;
+    if header.caisson_design_checkpoint != CHECKPOINT_FORMAT {
+        return Err(input_err(format!(
+            "--resume: the checkpoint {} is of format {} (caisson {}), this caisson reads format {CHECKPOINT_FORMAT} (whose lines carry a check); {again}",
+            path.display(),
+            header.caisson_design_checkpoint,
+            header.caisson_version
+        )));
+    }
     if header.results_version != caisson::RESULTS_VERSION {
         return Err(input_err(format!(
-            "--resume: the checkpoint {} holds results version {} (caisson {}), this caisson {} computes results version {}; its lives would not match: run without --resume to start again",
+            "--resume: the checkpoint {} holds results version {} (caisson {}), this caisson {} computes results version {}; its lives would not match: {again}",
             path.display(),
             header.results_version,
             header.caisson_version,
@@ -67,24 +144,161 @@ fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<BTreeMap<usize, Sto
     }
     if header.fingerprint != fingerprint {
         return Err(input_err(format!(
-            "--resume: the checkpoint {} was written for a different scenario or options (fingerprint {}, this run {}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); run without --resume to start again",
+            "--resume: the checkpoint {} was written for a different scenario or options (fingerprint {}, this run {}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}",
             path.display(),
             header.fingerprint,
             fingerprint
         )));
     }
-    let mut done = BTreeMap::new();
-    for line in lines {
-        let Ok(line) = line else { break };
-        // A line cut short by an interruption does not parse: it and anything after it are ignored.
-        match serde_json::from_str::<LifeLine>(&line) {
-            Ok(l) => {
-                done.insert(l.life, l.outcome);
+    let mut cp = Checkpoint { header_line, lives: BTreeMap::new(), complete_len: buf.len() as u64, torn_bytes: 0 };
+    let mut line_of: BTreeMap<usize, usize> = BTreeMap::new();
+    for n in 2.. {
+        let complete = read_line(&mut buf)?;
+        if buf.is_empty() {
+            break;
+        }
+        if !complete {
+            // The run stopped while writing this line: it is dropped (and cut away before appending).
+            cp.torn_bytes = buf.len() as u64;
+            break;
+        }
+        let refuse = |why: String| {
+            input_err(format!(
+                "--resume: {} line {n} {why}; remove that line (and any after it) to keep the other lives, or {again}",
+                path.display()
+            ))
+        };
+        let text = std::str::from_utf8(&buf[..buf.len() - 1]).map_err(|_| refuse("is not UTF-8 text".into()))?;
+        let (life, outcome) = parse_life_line(&cp.header_line, text).map_err(refuse)?;
+        if let Some(first) = line_of.insert(life, n) {
+            return Err(refuse(format!("repeats life {life} (already on line {first})")));
+        }
+        cp.lives.insert(life, outcome);
+        cp.complete_len += buf.len() as u64;
+    }
+    Ok(cp)
+}
+
+/// The open checkpoint of a run: lines are appended whole; a line that fails to be written is cut
+/// away again (the file keeps only complete lines), and the error names the file.
+struct CheckpointWriter {
+    path: PathBuf,
+    file: std::fs::File,
+    header_line: String,
+    len: u64,
+}
+
+impl CheckpointWriter {
+    /// A new checkpoint holding only `header_line` (written to a temporary file and renamed, so
+    /// a symbolic link at the path is replaced, not followed).
+    fn create(path: &Path, header_line: String) -> Result<Self> {
+        write_atomic(path, format!("{header_line}\n").as_bytes())?;
+        Self::open(path, header_line, None)
+    }
+
+    /// Append to the checkpoint read by `--resume`, first cutting away a torn last line.
+    fn resume(path: &Path, cp: &Checkpoint) -> Result<Self> {
+        if cp.torn_bytes > 0 {
+            eprintln!(
+                "Note: {}: dropped an incomplete last line ({} bytes, a run stopped while writing it)",
+                path.display(),
+                cp.torn_bytes
+            );
+        }
+        Self::open(path, cp.header_line.clone(), Some(cp.complete_len))
+    }
+
+    fn open(path: &Path, header_line: String, truncate_to: Option<u64>) -> Result<Self> {
+        let ctx = || format!("opening the checkpoint {}", path.display());
+        let file = std::fs::OpenOptions::new().append(true).open(path).with_context(ctx)?;
+        if let Some(len) = truncate_to {
+            file.set_len(len).with_context(ctx)?;
+        }
+        let len = file.metadata().with_context(ctx)?.len();
+        Ok(CheckpointWriter { path: path.to_path_buf(), file, header_line, len })
+    }
+
+    fn append(&mut self, life: usize, outcome: &StormOutcome) -> Result<()> {
+        let line = life_line(&self.header_line, life, outcome);
+        match self.file.write_all(line.as_bytes()) {
+            Ok(()) => {
+                self.len += line.len() as u64;
+                Ok(())
             }
-            Err(_) => break,
+            Err(e) => {
+                // Keep only complete lines (a full disk may have taken part of this one).
+                let _ = self.file.set_len(self.len);
+                Err(anyhow::Error::new(e).context(format!("writing the checkpoint {}", self.path.display())))
+            }
         }
     }
-    Ok(done)
+}
+
+/// The lock of a checkpoint: `CHECKPOINT.lock`, created with `create_new`, holding the process
+/// id; removed on drop (and by the Ctrl-C handler).
+struct CheckpointLock {
+    path: PathBuf,
+}
+
+impl CheckpointLock {
+    fn acquire(checkpoint: &Path) -> Result<Self> {
+        let mut name = checkpoint.as_os_str().to_owned();
+        name.push(".lock");
+        let path = PathBuf::from(name);
+        for _ in 0..2 {
+            crate::output::register_pending(&path);
+            match std::fs::OpenOptions::new().write(true).create_new(true).open(&path) {
+                Ok(mut f) => {
+                    let _ = writeln!(f, "{}", std::process::id());
+                    return Ok(CheckpointLock { path });
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                    crate::output::forget_pending(&path);
+                    let holder = std::fs::read_to_string(&path).ok().and_then(|t| t.trim().parse::<u32>().ok());
+                    match holder {
+                        Some(pid) if !process_running(pid) => {
+                            eprintln!(
+                                "Note: removed the stale lock {} of process {pid}, which is no longer running",
+                                path.display()
+                            );
+                            let _ = std::fs::remove_file(&path);
+                        }
+                        _ => {
+                            return Err(input_err(format!(
+                                "the checkpoint {} is in use by another `caisson design` run{} (its lock {} exists): wait for that run to end or give another --out; if no such run is going on, remove {}",
+                                checkpoint.display(),
+                                holder.map_or(String::new(), |p| format!(" (process {p})")),
+                                path.display(),
+                                path.display()
+                            )))
+                        }
+                    }
+                }
+                Err(e) => {
+                    crate::output::forget_pending(&path);
+                    return Err(anyhow::Error::new(e).context(format!("creating the lock {}", path.display())));
+                }
+            }
+        }
+        Err(input_err(format!("cannot take the lock {} (another run took it meanwhile)", path.display())))
+    }
+}
+
+impl Drop for CheckpointLock {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.path);
+        crate::output::forget_pending(&self.path);
+    }
+}
+
+/// Whether process `pid` is running (Linux: `/proc/PID`; elsewhere assumed running, so a stale
+/// lock is reported rather than removed).
+fn process_running(pid: u32) -> bool {
+    if cfg!(target_os = "linux") {
+        pid == std::process::id() || Path::new("/proc").join(pid.to_string()).exists()
+    } else {
+        true
+    }
 }
 
 fn lives_csv(lives: &[StormOutcome]) -> Result<Vec<u8>> {
@@ -166,9 +380,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let mut sc = scenario::load(&args.scenario).map_err(input_err)?;
     let mut design = sc.design_for("`caisson design`").map_err(input_err)?.clone();
     if let Some(n) = args.lives {
-        if n == 0 {
-            return Err(input_err("--lives 0: must be at least 1"));
-        }
+        // 1 to 1e7 (checked by the parser, as `[design] lives`).
         design.lives = n;
     }
     if args.brute_force {
@@ -187,40 +399,35 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let case = sc.storm_case(design.screen).map_err(input_err)?;
     let fingerprint = design_fingerprint(&case, &design);
-    let mut done = if args.resume {
-        read_checkpoint(checkpoint.as_ref().expect("checked"), &fingerprint)?
-    } else {
-        BTreeMap::new()
-    };
-    done.retain(|&i, _| i < design.lives);
-    let writer = match &checkpoint {
+    // Taken before the checkpoint is read or written: a second run on it refuses up front.
+    if let Some(parent) = checkpoint.as_deref().and_then(Path::parent).filter(|p| !p.as_os_str().is_empty()) {
+        ensure_dir(parent)?;
+    }
+    let _lock = checkpoint.as_deref().map(CheckpointLock::acquire).transpose()?;
+    let (mut done, writer) = match &checkpoint {
         Some(path) => {
-            if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
-                ensure_dir(parent)?;
-            }
-            let mut f = if args.resume {
-                std::fs::OpenOptions::new()
-                    .append(true)
-                    .open(path)
-                    .with_context(|| format!("opening the checkpoint {}", path.display()))?
+            if args.resume {
+                let cp = read_checkpoint(path, &fingerprint)?;
+                let w = CheckpointWriter::resume(path, &cp)?;
+                (cp.lives, Some(Mutex::new(w)))
             } else {
-                let mut f = std::fs::File::create(path)
-                    .with_context(|| format!("creating the checkpoint {}", path.display()))?;
                 let header = Header {
-                    caisson_design_checkpoint: 1,
+                    caisson_design_checkpoint: CHECKPOINT_FORMAT,
                     fingerprint: fingerprint.clone(),
                     lives: design.lives,
                     caisson_version: caisson::VERSION.to_string(),
                     results_version: caisson::RESULTS_VERSION,
                 };
-                writeln!(f, "{}", serde_json::to_string(&header)?)?;
-                f
-            };
-            f.flush()?;
-            Some(Mutex::new(f))
+                (BTreeMap::new(), Some(Mutex::new(CheckpointWriter::create(path, serde_json::to_string(&header)?)?)))
+            }
         }
-        None => None,
+        None => (BTreeMap::new(), None),
     };
+    done.retain(|&i, _| i < design.lives);
+    if writer.is_some() {
+        // Ctrl-C: finish the lives in progress, keep them in the checkpoint, exit 130.
+        crate::interrupt::graceful();
+    }
     let todo: Vec<usize> = (0..design.lives).filter(|i| !done.contains_key(i)).collect();
     let pb = progress(design.lives as u64, "lives", "");
     pb.set_position(done.len() as u64);
@@ -229,16 +436,13 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
     let on_life = |i: usize, o: &StormOutcome| {
         if let Some(w) = &writer {
-            let line = serde_json::to_string(&LifeLine { life: i, outcome: *o }).expect("a life serializes");
-            let mut f = w.lock().expect("checkpoint lock");
-            if let Err(e) = writeln!(f, "{line}").and_then(|_| f.flush()) {
-                *write_error.lock().expect("error slot") =
-                    Some(anyhow::Error::new(e).context("writing the checkpoint"));
+            if let Err(e) = w.lock().expect("checkpoint lock").append(i, o) {
+                *write_error.lock().expect("error slot") = Some(e);
                 return ControlFlow::Break(());
             }
         }
         pb.inc(1);
-        if finished_now.fetch_add(1, Ordering::SeqCst) + 1 >= stop_after {
+        if finished_now.fetch_add(1, Ordering::SeqCst) + 1 >= stop_after || crate::interrupt::requested() {
             ControlFlow::Break(())
         } else {
             ControlFlow::Continue(())
@@ -251,6 +455,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
         return Err(e);
     }
     done.extend(results);
+    if done.len() < design.lives && crate::interrupt::requested() {
+        return Err(anyhow::Error::new(crate::Interrupted(format!(
+            "interrupted (Ctrl-C) after {} of {} lives; the finished lives are in {}: run again with --resume to complete",
+            done.len(),
+            design.lives,
+            checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string())
+        ))));
+    }
     if done.len() < design.lives {
         anyhow::bail!(
             "stopped after {} of {} lives (--stop-after); the finished lives are in {}; run again with --resume to complete",

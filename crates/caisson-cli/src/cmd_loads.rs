@@ -8,7 +8,7 @@
 
 use crate::cli::LoadsArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, write_atomic};
+use crate::output::{check_finite_fields, check_out_dir, ensure_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
 use caisson::analysis::train::WaveSetup;
@@ -24,18 +24,28 @@ use caisson::scenario::{self, Scenario};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Most waves a generated history may hold.
-const MAX_WAVES: usize = 100_000;
+/// Most rows of a generated history (`wave_loads.csv`; the SVG plots every row).
+const MAX_HISTORY_ROWS: usize = 500_000;
+/// Most rows a generated history takes per wave: a grid of 400 per period, the mid-point, and 84
+/// over an impulse ([`wave_times`]).
+const ROWS_PER_WAVE: usize = 400 + 1 + 84;
+/// Most waves a generated history may hold: [`MAX_HISTORY_ROWS`] / [`ROWS_PER_WAVE`].
+const MAX_WAVES: usize = MAX_HISTORY_ROWS / ROWS_PER_WAVE;
 
 pub fn run(args: LoadsArgs) -> Result<()> {
     if args.history && args.out.is_none() {
         return Err(input_err("--history writes files: give the output directory with --out DIR"));
     }
     if args.waves == 0 || args.waves > MAX_WAVES {
-        return Err(input_err(format!("--waves {}: must be a whole number from 1 to {MAX_WAVES}", args.waves)));
+        return Err(input_err(format!(
+            "--waves {}: the history would have up to {} rows ({ROWS_PER_WAVE} per wave), at most {MAX_HISTORY_ROWS} are written; give a whole number from 1 to {MAX_WAVES}",
+            args.waves,
+            args.waves.saturating_mul(ROWS_PER_WAVE)
+        )));
     }
-    let sc = scenario::load(&args.scenario).map_err(input_err)?;
+    // Before any computing: a bad --out is refused at once.
     check_out_dir(args.out.as_deref())?;
+    let sc = scenario::load(&args.scenario).map_err(input_err)?;
     let ws = sc.waves_for("`caisson loads`").map_err(input_err)?;
     let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).map_err(input_err)?;
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
@@ -60,6 +70,13 @@ pub fn run(args: LoadsArgs) -> Result<()> {
             svg: "wave_loads.svg",
         });
     }
+    // Every number finite, or nothing is printed or written: the loads are closed forms of the
+    // scenario's numbers, so one that overflows is the input's (a huge weight or wave).
+    check_finite_fields(&report, "loads").map_err(|field| {
+        input_err(format!(
+            "the scenario's loads are not finite numbers ({field}): the [caisson], [water] or [waves] numbers are too large or too small for the formulas"
+        ))
+    })?;
     let doc = serde_json::to_value(&report)?;
     if args.json {
         crate::sayln!("{}", pretty(&doc)?);

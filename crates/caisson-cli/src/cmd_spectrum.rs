@@ -6,15 +6,22 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::spectrum::{log_space, sweep, SpectrumPoint};
+use caisson::analysis::spectrum::{estimated_steps, log_space, sweep, SpectrumPoint};
 use caisson::loads::LoadSpec;
 use caisson::report::spectrum::SpectrumReport;
 use caisson::scenario;
 
-/// Parse `FROM:TO:COUNT` (0 < FROM < TO, 2 ≤ COUNT ≤ 2000).
+/// Smallest and largest t_r/T0 of a sweep. Below, the steps of t_r/20 make a point last about
+/// 200 T0/t_r steps; above, the point lasts 4 t_r.
+pub const RATIO_RANGE: (f64, f64) = (1e-3, 1e3);
+/// Most time steps a sweep may take, all points together (about a minute or two on one core).
+pub const MAX_STEPS: f64 = 1e8;
+
+/// Parse `FROM:TO:COUNT` (RATIO_RANGE.0 ≤ FROM < TO ≤ RATIO_RANGE.1, 2 ≤ COUNT ≤ 2000).
 pub fn parse_range(s: &str) -> Result<(f64, f64, usize)> {
+    let (lo, hi) = RATIO_RANGE;
     let bad = || {
-        input_err(format!("--tr-over-t0 = \"{s}\": expected FROM:TO:COUNT with 0 < FROM < TO and COUNT a whole number from 2 to 2000, e.g. 0.05:5:60"))
+        input_err(format!("--tr-over-t0 = \"{s}\": expected FROM:TO:COUNT with {lo} ≤ FROM < TO ≤ {hi} and COUNT a whole number from 2 to 2000, e.g. 0.05:5:60"))
     };
     let parts: Vec<&str> = s.split(':').collect();
     if parts.len() != 3 {
@@ -23,7 +30,7 @@ pub fn parse_range(s: &str) -> Result<(f64, f64, usize)> {
     let from: f64 = parts[0].trim().parse().map_err(|_| bad())?;
     let to: f64 = parts[1].trim().parse().map_err(|_| bad())?;
     let count: usize = parts[2].trim().parse().map_err(|_| bad())?;
-    if !(from.is_finite() && to.is_finite() && from > 0.0 && to > from && (2..=2000).contains(&count)) {
+    if !(from.is_finite() && to.is_finite() && from >= lo && to > from && to <= hi && (2..=2000).contains(&count)) {
         return Err(bad());
     }
     Ok((from, to, count))
@@ -40,6 +47,15 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     };
     check_out_dir(args.out.as_deref())?;
     let ratios = log_space(from, to, count);
+    let steps = estimated_steps(sc.structure(), &ratios);
+    if steps.is_nan() || steps > MAX_STEPS {
+        return Err(input_err(format!(
+            "--tr-over-t0 = \"{}\": the sweep would take about {steps:.2e} time steps (T0 = {:.4} s, [solver] dt_s = {} s); at most {MAX_STEPS:.0e}: raise FROM, lower TO or COUNT",
+            args.tr_over_t0,
+            sc.structure().model().natural_period_s(),
+            sc.solver().dt_s
+        )));
+    }
     let pb = progress(ratios.len() as u64, "spectrum", "points");
     let pts = sweep(sc.structure(), base, &ratios, &|| pb.inc(1)).context("the spectrum sweep failed")?;
     pb.finish_and_clear();

@@ -1,7 +1,8 @@
 //! The `caisson` command-line tool: clap definitions → validated options → library → exporters.
 //!
 //! Exit codes: 0 success, 2 bad input (scenario, file, option), 1 a run that failed
-//! (non-convergence) or an I/O error while writing results.
+//! (non-convergence) or an I/O error while writing results, 130 stopped by Ctrl-C. Every error is
+//! one message on stderr that begins with `Error:` (the argument parser's included).
 
 mod cli;
 mod cmd_campaign;
@@ -29,6 +30,72 @@ impl std::fmt::Display for InputError {
 }
 impl std::error::Error for InputError {}
 
+/// A run stopped by Ctrl-C that stopped cleanly: printed as `Error: ...` (what was kept),
+/// exit code 130.
+#[derive(Debug)]
+pub struct Interrupted(pub String);
+
+impl std::fmt::Display for Interrupted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+impl std::error::Error for Interrupted {}
+
+/// Ctrl-C (SIGINT). By default the process stops at once: it removes its temporary files (no
+/// output file is ever half-written: each is renamed into place whole) and exits with 130. A
+/// command that keeps work as it goes (`design` with a checkpoint) asks for a graceful stop with
+/// [`interrupt::graceful`]: the first Ctrl-C sets a flag that it polls, a second one stops at once.
+pub mod interrupt {
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+    static GRACEFUL: AtomicBool = AtomicBool::new(false);
+
+    /// Exit code of a run stopped by Ctrl-C (128 + SIGINT, as the shells report it).
+    pub const EXIT_CODE: u8 = 130;
+
+    /// Install the handler (once, at start).
+    pub fn install() {
+        // If it cannot be installed (no signals here), Ctrl-C keeps its default action.
+        let _ = ctrlc::set_handler(|| {
+            let again = INTERRUPTED.swap(true, Ordering::SeqCst);
+            if GRACEFUL.load(Ordering::SeqCst) && !again {
+                eprintln!(
+                    "\nInterrupted: finishing the work in progress and keeping it (Ctrl-C again to stop at once)"
+                );
+                return;
+            }
+            let kept = if GRACEFUL.load(Ordering::SeqCst) {
+                "stopped at once; the checkpoint keeps every finished life (a line cut short is dropped by --resume)"
+            } else {
+                "nothing was kept; no output file was left half-written"
+            };
+            eprintln!("\nError: interrupted (Ctrl-C): {kept}");
+            crate::output::remove_pending_and_exit(EXIT_CODE as i32)
+        });
+    }
+
+    /// The command stops by itself on Ctrl-C (it polls [`requested`]).
+    pub fn graceful() {
+        GRACEFUL.store(true, Ordering::SeqCst);
+    }
+
+    /// Whether Ctrl-C was pressed.
+    pub fn requested() -> bool {
+        INTERRUPTED.load(Ordering::SeqCst)
+    }
+}
+
+/// The argument parser's message as every other error: `Error: ...` (clap writes `error: ...`).
+fn parser_error(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    match text.strip_prefix("error:") {
+        Some(rest) => format!("Error:{rest}"),
+        None => format!("Error: a command is required\n\n{text}"),
+    }
+}
+
 /// Wrap a library scenario error as an input error.
 pub fn input_err(e: impl std::fmt::Display) -> anyhow::Error {
     anyhow::Error::new(InputError(e.to_string()))
@@ -37,12 +104,18 @@ pub fn input_err(e: impl std::fmt::Display) -> anyhow::Error {
 fn main() -> ExitCode {
     let args = match cli::Cli::try_parse() {
         Ok(a) => a,
-        Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
+        // --help and --version: on stdout, exit 0.
+        Err(e) if !e.use_stderr() => {
             let _ = e.print();
-            return ExitCode::from(code);
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => {
+            let text = parser_error(&e);
+            eprint!("{text}{}", if text.ends_with('\n') { "" } else { "\n" });
+            return ExitCode::from(2);
         }
     };
+    interrupt::install();
     let result = match args.command {
         cli::Command::Run(a) => cmd_run::run(a),
         cli::Command::Spectrum(a) => cmd_spectrum::run(a),
@@ -55,7 +128,10 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            if e.downcast_ref::<InputError>().is_some() {
+            if e.downcast_ref::<Interrupted>().is_some() {
+                eprintln!("Error: {e}");
+                ExitCode::from(interrupt::EXIT_CODE)
+            } else if e.downcast_ref::<InputError>().is_some() {
                 eprintln!("Error: {e}");
                 ExitCode::from(2)
             } else {

@@ -1,19 +1,125 @@
-//! Writing results: every file is written to a temporary name and renamed into place, so that an
-//! interrupted or failed run never leaves a half-written output file.
+//! Writing results: every file is written to a temporary file of its own and renamed into place,
+//! so that an interrupted or failed run never leaves a half-written output file.
+//!
+//! The temporary file (`NAME.PID-N.tmp` beside `NAME`) is created exclusively (`create_new`:
+//! `O_CREAT | O_EXCL`, which never follows a symbolic link, not even a dangling one), written,
+//! fsync'd and renamed over `NAME`. On any error it is removed and the error names the file. A
+//! run stopped by Ctrl-C removes its temporary files and lock files ([`remove_pending`]).
 
 use anyhow::{Context, Result};
-use std::path::Path;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
 
-/// Write `bytes` to `path` atomically (temporary file + rename).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    let tmp = path.with_extension(format!("{}.tmp", path.extension().and_then(|e| e.to_str()).unwrap_or("")));
-    std::fs::write(&tmp, bytes).with_context(|| format!("writing {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))?;
-    Ok(())
+/// Files to remove if the process is stopped before it removes (or renames) them itself: the
+/// temporary files being written and the lock of a checkpoint.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn pending() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    PENDING.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Create the output directory (and parents).
+/// Remember `path` for [`remove_pending`].
+pub fn register_pending(path: &Path) {
+    pending().push(path.to_path_buf());
+}
+
+/// Forget `path` (it was renamed or removed).
+pub fn forget_pending(path: &Path) {
+    pending().retain(|p| p != path);
+}
+
+/// Remove every registered file and exit with `code`, holding the registry's lock so that no
+/// temporary file is renamed into place after it was removed (called on Ctrl-C).
+pub fn remove_pending_and_exit(code: i32) -> ! {
+    let files = pending();
+    for p in files.iter() {
+        let _ = std::fs::remove_file(p);
+    }
+    std::process::exit(code)
+}
+
+/// A temporary file beside its destination, created exclusively; removed on drop unless
+/// [committed](TempFile::commit).
+pub struct TempFile {
+    path: PathBuf,
+    committed: bool,
+}
+
+impl TempFile {
+    /// Create `NAME.PID-N.tmp` beside `dest` with `create_new` (never through a symbolic link,
+    /// never over an existing file; the next N if the name is taken). The file is empty; write
+    /// it through the returned handle or through the path (`AsRef<Path>`).
+    pub fn create(dest: &Path) -> Result<(TempFile, std::fs::File)> {
+        static COUNTER: AtomicU64 = AtomicU64::new(0);
+        let name = dest.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "output".into());
+        let mut last_err = None;
+        for _ in 0..100 {
+            let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+            let path = dest.with_file_name(format!("{name}.{}-{n}.tmp", std::process::id()));
+            // Registered before it exists, so that Ctrl-C between the two cannot leave it.
+            register_pending(&path);
+            match std::fs::OpenOptions::new().write(true).create_new(true).open(&path) {
+                Ok(f) => return Ok((TempFile { path, committed: false }, f)),
+                Err(e) => {
+                    forget_pending(&path);
+                    if e.kind() != std::io::ErrorKind::AlreadyExists {
+                        return Err(anyhow::Error::new(e).context(format!("writing {}", dest.display())));
+                    }
+                    last_err = Some(e);
+                }
+            }
+        }
+        Err(anyhow::Error::new(last_err.expect("tried")).context(format!("writing {}", dest.display())))
+    }
+
+    /// Flush the file's data to disk and rename it to `dest` (then sync the directory, where the
+    /// platform allows it). On error the temporary file is removed.
+    pub fn commit(mut self, dest: &Path) -> Result<()> {
+        let synced = std::fs::File::open(&self.path).and_then(|f| f.sync_all());
+        synced.with_context(|| format!("writing {}", dest.display()))?;
+        {
+            // Under the registry's lock: Ctrl-C cannot remove the file between these steps.
+            let mut files = pending();
+            std::fs::rename(&self.path, dest).with_context(|| format!("writing {}", dest.display()))?;
+            files.retain(|p| p != &self.path);
+            self.committed = true;
+        }
+        if let Some(dir) = dest.parent().filter(|d| !d.as_os_str().is_empty()) {
+            let _ = std::fs::File::open(dir).and_then(|d| d.sync_all());
+        }
+        Ok(())
+    }
+}
+
+impl AsRef<Path> for TempFile {
+    fn as_ref(&self) -> &Path {
+        &self.path
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_file(&self.path);
+            forget_pending(&self.path);
+        }
+    }
+}
+
+/// Write `bytes` to `path` atomically: an exclusive temporary file, fsync, rename. On error no
+/// file is left behind (neither `path` nor the temporary file) and the error names `path`.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    let (tmp, mut f) = TempFile::create(path)?;
+    f.write_all(bytes).and_then(|_| f.sync_all()).with_context(|| format!("writing {}", path.display()))?;
+    drop(f);
+    tmp.commit(path)
+}
+
+/// Create the output directory (and parents), after [`check_out_dir`]'s checks.
 pub fn ensure_dir(dir: &Path) -> Result<()> {
+    check_out_dir(Some(dir))?;
     std::fs::create_dir_all(dir).with_context(|| format!("creating output directory {}", dir.display()))
 }
 
@@ -21,7 +127,6 @@ pub fn ensure_dir(dir: &Path) -> Result<()> {
 /// is not an error: the rest of the output is dropped and the command goes on (its files are
 /// still written). Use through [`say!`](crate::say) and [`sayln!`](crate::sayln).
 pub fn say_str(s: &str) {
-    use std::io::Write;
     let mut out = std::io::stdout().lock();
     let _ = out.write_all(s.as_bytes()).and_then(|_| out.flush());
 }
@@ -61,19 +166,296 @@ pub fn check_finite(v: &serde_json::Value, path: &str) -> Result<()> {
     }
 }
 
+/// Refuse a non-finite number anywhere in `report` (`what` names the report in the error), for
+/// reports whose JSON has `null` for an absent value (`loads`): serde_json writes NaN and ±inf as
+/// `null` too, so the check walks the report itself, not its JSON. The error names the field.
+pub fn check_finite_fields<T: serde::Serialize>(report: &T, what: &str) -> std::result::Result<(), String> {
+    let mut path = vec![what.to_string()];
+    report.serialize(finite::Check { path: &mut path }).map_err(|e| e.0)
+}
+
+/// A serde serializer that writes nothing and fails at the first non-finite f32 or f64, with the
+/// path of the field (`loads.safety.heel_pressure_pa`).
+mod finite {
+    use serde::ser::{self, Serialize};
+
+    #[derive(Debug)]
+    pub struct NotFinite(pub String);
+    impl std::fmt::Display for NotFinite {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            f.write_str(&self.0)
+        }
+    }
+    impl std::error::Error for NotFinite {}
+    impl ser::Error for NotFinite {
+        fn custom<T: std::fmt::Display>(msg: T) -> Self {
+            NotFinite(msg.to_string())
+        }
+    }
+
+    pub struct Check<'a> {
+        pub path: &'a mut Vec<String>,
+    }
+
+    pub struct Compound<'a> {
+        path: &'a mut Vec<String>,
+        index: usize,
+        key: Option<String>,
+    }
+
+    impl Compound<'_> {
+        fn visit<T: Serialize + ?Sized>(&mut self, step: String, v: &T) -> Result<(), NotFinite> {
+            self.path.push(step);
+            v.serialize(Check { path: &mut *self.path })?;
+            self.path.pop();
+            Ok(())
+        }
+        fn element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.index += 1;
+            self.visit(format!("[{}]", self.index - 1), v)
+        }
+    }
+
+    impl<'a> ser::Serializer for Check<'a> {
+        type Ok = ();
+        type Error = NotFinite;
+        type SerializeSeq = Compound<'a>;
+        type SerializeTuple = Compound<'a>;
+        type SerializeTupleStruct = Compound<'a>;
+        type SerializeTupleVariant = Compound<'a>;
+        type SerializeMap = Compound<'a>;
+        type SerializeStruct = Compound<'a>;
+        type SerializeStructVariant = Compound<'a>;
+
+        fn serialize_f64(self, v: f64) -> Result<(), NotFinite> {
+            if v.is_finite() {
+                Ok(())
+            } else {
+                Err(NotFinite(format!("{} is {v}", self.path.concat())))
+            }
+        }
+        fn serialize_f32(self, v: f32) -> Result<(), NotFinite> {
+            self.serialize_f64(v as f64)
+        }
+        fn serialize_bool(self, _: bool) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i8(self, _: i8) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i16(self, _: i16) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i32(self, _: i32) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_i64(self, _: i64) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u8(self, _: u8) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u16(self, _: u16) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u32(self, _: u32) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_u64(self, _: u64) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_char(self, _: char) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_str(self, _: &str) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_bytes(self, _: &[u8]) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_none(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_some<T: Serialize + ?Sized>(self, v: &T) -> Result<(), NotFinite> {
+            v.serialize(self)
+        }
+        fn serialize_unit(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_unit_struct(self, _: &'static str) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), NotFinite> {
+            Ok(())
+        }
+        fn serialize_newtype_struct<T: Serialize + ?Sized>(self, _: &'static str, v: &T) -> Result<(), NotFinite> {
+            v.serialize(self)
+        }
+        fn serialize_newtype_variant<T: Serialize + ?Sized>(
+            self,
+            _: &'static str,
+            _: u32,
+            variant: &'static str,
+            v: &T,
+        ) -> Result<(), NotFinite> {
+            Compound { path: self.path, index: 0, key: None }.visit(format!(".{variant}"), v)
+        }
+        fn serialize_seq(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_tuple(self, _: usize) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_tuple_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_map(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+        fn serialize_struct_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+    }
+
+    impl ser::SerializeSeq for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeTuple for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeTupleStruct for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeTupleVariant for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            self.element(v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeMap for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_key<T: Serialize + ?Sized>(&mut self, k: &T) -> Result<(), NotFinite> {
+            // The key names the value (a flattened struct serializes as a map).
+            self.key = match serde_json::to_value(k) {
+                Ok(serde_json::Value::String(s)) => Some(s),
+                _ => None,
+            };
+            self.visit("[key]".into(), k)
+        }
+        fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+            match self.key.take() {
+                Some(k) => self.visit(format!(".{k}"), v),
+                None => self.element(v),
+            }
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeStruct for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
+            self.visit(format!(".{key}"), v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+    impl ser::SerializeStructVariant for Compound<'_> {
+        type Ok = ();
+        type Error = NotFinite;
+        fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
+            self.visit(format!(".{key}"), v)
+        }
+        fn end(self) -> Result<(), NotFinite> {
+            Ok(())
+        }
+    }
+}
+
 /// Pretty JSON text of a value.
 pub fn pretty(v: &serde_json::Value) -> Result<String> {
     Ok(serde_json::to_string_pretty(v)?)
 }
 
-/// Check `--out DIR` before any computing: it must be a directory or not exist yet.
+/// Check `--out DIR` before any computing: it must be a directory, or not exist yet with a
+/// directory as its nearest existing ancestor; a dangling symbolic link is refused by name.
 pub fn check_out_dir(dir: Option<&Path>) -> Result<()> {
-    if let Some(dir) = dir {
-        if dir.exists() && !dir.is_dir() {
-            return Err(crate::input_err(format!("--out {}: exists and is not a directory", dir.display())));
+    let Some(dir) = dir else { return Ok(()) };
+    let bad = |what: String| Err(crate::input_err(format!("--out {}: {what}", dir.display())));
+    match std::fs::symlink_metadata(dir) {
+        Ok(m) if m.file_type().is_symlink() => match std::fs::metadata(dir) {
+            Ok(t) if t.is_dir() => Ok(()),
+            Ok(_) => bad("is a symbolic link to something that is not a directory".into()),
+            Err(_) => {
+                let to = std::fs::read_link(dir).map(|t| t.display().to_string()).unwrap_or_else(|_| "?".into());
+                bad(format!(
+                    "is a symbolic link to {to}, which does not exist; remove the link or give another directory"
+                ))
+            }
+        },
+        Ok(m) if m.is_dir() => Ok(()),
+        Ok(_) => bad("exists and is not a directory".into()),
+        Err(_) => {
+            // Not there yet: the nearest existing ancestor must be a directory.
+            let mut up = dir.parent();
+            while let Some(p) = up.filter(|p| !p.as_os_str().is_empty()) {
+                if let Ok(m) = std::fs::metadata(p) {
+                    if m.is_dir() {
+                        return Ok(());
+                    }
+                    return bad(format!("cannot be created: {} is not a directory", p.display()));
+                }
+                up = p.parent();
+            }
+            Ok(())
         }
     }
-    Ok(())
 }
 
 /// Run `f` on a pool of `threads` worker threads (0: one per core). A local pool: results do not

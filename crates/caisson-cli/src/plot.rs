@@ -85,7 +85,7 @@ fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {
 
 /// Write stacked panels sharing the x axis (`x_label`), one under the other, as an SVG file.
 pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Result<()> {
-    let tmp = path.with_extension("svg.tmp");
+    let (tmp, _) = crate::output::TempFile::create(path)?;
     {
         let height = 60 + 220 * panels.len() as u32;
         let root = SVGBackend::new(&tmp, (900, height)).into_drawing_area();
@@ -152,6 +152,6 @@ pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Resu
         }
         root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
     }
-    std::fs::rename(&tmp, path).with_context(|| format!("writing {}", path.display()))?;
+    tmp.commit(path).context("writing an SVG plot")?;
     Ok(())
 }

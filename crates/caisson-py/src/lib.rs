@@ -487,7 +487,7 @@ fn breaker_height_m<'py>(
     Ok(PyArray1::from_vec(py, out))
 }
 
-/// Goda's surf-zone H1/3 and H_max at depth h (PHYSICS.md §3.3), m, element-wise.
+/// Goda's surf-zone H1/3 and H_max at depth h (docs/model.md §3.3), m, element-wise.
 #[pyfunction]
 #[allow(clippy::type_complexity)]
 fn surf_zone_heights<'py>(

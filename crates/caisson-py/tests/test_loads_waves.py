@@ -98,7 +98,7 @@ def test_wave_functions_match_the_loads_report_and_broadcast():
 def test_surf_zone_heights_are_goda_s_and_broadcast():
     h13, hmax = caisson.waves.surf_zone_heights(np.array([3.0, 6.0, 9.0]), 12.8, 20.0, 0.01)
     assert h13.shape == (3,) and np.all(hmax > h13) and np.all(np.diff(h13) > 0)
-    # Outside the surf zone (h/L0 ≥ 0.2) H_max = 1.8 H1/3 (PHYSICS.md §3.3).
+    # Outside the surf zone (h/L0 ≥ 0.2) H_max = 1.8 H1/3 (docs/model.md §3.3).
     a, b = caisson.waves.surf_zone_heights(2.0, 6.0, 20.0, 0.01)
     assert b == 1.8 * a
     # Deep inside it the depth limits H1/3 (β0 H0' + β1 h < K_s H0').

@@ -29,7 +29,7 @@ def wavelength_m(period_s: Any, depth_m: Any):
 
 
 def breaker_height_m(depth_m: Any, period_s: Any, criterion: str = "miche", *, slope: Any = 0.0, coefficient: float = None):
-    """Breaker height H_b at depth h, m (PHYSICS.md §3): ``"miche"`` (0.142 L tanh(k h)),
+    """Breaker height H_b at depth h, m (docs/model.md §3): ``"miche"`` (0.142 L tanh(k h)),
     ``"goda"`` (breaker index, ``coefficient`` A = 0.17 and seabed ``slope`` tan θ) or
     ``"mccowan"`` (``coefficient`` γ_b = 0.78 times h)."""
     kinds = {"miche": (0, 0.0), "goda": (1, 0.17), "mccowan": (2, 0.78)}
@@ -42,7 +42,7 @@ def breaker_height_m(depth_m: Any, period_s: Any, criterion: str = "miche", *, s
 
 def surf_zone_heights(h0_m: Any, period_s: Any, depth_m: Any, slope: Any = 0.0):
     """Goda's (2000) surf-zone H1/3 and H_max, m, at depth h for the deep-water H0' ``h0_m`` and
-    period T1/3, seabed slope tan θ (PHYSICS.md §3.3): returns ``(h13_m, hmax_m)``."""
+    period T1/3, seabed slope tan θ (docs/model.md §3.3): returns ``(h13_m, hmax_m)``."""
     shape, (h, t, d, s) = _flat(h0_m, period_s, depth_m, slope)
     a, b = _core.surf_zone_heights(h, t, d, s)
     return _shaped(a, shape), _shaped(b, shape)

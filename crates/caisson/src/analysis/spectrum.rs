@@ -39,6 +39,25 @@ pub fn log_space(from: f64, to: f64, count: usize) -> Vec<f64> {
     (0..count).map(|i| (a + (b - a) * i as f64 / (count - 1) as f64).exp()).collect()
 }
 
+/// The time step and the duration of the point t_r = `ratio` · T0 (module docs).
+fn point_dt_and_duration(structure_dt_s: f64, t0: f64, ratio: f64) -> (f64, f64) {
+    let tr = ratio * t0;
+    (structure_dt_s.min(t0 / 200.0).min(tr / 20.0), 4.0 * tr + 10.0 * t0)
+}
+
+/// The number of time steps a [`sweep`] of `ratios` takes (without the halvings of steps that do
+/// not converge): the work to check before running it.
+pub fn estimated_steps(structure: &Structure, ratios: &[f64]) -> f64 {
+    let t0 = structure.model().natural_period_s();
+    ratios
+        .iter()
+        .map(|&r| {
+            let (dt, duration) = point_dt_and_duration(structure.solver.dt_s, t0, r);
+            (duration / dt).ceil()
+        })
+        .sum()
+}
+
 /// Sweep `ratios` of t_r/T0 for the pulse `base` (its rise time is replaced); `progress` is
 /// called once per finished point.
 pub fn sweep(
@@ -60,10 +79,10 @@ pub fn sweep(
         .map(|&ratio| {
             let tr = ratio * t0;
             let pulse = TrianglePulse { peak: base.peak, rise_s: tr, start_s: 0.0 };
-            let dt = solver.dt_s.min(t0 / 200.0).min(tr / 20.0);
+            let (dt, duration) = point_dt_and_duration(solver.dt_s, t0, ratio);
             let point =
                 Structure { solver: SolverParams { dt_s: dt, output_interval_s: dt, ..solver }, ..structure.clone() };
-            let r = run(&point, &pulse, 4.0 * tr + 10.0 * t0, false)?;
+            let r = run(&point, &pulse, duration, false)?;
             progress();
             Ok(SpectrumPoint {
                 tr_over_t0: ratio,

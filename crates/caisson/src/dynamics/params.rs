@@ -74,13 +74,28 @@ impl Default for SolverParams {
     }
 }
 
-/// At most this many fixed steps in one run.
+/// At most this many steps of `dt_s` in one run: the fixed steps, or with adaptive stepping the
+/// simulated time over its first step `dt_s` (docs/scenario.md).
 pub const MAX_FIXED_STEPS: f64 = 1e9;
 
+/// The longest time step `dt_s`, s (as `dt_max_s` of adaptive stepping): a longer one cannot
+/// follow a caisson's response, and far longer ones (1e156 s) lose the time itself to rounding.
+pub const MAX_DT_S: f64 = 1.0;
+
+/// `dt_s` > 0 and at most [`MAX_DT_S`].
+fn time_step(dt_s: f64) -> Result<f64, ParamError> {
+    let dt_s = positive("dt_s", dt_s)?;
+    if dt_s > MAX_DT_S {
+        return Err(rule("dt_s", dt_s, format!("must be at most {MAX_DT_S} (s)")));
+    }
+    Ok(dt_s)
+}
+
 impl SolverParams {
-    /// The defaults with fixed steps of `dt_s` (> 0); the output interval is at least `dt_s`.
+    /// The defaults with fixed steps of `dt_s` (> 0, at most 1 s); the output interval is at
+    /// least `dt_s`.
     pub fn fixed(dt_s: f64) -> Result<Self, ParamError> {
-        let dt_s = positive("dt_s", dt_s)?;
+        let dt_s = time_step(dt_s)?;
         let d = SolverParams::default();
         Ok(SolverParams { dt_s, output_interval_s: d.output_interval_s.max(dt_s), ..d })
     }
@@ -138,17 +153,19 @@ impl SolverParams {
     }
 
     /// Check the controls against a run of `duration_s`: dt_s at most the duration, at most 1e9
-    /// fixed steps, and an output interval from dt_s to the duration.
+    /// steps of dt_s (fixed or adaptive stepping: docs/scenario.md), and an output interval from
+    /// dt_s to the duration.
     pub fn check_run(&self, duration_s: f64) -> Result<(), ParamError> {
-        positive("dt_s", self.dt_s)?;
+        time_step(self.dt_s)?;
         if self.dt_s > duration_s {
             return Err(rule("dt_s", self.dt_s, format!("must not exceed the simulated time {duration_s} s")));
         }
-        if self.stepping == Stepping::Fixed && duration_s / self.dt_s > MAX_FIXED_STEPS {
+        if duration_s / self.dt_s > MAX_FIXED_STEPS {
+            let adaptive = if self.stepping == Stepping::Fixed { "" } else { " of dt_s (the first adaptive step)" };
             return Err(rule(
                 "dt_s",
                 self.dt_s,
-                format!("gives {:.2e} steps for {duration_s} s; at most 1e9", duration_s / self.dt_s),
+                format!("gives {:.2e} steps{adaptive} for {duration_s} s; at most 1e9", duration_s / self.dt_s),
             ));
         }
         let hi = duration_s.max(self.dt_s);

@@ -341,14 +341,32 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
                 ScenarioError::missing("[load] file", "the CSV force series, relative to the scenario file")
             })?;
             let path = base_dir.join(name);
-            let text = std::fs::read_to_string(&path)
-                .map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
+            let text = read_series(&path).map_err(|message| ScenarioError::Series { path: path.clone(), message })?;
             let series = ForceSeries::from_csv_str(&text, c.width_m)
                 .map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
             let end = series.last_time_s();
             (LoadSpec::Series(series), end)
         }
     })
+}
+
+/// Largest force-series file read, bytes (a file that never ends, `/dev/zero`, is refused).
+pub const MAX_SERIES_BYTES: u64 = 128 << 20;
+
+/// The text of a series file of at most [`MAX_SERIES_BYTES`] (checked before and while reading).
+fn read_series(path: &Path) -> Result<String, String> {
+    use std::io::Read;
+    let limit = || format!("is larger than {} MiB, the most a force series may be", MAX_SERIES_BYTES >> 20);
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    if file.metadata().map_err(|e| e.to_string())?.len() > MAX_SERIES_BYTES {
+        return Err(limit());
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_SERIES_BYTES + 1).read_to_end(&mut bytes).map_err(|e| e.to_string())?;
+    if bytes.len() as u64 > MAX_SERIES_BYTES {
+        return Err(limit());
+    }
+    String::from_utf8(bytes).map_err(|_| "is not UTF-8 text (a CSV file is expected)".to_string())
 }
 
 fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {

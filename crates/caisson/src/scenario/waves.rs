@@ -19,6 +19,9 @@ use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
 
+/// Most waves of all the realizations of a `[waves]` scenario together (`waves` × `realizations`).
+pub const MAX_TRAIN_WAVES: usize = 10_000_000;
+
 /// `[waves]` as written in the scenario file.
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
@@ -318,6 +321,18 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
     };
     let waves = count("[waves] waves", t.waves, 15)?;
     let realizations = count("[waves] realizations", t.realizations, 10)?;
+    // Every wave of every realization is integrated and reported (a row of `waves.csv`, an object
+    // of the JSON): bounded in all, not only per realization.
+    if waves * realizations > MAX_TRAIN_WAVES {
+        return Err(ScenarioError::range(
+            "[waves] realizations",
+            realizations,
+            format!(
+                "times [waves] waves = {waves} gives {} waves in all; at most {MAX_TRAIN_WAVES}",
+                waves * realizations
+            ),
+        ));
+    }
     let seed = seed_of("[waves] seed", t.seed)?;
     let kind = if irregular {
         TrainKind::Irregular { significant_height_m: height_m }

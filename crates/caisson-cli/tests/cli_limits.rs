@@ -1,0 +1,215 @@
+//! Regression tests of issue 12 (hardening): every option and input that could make a command
+//! run without end or grow without bound is refused up front with an `Error:` that gives the
+//! limit (and the estimate); `loads` refuses non-finite output. Each test is named after its
+//! finding.
+
+use assert_cmd::Command;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn example(name: &str) -> String {
+    workspace_root().join("examples").join(name).to_str().unwrap().to_string()
+}
+
+/// The binary with a time limit: a refused option must be refused at once, not after a hang.
+fn caisson() -> Command {
+    let mut c = Command::cargo_bin("caisson").expect("the caisson binary is built");
+    c.timeout(Duration::from_secs(60));
+    c
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// Run, expect exit 2 and an `Error:` that contains every one of `needles`; returns stderr.
+fn refused(args: &[&str], needles: &[&str]) -> String {
+    let o = caisson().args(args).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    assert!(err.starts_with("Error:"), "{args:?}: {err}");
+    for n in needles {
+        assert!(err.contains(n), "{args:?}: `{n}` not in: {err}");
+    }
+    assert!(o.stdout.is_empty(), "{args:?}: nothing on stdout");
+    err
+}
+
+#[test]
+fn spectrum_tr_over_t0_5e_324_1e_9_and_1e300_are_refused_at_once() {
+    for range in ["5e-324:1:3", "1e-9:1e-8:3", "1e300:1e301:3", "0.0001:1:3", "1:2000:3"] {
+        refused(&["spectrum", &example("table5_triangle.toml"), "--tr-over-t0", range], &["--tr-over-t0", "0.001"]);
+    }
+}
+
+#[test]
+fn spectrum_sweep_over_the_step_budget_is_refused_with_the_estimate() {
+    let err = refused(
+        &["spectrum", &example("table5_triangle.toml"), "--tr-over-t0", "0.001:0.002:2000"],
+        &["time steps", "at most 1e8"],
+    );
+    assert!(err.contains("2.89e8"), "the estimate is given: {err}");
+}
+
+#[test]
+fn threads_99999999999_and_5000_are_refused_naming_the_option() {
+    let cases: [(&str, String); 4] = [
+        ("run", example("pari_breaking_loads.toml")),
+        ("campaign", example("pari_breaking_campaign.toml")),
+        ("design", example("design_breakwater.toml")),
+        ("fragility", example("fragility.toml")),
+    ];
+    for (cmd, file) in &cases {
+        for n in ["99999999999", "5000", "257", "x"] {
+            refused(&[cmd, file, "--threads", n], &["--threads", "0 to 256"]);
+        }
+    }
+}
+
+#[test]
+fn lives_1000000000_is_refused_like_the_file_cap() {
+    for n in ["1000000000", "10000001", "0"] {
+        refused(&["design", &example("design_breakwater.toml"), "--lives", n], &["--lives", "1 to 10000000"]);
+    }
+}
+
+#[test]
+fn loads_history_waves_100000_is_refused_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let err = refused(
+        &[
+            "loads",
+            &example("pari_breaking_loads.toml"),
+            "--history",
+            "--waves",
+            "100000",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &["--waves 100000", "rows", "1 to 1030"],
+    );
+    assert!(err.contains("48500000"), "the estimate is given: {err}");
+    assert!(!out.exists(), "nothing written");
+}
+
+#[test]
+fn loads_history_checks_out_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(dir.path(), "a-file", "not a directory");
+    refused(
+        &["loads", &example("pari_breaking_loads.toml"), "--history", "--out", file.to_str().unwrap()],
+        &["--out", "not a directory"],
+    );
+    // Under a file: the directory cannot be created, said before computing.
+    let below = file.join("sub");
+    refused(
+        &["loads", &example("pari_breaking_loads.toml"), "--history", "--out", below.to_str().unwrap()],
+        &["--out", "cannot be created"],
+    );
+}
+
+#[test]
+fn loads_with_weight_1e305_kn_refuses_non_finite_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(example("pari_breaking_loads.toml")).unwrap();
+    let start = text.find("weight_in_water_kn").expect("the example gives the weight");
+    let end = start + text[start..].find('\n').unwrap();
+    let f = write(dir.path(), "heavy.toml", &format!("{}weight_in_water_kn = 1e305{}", &text[..start], &text[end..]));
+    for json in [true, false] {
+        let mut args = vec!["loads", f.to_str().unwrap()];
+        if json {
+            args.push("--json");
+        }
+        let o = caisson().args(&args).output().unwrap();
+        let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+        assert_eq!(o.status.code(), Some(2), "non-finite loads must not exit 0: {out}");
+        assert!(err.starts_with("Error:") && err.contains("not finite numbers (loads."), "{err}");
+        assert!(!out.contains("null") && !out.contains("NaN") && !out.contains("inf"), "{out}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn series_file_that_never_ends_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(example("table5_triangle.toml")).unwrap();
+    let start = text.find("[load]").unwrap();
+    let end = start + text[start..].find("[solver]").unwrap();
+    let f = write(
+        dir.path(),
+        "zero.toml",
+        &format!("{}[load]\nkind = \"series\"\nfile = \"/dev/zero\"\n\n{}", &text[..start], &text[end..]),
+    );
+    refused(&["run", f.to_str().unwrap()], &["/dev/zero", "128 MiB"]);
+}
+
+#[test]
+fn wave_trains_of_40000_waves_obey_the_step_limit_under_adaptive_stepping() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(example("pari_breaking_loads.toml")).unwrap();
+    assert!(text.contains("[waves]"));
+    // 40 000 waves of the example's period (about 3 s) at the first step of 1e-4 s: over 1e9 steps.
+    let long = text.replacen("[waves]", "[waves]\nwaves = 40000\nrealizations = 1", 1);
+    let long = strip_keys(&long, "[waves]", &["waves", "realizations"], 2);
+    let f = write(dir.path(), "long.toml", &long);
+    refused(&["run", f.to_str().unwrap()], &["dt_s", "at most 1e9"]);
+}
+
+#[test]
+fn waves_times_realizations_is_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(example("pari_breaking_loads.toml")).unwrap();
+    let many = text.replacen("[waves]", "[waves]\nwaves = 1000\nrealizations = 100000", 1);
+    let many = strip_keys(&many, "[waves]", &["waves", "realizations"], 2);
+    let f = write(dir.path(), "many.toml", &many);
+    refused(&["run", f.to_str().unwrap()], &["[waves] realizations", "at most 10000000"]);
+}
+
+/// Remove the lines `key = ...` of `table` after its first `keep` lines (so that the keys just
+/// inserted at its top replace the example's own).
+fn strip_keys(text: &str, table: &str, keys: &[&str], keep: usize) -> String {
+    let mut out = Vec::new();
+    let mut in_table = false;
+    let mut seen = 0;
+    for line in text.lines() {
+        if line.starts_with('[') {
+            in_table = line.trim() == table;
+            seen = 0;
+        } else if in_table {
+            seen += 1;
+            let key = line.split('=').next().unwrap_or("").trim();
+            if seen > keep && keys.contains(&key) {
+                continue;
+            }
+        }
+        out.push(line);
+    }
+    out.join("\n") + "\n"
+}
+
+#[test]
+fn dt_s_1e156_with_a_rise_time_of_5e158_is_refused() {
+    // Found by tests/fuzz_scenarios.rs: the run started, with times of 1e155 s, and failed with a
+    // Newton-Raphson message (exit 1) instead of naming the key.
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(example("table5_triangle.toml")).unwrap();
+    let huge = text
+        .replacen("rise_time_s = 0.05", "rise_time_s = 5e158", 1)
+        .replacen("duration_s = 0.6", "duration_s = 1e160", 1)
+        .replacen("dt_s = 1e-4", "dt_s = 1e156", 1);
+    let f = write(dir.path(), "huge.toml", &huge);
+    refused(&["run", f.to_str().unwrap()], &["[solver] dt_s", "at most 1 (s)"]);
+    let f = write(
+        dir.path(),
+        "two.toml",
+        &text.replacen("dt_s = 1e-4", "dt_s = 2.0", 1).replacen("duration_s = 0.6", "duration_s = 60", 1),
+    );
+    refused(&["run", f.to_str().unwrap()], &["[solver] dt_s", "at most 1 (s)"]);
+}

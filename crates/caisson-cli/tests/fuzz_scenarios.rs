@@ -1,0 +1,504 @@
+//! Property test over generated scenarios (issue 12): mutations of the bundled examples (numbers
+//! scaled by 10^±k, signs flipped, 0, NaN/inf, the extremes of f64, keys dropped). For each:
+//!
+//! * **in process** (thousands of cases, fast): `Scenario::from_toml` either refuses with an
+//!   error naming a key (`[table] key`) or gives a scenario whose short run (at most
+//!   [`SHORT_STEPS`] steps of `dt_s` of a `[load]` run, one wave of one realization of a wave
+//!   train, the storm case of a design) succeeds with finite numbers; never a panic, never a
+//!   failed run on a scenario that validation accepted, and each case within [`CASE_BUDGET`].
+//! * **through the binary** (a smaller sample): `caisson run|loads|campaign|design|fragility
+//!   --json` under a time limit ([`CHILD_TIMEOUT`], then it is killed) and an address-space limit
+//!   ([`CHILD_MEMORY_KB`], `ulimit -v`): exit 0 with finite JSON, or exit 2 with `Error:` naming a
+//!   key; never a panic (101), a signal, a hang or the memory limit.
+//!
+//! Size: `CAISSON_FUZZ_CASES` (default 8000) in-process cases and `CAISSON_FUZZ_BIN_CASES`
+//! (default 80) binary cases; CI runs the defaults (about a minute on 2 cores). To search longer:
+//! `CAISSON_FUZZ_CASES=100000 CAISSON_FUZZ_BIN_CASES=2000 cargo test --release -p caisson-cli
+//! --test fuzz_scenarios -- --nocapture` (CONTRIBUTING.md). A failure is shrunk by proptest to
+//! a minimal mutation list and printed with the scenario text; proptest keeps its seed in
+//! `proptest-regressions/` so that the next run tries it first.
+//!
+//! Work-size keys (`duration_s`, `dt_s`, counts such as `waves`, `realizations`, `lives`) are
+//! mutated only towards less work in the binary sample: within their documented caps a run may
+//! legitimately take hours, and `run`/`campaign` do not yet refuse by a work estimate (issue 12,
+//! item 3, left open: see the TODO at `WORK_KEYS`).
+
+use proptest::prelude::*;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// Most time steps of the in-process short run of a `[load]` scenario.
+const SHORT_STEPS: f64 = 400.0;
+/// Wall time allowed for one in-process case (validation + short run).
+const CASE_BUDGET: Duration = Duration::from_secs(10);
+/// Wall time allowed for one binary case before it is killed and the case fails.
+const CHILD_TIMEOUT: Duration = Duration::from_secs(20);
+/// Address space allowed for one binary case, KiB (1 GiB).
+const CHILD_MEMORY_KB: u64 = 1 << 20;
+
+fn examples_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+/// The bundled examples that are scenarios, and the command each is run with in the binary sample.
+const EXAMPLES: [(&str, &str); 9] = [
+    ("table5_triangle.toml", "run"),
+    ("table5_series.toml", "run"),
+    ("fifteen_waves.toml", "run"),
+    ("pari_breaking_loads.toml", "loads"),
+    ("pari_nonbreaking_loads.toml", "run"),
+    ("pari_breaking_campaign.toml", "campaign"),
+    ("pari_nonbreaking_campaign.toml", "campaign"),
+    ("design_breakwater.toml", "design"),
+    ("fragility.toml", "fragility"),
+];
+
+fn example_text(i: usize) -> String {
+    std::fs::read_to_string(examples_dir().join(EXAMPLES[i].0)).unwrap()
+}
+
+/// One mutation of a numeric `key = value` line.
+#[derive(Debug, Clone)]
+enum Op {
+    /// × 10^k.
+    Scale(i32),
+    Negate,
+    Zero,
+    /// `nan`, `inf`, `-inf`, 5e-324, 1.7976931348623157e308.
+    Special(usize),
+    Drop,
+}
+
+fn op() -> impl Strategy<Value = Op> {
+    prop_oneof![
+        5 => (-4i32..=4).prop_map(Op::Scale),
+        2 => (-12i32..=12).prop_map(Op::Scale),
+        1 => prop_oneof![Just(-300i32), Just(-160), Just(160), Just(300)].prop_map(Op::Scale),
+        2 => Just(Op::Negate),
+        1 => Just(Op::Zero),
+        2 => (0usize..5).prop_map(Op::Special),
+        2 => Just(Op::Drop),
+    ]
+}
+
+/// The (table, key, line index, value) of every line `key = <number>` in `text`.
+fn numeric_lines(text: &str) -> Vec<(String, String, usize, String)> {
+    let mut table = String::new();
+    let mut out = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let l = line.split('#').next().unwrap_or("").trim();
+        if l.starts_with('[') {
+            table = l.to_string();
+            continue;
+        }
+        let Some((k, v)) = l.split_once('=') else { continue };
+        let v = v.trim();
+        if v.parse::<f64>().is_ok() {
+            out.push((table.clone(), k.trim().to_string(), i, v.to_string()));
+        }
+    }
+    out
+}
+
+/// Keys whose value sets the amount of work (steps, waves, lives): in the binary sample they are
+/// only mutated towards less work.
+// TODO(issue 12, item 3): `run` and `campaign` estimate no work before starting (their drivers and
+// cmd_run.rs / cmd_campaign.rs are another engineer's files); once they refuse beyond a stated
+// budget, drop this restriction.
+const WORK_KEYS: [&str; 12] = [
+    "duration_s",
+    "dt_s",
+    "dt_min_s",
+    "output_interval_s",
+    "waves",
+    "realizations",
+    "lives",
+    "life_years",
+    "storms",
+    "storm_duration_h",
+    "springs",
+    "max_iterations",
+];
+
+/// Apply `ops` (each on line `sel % n` of the numeric lines); `less_work` keeps the work keys
+/// from growing. Returns the text and a description of what was changed.
+fn mutate(text: &str, ops: &[(usize, Op)], less_work: bool) -> (String, Vec<String>) {
+    let nums = numeric_lines(text);
+    let mut lines: Vec<Option<String>> = text.lines().map(|l| Some(l.to_string())).collect();
+    let mut what = Vec::new();
+    for (sel, op) in ops {
+        let (table, key, i, v) = &nums[sel % nums.len()];
+        let Some(current) = lines[*i].clone() else { continue };
+        let value = current.split_once('=').map(|(_, v)| v.split('#').next().unwrap_or("").trim().to_string());
+        let value = value.unwrap_or_else(|| v.clone());
+        let integer = value.parse::<i64>().is_ok();
+        let x: f64 = value.parse().unwrap_or(0.0);
+        if less_work && WORK_KEYS.contains(&key.as_str()) {
+            let grows = match op {
+                Op::Scale(k) => (*k > 0) != (key.starts_with("dt") || key == "output_interval_s"),
+                Op::Special(s) => *s >= 1,
+                _ => false,
+            };
+            if grows {
+                continue;
+            }
+        }
+        let new = match op {
+            Op::Drop => None,
+            Op::Scale(k) if integer => {
+                let n: i64 = value.parse().unwrap();
+                Some(if *k >= 0 {
+                    n.saturating_mul(10i64.saturating_pow(*k as u32)).to_string()
+                } else {
+                    (n / 10i64.saturating_pow((-*k) as u32)).to_string()
+                })
+            }
+            Op::Scale(k) => Some(format!("{:e}", x * 10f64.powi(*k))),
+            Op::Negate if integer => Some(format!("{}", -value.parse::<i64>().unwrap())),
+            Op::Negate => Some(format!("{:e}", -x)),
+            Op::Zero => Some(if integer { "0".into() } else { "0.0".into() }),
+            Op::Special(s) => Some(["nan", "inf", "-inf", "5e-324", "1.7976931348623157e308"][*s].to_string()),
+        };
+        what.push(format!("{table} {key}: {value} -> {}", new.as_deref().unwrap_or("(dropped)")));
+        lines[*i] = new.map(|n| format!("{key} = {n}"));
+    }
+    (lines.into_iter().flatten().collect::<Vec<_>>().join("\n") + "\n", what)
+}
+
+/// Whether an error message names a key of the file: `[table] key` (or the table), or the line
+/// of a TOML type error with its text (`line 48, column 14: ... (in `life_years = nan`)`).
+fn names_a_key(msg: &str) -> bool {
+    (msg.contains('[') && msg.contains(']')) || (msg.contains(" line ") && msg.contains("(in `"))
+}
+
+/// Refuse a non-finite number (null: serde_json's NaN) anywhere in `v`.
+fn all_finite(v: &serde_json::Value) -> bool {
+    use serde_json::Value;
+    match v {
+        Value::Null => false,
+        Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
+        Value::Array(a) => a.iter().all(all_finite),
+        Value::Object(m) => m.values().all(all_finite),
+        _ => true,
+    }
+}
+
+/// Inputs whose failure lies in files another engineer is changing (issue 12): recorded in the
+/// report of the hardening work, excluded here until they are fixed.
+///
+/// TODO(issue 12, `[caisson]`/`[foundation]`/`[load]` ranges; structure/mod.rs, foundation/mod.rs,
+/// loads/pulse.rs): `width_m`, `height_m`, `length_m`, `weight_in_water_kn`, `e100_kpa`,
+/// `peak_horizontal_kn` and `peak_uplift_kn` moved by 10^4 or more (added over the mutations: e.g.
+/// `width_m = 7.8e-7` or `7.8e5`, `height_m = 1.12e6` or `2.45e5`, `weight_in_water_kn = 8.24e-6`,
+/// `e100_kpa = 3.5e17` or `5e-324`, 12 kN on the 8.24 kN Table 5 caisson -> 1.2e7 kN, a weight /
+/// 1000 with a height × 1e4) pass validation and then fail the run: exit 1 with a Newton-Raphson
+/// message ("did not converge ... try a smaller dt_s"), or "impact fx = inf must be a finite
+/// number", instead of exit 2 naming the key. Fix: finite physical ranges in
+/// `CaissonSpec::build` / `FoundationSpec::build`, and a load/weight ratio for the pulses.
+fn known_open(example: &str, what: &[String]) -> Option<&'static str> {
+    const RANGES: [&str; 5] = ["width_m", "height_m", "length_m", "weight_in_water_kn", "e100_kpa"];
+    const PEAKS: [&str; 2] = ["peak_horizontal_kn", "peak_uplift_kn"];
+    // Decades moved, added over the mutations of these keys: two moves of 10^3 (a weight / 1000
+    // and a height × 1e4) fail like one of 10^6.
+    let decades: f64 = what
+        .iter()
+        .filter_map(|w| {
+            // "[table] key: old -> new"
+            let (head, change) = w.split_once(": ")?;
+            let key = head.rsplit(' ').next()?;
+            let (old, new) = change.split_once(" -> ")?;
+            let ratio = (new.parse::<f64>().ok()? / old.parse::<f64>().ok()?).abs();
+            // From or to nan, inf or 0: as far as it gets.
+            let d = ratio.log10().abs();
+            (RANGES.contains(&key) || PEAKS.contains(&key)).then_some(if d.is_nan() { f64::INFINITY } else { d })
+        })
+        .sum();
+    if decades >= 4.0 {
+        return Some("physical ranges of [caisson]/[foundation]/[load] too wide (another engineer's files)");
+    }
+    // TODO(issue 12, scenario validation): a fixed `[solver] dt_s` far above the natural period
+    // T0 (fifteen_waves.toml, T0 ≈ 0.03 s: `dt_s = 1` with `e100_kpa = 3.5e7`) passes validation
+    // and the run fails with a Newton-Raphson message (exit 1). Fix: refuse a fixed dt_s above a
+    // fraction of T0 (docs/model.md §9.1: Δt ≤ T_n/20) where the scenario is built (scenario module).
+    let dt_grown = what.iter().any(|w| {
+        w.starts_with("[solver] dt_s: ")
+            && w.split_once(" -> ").and_then(|(h, n)| {
+                let old: f64 = h.rsplit(' ').next()?.parse().ok()?;
+                Some(n.parse::<f64>().ok()? >= 1e3 * old)
+            }) == Some(true)
+    });
+    if dt_grown {
+        return Some("a fixed dt_s far above the natural period (scenario validation, another engineer's files)");
+    }
+    // TODO(issue 12, analysis/lifetime.rs): in a design or fragility run the tide lowers the weight
+    // in water by ρ_w g B l ζ; a wider or longer caisson (design_breakwater.toml with `length_m =
+    // 100`), a lighter one or a larger tidal range turns it negative at high tide and the life
+    // fails with a Newton-Raphson message (exit 1, "residual 0.000e0 N"). Fix: refuse, naming the
+    // keys, a caisson that floats at the highest tide (W' − ρ_w g B l R > 0) when the design or
+    // fragility case is built.
+    let floats = |w: &String| {
+        let grows = |key: &str| {
+            w.starts_with(key)
+                && w.split_once(" -> ").is_some_and(|(h, n)| {
+                    let old = h.rsplit(' ').next().and_then(|v| v.parse::<f64>().ok());
+                    n == "(dropped)" || n.parse::<f64>().ok().zip(old).is_none_or(|(n, o)| n.abs() > o.abs())
+                })
+        };
+        grows("[caisson] width_m")
+            || grows("[caisson] length_m")
+            || grows("[design] tidal_range_m")
+            || (w.starts_with("[caisson] weight_in_water_kn") && !grows("[caisson] weight_in_water_kn"))
+    };
+    let tidal = example.starts_with("design") || example.starts_with("fragility");
+    (tidal && what.iter().any(floats))
+        .then_some("a caisson that floats at high tide in a design run (analysis/lifetime.rs, another engineer's)")
+}
+
+/// The in-process check of one scenario text; Err describes the failure.
+fn check_in_process(name: &str, text: &str) -> Result<&'static str, String> {
+    use caisson::scenario::Scenario;
+    let path = examples_dir().join(name);
+    let sc = match Scenario::from_toml(text, &path, &examples_dir()) {
+        Err(e) => {
+            let msg = e.to_string();
+            return if names_a_key(&msg) { Ok("refused") } else { Err(format!("error names no key: {msg}")) };
+        }
+        Ok(sc) => sc,
+    };
+    if let Some(load) = &sc.load {
+        let duration = sc.duration_s.min(SHORT_STEPS * sc.solver().dt_s);
+        let r = caisson::analysis::run::run(sc.structure(), load, duration, false)
+            .map_err(|e| format!("a validated [load] scenario failed to run: {e}"))?;
+        let v = serde_json::to_value(&r.summary).unwrap();
+        if !all_finite(&v) {
+            return Err(format!("non-finite run summary: {v}"));
+        }
+        return Ok("ran");
+    }
+    if let Some(ws) = &sc.waves {
+        if sc.design.is_some() || sc.fragility.is_some() {
+            sc.storm_case(true).map_err(|e| format!("a validated design scenario has no storm case: {e}"))?;
+            return Ok("storm case");
+        }
+        let mut one = ws.clone();
+        one.train.waves = 1;
+        one.train.realizations = 1;
+        let case = caisson::analysis::train::TrainCase { structure: sc.structure(), waves: &one };
+        let r = case.run(0, None).map_err(|e| format!("a validated wave scenario failed to run one wave: {e}"))?;
+        let finite = [r.sliding_m, r.rigid_block_sliding_m, r.max_horizontal_reaction_n]
+            .iter()
+            .chain(r.waves.iter().map(|w| &w.sliding_m))
+            .all(|x| x.is_finite());
+        if !finite {
+            return Err(format!("non-finite wave-train result: {r:?}"));
+        }
+        return Ok("ran a wave");
+    }
+    Ok("validated")
+}
+
+fn cases(var: &str, default: u32) -> u32 {
+    std::env::var(var).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
+
+fn mutations() -> impl Strategy<Value = (usize, Vec<(usize, Op)>)> {
+    (0..EXAMPLES.len(), prop::collection::vec((0usize..1000, op()), 1..=3))
+}
+
+/// Run `check` on `cases` generated mutation lists (`less_work`: see [`mutate`]); returns
+/// (checked, skipped as known open).
+fn run_cases(
+    cases: u32,
+    max_shrink_iters: u32,
+    less_work: bool,
+    check: impl Fn(usize, &str, &[String]) -> Result<(), TestCaseError>,
+) -> (usize, usize) {
+    use proptest::test_runner::{Config, TestRunner};
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let (checked, skipped) = (AtomicUsize::new(0), AtomicUsize::new(0));
+    let mut runner = TestRunner::new(Config { cases, max_shrink_iters, ..Config::default() });
+    let result = runner.run(&mutations(), |(ex, ops)| {
+        let (text, what) = mutate(&example_text(ex), &ops, less_work);
+        if known_open(EXAMPLES[ex].0, &what).is_some() {
+            skipped.fetch_add(1, Ordering::Relaxed);
+            return Ok(());
+        }
+        check(ex, &text, &what)?;
+        checked.fetch_add(1, Ordering::Relaxed);
+        Ok(())
+    });
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+    (checked.into_inner(), skipped.into_inner())
+}
+
+#[test]
+fn mutated_scenarios_are_refused_by_key_or_run_finite_in_process() {
+    let n = cases("CAISSON_FUZZ_CASES", 8000);
+    let start = Instant::now();
+    let (checked, skipped) = run_cases(n, 200, false, |ex, text, what| {
+        let t0 = Instant::now();
+        let outcome = std::panic::catch_unwind(|| check_in_process(EXAMPLES[ex].0, text));
+        let elapsed = t0.elapsed();
+        match outcome {
+            Err(_) => prop_assert!(false, "panic on {} with {what:?}", EXAMPLES[ex].0),
+            Ok(Err(e)) => prop_assert!(false, "{} with {what:?}: {e}", EXAMPLES[ex].0),
+            Ok(Ok(_)) => {}
+        }
+        prop_assert!(elapsed < CASE_BUDGET, "{} with {what:?} took {elapsed:?}", EXAMPLES[ex].0);
+        Ok(())
+    });
+    println!("in process: {checked} scenarios checked, {skipped} skipped as known open, in {:?}", start.elapsed());
+    assert!(checked + skipped >= n as usize, "every generated case was seen");
+    assert!(checked * 2 >= n as usize, "at most half skipped as known open: {skipped}");
+}
+
+/// The start of the error of a binary case that was killed at [`CHILD_TIMEOUT`].
+const TIMEOUT: &str = "no answer within";
+
+/// Commands that may legitimately run longer than [`CHILD_TIMEOUT`] on a valid mutated scenario.
+// TODO(issue 12, item 3): `campaign`, `design` and `fragility` estimate no work before starting
+// (a wider or heavier caisson lets more waves through the screen: `fragility.toml` with
+// `width_m = 200` runs for minutes); their drivers and command modules are another engineer's
+// files. Once they refuse beyond a stated budget, a timeout of theirs becomes a failure again.
+const NO_WORK_ESTIMATE: [&str; 3] = ["campaign", "design", "fragility"];
+
+/// Run the binary on `text` (written beside a copy of the examples' series file) under the time
+/// and memory limits; Err describes the failure.
+#[cfg(unix)]
+fn check_binary(dir: &Path, cmd: &str, text: &str) -> Result<i32, String> {
+    use std::io::Read;
+    let file = dir.join("case.toml");
+    std::fs::write(&file, text).unwrap();
+    let bin = assert_cmd::cargo::cargo_bin("caisson");
+    let mut args: Vec<String> = vec![cmd.into(), file.to_str().unwrap().into(), "--json".into()];
+    if cmd == "design" {
+        args.extend(["--lives".into(), "2".into()]);
+    }
+    if cmd != "loads" {
+        args.extend(["--threads".into(), "1".into()]);
+    }
+    let script = format!("ulimit -v {CHILD_MEMORY_KB}; exec \"$0\" \"$@\"");
+    let mut child = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .arg(&bin)
+        .args(&args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdout = child.stdout.take().unwrap();
+    let reader = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        let _ = stdout.read_to_end(&mut s);
+        s
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break s;
+        }
+        if start.elapsed() > CHILD_TIMEOUT {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Err(format!("{TIMEOUT} {CHILD_TIMEOUT:?} (killed)"));
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let out = reader.join().unwrap();
+    let mut err = String::new();
+    child.stderr.take().unwrap().read_to_string(&mut err).unwrap();
+    match status.code() {
+        Some(0) => {
+            let v: serde_json::Value = serde_json::from_slice(&out).map_err(|e| format!("exit 0, no JSON: {e}"))?;
+            // `loads` writes null for an absent value; its numbers are checked by the binary.
+            if cmd != "loads" && !all_finite(&v) {
+                return Err("exit 0 with a non-finite number in the JSON".into());
+            }
+            Ok(0)
+        }
+        Some(2) if err.starts_with("Error:") && names_a_key(&err) => Ok(2),
+        Some(c) => Err(format!("exit {c}: {err}")),
+        None => Err(format!("killed by a signal (memory limit {CHILD_MEMORY_KB} KiB?): {err}")),
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn mutated_scenarios_through_the_binary_exit_0_finite_or_2_naming_a_key() {
+    let n = cases("CAISSON_FUZZ_BIN_CASES", 80);
+    let start = Instant::now();
+    let slow = std::sync::atomic::AtomicUsize::new(0);
+    let (checked, skipped) = run_cases(n, 5, true, |ex, text, what| {
+        let dir = tempfile::tempdir().unwrap();
+        // The series examples read their CSV relative to the scenario.
+        for csv in ["forces_example.csv", "fifteen_waves.csv"] {
+            std::fs::copy(examples_dir().join(csv), dir.path().join(csv)).unwrap();
+        }
+        let (cmd, name) = (EXAMPLES[ex].1, EXAMPLES[ex].0);
+        match check_binary(dir.path(), cmd, text) {
+            Ok(_) => {}
+            Err(e) if e.starts_with(TIMEOUT) && NO_WORK_ESTIMATE.contains(&cmd) => {
+                println!("known open (no work estimate): caisson {cmd} on {name} with {what:?}: {e}");
+                slow.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            }
+            Err(e) => prop_assert!(false, "caisson {cmd} on {name} with {what:?}: {e}"),
+        }
+        Ok(())
+    });
+    println!(
+        "through the binary: {checked} scenarios checked ({} of them stopped at {CHILD_TIMEOUT:?}, known open), {skipped} skipped as known open, in {:?}",
+        slow.into_inner(),
+        start.elapsed()
+    );
+    assert!(checked + skipped >= n as usize, "every generated case was seen");
+}
+
+/// The examples themselves pass both checks (the generator starts from valid scenarios).
+#[test]
+fn the_unmutated_examples_pass() {
+    for (i, (name, _)) in EXAMPLES.iter().enumerate() {
+        let r = check_in_process(name, &example_text(i));
+        assert!(matches!(r, Ok(o) if o != "refused"), "{name}: {r:?}");
+    }
+}
+
+/// Every numeric key of every example under every operation, once, in process; prints each
+/// failure instead of stopping at the first (`cargo test --release -p caisson-cli --test
+/// fuzz_scenarios -- --ignored --nocapture`): the map of what is left, for triage.
+#[test]
+#[ignore]
+fn survey_every_key_and_operation() {
+    let ops: Vec<Op> = [-300, -160, -12, -6, -3, -1, 1, 3, 6, 12, 160, 300]
+        .into_iter()
+        .map(Op::Scale)
+        .chain([Op::Negate, Op::Zero, Op::Drop])
+        .chain((0..5).map(Op::Special))
+        .collect();
+    let (mut total, mut failed) = (0, 0);
+    for (ex, (name, _)) in EXAMPLES.iter().enumerate() {
+        let text = example_text(ex);
+        for sel in 0..numeric_lines(&text).len() {
+            for op in &ops {
+                let (t, what) = mutate(&text, &[(sel, op.clone())], false);
+                total += 1;
+                let start = Instant::now();
+                let r = std::panic::catch_unwind(|| check_in_process(name, &t));
+                let dt = start.elapsed();
+                let bad = match &r {
+                    Err(_) => Some("PANIC".to_string()),
+                    Ok(Err(e)) => Some(e.chars().take(160).collect()),
+                    Ok(Ok(_)) if dt > CASE_BUDGET => Some(format!("slow {dt:?}")),
+                    _ => None,
+                };
+                if let Some(b) = bad {
+                    failed += 1;
+                    println!("{name} {what:?}{}: {b}", if known_open(name, &what).is_some() { " (known)" } else { "" });
+                }
+            }
+        }
+    }
+    println!("{failed} of {total} cases failed");
+}
