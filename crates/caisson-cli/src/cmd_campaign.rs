@@ -196,8 +196,8 @@ pub fn run(args: CampaignArgs) -> Result<()> {
         with_threads(args.threads, || run_campaign(&campaign.setups, &|| pb.inc(1)))?.context("the campaign failed")?;
     pb.finish_and_clear();
     let report = CampaignReport::new(&campaign, &results, false);
-    crate::output::print_warnings(&report.warnings);
     let json = report_json(&report, "campaign")?;
+    crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

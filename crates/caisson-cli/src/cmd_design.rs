@@ -474,8 +474,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let mut report = DesignReport::new(&design, case.rigid_block_mu, &lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
-    crate::output::print_warnings(&report.warnings);
     let json = report_json(&report, "design")?;
+    crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -203,8 +203,8 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     pb.finish_and_clear();
     let name = args.scenario.file_name().and_then(|s| s.to_str()).unwrap_or("fragility");
     let report = FragilityReport::new(name, setup.structure, setup.waves, params, &result);
-    crate::output::print_warnings(&report.warnings);
     let json = report_json(&report, "fragility")?;
+    crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

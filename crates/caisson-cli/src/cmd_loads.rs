@@ -60,7 +60,6 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     };
     let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
     report.warnings = caisson::analysis::checks::structure_warnings(sc.structure());
-    crate::output::print_warnings(&report.warnings);
     if let Some((records, _)) = &history {
         report.history = Some(HistoryInfo {
             waves: args.waves,
@@ -77,6 +76,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
             "the scenario's loads are not finite numbers ({field}): the [caisson], [water] or [waves] numbers are too large or too small for the formulas"
         ))
     })?;
+    crate::output::print_warnings(&report.warnings);
     let doc = serde_json::to_value(&report)?;
     if args.json {
         crate::sayln!("{}", pretty(&doc)?);

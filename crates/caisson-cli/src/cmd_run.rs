@@ -239,8 +239,9 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     let s = sc.structure();
     let mut warnings = structure_warnings(s);
     warnings.extend(response_warnings(s, &Response::from(&result.summary)));
-    crate::output::print_warnings(&warnings);
-    let json = report_json(&RunReport::new(&result.summary, x, warnings), "summary")?;
+    let report = RunReport::new(&result.summary, x, warnings);
+    let json = report_json(&report, "summary")?;
+    crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -62,9 +62,9 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     let model = sc.structure().model();
     let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
     let warnings = caisson::analysis::checks::structure_warnings(sc.structure());
-    crate::output::print_warnings(&warnings);
-    let json =
-        report_json(&SpectrumReport::new(model.natural_period_s(), &base, resistance_n, &pts, warnings), "spectrum")?;
+    let report = SpectrumReport::new(model.natural_period_s(), &base, resistance_n, &pts, warnings);
+    let json = report_json(&report, "spectrum")?;
+    crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

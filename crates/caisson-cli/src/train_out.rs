@@ -188,8 +188,8 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
     let summary = run_realizations(&case, &|| pb.inc(1)).context("the dynamic run failed")?;
     pb.finish_and_clear();
     let report = TrainRunReport::new(case.structure, case.waves, &summary);
-    crate::output::print_warnings(&report.warnings);
     let json = report_json(&report, "summary")?;
+    crate::output::print_warnings(&report.warnings);
     if json_out {
         crate::sayln!("{}", pretty(&json)?);
     } else {
