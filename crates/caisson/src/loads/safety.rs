@@ -12,7 +12,9 @@
 //! W' is the weight in water, t the horizontal distance from the heel to the centre of gravity
 //! (B/2 for a symmetric caisson, seed Eq. 11), M_P the moment of P about the base and M_U the
 //! moment of U about the heel. A factor is `None` when its denominator is zero (no load); the heel
-//! pressure is `None` when V_e ≤ 0 or t_e ≤ 0 (the caisson lifts off or overturns).
+//! pressure is `None` when V_e ≤ 0 or t_e ≤ 0 (the caisson lifts off or overturns). A factor is
+//! also `None` when its resistance is not positive (U ≥ W', or a restoring moment ≤ 0): there is
+//! then no resistance to compare (never a negative factor).
 
 /// Inputs (SI, per metre).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,7 +51,9 @@ pub struct SafetyFactors {
 /// Goda's stability checks (module docs).
 pub fn safety_factors(i: &SafetyInput) -> SafetyFactors {
     let w = i.weight_in_water_n_per_m;
-    let ratio = |num: f64, den: f64| (den > 0.0).then(|| num / den);
+    // A factor exists where the load and the resistance are both positive: with no resistance
+    // left (uplift above the weight, a restoring moment ≤ 0) there is nothing to compare.
+    let ratio = |num: f64, den: f64| (den > 0.0 && num > 0.0).then(|| num / den);
     let sliding = ratio(i.mu * (w - i.uplift_force_n_per_m), i.horizontal_force_n_per_m);
     let restoring = w * i.cog_from_heel_m - i.uplift_moment_heel_nm_per_m;
     let overturning = ratio(restoring, i.horizontal_moment_base_nm_per_m);
@@ -85,6 +89,22 @@ mod tests {
         });
         assert!(r.sliding.is_none() && r.overturning.is_none());
         assert!((r.heel_pressure_pa.unwrap() - 8240.0 / 0.78).abs() < 1e-9);
+    }
+
+    /// An uplift above the weight leaves no resistance: no factor, not a negative one.
+    #[test]
+    fn no_resistance_gives_no_factor() {
+        let r = safety_factors(&SafetyInput {
+            weight_in_water_n_per_m: 1000.0,
+            cog_from_heel_m: 0.39,
+            width_m: 0.78,
+            mu: 0.6,
+            horizontal_force_n_per_m: 500.0,
+            horizontal_moment_base_nm_per_m: 200.0,
+            uplift_force_n_per_m: 1500.0,
+            uplift_moment_heel_nm_per_m: 800.0,
+        });
+        assert_eq!((r.sliding, r.overturning, r.heel_pressure_pa), (None, None, None));
     }
 
     #[test]

@@ -150,7 +150,9 @@ pub struct LoadsReport {
     pub safety: SafetyInfo,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub history: Option<HistoryInfo>,
-    /// Plausibility warnings of the structure (filled by the caller).
+    /// Plausibility warnings of the structure (filled by the caller); left out when there is
+    /// none, so that a table of many waves' reports has a fixed set of numeric columns.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<Warning>,
 }
 
