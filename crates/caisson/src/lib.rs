@@ -106,6 +106,8 @@ pub enum Allowed {
     NonNegative,
     /// A finite number from `lo` to `hi`, both included.
     Between { lo: f64, hi: f64 },
+    /// A finite number > 0 and at most `hi`.
+    PositiveUpTo { hi: f64 },
     /// A whole number from `lo` to `hi`.
     Count { lo: u64, hi: u64 },
     /// A rule in words (its numbers in SI units).
@@ -122,6 +124,7 @@ impl Allowed {
             Allowed::Positive => format!("must be a finite number > 0{u}"),
             Allowed::NonNegative => format!("must be a finite number ≥ 0{u}"),
             Allowed::Between { lo, hi } => format!("must be between {} and {}{u}", lo * scale, hi * scale),
+            Allowed::PositiveUpTo { hi } => format!("must be a finite number > 0 and at most {}{u}", hi * scale),
             Allowed::Count { lo, hi } => format!("must be a whole number from {lo} to {hi}"),
             Allowed::Rule(s) => s.clone(),
         }
@@ -164,6 +167,13 @@ pub(crate) mod check {
             Ok(v)
         } else {
             Err(fail(quantity, v, Allowed::Between { lo, hi }))
+        }
+    }
+    pub(crate) fn positive_up_to(quantity: &'static str, v: f64, hi: f64) -> Result<f64, ParamError> {
+        if v.is_finite() && v > 0.0 && v <= hi {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::PositiveUpTo { hi }))
         }
     }
     pub(crate) fn count(quantity: &'static str, v: usize, lo: u64, hi: u64) -> Result<usize, ParamError> {

@@ -54,7 +54,8 @@ impl Soil {
     /// The soil with every parameter checked: E100 and σ'v0 > 0, 0 ≤ ν ≤ 0.49, 500 ≤ ρ_s ≤ 5000.
     pub fn checked(&self) -> Result<Soil, ParamError> {
         Ok(Soil {
-            e100_pa: positive("e100_pa", self.e100_pa)?,
+            // 1 kPa (a slurry) to 1e9 kPa (a thousand times steel): beyond, a unit slip.
+            e100_pa: between("e100_pa", self.e100_pa, 1e3, 1e12)?,
             poisson: between("poisson", self.poisson, 0.0, 0.49)?,
             density_kg_per_m3: between("density_kg_per_m3", self.density_kg_per_m3, 500.0, 5000.0)?,
             reference_stress_pa: positive("reference_stress_pa", self.reference_stress_pa)?,

@@ -122,7 +122,11 @@ const LOAD_KEYS: KeyMap = &[
 pub(crate) fn keyed(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
     let (key, divisor, unit) =
         map.iter().find(|(q, ..)| *q == e.quantity).map(|(_, k, d, u)| (*k, *d, *u)).unwrap_or((e.quantity, 1.0, ""));
-    ScenarioError::range(&format!("{table} {key}"), e.value / divisor, e.allowed.describe(1.0 / divisor, unit))
+    let v = e.value / divisor;
+    // Very large or small numbers in exponent form (1e160, not 160 digits).
+    let value =
+        if v.is_finite() && v != 0.0 && !(1e-4..1e15).contains(&v.abs()) { format!("{v:e}") } else { format!("{v}") };
+    ScenarioError::range(&format!("{table} {key}"), value, e.allowed.describe(1.0 / divisor, unit))
 }
 
 /// The whole scenario file as written (units as in the keys).

@@ -16,7 +16,7 @@
 //! Mass and weight in water are related through the displaced water (docs/model.md §8.2, item 5):
 //! m_c = W'/g + ρ_w B l h', with h' the base depth below still water.
 
-use crate::check::{between, positive, rule};
+use crate::check::{between, positive, positive_up_to, rule};
 use crate::{ParamError, Profile, G_M_PER_S2};
 
 /// How the rigid-body mass matrix is formed.
@@ -69,9 +69,11 @@ impl CaissonSpec {
     /// The caisson in water of density `rho_w` (kg/m³), every quantity checked, with the
     /// defaults of `profile`.
     pub fn build(&self, rho_w: f64, profile: Profile) -> Result<Caisson, ParamError> {
-        let width_m = positive("width_m", self.width_m)?;
-        let length_m = positive("length_m", self.length_m)?;
-        let height_m = positive("height_m", self.height_m)?;
+        // Bounds far beyond any breakwater, so that an absurd number (a unit slip by 10^k) is an
+        // input error naming its key rather than an overflow deep in a run.
+        let width_m = positive_up_to("width_m", self.width_m, 1e3)?;
+        let length_m = positive_up_to("length_m", self.length_m, 1e4)?;
+        let height_m = positive_up_to("height_m", self.height_m, 1e3)?;
         let base_depth_m = self.base_depth_m;
         if !(base_depth_m.is_finite() && (0.0..=height_m).contains(&base_depth_m)) {
             return Err(rule(
@@ -83,7 +85,7 @@ impl CaissonSpec {
         let displaced = Caisson::displaced_water_kg(width_m, length_m, base_depth_m, height_m, rho_w);
         let (mass_kg, weight_in_water_n) = match self.mass {
             MassSpec::WeightInWater { weight_in_water_n } => {
-                let w = positive("weight_in_water_n", weight_in_water_n)?;
+                let w = positive_up_to("weight_in_water_n", weight_in_water_n, 1e11)?;
                 (Caisson::mass_from_weight_in_water(w, displaced), w)
             }
             MassSpec::MassInAir { mass_kg } => {
