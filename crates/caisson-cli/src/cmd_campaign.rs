@@ -106,15 +106,11 @@ fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
     Ok(w.into_inner()?)
 }
 
-/// The seed's Figs. 13/15: total sliding per condition, conditions ordered by weight then height
-/// (left to right), mean with min-max bars, the rigid block beside; and sliding against H, one
-/// line per weight.
+/// The seed's Figs. 13/15: total sliding per condition, the conditions numbered as in the table
+/// (`#`, the file's order; the PARI examples list them by weight, then height), mean with min-max
+/// bars, the rigid block beside; and sliding against H, one line per weight.
 pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionResult]) -> Result<()> {
-    let mut order: Vec<usize> = (0..results.len()).collect();
-    order.sort_by(|&a, &b| {
-        let (ca, cb) = (&results[a].condition, &results[b].condition);
-        ca.weight_in_water_n.total_cmp(&cb.weight_in_water_n).then(ca.height_m.total_cmp(&cb.height_m))
-    });
+    let order: Vec<usize> = (0..results.len()).collect();
     let at = |k: usize| (k + 1) as f64;
     let dyn_pts: Vec<(f64, f64)> =
         order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.sliding_m.mean * 1e3)).collect();
@@ -136,7 +132,7 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.weight_in_water_n / 1e3)).collect();
     panels(
         &dir.join(format!("{stem}.svg")),
-        &format!("{title}: total sliding per test (ordered by W, then H)"),
+        &format!("{title}: total sliding per test condition (numbered as in the table)"),
         "test condition",
         &[
             Panel {

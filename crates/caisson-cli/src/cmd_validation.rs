@@ -216,6 +216,7 @@ const CHOICES: &str = include_str!("validation_choices.md");
 
 pub fn run(args: ValidationArgs) -> Result<()> {
     let out = args.out;
+    crate::output::check_out_dir(Some(&out))?;
     let figs = out.join("figures");
     ensure_dir(&figs)?;
     let mut t = String::new();
