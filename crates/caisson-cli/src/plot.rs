@@ -108,7 +108,16 @@ pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Resu
                 .draw()
                 .map_err(|e| anyhow::anyhow!("{e}"))?;
             for (k, s) in panel.series.iter().enumerate() {
-                let color = if s.dashed { RGBColor(90, 90, 90) } else { COLORS[k % COLORS.len()] };
+                // Six named colours, then evenly spread hues: no two solid series of a panel share
+                // a colour (a panel of ten springs).
+                let color = if s.dashed {
+                    RGBColor(90, 90, 90)
+                } else if panel.series.len() <= COLORS.len() {
+                    COLORS[k]
+                } else {
+                    let hsl = HSLColor(k as f64 / panel.series.len() as f64, 0.75, 0.42).to_rgba();
+                    RGBColor(hsl.0, hsl.1, hsl.2)
+                };
                 let style = ShapeStyle {
                     color: color.to_rgba(),
                     filled: s.markers,
@@ -138,7 +147,10 @@ pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Resu
                         .draw_series(LineSeries::new(s.points.iter().copied(), style))
                         .map_err(|e| anyhow::anyhow!("{e}"))?
                 };
-                anno.label(label).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+                // Only labelled series enter the legend (no empty entries).
+                if !label.is_empty() {
+                    anno.label(label).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+                }
             }
             if panel.series.iter().any(|s| !s.label.is_empty()) {
                 chart
