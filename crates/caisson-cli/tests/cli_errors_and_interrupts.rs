@@ -1,23 +1,12 @@
 //! Regression tests of issue 12 (hardening): every error looks the same (`Error:`, exit 2 for the
 //! argument parser too), and Ctrl-C stops cleanly with exit 130, saying what was kept.
 
+mod support;
+
 use assert_cmd::Command;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
-
-fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-fn example(name: &str) -> String {
-    workspace_root().join("examples").join(name).to_str().unwrap().to_string()
-}
-
-fn caisson() -> Command {
-    let mut c = Command::cargo_bin("caisson").expect("the caisson binary is built");
-    c.timeout(Duration::from_secs(60));
-    c
-}
+use support::*;
 
 #[test]
 fn parser_errors_begin_with_capital_error() {
@@ -61,19 +50,6 @@ fn interrupt(args: &[&str], after: Duration) -> (Option<i32>, String) {
     let mut err = String::new();
     child.stderr.take().unwrap().read_to_string(&mut err).unwrap();
     (status.code(), err)
-}
-
-/// Files left in `dir` whose name ends with `.tmp`.
-#[cfg(unix)]
-fn temporaries(dir: &Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .map(|r| {
-            r.filter_map(|e| e.ok())
-                .map(|e| e.file_name().to_string_lossy().into_owned())
-                .filter(|n| n.ends_with(".tmp"))
-                .collect()
-        })
-        .unwrap_or_default()
 }
 
 /// A `[load]` run of about a minute (the table 5 caisson over 300 s at 1e-4 s).

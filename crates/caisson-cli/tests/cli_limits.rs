@@ -3,43 +3,9 @@
 //! limit (and the estimate); `loads` refuses non-finite output. Each test is named after its
 //! finding.
 
-use assert_cmd::Command;
-use std::path::{Path, PathBuf};
-use std::time::Duration;
+mod support;
 
-fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-fn example(name: &str) -> String {
-    workspace_root().join("examples").join(name).to_str().unwrap().to_string()
-}
-
-/// The binary with a time limit: a refused option must be refused at once, not after a hang.
-fn caisson() -> Command {
-    let mut c = Command::cargo_bin("caisson").expect("the caisson binary is built");
-    c.timeout(Duration::from_secs(60));
-    c
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-/// Run, expect exit 2 and an `Error:` that contains every one of `needles`; returns stderr.
-fn refused(args: &[&str], needles: &[&str]) -> String {
-    let o = caisson().args(args).output().unwrap();
-    let err = String::from_utf8_lossy(&o.stderr).to_string();
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-    assert!(err.starts_with("Error:"), "{args:?}: {err}");
-    for n in needles {
-        assert!(err.contains(n), "{args:?}: `{n}` not in: {err}");
-    }
-    assert!(o.stdout.is_empty(), "{args:?}: nothing on stdout");
-    err
-}
+use support::*;
 
 #[test]
 fn spectrum_tr_over_t0_5e_324_1e_9_and_1e300_are_refused_at_once() {
