@@ -24,9 +24,9 @@
 use crate::cli::DesignArgs;
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
-use crate::plot::{panels, Panel, Series};
+use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::{run_lives, StormOutcome};
+use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::dynamics::Stepping;
 use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::scenario;
@@ -303,76 +303,96 @@ fn process_running(pid: u32) -> bool {
 
 fn lives_csv(lives: &[StormOutcome]) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "life",
-        "sliding_m",
-        "rigid_block_sliding_m",
-        "max_storm_sliding_m",
-        "waves",
-        "simulated_waves",
-        "screened_waves",
-    ])?;
+    w.write_record(std::iter::once("life").chain(LIFE_COLUMNS.iter().map(|(name, _)| *name)))?;
     for (i, l) in lives.iter().enumerate() {
-        w.write_record(&[
-            i.to_string(),
-            format!("{:e}", l.sliding_m),
-            format!("{:e}", l.rigid_block_sliding_m),
-            format!("{:e}", l.max_storm_sliding_m),
-            l.waves.to_string(),
-            l.simulated.to_string(),
-            l.screened.to_string(),
-        ])?;
+        let cells = LIFE_COLUMNS.iter().map(|(_, c)| match c {
+            LifeColumn::Metres(f) => format!("{:e}", f(l)),
+            LifeColumn::Count(f) => f(l).to_string(),
+        });
+        w.write_record(std::iter::once(i.to_string()).chain(cells))?;
     }
     Ok(w.into_inner()?)
 }
 
-/// Histogram of the life totals (dynamic and rigid block) and their exceedance curves.
-fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64]) -> Result<()> {
-    let max = dynamic.iter().chain(rigid).copied().fold(0.0, f64::max).max(1e-6);
-    let bins = 40;
-    let hist = |v: &[f64]| -> Vec<(f64, f64)> {
+/// Bins per decade of the sliding histogram.
+const BINS_PER_DECADE: f64 = 8.0;
+/// The smallest sliding the plots show, m: below 0.1 mm a caisson has not slid to speak of.
+const PLOT_FLOOR_M: f64 = 1e-4;
+
+/// The histogram of the life totals |S| (dynamic and rigid block) on log-spaced bins, and their
+/// exceedance curves P(|S| > s), both on logarithmic axes from 0.1 mm, with the failure limit.
+fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64) -> Result<()> {
+    let max = dynamic.iter().chain(rigid).copied().fold(0.0, f64::max).max(10.0 * PLOT_FLOOR_M);
+    let bottom = PLOT_FLOOR_M.log10();
+    let bins = ((max.log10().ceil() - bottom) * BINS_PER_DECADE).round().max(1.0) as usize;
+    let edge = |i: usize| 10f64.powf(bottom + i as f64 / BINS_PER_DECADE);
+    let below = |v: &[f64]| v.iter().filter(|&&x| x < PLOT_FLOOR_M).count();
+    // One stepped line per run of non-empty bins (an empty bin has no place on a log axis).
+    let hist = |v: &[f64], label: &str, dashed: bool| -> Vec<Series> {
         let mut c = vec![0usize; bins];
-        for &x in v {
-            c[((x / max * bins as f64) as usize).min(bins - 1)] += 1;
+        for &x in v.iter().filter(|&&x| x >= PLOT_FLOOR_M) {
+            c[(((x.log10() - bottom) * BINS_PER_DECADE) as usize).min(bins - 1)] += 1;
         }
-        let w = max / bins as f64;
-        c.iter()
+        let mut runs: Vec<Vec<(f64, f64)>> = Vec::new();
+        for (i, &n) in c.iter().enumerate() {
+            if n == 0 {
+                continue;
+            }
+            let y = n as f64 / v.len().max(1) as f64;
+            match runs.last_mut() {
+                Some(r) if i > 0 && c[i - 1] > 0 => r.extend([(edge(i), y), (edge(i + 1), y)]),
+                _ => runs.push(vec![(edge(i), y), (edge(i + 1), y)]),
+            }
+        }
+        runs.into_iter()
             .enumerate()
-            .flat_map(|(i, &n)| {
-                let y = n as f64 / v.len().max(1) as f64;
-                [(i as f64 * w, y), ((i + 1) as f64 * w, y)]
+            .map(|(k, points)| {
+                let label = if k == 0 { label } else { "" };
+                if dashed {
+                    Series::dashed(label, points)
+                } else {
+                    Series::line(label, points)
+                }
             })
             .collect()
     };
-    panels(
+    let log = Scales { log_x: true, log_y: true };
+    let mut series = hist(dynamic, "dynamic model", false);
+    series.extend(hist(rigid, "rigid block (Shimosako model)", true));
+    panels_scaled(
         &dir.join("histogram.svg"),
-        &format!("{title}: sliding over the design life"),
-        "total sliding (m)",
+        &format!("{title}: sliding |S| over the design life"),
+        &format!(
+            "|S|, distance from the place at the end of the life (m); not shown: the {:.1} % (dynamic) and {:.1} % (rigid block) of lives below 0.1 mm",
+            100.0 * below(dynamic) as f64 / dynamic.len().max(1) as f64,
+            100.0 * below(rigid) as f64 / rigid.len().max(1) as f64
+        ),
         &[Panel {
             y_label: "share of lives".into(),
-            series: vec![
-                Series::line("dynamic model", hist(dynamic)),
-                Series::dashed("rigid block (Shimosako model)", hist(rigid)),
-            ],
+            series,
         }],
+        log,
     )?;
     let exceed = |v: &[f64]| -> Vec<(f64, f64)> {
         let mut s = v.to_vec();
         s.sort_by(f64::total_cmp);
         let n = s.len().max(1) as f64;
-        s.iter().enumerate().map(|(i, &x)| (x, 1.0 - i as f64 / n)).collect()
+        s.iter().enumerate().filter(|(_, &x)| x >= PLOT_FLOOR_M).map(|(i, &x)| (x, 1.0 - i as f64 / n)).collect()
     };
-    panels(
+    let floor = 1.0 / dynamic.len().max(1) as f64;
+    panels_scaled(
         &dir.join("exceedance.svg"),
-        &format!("{title}: probability that the life's sliding exceeds S"),
-        "S (m)",
+        &format!("{title}: probability that the life's sliding |S| exceeds s"),
+        "s (m)",
         &[Panel {
-            y_label: "P(sliding > S)".into(),
+            y_label: "P(|S| > s)".into(),
             series: vec![
                 Series::line("dynamic model", exceed(dynamic)),
                 Series::dashed("rigid block (Shimosako model)", exceed(rigid)),
+                Series::line(format!("failure limit {failure_m:.3} m"), vec![(failure_m, floor), (failure_m, 1.0)]),
             ],
         }],
+        log,
     )
 }
 
@@ -472,8 +492,10 @@ pub fn run(args: DesignArgs) -> Result<()> {
         );
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
-    let mut report = DesignReport::new(&design, case.rigid_block_mu, &lives);
+    let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
+    let mut report = DesignReport::new(&design, case.rigid_block_mu, failure_m, &lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
+    report.warnings.extend(caisson::analysis::checks::life_warnings(&lives, failure_m));
     let json = report_json(&report, "design")?;
     crate::output::print_warnings(&report.warnings);
     if args.json {
@@ -486,9 +508,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
         write_atomic(&dir.join("design.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("lives.csv"), &lives_csv(&lives)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
-        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m).collect();
-        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m).collect();
-        plots(dir, title, &dynamic, &rigid)?;
+        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
+        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
+        plots(dir, title, &dynamic, &rigid, failure_m)?;
         if !args.json {
             crate::sayln!(
                 "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",
@@ -502,7 +524,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
 /// The table of a design run.
 fn design_text(r: &DesignReport) -> String {
     let years = r.life_years;
-    let (sd, sr) = (&r.dynamic, &r.rigid_block);
+    let (d, sd, sr) = (&r.dynamic, &r.dynamic.sliding, &r.rigid_block);
     let mut t = String::new();
     let _ = writeln!(
         t,
@@ -514,33 +536,61 @@ fn design_text(r: &DesignReport) -> String {
         100.0 * r.screened_waves as f64 / r.waves.max(1) as f64,
         if r.screen { "" } else { " (screen off)" }
     );
+    let _ = writeln!(t, "sliding S: shoreward +; |S| its magnitude at the end of the life; failure: moved beyond {:.3} m from its place", r.failure_sliding_m);
     let _ = writeln!(t);
     let _ = writeln!(
         t,
         "                                  dynamic model   rigid block (Shimosako, μ = {})",
         r.rigid_block_mu
     );
+    let row = |t: &mut String, what: &str, a: f64, b: f64| {
+        let _ = writeln!(t, "{what:<32} {a:>10.4} m    {b:>10.4} m");
+    };
+    row(&mut t, "expected sliding E|S|", sd.expected_sliding_m, sr.expected_sliding_m);
     let _ = writeln!(
         t,
-        "expected sliding over the life   {:>10.4} m    {:>10.4} m",
-        sd.expected_sliding_m, sr.expected_sliding_m
-    );
-    let _ = writeln!(
-        t,
-        "expected sliding per year        {:>10.5} m    {:>10.5} m",
-        sd.expected_sliding_m / years as f64,
-        sr.expected_sliding_m / years as f64
+        "{:<32} {:>10.5} m    {:>10.5} m",
+        "expected sliding per year", sd.expected_sliding_per_year_m, sr.expected_sliding_per_year_m
     );
     let (pd, pr) = (&sd.percentiles_m, &sr.percentiles_m);
     for (p, a, b) in [(5.0, pd.p5, pr.p5), (50.0, pd.p50, pr.p50), (95.0, pd.p95, pr.p95), (99.0, pd.p99, pr.p99)] {
-        let _ = writeln!(t, "{:>3.0} % percentile                  {:>10.4} m    {:>10.4} m", p, a, b);
+        row(&mut t, &format!("{p:>3.0} % percentile of |S|"), a, b);
     }
     for (a, b) in sd.exceedance_probability.iter().zip(&sr.exceedance_probability) {
         let _ = writeln!(
             t,
-            "P(sliding > {:<5} m)             {:>10.4}      {:>10.4}",
-            a.threshold_m, a.probability, b.probability
+            "{:<32} {:>10.4}      {:>10.4}",
+            format!("P(|S| > {} m)", a.threshold_m),
+            a.probability,
+            b.probability
         );
     }
+    let _ = writeln!(
+        t,
+        "{:<32} {:>10.4}      {:>10.4}      ({} and {} lives)",
+        "P(failure)", sd.failure.probability, sr.failure.probability, sd.failure.lives, sr.failure.lives
+    );
+    let (vd, vr) = (&sd.surviving, &sr.surviving);
+    row(&mut t, "E|S| of the surviving lives", vd.expected_sliding_m, vr.expected_sliding_m);
+    row(&mut t, "95 % of |S|, surviving lives", vd.percentiles_m.p95, vr.percentiles_m.p95);
+    let _ = writeln!(t);
+    let _ = writeln!(t, "dynamic model only:");
+    let _ = writeln!(t, "  expected net sliding E[S]      {:>10.4} m", d.expected_net_sliding_m);
+    let _ = writeln!(
+        t,
+        "  expected shoreward sliding     {:>10.4} m   (sum of the shoreward wave slides)",
+        d.expected_shoreward_sliding_m
+    );
+    let _ = writeln!(
+        t,
+        "  expected seaward sliding       {:>10.4} m   (sum of the seaward wave slides)",
+        d.expected_seaward_sliding_m
+    );
+    let _ = writeln!(t, "  expected largest excursion     {:>10.4} m", d.expected_max_excursion_m);
+    let _ = writeln!(
+        t,
+        "  lives ending seaward {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
+        d.seaward_lives, d.rocking_waves, d.large_rotation_waves, d.large_rotation_lives
+    );
     t
 }

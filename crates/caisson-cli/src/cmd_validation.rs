@@ -572,7 +572,7 @@ fn why_profiles_differ(t: &mut String) -> Result<()> {
     }
     let _ = writeln!(t, "\nThe consistent model slides about as far as the rigid block; the seed's literal model, under the same wave, stops the caisson after millimetres while its foundation carries more than twice the friction force.\n");
     let _ = writeln!(t, "**The bundled design example** (`examples/design_breakwater.toml`: 5000 lives of 50 years) under both profiles, with the rigid block beside it:\n");
-    let _ = writeln!(t, "| profile | expected sliding over the life (m) | median (m) | P(sliding > 0.3 m) | rigid block: expected (m) |\n|---|---|---|---|---|");
+    let _ = writeln!(t, "| profile | expected sliding E\\|S\\| over the life (m) | median (m) | P(\\|S\\| > 0.3 m) | P(failure) | lives ending seaward | rigid block: expected (m) | rigid block: P(failure) |\n|---|---|---|---|---|---|---|---|");
     for (name, profile) in MODES {
         let sc = Scenario::from_toml(DESIGN, Path::new("design.toml"), Path::new("."))
             .and_then(|s| s.with_profile(profile))
@@ -583,12 +583,20 @@ fn why_profiles_differ(t: &mut String) -> Result<()> {
         let lives = run_lives(&case, &design.life, design.seed, &all, &|_, _| std::ops::ControlFlow::Continue(()))
             .context("the design example")?;
         let lives: Vec<_> = lives.into_iter().map(|(_, o)| o).collect();
-        let r = DesignReport::new(design, case.rigid_block_mu, &lives);
-        let p03 = r.dynamic.exceedance_probability.iter().find(|e| e.threshold_m == 0.3).map_or(0.0, |e| e.probability);
+        let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
+        let r = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
+        let d = &r.dynamic.sliding;
+        let p03 = d.exceedance_probability.iter().find(|e| e.threshold_m == 0.3).map_or(0.0, |e| e.probability);
         let _ = writeln!(
             t,
-            "| `{name}` | {:.4} | {:.4} | {:.4} | {:.4} |",
-            r.dynamic.expected_sliding_m, r.dynamic.percentiles_m.p50, p03, r.rigid_block.expected_sliding_m
+            "| `{name}` | {:.4} | {:.4} | {:.4} | {:.4} | {} | {:.4} | {:.4} |",
+            d.expected_sliding_m,
+            d.percentiles_m.p50,
+            p03,
+            d.failure.probability,
+            r.dynamic.seaward_lives,
+            r.rigid_block.expected_sliding_m,
+            r.rigid_block.failure.probability
         );
     }
     let _ = writeln!(t, "\nThe example sets no profile-dependent key, so the first row is the seed's literal model on a prototype (its dashpot on the total velocity all but stops sliding) and the second the default. Lives in which a wave overturns the caisson statically rock about the heel, and the landing can throw the caisson seaward (docs/design.md); the dynamic model's expected sliding stays below the rigid block's because of them and of the filtering of short impacts.\n");

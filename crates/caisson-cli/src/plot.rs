@@ -3,6 +3,7 @@
 //! half-written plot.
 
 use anyhow::{Context, Result};
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -83,8 +84,31 @@ fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     (x, (y.0 - pad, y.1 + pad))
 }
 
+/// Axis scales of a figure.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Scales {
+    pub log_x: bool,
+    pub log_y: bool,
+}
+
 /// Write stacked panels sharing the x axis (`x_label`), one under the other, as an SVG file.
 pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Result<()> {
+    panels_scaled(path, title, x_label, panels, Scales::default())
+}
+
+/// The positive range of a logarithmic axis: its data's positive values, widened to whole decades
+/// ends when the data span less than a decade.
+fn log_range(lo: f64, hi: f64) -> (f64, f64) {
+    if !(lo.is_finite() && hi.is_finite() && lo > 0.0) {
+        return (1e-3, 1.0);
+    }
+    let (a, b) = (lo.log10().floor(), hi.log10().ceil());
+    (10f64.powf(a), 10f64.powf(if b > a { b } else { a + 1.0 }))
+}
+
+/// [`panels`] with logarithmic axes where `scales` says: points with a coordinate ≤ 0 on a
+/// logarithmic axis are left out (say so in the caption).
+pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], scales: Scales) -> Result<()> {
     let (tmp, _) = crate::output::TempFile::create(path)?;
     {
         let height = 60 + 220 * panels.len() as u32;
@@ -93,77 +117,144 @@ pub fn panels(path: &Path, title: &str, x_label: &str, panels: &[Panel]) -> Resu
         let root = root.titled(title, ("sans-serif", 20)).map_err(|e| anyhow::anyhow!("{e}"))?;
         let areas = root.split_evenly((panels.len(), 1));
         for (panel, area) in panels.iter().zip(areas.iter()) {
-            let (xr, yr) = bounds(panel);
-            let mut chart = ChartBuilder::on(area)
-                .margin(8)
-                .x_label_area_size(35)
-                .y_label_area_size(70)
-                .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-                .map_err(|e| anyhow::anyhow!("{e}"))?;
-            chart
-                .configure_mesh()
-                .x_desc(x_label)
-                .y_desc(panel.y_label.as_str())
-                .light_line_style(WHITE.mix(0.0))
-                .draw()
-                .map_err(|e| anyhow::anyhow!("{e}"))?;
-            for (k, s) in panel.series.iter().enumerate() {
-                // Six named colours, then evenly spread hues: no two solid series of a panel share
-                // a colour (a panel of ten springs).
-                let color = if s.dashed {
-                    RGBColor(90, 90, 90)
-                } else if panel.series.len() <= COLORS.len() {
-                    COLORS[k]
-                } else {
-                    let hsl = HSLColor(k as f64 / panel.series.len() as f64, 0.75, 0.42).to_rgba();
-                    RGBColor(hsl.0, hsl.1, hsl.2)
-                };
-                let style = ShapeStyle {
-                    color: color.to_rgba(),
-                    filled: s.markers,
-                    stroke_width: if s.dashed { 1 } else { 2 },
-                };
-                let label = s.label.clone();
-                if let Some(r) = &s.ranges {
-                    chart
-                        .draw_series(
-                            s.points
-                                .iter()
-                                .zip(r)
-                                .map(|(&(x, _), &(lo, hi))| PathElement::new(vec![(x, lo), (x, hi)], style)),
-                        )
-                        .map_err(|e| anyhow::anyhow!("{e}"))?;
+            let keep = |&(x, y): &(f64, f64)| (!scales.log_x || x > 0.0) && (!scales.log_y || y > 0.0);
+            let shown = Panel {
+                y_label: panel.y_label.clone(),
+                series: panel
+                    .series
+                    .iter()
+                    .map(|s| Series {
+                        label: s.label.clone(),
+                        points: s.points.iter().copied().filter(keep).collect(),
+                        dashed: s.dashed,
+                        markers: s.markers,
+                        ranges: s.ranges.clone().filter(|_| !scales.log_y),
+                    })
+                    .collect(),
+            };
+            let (xr, yr) = bounds(&shown);
+            let positive = |f: fn(&(f64, f64)) -> f64| {
+                let v = shown.series.iter().flat_map(|s| s.points.iter().map(f));
+                v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
+            };
+            let builder = || {
+                let mut b = ChartBuilder::on(area);
+                b.margin(8).x_label_area_size(35).y_label_area_size(70);
+                b
+            };
+            let err = |e: plotters::drawing::DrawingAreaErrorKind<_>| anyhow::anyhow!("{e}");
+            match (scales.log_x, scales.log_y) {
+                (false, false) => {
+                    draw(builder().build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(err)?, &shown, x_label)?
                 }
-                let anno = if s.markers {
-                    chart
-                        .draw_series(s.points.iter().map(|&(x, y)| Circle::new((x, y), 3, style)))
-                        .map_err(|e| anyhow::anyhow!("{e}"))?
-                } else if s.dashed {
-                    chart
-                        .draw_series(DashedLineSeries::new(s.points.iter().copied(), 6, 4, style))
-                        .map_err(|e| anyhow::anyhow!("{e}"))?
-                } else {
-                    chart
-                        .draw_series(LineSeries::new(s.points.iter().copied(), style))
-                        .map_err(|e| anyhow::anyhow!("{e}"))?
-                };
-                // Only labelled series enter the legend (no empty entries).
-                if !label.is_empty() {
-                    anno.label(label).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+                (true, false) => {
+                    let (a, b) = positive(|p| p.0);
+                    let x = log_range(a, b);
+                    draw(
+                        builder().build_cartesian_2d((x.0..x.1).log_scale(), yr.0..yr.1).map_err(err)?,
+                        &shown,
+                        x_label,
+                    )?
                 }
-            }
-            if panel.series.iter().any(|s| !s.label.is_empty()) {
-                chart
-                    .configure_series_labels()
-                    .background_style(WHITE.mix(0.85))
-                    .border_style(BLACK.mix(0.3))
-                    .position(SeriesLabelPosition::UpperRight)
-                    .draw()
-                    .map_err(|e| anyhow::anyhow!("{e}"))?;
+                (false, true) => {
+                    let (a, b) = positive(|p| p.1);
+                    let y = log_range(a, b);
+                    draw(
+                        builder().build_cartesian_2d(xr.0..xr.1, (y.0..y.1).log_scale()).map_err(err)?,
+                        &shown,
+                        x_label,
+                    )?
+                }
+                (true, true) => {
+                    let (x, y) = (positive(|p| p.0), positive(|p| p.1));
+                    let (x, y) = (log_range(x.0, x.1), log_range(y.0, y.1));
+                    draw(
+                        builder().build_cartesian_2d((x.0..x.1).log_scale(), (y.0..y.1).log_scale()).map_err(err)?,
+                        &shown,
+                        x_label,
+                    )?
+                }
             }
         }
         root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
     }
     tmp.commit(path).context("writing an SVG plot")?;
+    Ok(())
+}
+
+/// Draw one panel's series, mesh and legend on `chart` (any coordinates of f64 values).
+fn draw<'a, X, Y>(
+    mut chart: ChartContext<'a, SVGBackend<'a>, Cartesian2d<X, Y>>,
+    panel: &Panel,
+    x_label: &str,
+) -> Result<()>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(panel.y_label.as_str())
+        .light_line_style(WHITE.mix(0.0))
+        .draw()
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    // A series without a label continues the one before it (its colour, no legend entry): a
+    // histogram broken at empty bins, the realizations of a wave train.
+    let solid = panel.series.iter().filter(|s| !s.dashed && !s.label.is_empty()).count();
+    let mut k = 0;
+    let mut last = RGBColor(90, 90, 90);
+    for s in &panel.series {
+        // Six named colours, then evenly spread hues: no two labelled solid series of a panel
+        // share a colour (a panel of ten springs).
+        let color = if s.dashed {
+            RGBColor(90, 90, 90)
+        } else if s.label.is_empty() {
+            last
+        } else {
+            k += 1;
+            if solid <= COLORS.len() {
+                COLORS[k - 1]
+            } else {
+                let hsl = HSLColor((k - 1) as f64 / solid as f64, 0.75, 0.42).to_rgba();
+                RGBColor(hsl.0, hsl.1, hsl.2)
+            }
+        };
+        last = color;
+        let style =
+            ShapeStyle { color: color.to_rgba(), filled: s.markers, stroke_width: if s.dashed { 1 } else { 2 } };
+        let label = s.label.clone();
+        if let Some(r) = &s.ranges {
+            chart
+                .draw_series(
+                    s.points.iter().zip(r).map(|(&(x, _), &(lo, hi))| PathElement::new(vec![(x, lo), (x, hi)], style)),
+                )
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
+        }
+        let anno = if s.markers {
+            chart
+                .draw_series(s.points.iter().map(|&(x, y)| Circle::new((x, y), 3, style)))
+                .map_err(|e| anyhow::anyhow!("{e}"))?
+        } else if s.dashed {
+            chart
+                .draw_series(DashedLineSeries::new(s.points.iter().copied(), 6, 4, style))
+                .map_err(|e| anyhow::anyhow!("{e}"))?
+        } else {
+            chart.draw_series(LineSeries::new(s.points.iter().copied(), style)).map_err(|e| anyhow::anyhow!("{e}"))?
+        };
+        // Only labelled series enter the legend (no empty entries).
+        if !label.is_empty() {
+            anno.label(label).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+        }
+    }
+    if panel.series.iter().any(|s| !s.label.is_empty()) {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.3))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(|e| anyhow::anyhow!("{e}"))?;
+    }
     Ok(())
 }

@@ -116,6 +116,44 @@ fn json_has_the_documented_keys_and_is_the_same_on_any_thread_count() {
     );
     // The test is not vacuous: some life slides.
     assert!(j["dynamic"]["expected_sliding_m"].as_f64().unwrap() > 0.0);
+    // Failure (default limit B/4 = 5 m), surviving lives and direction.
+    assert_eq!(j["failure_sliding_m"].as_f64(), Some(5.0));
+    for model in ["dynamic", "rigid_block"] {
+        let (f, s) = (&j[model]["failure"], &j[model]["surviving"]);
+        let failed = f["lives"].as_u64().unwrap();
+        assert_eq!(failed + s["lives"].as_u64().unwrap(), 12, "{model}: every life fails or survives");
+        assert!((f["probability"].as_f64().unwrap() - failed as f64 / 12.0).abs() < 1e-15);
+    }
+    let d = &j["dynamic"];
+    let net = d["expected_shoreward_sliding_m"].as_f64().unwrap() - d["expected_seaward_sliding_m"].as_f64().unwrap();
+    assert!((net - d["expected_net_sliding_m"].as_f64().unwrap()).abs() < 1e-12, "net = shoreward − seaward");
+    assert!(d["expected_max_excursion_m"].as_f64().unwrap() >= d["expected_net_sliding_m"].as_f64().unwrap());
+    for key in ["seaward_lives", "rocking_waves", "large_rotation_waves", "large_rotation_lives"] {
+        assert!(d[key].is_u64(), "dynamic.{key}");
+    }
+}
+
+/// `[design] failure_sliding_m` below every life's excursion fails every life that slid: the
+/// failure count follows the limit, and the warning says so.
+#[test]
+fn a_small_failure_limit_fails_the_lives_that_slide() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(dir.path(), "d.toml", &design_text(12, "failure_sliding_m = 1e-9"));
+    let out = dir.path().join("out");
+    let o = caisson().args(["design", f.to_str().unwrap(), "--json", "--out", out.to_str().unwrap()]).output().unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    let j = json_of(&o.stdout);
+    let csv = std::fs::read_to_string(out.join("lives.csv")).unwrap();
+    let mut rows = csv.lines();
+    let header: Vec<&str> = rows.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let moved =
+        rows.filter(|r| r.split(',').nth(col("max_excursion_m")).unwrap().parse::<f64>().unwrap() > 1e-9).count();
+    assert!(moved >= 1, "some life must move for the test to count anything");
+    assert_eq!(j["dynamic"]["failure"]["lives"].as_u64(), Some(moved as u64));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains(&format!("Warning: {moved} of 12 lives failed")), "{err}");
+    assert!(j["warnings"].as_array().unwrap().iter().any(|w| w["code"] == "failed-lives"));
 }
 
 #[test]
@@ -249,6 +287,10 @@ fn bad_design_keys_are_named() {
         ("seed = 3", "seed = 3\nwave_force_cov = 0.8", "[design] wave_force_cov"),
         ("seed = 3", "seed = 3\nthresholds_m = [0.2, -1.0]", "[design] thresholds_m[1]"),
         ("storm_distribution = \"weibull\"", "storm_distribution = \"gumbel\"", "[design] storm_shape"),
+        ("seed = 3", "seed = 3\nfailure_sliding_m = 0.0", "[design] failure_sliding_m"),
+        ("seed = 3", "seed = 3\nfailure_sliding_m = -2.0", "[design] failure_sliding_m"),
+        // 350 kN/m floats at 2 m of tide (ρ_w g B l R = 404 kN).
+        ("weight_in_water_kn = 4500.0", "weight_in_water_kn = 350.0", "[design] tidal_range_m"),
     ];
     for (from, to, key) in cases {
         let text = design_text(4, "").replace(from, to);

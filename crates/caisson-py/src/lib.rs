@@ -13,9 +13,9 @@
 mod columns;
 
 use caisson::analysis::campaign::run_campaign;
-use caisson::analysis::checks::{response_warnings, structure_warnings, Response};
+use caisson::analysis::checks::{life_warnings, response_warnings, structure_warnings, Response};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
-use caisson::analysis::lifetime::{run_lives, StormOutcome};
+use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, History};
 use caisson::analysis::train::run_realizations;
 use caisson::foundation::DampingMode;
@@ -544,8 +544,7 @@ fn campaign(
 }
 
 /// The lives `indices` of the scenario's `[design]` (any subset, any order): columns sorted by
-/// life index (life, sliding_m, rigid_block_sliding_m, max_storm_sliding_m, waves,
-/// simulated_waves, screened_waves).
+/// life index, `life` and then the columns of `lives.csv` ([`LIFE_COLUMNS`]).
 #[pyfunction]
 #[pyo3(signature = (sc, indices, threads=1, progress=None))]
 fn design_lives<'py>(
@@ -566,45 +565,64 @@ fn design_lives<'py>(
     })?
     .map_err(|e| run_error(format!("{e}: {}", e.source)))?;
     let d = PyDict::new(py);
-    let col = |f: fn(&StormOutcome) -> f64| lives.iter().map(|(_, o)| f(o)).collect::<Vec<f64>>();
-    let count = |f: fn(&StormOutcome) -> u64| lives.iter().map(|(_, o)| f(o)).collect::<Vec<u64>>();
     d.set_item("life", PyArray1::from_vec(py, lives.iter().map(|(i, _)| *i as u64).collect::<Vec<u64>>()))?;
-    d.set_item("sliding_m", PyArray1::from_vec(py, col(|o| o.sliding_m)))?;
-    d.set_item("rigid_block_sliding_m", PyArray1::from_vec(py, col(|o| o.rigid_block_sliding_m)))?;
-    d.set_item("max_storm_sliding_m", PyArray1::from_vec(py, col(|o| o.max_storm_sliding_m)))?;
-    d.set_item("waves", PyArray1::from_vec(py, count(|o| o.waves)))?;
-    d.set_item("simulated_waves", PyArray1::from_vec(py, count(|o| o.simulated)))?;
-    d.set_item("screened_waves", PyArray1::from_vec(py, count(|o| o.screened)))?;
+    for (name, column) in LIFE_COLUMNS {
+        match column {
+            LifeColumn::Metres(f) => {
+                d.set_item(name, PyArray1::from_vec(py, lives.iter().map(|(_, o)| f(o)).collect()))?
+            }
+            LifeColumn::Count(f) => {
+                d.set_item(name, PyArray1::from_vec(py, lives.iter().map(|(_, o)| f(o)).collect()))?
+            }
+        }
+    }
     Ok(d)
 }
 
-/// `design.json` text of the lives given as columns (in life order).
+/// The names of the columns of a life (after `life`), as `lives.csv` writes them.
 #[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn design_statistics(
-    py: Python<'_>,
-    sc: &CoreScenario,
-    sliding_m: Vec<f64>,
-    rigid_block_sliding_m: Vec<f64>,
-    max_storm_sliding_m: Vec<f64>,
-    waves: Vec<u64>,
-    simulated_waves: Vec<u64>,
-    screened_waves: Vec<u64>,
-) -> PyResult<String> {
+fn life_columns() -> Vec<&'static str> {
+    LIFE_COLUMNS.iter().map(|(name, _)| *name).collect()
+}
+
+/// `design.json` text of the lives given as columns (every name of [`life_columns`], in life
+/// order): metres as floats, counts as whole numbers.
+#[pyfunction]
+fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDict>) -> PyResult<String> {
     let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
     let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
-    let lives: Vec<StormOutcome> = (0..sliding_m.len())
-        .map(|i| StormOutcome {
-            sliding_m: sliding_m[i],
-            rigid_block_sliding_m: rigid_block_sliding_m[i],
-            waves: waves[i],
-            simulated: simulated_waves[i],
-            screened: screened_waves[i],
-            max_storm_sliding_m: max_storm_sliding_m[i],
-        })
-        .collect();
-    let mut report = DesignReport::new(design, case.rigid_block_mu, &lives);
+    let mut rows: Vec<serde_json::Map<String, serde_json::Value>> = Vec::new();
+    for (name, column) in LIFE_COLUMNS {
+        let item = columns
+            .get_item(name)?
+            .ok_or_else(|| PyValueError::new_err(format!("the lives have no column `{name}`")))?;
+        let values: Vec<serde_json::Value> = match column {
+            LifeColumn::Metres(_) => item.extract::<Vec<f64>>()?.into_iter().map(serde_json::Value::from).collect(),
+            LifeColumn::Count(_) => item.extract::<Vec<u64>>()?.into_iter().map(serde_json::Value::from).collect(),
+        };
+        if rows.is_empty() {
+            rows.resize(values.len(), serde_json::Map::new());
+        }
+        if values.len() != rows.len() {
+            return Err(PyValueError::new_err(format!(
+                "column `{name}` has {} values where the others have {}",
+                values.len(),
+                rows.len()
+            )));
+        }
+        for (row, v) in rows.iter_mut().zip(values) {
+            row.insert(name.to_string(), v);
+        }
+    }
+    let lives: Vec<StormOutcome> = rows
+        .into_iter()
+        .map(|r| serde_json::from_value(serde_json::Value::Object(r)))
+        .collect::<Result<_, _>>()
+        .map_err(|e| PyValueError::new_err(format!("a life's columns do not form an outcome: {e}")))?;
+    let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
+    let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
     report.warnings = structure_warnings(case.structure);
+    report.warnings.extend(life_warnings(&lives, failure_m));
     report_json(&report, "design")
 }
 
@@ -695,6 +713,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(campaign, m)?)?;
     m.add_function(wrap_pyfunction!(design_lives, m)?)?;
     m.add_function(wrap_pyfunction!(design_statistics, m)?)?;
+    m.add_function(wrap_pyfunction!(life_columns, m)?)?;
     m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;

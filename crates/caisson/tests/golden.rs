@@ -64,7 +64,7 @@ fn signature(sc: &Scenario) -> Series {
         out.insert("sliding_m".into(), lives.iter().map(|(_, o)| o.sliding_m).collect());
         out.insert("rigid_block_sliding_m".into(), lives.iter().map(|(_, o)| o.rigid_block_sliding_m).collect());
         out.insert("waves".into(), lives.iter().map(|(_, o)| o.waves as f64).collect());
-        out.insert("simulated".into(), lives.iter().map(|(_, o)| o.simulated as f64).collect());
+        out.insert("simulated".into(), lives.iter().map(|(_, o)| o.simulated_waves as f64).collect());
     } else if let Some(params) = &sc.fragility {
         let case = sc.storm_case(true).unwrap();
         let mut p = params.clone();
@@ -74,7 +74,7 @@ fn signature(sc: &Scenario) -> Series {
         let storms = r.levels.iter().flat_map(|l| &l.storms);
         out.insert("sliding_m".into(), storms.clone().map(|o| o.sliding_m).collect());
         out.insert("rigid_block_sliding_m".into(), storms.clone().map(|o| o.rigid_block_sliding_m).collect());
-        out.insert("simulated".into(), storms.map(|o| o.simulated as f64).collect());
+        out.insert("simulated".into(), storms.map(|o| o.simulated_waves as f64).collect());
     } else {
         let case = sc.train_case().unwrap();
         let mut h = history_for(sc, case.duration_s());

@@ -68,8 +68,8 @@ fn the_screen_skips_only_waves_that_do_not_slide() {
     let mut total_sliding = 0.0;
     for (a, b) in with.iter().zip(&without) {
         assert_eq!(a.waves, b.waves, "the same waves are drawn");
-        assert_eq!(b.screened, 0);
-        screened += a.screened;
+        assert_eq!(b.screened_waves, 0);
+        screened += a.screened_waves;
         total_sliding += b.sliding_m;
         assert!(
             (a.rigid_block_sliding_m - b.rigid_block_sliding_m).abs() <= 1e-12 * b.rigid_block_sliding_m.abs().max(1.0),
@@ -114,4 +114,40 @@ fn run_lives_is_ordered_and_stoppable() {
     let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
     let stopped = one.install(|| run_lives(&st, &d.life, d.seed, &[0, 1, 2, 3], &|_, _| ControlFlow::Break(())));
     assert_eq!(stopped.unwrap(), one_by_one[..1].to_vec(), "one thread stops after the first life");
+}
+
+/// The design example's life 1199 ends metres seaward (docs/design.md): the direction
+/// bookkeeping must show it. Sign convention: shoreward +; the net sliding is the shoreward sum
+/// minus the seaward sum (to rounding of the two sums, 1e-12 m per metre slid); the largest
+/// excursion is at least the final distance; the rigid block slides shoreward only.
+#[test]
+fn a_seaward_life_is_counted_seaward_by_its_magnitude() {
+    let sc = support::example("design_breakwater.toml");
+    let d = sc.design.clone().unwrap();
+    let st = sc.storm_case(true).unwrap();
+    let l = simulate_life(&st, &d.life, d.seed, 1199).unwrap();
+    assert!(l.sliding_m < -1.0, "life 1199 ends {} m (docs/design.md: −3.8 m)", l.sliding_m);
+    assert!(l.seaward_sliding_m > 1.0 && l.shoreward_sliding_m >= 0.0, "{l:?}");
+    let sum = l.shoreward_sliding_m - l.seaward_sliding_m;
+    assert!((sum - l.sliding_m).abs() <= 1e-12 * (l.shoreward_sliding_m + l.seaward_sliding_m), "{l:?}");
+    assert!(l.max_excursion_m >= l.sliding_m.abs(), "{l:?}");
+    assert!(l.rigid_block_sliding_m > 0.0, "the rigid block slides shoreward: {l:?}");
+    assert!(l.max_storm_sliding_m < -1.0, "the largest storm is kept with its sign: {l:?}");
+    assert!(l.large_rotation_waves > 0 && l.rocking_waves >= l.large_rotation_waves, "it rocks: {l:?}");
+}
+
+/// Lives that only ever slide shoreward: the largest excursion is the final position, exactly
+/// (both are the same running sum), and no seaward sliding is recorded.
+#[test]
+fn a_shoreward_life_has_its_excursion_at_the_end() {
+    let mut checked = 0;
+    for l in lives(true) {
+        assert!(l.max_excursion_m >= l.sliding_m.abs());
+        if l.seaward_sliding_m == 0.0 {
+            assert_eq!(l.max_excursion_m, l.sliding_m, "{l:?}");
+            assert_eq!(l.shoreward_sliding_m, l.sliding_m, "{l:?}");
+            checked += 1;
+        }
+    }
+    assert!(checked >= 1, "no life of the small design slid shoreward only: nothing was compared");
 }

@@ -368,14 +368,7 @@ def campaign(
     return xr.Dataset(data, coords={"condition": np.arange(len(conds)), "realization": np.arange(nr)}, attrs=attrs)
 
 
-_LIFE_COLUMNS = (
-    "sliding_m",
-    "rigid_block_sliding_m",
-    "max_storm_sliding_m",
-    "waves",
-    "simulated_waves",
-    "screened_waves",
-)
+_LIFE_COLUMNS = tuple(_core.life_columns())
 
 
 class Design:
@@ -415,9 +408,10 @@ class Design:
 
     def simulate_lives(self, indices: Optional[Iterable[int]] = None, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
         """Simulate lives ``indices`` (default: all, 0 .. lives − 1), in any order: one row per
-        life, sorted by ``life``, with the columns of ``lives.csv`` (``sliding_m``,
+        life, sorted by ``life``, with the columns of ``lives.csv`` (docs/design.md): ``sliding_m``
+        (net, shoreward +), ``shoreward_sliding_m``, ``seaward_sliding_m``, ``max_excursion_m``,
         ``rigid_block_sliding_m``, ``max_storm_sliding_m`` in m; ``waves``, ``simulated_waves``,
-        ``screened_waves``)."""
+        ``screened_waves``, ``rocking_waves``, ``large_rotation_waves``."""
         idx = list(range(self._lives)) if indices is None else [int(i) for i in indices]
         if any(i < 0 for i in idx):
             raise ScenarioError("life indices must be ≥ 0")
@@ -433,8 +427,11 @@ class Design:
             dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
             raise ValueError(f"life {dup} appears more than once")
         frame = frame.sort_values("life", kind="stable")
-        args = [frame[c].to_numpy(dtype=np.float64 if c.endswith("_m") else np.uint64).tolist() for c in _LIFE_COLUMNS]
-        return json.loads(_core.design_statistics(self._scenario._core, *args))
+        missing = [c for c in _LIFE_COLUMNS if c not in frame.columns]
+        if missing:
+            raise ValueError(f"the lives have no column {missing[0]!r} (they need {', '.join(_LIFE_COLUMNS)})")
+        cols = {c: frame[c].to_numpy(dtype=np.float64 if c.endswith("_m") else np.uint64).tolist() for c in _LIFE_COLUMNS}
+        return json.loads(_core.design_statistics(self._scenario._core, cols))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
         """All lives at once: (``design.json`` dict, lives DataFrame)."""

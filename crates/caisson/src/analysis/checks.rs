@@ -14,7 +14,11 @@
 //! | `rocking-without-slip` | a displacement above 1 µm with no slip event | it comes from rocking: lifted springs re-contact at a displaced base |
 //! | `rocking` | rotation above 0.01 rad | the seaward heel lifts by θB/2; beyond small rotations the model's kinematics and foundation do not hold, and the landing can slide the caisson seaward (docs/design.md) |
 //! | `beyond-failure` | \|sliding\| above 0.25 B | a quarter of the base has left the bedding the model describes |
+//! | `failed-lives` | a design life moved beyond `failure_sliding_m` | its sliding after failure lies outside the model's validity: read P(failure) and the surviving lives' statistics |
+//! | `large-rotation-lives` | a wave of a design life rotated the caisson beyond 0.01 rad | as `rocking`: the model does not follow overturning |
+//! | `seaward-lives` | a design life ends more than 1 cm seaward of its place | rocking landings, not the wave's push, moved it (docs/design.md) |
 
+use super::lifetime::StormOutcome;
 use super::run::RunSummary;
 use super::Structure;
 use crate::dynamics::Stepping;
@@ -163,7 +167,7 @@ pub fn response_warnings(s: &Structure, r: &Response) -> Vec<Warning> {
         out.push(Warning::new(
             "rocking",
             format!(
-                "the caisson rocked up to {:.4} rad (its heel lifted {:.3} m): beyond small rotations the model's kinematics and its foundation (the weight on part of the base) do not hold, and the landing can slide it seaward (docs/design.md); read it as an overturning failure",
+                "the caisson rocked up to {:.4} rad (its heel lifted {:.3} m): beyond small rotations the model's kinematics and its foundation (the weight on part of the base) do not hold, and the landing can slide it seaward (docs/design.md): the model does not follow overturning, so check overturning and the bearing capacity of the mound under the heel for this wave otherwise",
                 r.max_rotation_rad,
                 r.max_rotation_rad * b
             ),
@@ -179,6 +183,57 @@ pub fn response_warnings(s: &Structure, r: &Response) -> Vec<Warning> {
                 r.sliding_m
             ),
             &[("sliding_m", r.sliding_m), ("limit_m", limit)],
+        ));
+    }
+    out
+}
+
+/// Seaward end positions below this are reported (`seaward-lives`), m.
+pub const SEAWARD_REPORT_M: f64 = 0.01;
+
+/// Checks of a design run's lives with the failure limit `failure_limit_m`.
+pub fn life_warnings(lives: &[StormOutcome], failure_limit_m: f64) -> Vec<Warning> {
+    let mut out = Vec::new();
+    let n = lives.len() as f64;
+    let failed = lives.iter().filter(|l| l.failed(failure_limit_m)).count();
+    if failed > 0 {
+        out.push(Warning::new(
+            "failed-lives",
+            format!(
+                "{failed} of {} lives failed: they moved the caisson more than {failure_limit_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width); what the model computes after that is outside its validity, so read the failure probability and the statistics of the surviving lives",
+                lives.len()
+            ),
+            &[
+                ("failed_lives", failed as f64),
+                ("lives", n),
+                ("failure_probability", failed as f64 / n),
+                ("failure_sliding_m", failure_limit_m),
+            ],
+        ));
+    }
+    let rotated = lives.iter().filter(|l| l.large_rotation_waves > 0).count();
+    if rotated > 0 {
+        out.push(Warning::new(
+            "large-rotation-lives",
+            format!(
+                "in {rotated} of {} lives a wave rotated the caisson beyond {ROCKING_LIMIT_RAD} rad (the seaward heel lifts by θB/2): the model does not follow overturning (large rotations, the bearing capacity of the mound under the heel), so check overturning and the mound for these waves otherwise (docs/design.md)",
+                lives.len()
+            ),
+            &[("large_rotation_lives", rotated as f64), ("lives", n), ("rotation_limit_rad", ROCKING_LIMIT_RAD)],
+        ));
+    }
+    let seaward: Vec<f64> = lives.iter().map(|l| l.sliding_m).filter(|&s| s < -SEAWARD_REPORT_M).collect();
+    if !seaward.is_empty() {
+        let worst = seaward.iter().copied().fold(0.0, f64::min);
+        out.push(Warning::new(
+            "seaward-lives",
+            format!(
+                "{} of {} lives ended seaward of their place (up to {:.3} m): the wave pushes shoreward, so these displacements come from the caisson rocking and landing (docs/design.md); the statistics use the magnitude |S|",
+                seaward.len(),
+                lives.len(),
+                -worst
+            ),
+            &[("seaward_lives", seaward.len() as f64), ("lives", n), ("largest_seaward_sliding_m", -worst)],
         ));
     }
     out

@@ -19,8 +19,10 @@
 //! (level, storm) pairs run with rayon and are collected in order, so the results do not depend
 //! on the number of threads. The library does not print: `progress` is called once per storm.
 //!
-//! **Counts.** k_i(s) = #{storms at H_i with S > s} (strictly greater), for the dynamic model and
-//! for the rigid block (Shimosako model) separately; P̂_i = k_i / n_i.
+//! **Counts.** k_i(s) = #{storms at H_i with |S| > s} (strictly greater), S the storm's net
+//! sliding (shoreward +; a rocking caisson can end a storm seaward, docs/design.md), for the
+//! dynamic model and for the rigid block (Shimosako model; S ≥ 0) separately; P̂_i = k_i / n_i.
+//! The mean and largest storm sliding of a level are of |S| too.
 //!
 //! **Lognormal fit** (docs/model.md §7 step 4): P(S > s | IM) = Φ((ln IM − ln θ)/β), θ the median
 //! capacity (m of H1/3) and β the log-standard deviation, by maximum likelihood on the binomial
@@ -53,9 +55,8 @@
 //! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
 //! same relative accuracy.
 
-use super::lifetime::{simulate_storm, StormCase, StormInput, StormOutcome};
+use super::lifetime::{simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
-use crate::dynamics::SolveError;
 use crate::loads::generator::realization_rng;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
@@ -334,7 +335,7 @@ pub struct LevelResult {
     pub hmax_m: f64,
     /// One outcome per storm, in storm order.
     pub storms: Vec<StormOutcome>,
-    /// Storms with dynamic sliding > each limit.
+    /// Storms with a dynamic sliding magnitude |S| > each limit.
     pub dynamic_exceedances: Vec<u64>,
     /// Storms with rigid-block sliding > each limit.
     pub rigid_block_exceedances: Vec<u64>,
@@ -348,7 +349,7 @@ impl LevelResult {
         LevelResult {
             h13_m,
             hmax_m: HMAX_RATIO * h13_m,
-            dynamic_exceedances: count(|o| o.sliding_m),
+            dynamic_exceedances: count(|o| o.sliding_m.abs()),
             rigid_block_exceedances: count(|o| o.rigid_block_sliding_m),
             storms,
         }
@@ -358,9 +359,9 @@ impl LevelResult {
         self.storms.iter().map(f).sum::<f64>() / self.storms.len().max(1) as f64
     }
 
-    /// Mean storm sliding, dynamic model, m.
+    /// Mean magnitude |S| of the storm sliding, dynamic model, m.
     pub fn mean_sliding_m(&self) -> f64 {
-        self.mean(|o| o.sliding_m)
+        self.mean(|o| o.sliding_m.abs())
     }
 
     /// Mean storm sliding, rigid block, m.
@@ -371,7 +372,7 @@ impl LevelResult {
     /// Share of the waves skipped by the screen.
     pub fn screened_share(&self) -> f64 {
         let waves: u64 = self.storms.iter().map(|o| o.waves).sum();
-        self.storms.iter().map(|o| o.screened).sum::<u64>() as f64 / waves.max(1) as f64
+        self.storms.iter().map(|o| o.screened_waves).sum::<u64>() as f64 / waves.max(1) as f64
     }
 }
 
@@ -399,7 +400,7 @@ pub struct StormFailed {
     pub h13_m: f64,
     pub storm: usize,
     #[source]
-    pub source: SolveError,
+    pub source: StormError,
 }
 
 /// Run every storm of every height in parallel and fit the curves (module docs).
@@ -572,11 +573,13 @@ mod tests {
             (s.h13_m, s.hmax_m, s.waves, s.tide_m, s.force_factor, s.friction_factor),
             (4.0, 7.2, 655, 0.0, 1.0, 1.0)
         );
-        let storms = [0.05, 0.1, 0.2].map(|v| StormOutcome {
+        // The third storm ends seaward: it counts by its magnitude (signed, it would exceed no
+        // limit above 0.05 m and the mean would be −0.05/3 m).
+        let storms = [0.05, 0.1, -0.2].map(|v: f64| StormOutcome {
             sliding_m: v,
-            rigid_block_sliding_m: 2.0 * v,
+            rigid_block_sliding_m: 2.0 * v.abs(),
             waves: 10,
-            screened: 4,
+            screened_waves: 4,
             ..StormOutcome::default()
         });
         let l = LevelResult::new(2.0, storms.to_vec(), &[0.05, 0.1, 0.3]);

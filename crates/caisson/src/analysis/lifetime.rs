@@ -48,9 +48,9 @@
 use super::run::permanent_sliding_m;
 use super::train::RigidBlock;
 use super::Structure;
-use crate::dynamics::{Model, Simulation, SolveError};
+use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
 use crate::loads::generator::realization_rng;
-use crate::loads::history::{WaveEvent, WaveTrain};
+use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
 use crate::loads::model::{WaveLoadModel, WaveLoads};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
@@ -174,30 +174,103 @@ pub struct StormInput {
     pub friction_factor: f64,
 }
 
-/// The outcome of one storm (or, summed, of one life).
+/// The outcome of one storm (or, summed, of one life). Sign convention: sliding is positive
+/// shoreward (the direction of the wave's push), negative seaward. The field names are the
+/// columns of `lives.csv` and of the checkpoint lines ([`LIFE_COLUMNS`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct StormOutcome {
-    /// Dynamic model, m.
+    /// Net sliding of the dynamic model: the sum of every wave's permanent sliding, signed, m.
     pub sliding_m: f64,
-    /// Rigid block (Shimosako model), m.
+    /// The sum of the shoreward wave slides (≥ 0), m.
+    pub shoreward_sliding_m: f64,
+    /// The sum of the seaward wave slides, as a magnitude (≥ 0), m:
+    /// `sliding_m = shoreward_sliding_m − seaward_sliding_m`.
+    pub seaward_sliding_m: f64,
+    /// The largest distance of the caisson from its place at the start (of the life, for a life)
+    /// after any wave (≥ |sliding_m|), m. A life fails when it exceeds the failure limit.
+    pub max_excursion_m: f64,
+    /// Rigid block (Shimosako model; it slides shoreward only), m.
     pub rigid_block_sliding_m: f64,
+    /// The storm's net sliding of the largest magnitude, with its sign (for a life), m.
+    pub max_storm_sliding_m: f64,
     pub waves: u64,
     /// Waves run through the dynamic model.
-    pub simulated: u64,
+    pub simulated_waves: u64,
     /// Waves skipped by the screen.
-    pub screened: u64,
-    /// The largest storm sliding (dynamic), m (for a life).
-    pub max_storm_sliding_m: f64,
+    pub screened_waves: u64,
+    /// Simulated waves during which part of the base lifted off (a spring out of contact).
+    pub rocking_waves: u64,
+    /// Simulated waves that rotated the caisson beyond [`ROCKING_LIMIT_RAD`]: the model does
+    /// not follow overturning itself (large rotations, the mound's bearing capacity under the
+    /// heel), so a life with such a wave is outside its validity (docs/design.md).
+    pub large_rotation_waves: u64,
 }
 
+/// One column of a life's outcome: its value as metres or as a count.
+#[derive(Debug, Clone, Copy)]
+pub enum LifeColumn {
+    Metres(fn(&StormOutcome) -> f64),
+    Count(fn(&StormOutcome) -> u64),
+}
+
+/// The columns of a life's outcome (after `life`) in `lives.csv` and the Python `DataFrame`,
+/// named as the [`StormOutcome`] fields.
+pub const LIFE_COLUMNS: [(&str, LifeColumn); 11] = [
+    ("sliding_m", LifeColumn::Metres(|o| o.sliding_m)),
+    ("shoreward_sliding_m", LifeColumn::Metres(|o| o.shoreward_sliding_m)),
+    ("seaward_sliding_m", LifeColumn::Metres(|o| o.seaward_sliding_m)),
+    ("max_excursion_m", LifeColumn::Metres(|o| o.max_excursion_m)),
+    ("rigid_block_sliding_m", LifeColumn::Metres(|o| o.rigid_block_sliding_m)),
+    ("max_storm_sliding_m", LifeColumn::Metres(|o| o.max_storm_sliding_m)),
+    ("waves", LifeColumn::Count(|o| o.waves)),
+    ("simulated_waves", LifeColumn::Count(|o| o.simulated_waves)),
+    ("screened_waves", LifeColumn::Count(|o| o.screened_waves)),
+    ("rocking_waves", LifeColumn::Count(|o| o.rocking_waves)),
+    ("large_rotation_waves", LifeColumn::Count(|o| o.large_rotation_waves)),
+];
+
 impl StormOutcome {
+    /// Append storm `o`, which started where this life's caisson now stands.
     fn add(&mut self, o: &StormOutcome) {
         self.sliding_m += o.sliding_m;
+        self.shoreward_sliding_m += o.shoreward_sliding_m;
+        self.seaward_sliding_m += o.seaward_sliding_m;
+        self.max_excursion_m = self.max_excursion_m.max(o.max_excursion_m);
         self.rigid_block_sliding_m += o.rigid_block_sliding_m;
+        if o.sliding_m.abs() > self.max_storm_sliding_m.abs() {
+            self.max_storm_sliding_m = o.sliding_m;
+        }
         self.waves += o.waves;
-        self.simulated += o.simulated;
-        self.screened += o.screened;
-        self.max_storm_sliding_m = self.max_storm_sliding_m.max(o.sliding_m);
+        self.simulated_waves += o.simulated_waves;
+        self.screened_waves += o.screened_waves;
+        self.rocking_waves += o.rocking_waves;
+        self.large_rotation_waves += o.large_rotation_waves;
+    }
+
+    /// Whether the life (or storm) failed: it moved the caisson beyond `limit_m` from its place
+    /// at some time.
+    pub fn failed(&self, limit_m: f64) -> bool {
+        self.max_excursion_m > limit_m
+    }
+}
+
+/// Rotation beyond which a wave counts as a large-rotation wave, rad (the plausibility warning
+/// `rocking` of [`super::checks`] uses the same limit).
+pub const ROCKING_LIMIT_RAD: f64 = super::checks::ROCKING_LIMIT_RAD;
+
+/// What a wave did besides sliding: the largest rotation and whether part of the base lifted.
+#[derive(Debug, Clone, Copy, Default)]
+struct WaveWatch {
+    max_rotation_rad: f64,
+    lifted: bool,
+}
+
+impl Observer for WaveWatch {
+    #[inline]
+    fn observe(&mut self, s: &StepView<'_>) {
+        self.max_rotation_rad = self.max_rotation_rad.max(s.state.u[2].abs());
+        self.lifted |= s.reaction.contact_springs < s.springs.len();
     }
 }
 
@@ -217,7 +290,24 @@ fn may_slide(e: &WaveEvent, psi_q: f64, weight_n: f64, mu: f64, width_m: f64) ->
 }
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
-pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, SolveError> {
+pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
+    storm_from(st, s, rng, 0.0)
+}
+
+/// A storm that cannot be simulated.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum StormError {
+    #[error(transparent)]
+    Solve(#[from] SolveError),
+    /// A wave whose loads are not a valid train (non-finite forces: an input far outside the
+    /// model's range that validation did not catch).
+    #[error("a wave of height {height_m} m and period {period_s} s has no valid load history: {source}")]
+    Wave { height_m: f64, period_s: f64, source: TrainError },
+}
+
+/// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
+/// (for the life's largest excursion).
+fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f64) -> Result<StormOutcome, StormError> {
     // The site and the caisson at this water level.
     let mut model = *st.model;
     model.site.depth_at_toe_m += s.tide_m;
@@ -260,12 +350,12 @@ pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> 
     // Cell c = [c dh, (c + 1) dh] may slide if a node within one cell of it may.
     let cell_may_slide = |c: usize| node[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f);
     let mut sim: Option<Simulation> = None;
-    let mut out = StormOutcome { waves: s.waves as u64, ..StormOutcome::default() };
+    let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
     for _ in 0..s.waves {
         let h = sample_rayleigh_m(s.h13_m, rng).clamp(1e-3 * s.h13_m.max(1e-6), hmax);
         let z: f64 = rng.sample(StandardNormal);
         if st.screen && !cell_may_slide(((h / dh) as usize).min(SCREEN_CELLS - 1)) {
-            out.screened += 1;
+            out.screened_waves += 1;
             continue;
         }
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
@@ -277,7 +367,11 @@ pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> 
         };
         let event = event_of(&loads, loads.rise_time.map(|d| d.at_deviate(z)));
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);
-        let train = WaveTrain::new(vec![event]).expect("a checked wave");
+        let train = WaveTrain::new(vec![event]).map_err(|source| StormError::Wave {
+            height_m: h,
+            period_s: s.period_s,
+            source,
+        })?;
         let sim = match sim.as_mut() {
             Some(x) => {
                 x.reset(&train);
@@ -285,16 +379,26 @@ pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> 
             }
             None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, &train)),
         };
-        sim.run_until(s.period_s, &train, &mut ())?;
-        out.sliding_m += permanent_sliding_m(sim);
-        out.simulated += 1;
+        let mut watch = WaveWatch::default();
+        sim.run_until(s.period_s, &train, &mut watch)?;
+        let slide = permanent_sliding_m(sim);
+        out.sliding_m += slide;
+        if slide >= 0.0 {
+            out.shoreward_sliding_m += slide;
+        } else {
+            out.seaward_sliding_m -= slide;
+        }
+        out.max_excursion_m = out.max_excursion_m.max((start_m + out.sliding_m).abs());
+        out.simulated_waves += 1;
+        out.rocking_waves += u64::from(watch.lifted);
+        out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
     }
     out.max_storm_sliding_m = out.sliding_m;
     Ok(out)
 }
 
 /// One life of `p.life_years` storms (module docs), life `index` of the stream `seed`.
-pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, SolveError> {
+pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, StormError> {
     let mut rng = realization_rng(seed, index);
     let mut life = StormOutcome::default();
     let site = &st.model.site;
@@ -321,7 +425,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             force_factor: e_f,
             friction_factor: e_mu,
         };
-        let o = simulate_storm(st, &storm, &mut rng)?;
+        let o = storm_from(st, &storm, &mut rng, life.sliding_m)?;
         life.add(&o);
     }
     Ok(life)
@@ -337,6 +441,24 @@ pub struct DesignParams {
     /// Sorted sliding thresholds of the exceedance probabilities, m.
     pub thresholds_m: Vec<f64>,
     pub screen: bool,
+    /// The failure limit on the caisson's distance from its place, m; `None`:
+    /// [`FAILURE_FRACTION_OF_WIDTH`] of the base width ([`Self::failure_limit_m`]).
+    pub failure_sliding_m: Option<f64>,
+}
+
+/// The default failure limit as a fraction of the base width B: a caisson that has slid a
+/// quarter of its base off its place no longer stands on the levelled bedding the foundation
+/// model describes (its heel is over the mound's shoulder or berm). For prototype widths of
+/// 12-20 m this is 3-5 m, the order of the sliding graded "failure" in Takahashi's performance
+/// matrix (3 m; docs/model.md §6.4 step 8). An engineering choice, not a literature value: give
+/// `[design] failure_sliding_m` for the site.
+pub const FAILURE_FRACTION_OF_WIDTH: f64 = super::checks::FAILURE_FRACTION_OF_WIDTH;
+
+impl DesignParams {
+    /// The failure limit for a caisson of base width `width_m`, m.
+    pub fn failure_limit_m(&self, width_m: f64) -> f64 {
+        self.failure_sliding_m.unwrap_or(FAILURE_FRACTION_OF_WIDTH * width_m)
+    }
 }
 
 /// A life that could not be simulated.
@@ -345,7 +467,7 @@ pub struct DesignParams {
 pub struct LifeFailed {
     pub life: usize,
     #[source]
-    pub source: SolveError,
+    pub source: StormError,
 }
 
 /// Simulate the lives `indices` (any subset, in any order) in parallel on rayon's current pool.

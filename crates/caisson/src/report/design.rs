@@ -48,29 +48,88 @@ pub struct Exceedance {
     pub probability: f64,
 }
 
-/// The statistics of one model's life totals.
+/// The lives that failed: moved beyond the failure limit from their place at some time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Failure {
+    /// The share of lives that failed.
+    pub probability: f64,
+    pub lives: usize,
+}
+
+/// The statistics of the lives that did not fail.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Surviving {
+    pub lives: usize,
+    /// Mean |S| of the surviving lives, m (0 when none survived).
+    pub expected_sliding_m: f64,
+    pub percentiles_m: Percentiles,
+}
+
+/// The statistics of one model's life totals. "Sliding" is the magnitude |S| of the life's net
+/// displacement S (shoreward +): the distance from its place at the end of the life, whichever
+/// the direction (docs/design.md).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ModelStatistics {
+    /// E|S|, m.
     pub expected_sliding_m: f64,
     pub expected_sliding_per_year_m: f64,
     pub percentiles_m: Percentiles,
+    /// P(|S| > threshold).
     pub exceedance_probability: Vec<Exceedance>,
+    pub failure: Failure,
+    pub surviving: Surviving,
+}
+
+fn percentiles(s: &LifeStatistics) -> Percentiles {
+    let pct = |p: f64| s.percentiles_m.iter().find(|(q, _)| *q == p).map_or(0.0, |(_, v)| *v);
+    Percentiles { p5: pct(5.0), p50: pct(50.0), p95: pct(95.0), p99: pct(99.0) }
 }
 
 impl ModelStatistics {
-    fn new(s: &LifeStatistics, years: usize) -> Self {
-        let pct = |p: f64| s.percentiles_m.iter().find(|(q, _)| *q == p).map_or(0.0, |(_, v)| *v);
+    /// `magnitudes`: |S| of every life; `failed`: whether each life failed.
+    fn new(magnitudes: &[f64], failed: &[bool], thresholds_m: &[f64], years: usize) -> Self {
+        let s = life_statistics(magnitudes, thresholds_m);
+        let surviving: Vec<f64> = magnitudes.iter().zip(failed).filter(|(_, &f)| !f).map(|(&m, _)| m).collect();
+        let sv = life_statistics(&surviving, &[]);
+        let failures = magnitudes.len() - surviving.len();
         ModelStatistics {
             expected_sliding_m: s.mean_m,
             expected_sliding_per_year_m: s.mean_m / years as f64,
-            percentiles_m: Percentiles { p5: pct(5.0), p50: pct(50.0), p95: pct(95.0), p99: pct(99.0) },
+            percentiles_m: percentiles(&s),
             exceedance_probability: s
                 .exceedance
                 .iter()
                 .map(|&(threshold_m, probability)| Exceedance { threshold_m, probability })
                 .collect(),
+            failure: Failure { probability: failures as f64 / magnitudes.len().max(1) as f64, lives: failures },
+            surviving: Surviving { lives: sv.lives, expected_sliding_m: sv.mean_m, percentiles_m: percentiles(&sv) },
         }
     }
+}
+
+/// What only the dynamic model tells: the direction of sliding, the largest excursion and
+/// rocking.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DynamicStatistics {
+    #[serde(flatten)]
+    pub sliding: ModelStatistics,
+    /// E[S], signed (shoreward +), m.
+    pub expected_net_sliding_m: f64,
+    /// E[sum of the shoreward wave slides], m.
+    pub expected_shoreward_sliding_m: f64,
+    /// E[sum of the seaward wave slides] (a magnitude), m.
+    pub expected_seaward_sliding_m: f64,
+    /// Lives that ended seaward of their place (S < 0).
+    pub seaward_lives: usize,
+    /// E[the largest distance from the place during the life], m.
+    pub expected_max_excursion_m: f64,
+    /// Waves (all lives) during which part of the base lifted off.
+    pub rocking_waves: u64,
+    /// Waves (all lives) that rotated the caisson beyond 0.01 rad ([`crate::analysis::lifetime::ROCKING_LIMIT_RAD`]).
+    pub large_rotation_waves: u64,
+    /// Lives with a large-rotation wave: outside the model's validity (it does not follow
+    /// overturning).
+    pub large_rotation_lives: usize,
 }
 
 /// The results of a design run.
@@ -82,7 +141,10 @@ pub struct DesignReport {
     pub life_years: usize,
     pub seed: u64,
     pub screen: bool,
-    pub dynamic: ModelStatistics,
+    /// The failure limit on the caisson's distance from its place, m (`[design]
+    /// failure_sliding_m`, default a quarter of the base width).
+    pub failure_sliding_m: f64,
+    pub dynamic: DynamicStatistics,
     pub rigid_block: ModelStatistics,
     pub rigid_block_mu: f64,
     pub waves: u64,
@@ -94,27 +156,105 @@ pub struct DesignReport {
 }
 
 impl DesignReport {
-    /// The statistics of `lives` (every life of the run, in index order) of design `p`.
-    pub fn new(p: &DesignParams, rigid_block_mu: f64, lives: &[StormOutcome]) -> Self {
-        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m).collect();
-        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m).collect();
+    /// The statistics of `lives` (every life of the run, in index order) of design `p`, with the
+    /// failure limit `failure_sliding_m` ([`DesignParams::failure_limit_m`]).
+    pub fn new(p: &DesignParams, rigid_block_mu: f64, failure_sliding_m: f64, lives: &[StormOutcome]) -> Self {
         let years = p.life.life_years;
+        let n = lives.len().max(1) as f64;
+        let mean = |f: fn(&StormOutcome) -> f64| lives.iter().map(f).sum::<f64>() / n;
+        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
+        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
+        let failed: Vec<bool> = lives.iter().map(|l| l.failed(failure_sliding_m)).collect();
+        let rigid_failed: Vec<bool> = rigid.iter().map(|&s| s > failure_sliding_m).collect();
         let waves: u64 = lives.iter().map(|l| l.waves).sum();
-        let screened: u64 = lives.iter().map(|l| l.screened).sum();
+        let screened: u64 = lives.iter().map(|l| l.screened_waves).sum();
         DesignReport {
             provenance: Provenance::CURRENT,
             lives: lives.len(),
             life_years: years,
             seed: p.seed,
             screen: p.screen,
-            dynamic: ModelStatistics::new(&life_statistics(&dynamic, &p.thresholds_m), years),
-            rigid_block: ModelStatistics::new(&life_statistics(&rigid, &p.thresholds_m), years),
+            failure_sliding_m,
+            dynamic: DynamicStatistics {
+                sliding: ModelStatistics::new(&dynamic, &failed, &p.thresholds_m, years),
+                expected_net_sliding_m: mean(|l| l.sliding_m),
+                expected_shoreward_sliding_m: mean(|l| l.shoreward_sliding_m),
+                expected_seaward_sliding_m: mean(|l| l.seaward_sliding_m),
+                seaward_lives: lives.iter().filter(|l| l.sliding_m < 0.0).count(),
+                expected_max_excursion_m: mean(|l| l.max_excursion_m),
+                rocking_waves: lives.iter().map(|l| l.rocking_waves).sum(),
+                large_rotation_waves: lives.iter().map(|l| l.large_rotation_waves).sum(),
+                large_rotation_lives: lives.iter().filter(|l| l.large_rotation_waves > 0).count(),
+            },
+            rigid_block: ModelStatistics::new(&rigid, &rigid_failed, &p.thresholds_m, years),
             rigid_block_mu,
             waves,
-            simulated_waves: lives.iter().map(|l| l.simulated).sum(),
+            simulated_waves: lives.iter().map(|l| l.simulated_waves).sum(),
             screened_waves: screened,
             screened_share: screened as f64 / waves.max(1) as f64,
             warnings: Vec::new(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::checks::life_warnings;
+
+    fn life(sliding_m: f64, shoreward: f64, seaward: f64, excursion_m: f64, rigid_m: f64) -> StormOutcome {
+        StormOutcome {
+            sliding_m,
+            shoreward_sliding_m: shoreward,
+            seaward_sliding_m: seaward,
+            max_excursion_m: excursion_m,
+            rigid_block_sliding_m: rigid_m,
+            waves: 100,
+            ..StormOutcome::default()
+        }
+    }
+
+    /// Five lives, failure limit 5 m: one seaward (−3 m), one beyond the limit at the end (6 m),
+    /// one that went 5.5 m out and came back (fails, |S| = 0). Every number by hand.
+    #[test]
+    fn failures_surviving_lives_and_direction_are_counted_by_hand() {
+        let sc = crate::scenario::load(
+            &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/design_breakwater.toml"),
+        )
+        .unwrap();
+        let mut p = sc.design.clone().unwrap();
+        p.thresholds_m = vec![0.1, 1.0];
+        let mut seaward = life(-3.0, 1.0, 4.0, 3.5, 1.0);
+        seaward.large_rotation_waves = 2;
+        let lives = [
+            life(0.2, 0.2, 0.0, 0.2, 0.25),
+            seaward,
+            life(6.0, 6.0, 0.0, 6.0, 7.0),
+            life(0.0, 5.5, 5.5, 5.5, 0.0),
+            life(1e-3, 1e-3, 0.0, 1e-3, 0.0),
+        ];
+        let r = DesignReport::new(&p, 0.6, 5.0, &lives);
+        let d = &r.dynamic;
+        assert_eq!(r.failure_sliding_m, 5.0);
+        assert_eq!((d.sliding.failure.lives, d.sliding.failure.probability), (2, 0.4));
+        assert!((d.sliding.expected_sliding_m - (0.2 + 3.0 + 6.0 + 0.0 + 1e-3) / 5.0).abs() < 1e-12);
+        assert!((d.expected_net_sliding_m - (0.2 - 3.0 + 6.0 + 1e-3) / 5.0).abs() < 1e-12);
+        // |S| > 0.1: 0.2, 3 and 6 m (signed values would give 2 of 5); |S| > 1: 3 and 6 m.
+        let e: Vec<f64> = d.sliding.exceedance_probability.iter().map(|e| e.probability).collect();
+        assert_eq!(e, vec![0.6, 0.4]);
+        assert_eq!(d.sliding.surviving.lives, 3);
+        assert!((d.sliding.surviving.expected_sliding_m - (0.2 + 3.0 + 1e-3) / 3.0).abs() < 1e-12);
+        assert_eq!(d.sliding.surviving.percentiles_m.p99, 3.0);
+        assert_eq!(d.seaward_lives, 1);
+        assert!((d.expected_shoreward_sliding_m - (0.2 + 1.0 + 6.0 + 5.5 + 1e-3) / 5.0).abs() < 1e-12);
+        assert!((d.expected_seaward_sliding_m - (4.0 + 5.5) / 5.0).abs() < 1e-12);
+        assert_eq!((d.large_rotation_lives, d.large_rotation_waves), (1, 2));
+        // The rigid block fails by its slide alone: 7 m.
+        assert_eq!((r.rigid_block.failure.lives, r.rigid_block.surviving.lives), (1, 4));
+        assert!((r.rigid_block.surviving.expected_sliding_m - (0.25 + 1.0) / 4.0).abs() < 1e-12);
+        let codes: Vec<&str> = life_warnings(&lives, 5.0).iter().map(|w| w.code).collect();
+        assert_eq!(codes, vec!["failed-lives", "large-rotation-lives", "seaward-lives"]);
+        let calm = [life(0.2, 0.2, 0.0, 0.2, 0.25), life(-0.005, 0.0, 0.005, 0.005, 0.0)];
+        assert!(life_warnings(&calm, 5.0).is_empty(), "5 mm seaward is below the 1 cm reported");
     }
 }

@@ -75,11 +75,11 @@ impl LevelReport {
             hmax_m: l.hmax_m,
             storms: l.storms.len(),
             mean_sliding_m: l.mean_sliding_m(),
-            max_sliding_m: l.storms.iter().map(|o| o.sliding_m).fold(0.0, f64::max),
+            max_sliding_m: l.storms.iter().map(|o| o.sliding_m.abs()).fold(0.0, f64::max),
             mean_rigid_block_sliding_m: l.mean_rigid_block_sliding_m(),
             max_rigid_block_sliding_m: l.storms.iter().map(|o| o.rigid_block_sliding_m).fold(0.0, f64::max),
             screened_share: l.screened_share(),
-            simulated_waves: l.storms.iter().map(|o| o.simulated).sum(),
+            simulated_waves: l.storms.iter().map(|o| o.simulated_waves).sum(),
             exceedance: limits_m
                 .iter()
                 .enumerate()

@@ -38,6 +38,8 @@ pub struct DesignTable {
     /// Extra sliding thresholds, m (0.03, 0.1, 0.3, 1 and 3 m are always reported).
     pub thresholds_m: Option<Vec<f64>>,
     pub screen: Option<bool>,
+    /// The failure limit on the caisson's distance from its place, m (default B/4).
+    pub failure_sliding_m: Option<f64>,
 }
 
 /// Takahashi's performance grades (docs/model.md §6.4 step 8), m.
@@ -186,5 +188,9 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         seed,
         thresholds_m,
         screen: t.screen.unwrap_or(true),
+        failure_sliding_m: t
+            .failure_sliding_m
+            .map(|v| number("[design] failure_sliding_m", v, 0.0, 1000.0, true, "m"))
+            .transpose()?,
     })
 }

@@ -440,6 +440,23 @@ impl Scenario {
     /// the rigid-block μ (`[waves] rigid_block_mu`, default μ_s).
     pub fn storm_case(&self, screen: bool) -> Result<StormCase<'_>, ScenarioError> {
         let w = self.waves_for("a design or fragility run")?;
+        if let Some(d) = &self.design {
+            // At high tide the caisson is more submerged: its weight in water must stay positive.
+            let c = &self.structure.caisson;
+            let per_m = self.water_density_kg_per_m3 * crate::G_M_PER_S2 * c.width_m * c.length_m;
+            let r = d.life.tidal_range_m;
+            if c.weight_in_water_n - per_m * r <= 0.0 {
+                return Err(ScenarioError::range(
+                    "[design] tidal_range_m",
+                    r,
+                    format!(
+                        "at high tide the caisson's weight in water W' − ρ_w g B l R = {:.1} kN is not positive: it would float; the tidal range must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
+                        (c.weight_in_water_n - per_m * r) / 1e3,
+                        c.weight_in_water_n / per_m
+                    ),
+                ));
+            }
+        }
         Ok(StormCase {
             structure: &self.structure,
             model: &w.model,
