@@ -599,6 +599,6 @@ fn why_profiles_differ(t: &mut String) -> Result<()> {
             r.rigid_block.failure.probability
         );
     }
-    let _ = writeln!(t, "\nThe example sets no profile-dependent key, so the first row is the seed's literal model on a prototype (its dashpot on the total velocity all but stops sliding) and the second the default. Lives in which a wave overturns the caisson statically rock about the heel, and the landing can throw the caisson seaward (docs/design.md); the dynamic model's expected sliding stays below the rigid block's because of them and of the filtering of short impacts.\n");
+    let _ = writeln!(t, "\nThe example sets no profile-dependent key, so the first row is the seed's literal model on a prototype (its dashpot on the total velocity all but stops sliding) and the second the default, whose expected sliding is close to the rigid block's. Lives in which a wave overturns the caisson statically rock about the heel, and the landing can throw the caisson seaward (docs/design.md): they count by the magnitude |S| of their displacement, and a life fails when the caisson has been more than a quarter of its base width (5 m) from its place.\n");
     Ok(())
 }
