@@ -41,7 +41,7 @@ fn examples_dir() -> PathBuf {
 }
 
 /// The bundled examples that are scenarios, and the command each is run with in the binary sample.
-const EXAMPLES: [(&str, &str); 9] = [
+const EXAMPLES: [(&str, &str); 10] = [
     ("table5_triangle.toml", "run"),
     ("table5_series.toml", "run"),
     ("fifteen_waves.toml", "run"),
@@ -51,6 +51,7 @@ const EXAMPLES: [(&str, &str); 9] = [
     ("pari_nonbreaking_campaign.toml", "campaign"),
     ("design_breakwater.toml", "design"),
     ("fragility.toml", "fragility"),
+    ("caisson_geometry.toml", "run"),
 ];
 
 fn example_text(i: usize) -> String {

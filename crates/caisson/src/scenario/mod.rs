@@ -79,6 +79,17 @@ const CAISSON_KEYS: KeyMap = &[
     ("mass_kg", "mass_kg", 1.0, "kg"),
     ("cog_height_m", "cog_height_m", 1.0, "m above the base"),
     ("inertia_cog_kg_m2", "inertia_kg_m2", 1.0, "kg·m² about the centre of gravity"),
+    ("wall_thickness_m", "wall_thickness_m", 1.0, "m"),
+    ("slab_thickness_m", "slab_thickness_m", 1.0, "m"),
+    ("partition_thickness_m", "partition_thickness_m", 1.0, "m"),
+    ("cells_across", "cells_across", 1.0, ""),
+    ("cells_along", "cells_along", 1.0, ""),
+    ("unit_length_m", "unit_length_m", 1.0, "m"),
+    ("cap_height_m", "cap_height_m", 1.0, "m"),
+    ("concrete_density_kg_per_m3", "concrete_density_kg_per_m3", 1.0, "kg/m³"),
+    ("cap_density_kg_per_m3", "cap_density_kg_per_m3", 1.0, "kg/m³"),
+    ("fill_density_kg_per_m3", "fill_density_kg_per_m3", 1.0, "kg/m³"),
+    ("fill_density_above_water_kg_per_m3", "fill_density_above_water_kg_per_m3", 1.0, "kg/m³"),
 ];
 
 const FOUNDATION_KEYS: KeyMap = &[
@@ -157,7 +168,7 @@ pub struct ModelTable {
     pub profile: Option<String>,
 }
 
-/// `[caisson]`: geometry and mass (docs/model.md §8.2).
+/// `[caisson]`: geometry and mass (docs/model.md §8.2), or geometry and construction (§8.4).
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct CaissonTable {
@@ -180,6 +191,29 @@ pub struct CaissonTable {
     /// `"coupled"` (exact rigid-body mass matrix about the base centre) or `"diagonal"` (the
     /// seed's Eq. 24). Default: the profile's.
     pub mass_matrix: Option<String>,
+    // The construction route (instead of the weight and mass; docs/model.md §8.4).
+    /// Thickness of the outer walls, m.
+    pub wall_thickness_m: Option<f64>,
+    /// Thickness of the base slab, m.
+    pub slab_thickness_m: Option<f64>,
+    /// Thickness of the partition walls, m (needed with more than one cell).
+    pub partition_thickness_m: Option<f64>,
+    /// Cells across (in the wave direction). Default 1.
+    pub cells_across: Option<i64>,
+    /// Cells along one caisson (alongshore). Default 1.
+    pub cells_along: Option<i64>,
+    /// Alongshore length of one caisson as built, m. Default `length_m`.
+    pub unit_length_m: Option<f64>,
+    /// Height of the concrete cap, m. Default 0.
+    pub cap_height_m: Option<f64>,
+    /// Walls and slab, kg/m³. Default 2450 (reinforced concrete).
+    pub concrete_density_kg_per_m3: Option<f64>,
+    /// The cap, kg/m³. Default 2300 (plain concrete).
+    pub cap_density_kg_per_m3: Option<f64>,
+    /// The fill below still water, kg/m³. Default 2000 (saturated sand).
+    pub fill_density_kg_per_m3: Option<f64>,
+    /// The fill above still water, kg/m³. Default 1800 (moist sand).
+    pub fill_density_above_water_kg_per_m3: Option<f64>,
 }
 
 /// `[foundation]`: interface springs, friction, soil stiffness and damping (seed §3.2-3.3).

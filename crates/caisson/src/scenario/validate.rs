@@ -13,7 +13,7 @@ use crate::foundation::{AddedMassSpec, DampingMode, FoundationSpec, Soil, Vertic
 use crate::loads::pulse::{StaticRamp, TrianglePulse};
 use crate::loads::series::ForceSeries;
 use crate::loads::{LoadSpec, WaveForce};
-use crate::structure::{Caisson, CaissonSpec, MassMatrix, MassSpec};
+use crate::structure::{Caisson, CaissonSpec, Construction, MassMatrix, MassSpec};
 use crate::Profile;
 use std::path::Path;
 
@@ -97,6 +97,11 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         fragility: None,
     };
     if f.campaign.is_some() {
+        if sc.caisson_spec.construction().is_some() {
+            return Err(ScenarioError::Conflict {
+                message: "a campaign gives the caisson's weight in water in each condition (`[campaign] weights_in_water_kn` or `weight_in_water_kn` of its conditions), which would replace the construction of `[caisson]` (`wall_thickness_m`, ...): give the caisson by its weight in water instead".into(),
+            });
+        }
         sc.campaign = Some(campaign::validate_campaign(f)?);
         // Every condition must build (its height, weight and regime on this scenario).
         sc.campaign()?;
@@ -122,21 +127,9 @@ fn caisson_spec(f: &ScenarioFile) -> R<CaissonSpec> {
         c.base_depth_m,
         "h', the depth of the base below still water, m (from 0 to height_m)",
     )?;
-    // Forces are converted from kN here: check them in the file's unit first.
-    let weight = |w: f64| positive("[caisson] weight_in_water_kn", w, "kN").map(|w| w * 1e3);
-    let mass = match (c.weight_in_water_kn, c.mass_kg) {
-        (None, None) => {
-            return Err(ScenarioError::missing(
-                "[caisson] weight_in_water_kn",
-                "give the weight in water (kN) or the mass in air `mass_kg`, or both",
-            ))
-        }
-        (Some(w), None) => MassSpec::WeightInWater { weight_in_water_n: weight(w)? },
-        (None, Some(m)) => MassSpec::MassInAir { mass_kg: m },
-        (Some(w), Some(m)) => {
-            positive("[caisson] mass_kg", m, "kg")?;
-            MassSpec::Both { mass_kg: m, weight_in_water_n: weight(w)? }
-        }
+    let mass = match construction(c)? {
+        Some(built) => MassSpec::Construction(built),
+        None => weight_or_mass(c)?,
     };
     let mass_matrix = match &c.mass_matrix {
         Some(s) => Some(choice(
@@ -156,6 +149,113 @@ fn caisson_spec(f: &ScenarioFile) -> R<CaissonSpec> {
         inertia_cog_kg_m2: c.inertia_kg_m2,
         mass_matrix,
     })
+}
+
+/// The weight route of `[caisson]`: the weight in water, the mass in air, or both.
+fn weight_or_mass(c: &super::CaissonTable) -> R<MassSpec> {
+    // Forces are converted from kN here: check them in the file's unit first.
+    let weight = |w: f64| positive("[caisson] weight_in_water_kn", w, "kN").map(|w| w * 1e3);
+    Ok(match (c.weight_in_water_kn, c.mass_kg) {
+        (None, None) => {
+            return Err(ScenarioError::missing(
+                "[caisson] weight_in_water_kn",
+                "give the weight in water (kN) or the mass in air `mass_kg`, or both; or the construction (`wall_thickness_m`, `slab_thickness_m`, cells, densities: docs/scenario.md)",
+            ))
+        }
+        (Some(w), None) => MassSpec::WeightInWater { weight_in_water_n: weight(w)? },
+        (None, Some(m)) => MassSpec::MassInAir { mass_kg: m },
+        (Some(w), Some(m)) => {
+            positive("[caisson] mass_kg", m, "kg")?;
+            MassSpec::Both { mass_kg: m, weight_in_water_n: weight(w)? }
+        }
+    })
+}
+
+/// The construction route of `[caisson]` (docs/model.md §8.4), if any of its keys is given. It
+/// excludes the weight route (`weight_in_water_kn`, `mass_kg`) and the keys it computes
+/// (`cog_height_m`, `inertia_kg_m2`). Ranges and fits are checked by the [`Construction`] when the
+/// caisson is built.
+fn construction(c: &super::CaissonTable) -> R<Option<Construction>> {
+    let keys = [
+        ("wall_thickness_m", c.wall_thickness_m.is_some()),
+        ("slab_thickness_m", c.slab_thickness_m.is_some()),
+        ("partition_thickness_m", c.partition_thickness_m.is_some()),
+        ("cells_across", c.cells_across.is_some()),
+        ("cells_along", c.cells_along.is_some()),
+        ("unit_length_m", c.unit_length_m.is_some()),
+        ("cap_height_m", c.cap_height_m.is_some()),
+        ("concrete_density_kg_per_m3", c.concrete_density_kg_per_m3.is_some()),
+        ("cap_density_kg_per_m3", c.cap_density_kg_per_m3.is_some()),
+        ("fill_density_kg_per_m3", c.fill_density_kg_per_m3.is_some()),
+        ("fill_density_above_water_kg_per_m3", c.fill_density_above_water_kg_per_m3.is_some()),
+    ];
+    let Some(first) = keys.iter().find(|(_, given)| *given).map(|(k, _)| *k) else {
+        return Ok(None);
+    };
+    for (key, given) in [("weight_in_water_kn", c.weight_in_water_kn.is_some()), ("mass_kg", c.mass_kg.is_some())] {
+        if given {
+            return Err(ScenarioError::Conflict {
+                message: format!(
+                    "`[caisson] {key}` and `[caisson] {first}` are two routes to the caisson's weight: give the weight in water (or the mass), or the construction (wall and slab thicknesses, cells, densities), not both"
+                ),
+            });
+        }
+    }
+    for (key, given) in [("cog_height_m", c.cog_height_m.is_some()), ("inertia_kg_m2", c.inertia_kg_m2.is_some())] {
+        if given {
+            return Err(ScenarioError::Conflict {
+                message: format!(
+                    "`[caisson] {key}` is computed from the construction (`[caisson] {first}`, ...); remove it, or give the caisson by its weight in water"
+                ),
+            });
+        }
+    }
+    let required = |key: &str, v: Option<f64>, hint: &str| v.ok_or_else(|| ScenarioError::missing(key, hint));
+    let wall = required(
+        "[caisson] wall_thickness_m",
+        c.wall_thickness_m,
+        "the thickness of the outer walls, m, for a caisson given by its construction (or give `weight_in_water_kn` instead)",
+    )?;
+    let slab = required(
+        "[caisson] slab_thickness_m",
+        c.slab_thickness_m,
+        "the thickness of the base slab, m, for a caisson given by its construction (or give `weight_in_water_kn` instead)",
+    )?;
+    let cells = |key: &str, v: Option<i64>| match v {
+        Some(n) => whole(&format!("[caisson] {key}"), n, 1, 100),
+        None => Ok(1),
+    };
+    let (across, along) = (cells("cells_across", c.cells_across)?, cells("cells_along", c.cells_along)?);
+    let partition_thickness_m = match (c.partition_thickness_m, across > 1 || along > 1) {
+        (Some(t), true) => t,
+        (None, true) => {
+            return Err(ScenarioError::missing(
+                "[caisson] partition_thickness_m",
+                format!("the thickness of the partition walls between the {across} × {along} cells, m"),
+            ))
+        }
+        (Some(_), false) => {
+            return Err(ScenarioError::Conflict {
+                message: "`[caisson] partition_thickness_m` is given but the caisson has one cell (`cells_across` = `cells_along` = 1): remove it, or give the number of cells".into(),
+            })
+        }
+        (None, false) => 0.0,
+    };
+    let d = Construction::new(wall, slab);
+    Ok(Some(Construction {
+        partition_thickness_m,
+        cells_across: across,
+        cells_along: along,
+        unit_length_m: c.unit_length_m,
+        cap_height_m: c.cap_height_m.unwrap_or(d.cap_height_m),
+        concrete_density_kg_per_m3: c.concrete_density_kg_per_m3.unwrap_or(d.concrete_density_kg_per_m3),
+        cap_density_kg_per_m3: c.cap_density_kg_per_m3.unwrap_or(d.cap_density_kg_per_m3),
+        fill_density_kg_per_m3: c.fill_density_kg_per_m3.unwrap_or(d.fill_density_kg_per_m3),
+        fill_density_above_water_kg_per_m3: c
+            .fill_density_above_water_kg_per_m3
+            .unwrap_or(d.fill_density_above_water_kg_per_m3),
+        ..d
+    }))
 }
 
 fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {

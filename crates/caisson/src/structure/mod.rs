@@ -14,7 +14,14 @@
 //! The seed's Eq. 24 drops the coupling: M = diag(m, m, I_G + m y_G²) ([`MassMatrix::Diagonal`]).
 //!
 //! Mass and weight in water are related through the displaced water (docs/model.md §8.2, item 5):
-//! m_c = W'/g + ρ_w B l h', with h' the base depth below still water.
+//! m_c = W'/g + ρ_w B l h', with h' the base depth below still water. The caisson is given by its
+//! weight in water, its mass, or both ([`MassSpec`]), or by its construction ([`Construction`]:
+//! walls, slab, cells, fill and cap, docs/model.md §8.4), from which W', the mass, the centre of
+//! gravity and the inertia follow for whatever width it is built with.
+
+pub mod construction;
+
+pub use construction::{Construction, MassProperties};
 
 use crate::check::{between, positive, positive_up_to, rule};
 use crate::{ParamError, Profile, G_M_PER_S2};
@@ -42,11 +49,15 @@ pub enum MassSpec {
     MassInAir { mass_kg: f64 },
     /// Both given (no check that they agree with the displaced water).
     Both { mass_kg: f64, weight_in_water_n: f64 },
+    /// The construction: the mass, the weight in water, the centre of gravity and the inertia
+    /// follow from it and the outer dimensions ([`Construction::mass_properties`]).
+    Construction(Construction),
 }
 
 /// The caisson as specified (SI, totals): what [`Caisson`] is derived from. Vary a field and
 /// [`CaissonSpec::build`] again to get a consistent caisson (the mass follows the weight, the
-/// default inertia follows the mass).
+/// default inertia follows the mass; a caisson given by its construction gets the weight, mass,
+/// centre of gravity and inertia of its new width, height or base depth).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct CaissonSpec {
     /// B, base width in the wave direction, m.
@@ -57,9 +68,11 @@ pub struct CaissonSpec {
     /// h', depth of the base below still water, m (0 to the height).
     pub base_depth_m: f64,
     pub mass: MassSpec,
-    /// y_G, m above the base; `None`: half the height.
+    /// y_G, m above the base; `None`: half the height, or the construction's. Refused with a
+    /// construction (which gives it).
     pub cog_height_m: Option<f64>,
-    /// I_G, kg·m² about the centre of gravity; `None`: a uniform block, m (B² + h²)/12.
+    /// I_G, kg·m² about the centre of gravity; `None`: a uniform block, m (B² + h²)/12, or the
+    /// construction's. Refused with a construction (which gives it).
     pub inertia_cog_kg_m2: Option<f64>,
     /// `None`: the profile's (coupled for `consistent`, diagonal for `seed-2011`).
     pub mass_matrix: Option<MassMatrix>,
@@ -83,10 +96,17 @@ impl CaissonSpec {
             ));
         }
         let displaced = Caisson::displaced_water_kg(width_m, length_m, base_depth_m, height_m, rho_w);
+        // The centre of gravity and inertia of a construction.
+        let mut built = None;
         let (mass_kg, weight_in_water_n) = match self.mass {
             MassSpec::WeightInWater { weight_in_water_n } => {
                 let w = positive_up_to("weight_in_water_n", weight_in_water_n, 1e11)?;
                 (Caisson::mass_from_weight_in_water(w, displaced), w)
+            }
+            MassSpec::Construction(c) => {
+                let p = c.mass_properties(width_m, length_m, height_m, base_depth_m, rho_w)?;
+                built = Some(p);
+                (p.mass_kg, p.weight_in_water_n)
             }
             MassSpec::MassInAir { mass_kg } => {
                 let m = positive("mass_kg", mass_kg)?;
@@ -103,13 +123,24 @@ impl CaissonSpec {
                 (positive("mass_kg", mass_kg)?, positive("weight_in_water_n", weight_in_water_n)?)
             }
         };
-        let cog_height_m = match self.cog_height_m {
-            Some(v) => between("cog_height_m", v, 0.0, height_m)?,
-            None => 0.5 * height_m,
+        let given = |quantity: &'static str, v: f64| {
+            rule(
+                quantity,
+                v,
+                "is computed from the construction (wall and slab thicknesses, cells, densities); remove it",
+            )
         };
-        let inertia_cog_kg_m2 = match self.inertia_cog_kg_m2 {
-            Some(v) => positive("inertia_cog_kg_m2", v)?,
-            None => Caisson::uniform_block_inertia_kg_m2(mass_kg, width_m, height_m),
+        let cog_height_m = match (self.cog_height_m, built) {
+            (Some(v), Some(_)) => return Err(given("cog_height_m", v)),
+            (Some(v), None) => between("cog_height_m", v, 0.0, height_m)?,
+            (None, Some(p)) => p.cog_height_m,
+            (None, None) => 0.5 * height_m,
+        };
+        let inertia_cog_kg_m2 = match (self.inertia_cog_kg_m2, built) {
+            (Some(v), Some(_)) => return Err(given("inertia_cog_kg_m2", v)),
+            (Some(v), None) => positive("inertia_cog_kg_m2", v)?,
+            (None, Some(p)) => p.inertia_cog_kg_m2,
+            (None, None) => Caisson::uniform_block_inertia_kg_m2(mass_kg, width_m, height_m),
         };
         Ok(Caisson {
             width_m,
@@ -128,10 +159,27 @@ impl CaissonSpec {
     }
 
     /// The same caisson with another weight in water (N): the mass then follows from the
-    /// displaced water, as for a caisson given by its weight.
+    /// displaced water, as for a caisson given by its weight (a construction is replaced by the
+    /// weight; its centre of gravity and inertia then take their defaults).
     pub fn with_weight_in_water_n(mut self, weight_in_water_n: f64) -> Self {
         self.mass = MassSpec::WeightInWater { weight_in_water_n };
         self
+    }
+
+    /// The same caisson with another base width B (m). Built, a caisson given by its
+    /// construction gets the weight in water, mass, centre of gravity and inertia of that width;
+    /// one given by its weight or mass keeps it (the default inertia follows the width).
+    pub fn with_width_m(mut self, width_m: f64) -> Self {
+        self.width_m = width_m;
+        self
+    }
+
+    /// The construction, if the caisson is given by it.
+    pub fn construction(&self) -> Option<&Construction> {
+        match &self.mass {
+            MassSpec::Construction(c) => Some(c),
+            _ => None,
+        }
     }
 }
 
