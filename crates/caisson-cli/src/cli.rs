@@ -55,6 +55,8 @@ pub enum Command {
     Design(DesignArgs),
     /// Fragility curves: P(storm sliding > limit) against H1/3 at the structure, lognormal fits.
     Fragility(FragilityArgs),
+    /// Sizing: the smallest caisson width whose lifetime sliding meets the `[size]` criterion.
+    Size(SizeArgs),
 }
 
 #[derive(Args, Debug)]
@@ -100,6 +102,22 @@ pub struct DesignArgs {
     /// Stop after this many lives (to exercise --resume).
     #[arg(long, hide = true)]
     pub stop_after: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct SizeArgs {
+    /// Sizing file (TOML): a design scenario (`[design]`) with a `[size]` table and the caisson's
+    /// construction.
+    pub scenario: PathBuf,
+    /// Print the results as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// Write size.json, candidates.csv and design_curve.svg here.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Worker threads (0: one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0, value_parser = threads)]
+    pub threads: usize,
 }
 
 #[derive(Args, Debug)]

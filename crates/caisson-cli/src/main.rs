@@ -10,6 +10,7 @@ mod cmd_design;
 mod cmd_fragility;
 mod cmd_loads;
 mod cmd_run;
+mod cmd_size;
 mod cmd_spectrum;
 mod cmd_validation;
 mod output;
@@ -123,6 +124,7 @@ fn main() -> ExitCode {
         cli::Command::Campaign(a) => cmd_campaign::run(a),
         cli::Command::Validation(a) => cmd_validation::run(a),
         cli::Command::Design(a) => cmd_design::run(a),
+        cli::Command::Size(a) => cmd_size::run(a),
         cli::Command::Fragility(a) => cmd_fragility::run(a),
     };
     match result {

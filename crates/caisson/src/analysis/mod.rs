@@ -13,6 +13,7 @@ pub mod closed_form;
 pub mod fragility;
 pub mod lifetime;
 pub mod run;
+pub mod sizing;
 pub mod spectrum;
 pub mod train;
 

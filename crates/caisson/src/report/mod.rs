@@ -11,6 +11,7 @@ pub mod design;
 pub mod fragility;
 pub mod loads;
 pub mod run;
+pub mod size;
 pub mod spectrum;
 pub mod train;
 

@@ -16,12 +16,14 @@
 pub mod campaign;
 pub mod design;
 pub mod fragility;
+pub mod size;
 mod validate;
 pub mod waves;
 
 use crate::analysis::campaign::Campaign;
 use crate::analysis::fragility::FragilityParams;
 use crate::analysis::lifetime::{DesignParams, StormCase};
+use crate::analysis::sizing::SizeParams;
 use crate::analysis::train::{TrainCase, WaveSetup};
 use crate::analysis::Structure;
 use crate::dynamics::SolverParams;
@@ -158,6 +160,7 @@ pub struct ScenarioFile {
     pub campaign: Option<campaign::CampaignTable>,
     pub design: Option<design::DesignTable>,
     pub fragility: Option<fragility::FragilityTable>,
+    pub size: Option<size::SizeTable>,
 }
 
 /// `[model]`: which reading of the seed sets the defaults.
@@ -345,6 +348,8 @@ pub struct Scenario {
     pub design: Option<DesignParams>,
     /// `[fragility]`.
     pub fragility: Option<FragilityParams>,
+    /// `[size]`.
+    pub size: Option<SizeParams>,
 }
 
 impl Scenario {
@@ -461,6 +466,16 @@ impl Scenario {
             ScenarioError::missing(
                 "[fragility]",
                 format!("{what} needs a [fragility] table with significant_heights_m (and storms, limits_m, ...)"),
+            )
+        })
+    }
+
+    /// The `[size]` of the scenario, or an error saying it is missing.
+    pub fn size_for(&self, what: &str) -> Result<&SizeParams, ScenarioError> {
+        self.size.as_ref().ok_or_else(|| {
+            ScenarioError::missing(
+                "[size]",
+                format!("{what} needs a [size] table: range_m and a criterion (expected_sliding_m, ...)"),
             )
         })
     }

@@ -4,8 +4,8 @@
 //! together) and names the key of every error.
 
 use super::{
-    campaign, design, fragility, keyed, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS, FOUNDATION_KEYS,
-    LOAD_KEYS, SOLVER_KEYS,
+    campaign, design, fragility, keyed, size, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
+    FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
 use crate::dynamics::{AdaptiveParams, SolverParams};
@@ -95,6 +95,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         campaign: None,
         design: None,
         fragility: None,
+        size: None,
     };
     if f.campaign.is_some() {
         if sc.caisson_spec.construction().is_some() {
@@ -111,6 +112,12 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
     }
     if f.fragility.is_some() {
         sc.fragility = Some(fragility::validate_fragility(f, &sc)?);
+    }
+    if f.size.is_some() {
+        let lives = sc.design.as_ref().map(|d| d.lives).ok_or_else(|| {
+            ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
+        })?;
+        sc.size = Some(size::validate_size(f, lives)?);
     }
     Ok(sc)
 }

@@ -1,0 +1,319 @@
+//! `caisson size FILE.toml [--json] [--out DIR] [--threads N]`: the smallest caisson width that
+//! meets the `[size]` criterion over the life of `[design]` (docs/size.md), with the rigid block's
+//! and Goda's deterministic widths beside it.
+
+use crate::cli::SizeArgs;
+use crate::input_err;
+use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
+use crate::plot::{panels, Panel, Series};
+use anyhow::{Context, Result};
+use caisson::analysis::checks::structure_warnings;
+use caisson::analysis::lifetime::{run_lives, StormOutcome};
+use caisson::analysis::sizing::{
+    bisection_steps, candidate, curve_widths, size, smallest_width_reaching, Candidate, Reached, Required, SizedModel,
+};
+use caisson::report::size::{GodaWidth, SizeReport};
+use caisson::scenario::{self, Scenario};
+use std::fmt::Write as _;
+use std::ops::ControlFlow;
+use std::path::Path;
+
+/// The static sliding safety factor of Goda's deterministic design.
+pub const GODA_SAFETY_FACTOR: f64 = 1.2;
+/// Width tolerance of the deterministic (Goda) width, m.
+const GODA_TOLERANCE_M: f64 = 1e-3;
+
+/// The scenario with the caisson `width_m` wide (its construction gives the weight).
+fn at_width(sc: &Scenario, width_m: f64) -> Result<Scenario> {
+    sc.clone()
+        .with_caisson(|c| *c = c.with_width_m(width_m))
+        .map_err(|e| input_err(format!("at the width {width_m} m of the search: {e}")))
+}
+
+/// Goda's static sliding safety factor of the scenario's design wave on `sc`'s caisson.
+fn goda_safety(sc: &Scenario) -> Option<f64> {
+    let ws = sc.waves.as_ref()?;
+    let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).ok()?;
+    ws.model.safety(&loads, sc.caisson().weight_in_water_n, sc.foundation().mu_static).sliding
+}
+
+pub fn run(args: SizeArgs) -> Result<()> {
+    let sc = scenario::load(&args.scenario).map_err(input_err)?;
+    let p = *sc.size_for("`caisson size`").map_err(input_err)?;
+    let design = sc.design_for("`caisson size`").map_err(input_err)?.clone();
+    if sc.caisson_spec().construction().is_none() {
+        return Err(input_err(
+            "`caisson size` varies the width, so the caisson's weight must follow it: give `[caisson]` its construction (wall_thickness_m, slab_thickness_m, fill_density_kg_per_m3, ...; docs/scenario.md) instead of `weight_in_water_kn`",
+        ));
+    }
+    check_out_dir(args.out.as_deref())?;
+    // Every width of the grid must build (a width whose caisson floats is an input error).
+    for w in curve_widths(&p) {
+        at_width(&sc, w)?.storm_case(design.screen).map_err(input_err)?;
+    }
+    let grid = curve_widths(&p).len();
+    let estimate = grid + 2 * bisection_steps(&p, (p.range_m.1 - p.range_m.0) / (grid - 1) as f64);
+    let pb = progress((estimate * p.lives) as u64, "candidates", "lives");
+    let mut evaluate = |w: f64| -> Result<Candidate> {
+        let sw = at_width(&sc, w)?;
+        let case = sw.storm_case(design.screen).map_err(input_err)?;
+        pb.set_message(format!("B = {w:.3} m"));
+        let indices: Vec<usize> = (0..p.lives).collect();
+        let on_life = |_: usize, _: &StormOutcome| {
+            pb.inc(1);
+            if crate::interrupt::requested() {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
+        let lives = with_threads(args.threads, || run_lives(&case, &design.life, design.seed, &indices, &on_life))?
+            .with_context(|| format!("the lives at the width {w} m"))?;
+        if lives.len() < p.lives {
+            return Err(anyhow::Error::new(crate::Interrupted(
+                "interrupted (Ctrl-C): nothing was written; the candidates already computed are lost (a sizing run keeps no checkpoint yet)".into(),
+            )));
+        }
+        let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
+        let failure_m = design.failure_limit_m(w);
+        Ok(candidate(w, sw.caisson().weight_in_water_n, &outcomes, failure_m, &p.criteria))
+    };
+    if !args.json {
+        crate::sayln!("Sizing the width over {} .. {} m: {} lives per candidate", p.range_m.0, p.range_m.1, p.lives);
+    }
+    crate::interrupt::graceful();
+    let sizing = size(&p, &mut evaluate)?;
+    pb.finish_and_clear();
+    let goda_width = smallest_width_reaching(p.range_m, GODA_SAFETY_FACTOR, GODA_TOLERANCE_M, &mut |w| {
+        at_width(&sc, w).ok().and_then(|s| goda_safety(&s))
+    });
+    let goda = GodaWidth { safety_factor: GODA_SAFETY_FACTOR, reached: goda_width };
+    let extra = |c: &Candidate| {
+        (design.failure_limit_m(c.width_m), at_width(&sc, c.width_m).ok().and_then(|s| goda_safety(&s)))
+    };
+    let mut report = SizeReport::new(&p, design.life.life_years, design.seed, &sizing, goda, &extra);
+    report.warnings = structure_warnings(sc.structure());
+    report.warnings.extend(range_warnings(&report));
+    // Absent values (a width beyond the range, an undefined safety factor) are `null`: check
+    // the report's numbers themselves.
+    crate::output::check_finite_fields(&report, "size").map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
+    let json = serde_json::to_value(&report).context("serializing the results")?;
+    crate::output::print_warnings(&report.warnings);
+    if args.json {
+        crate::sayln!("{}", pretty(&json)?);
+    } else {
+        crate::say!("{}", size_text(&report));
+    }
+    if let Some(dir) = &args.out {
+        ensure_dir(dir)?;
+        write_atomic(&dir.join("size.json"), pretty(&json)?.as_bytes())?;
+        write_atomic(&dir.join("candidates.csv"), &candidates_csv(&report)?)?;
+        let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("size");
+        plot(dir, title, &report)?;
+        if !args.json {
+            crate::sayln!("\nWrote size.json, candidates.csv, design_curve.svg to {}", dir.display());
+        }
+    }
+    Ok(())
+}
+
+/// Warnings when the range does not bracket the answer.
+fn range_warnings(r: &SizeReport) -> Vec<caisson::analysis::checks::Warning> {
+    let mut out = Vec::new();
+    for (name, req) in [("dynamic model", &r.dynamic), ("rigid block", &r.rigid_block)] {
+        let (code, message) = match req {
+            Required::AtLowerBound { width_m } => (
+                "size-at-lower-bound",
+                format!("the {name} meets the criterion already at the smallest width {width_m} m: lower `[size] range_m`'s first value to find the required width"),
+            ),
+            Required::NotInRange { largest_m } => (
+                "size-not-in-range",
+                format!("the {name} does not meet the criterion at the largest width {largest_m} m: raise `[size] range_m`'s second value"),
+            ),
+            Required::Found { .. } => continue,
+        };
+        out.push(caisson::analysis::checks::Warning {
+            code,
+            message,
+            numbers: [("range_low_m", r.range_m.0), ("range_high_m", r.range_m.1)].into_iter().collect(),
+        });
+    }
+    out
+}
+
+fn required_text(req: &Required) -> String {
+    match req {
+        Required::Found { width_m, bracket_m, interval_m, confidence } => {
+            let bound = |b: Option<f64>| b.map_or("beyond the range".to_string(), |v| format!("{v:.2} m"));
+            format!(
+                "{width_m:.2} m (bracket {:.2}-{:.2} m; 90 % Monte Carlo interval {} to {}; criterion met with probability {:.2})",
+                bracket_m.0,
+                bracket_m.1,
+                bound(interval_m.0),
+                bound(interval_m.1),
+                confidence
+            )
+        }
+        Required::AtLowerBound { width_m } => format!("≤ {width_m:.2} m (the smallest width of the range meets it)"),
+        Required::NotInRange { largest_m } => format!("> {largest_m:.2} m (no width of the range meets it)"),
+    }
+}
+
+/// The text summary.
+fn size_text(r: &SizeReport) -> String {
+    let mut t = String::new();
+    let c = &r.criteria;
+    let mut crit = Vec::new();
+    if let Some(s) = c.expected_sliding_m {
+        crit.push(format!("E|S| ≤ {s} m"));
+    }
+    if let Some(e) = c.exceedance {
+        crit.push(format!("P(|S| > {} m) ≤ {}", e.sliding_m, e.probability));
+    }
+    if let Some(f) = c.failure_probability {
+        crit.push(format!("P(failure) ≤ {f}"));
+    }
+    let _ = writeln!(
+        t,
+        "criterion over a life of {} years: {}; {} lives per width (seed {}, the same lives at every width)",
+        r.life_years,
+        crit.join(" and "),
+        r.lives_per_candidate,
+        r.seed
+    );
+    let _ = writeln!(t);
+    let _ = writeln!(t, "required width, dynamic model   {}", required_text(&r.dynamic));
+    let _ = writeln!(t, "required width, rigid block     {}", required_text(&r.rigid_block));
+    let goda = match r.goda.reached {
+        Reached::Found { width_m } => format!("{width_m:.2} m"),
+        Reached::AtLowerBound { width_m } => format!("≤ {width_m:.2} m (the smallest width of the range reaches it)"),
+        Reached::NotInRange { largest_m } => format!("> {largest_m:.2} m (no width of the range reaches it)"),
+    };
+    let _ = writeln!(
+        t,
+        "Goda's deterministic width      {goda} (static sliding safety factor {} under the design wave)",
+        r.goda.safety_factor
+    );
+    let _ = writeln!(t);
+    let _ = writeln!(
+        t,
+        "  B (m)   W' (kN/m)  Goda SF   E|S| dynamic (± SE)    E|S| rigid block   P(|S|>S_lim) dyn  P(fail) dyn  meets"
+    );
+    for k in &r.candidates {
+        let _ = writeln!(
+            t,
+            "{:7.2} {:11.0} {:8} {:10.4} ± {:<8.4} m {:10.4} m {:>16.4} {:>12.4}  {}{}",
+            k.width_m,
+            k.weight_in_water_kn,
+            k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.3}")),
+            k.dynamic.expected_sliding_m,
+            k.dynamic.expected_sliding_se_m,
+            k.rigid_block.expected_sliding_m,
+            k.dynamic.exceedance_probability,
+            k.dynamic.failure_probability,
+            if k.dynamic_meets { "dynamic" } else { "-" },
+            if k.rigid_block_meets { ", rigid block" } else { "" }
+        );
+    }
+    let _ = writeln!(t, "\n{} lives simulated in {} candidates", r.lives_simulated, r.candidates.len());
+    t
+}
+
+fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let model_cols = [
+        "expected_sliding_m",
+        "expected_sliding_se_m",
+        "p50_m",
+        "p95_m",
+        "exceedance_probability",
+        "failure_probability",
+    ];
+    let mut header = vec![
+        "width_m".to_string(),
+        "weight_in_water_kn".into(),
+        "failure_sliding_m".into(),
+        "goda_sliding_safety_factor".into(),
+    ];
+    for m in ["dynamic", "rigid_block"] {
+        header.extend(model_cols.iter().map(|c| format!("{m}_{c}")));
+    }
+    header.extend(["dynamic_meets".to_string(), "rigid_block_meets".into()]);
+    w.write_record(&header)?;
+    for k in &r.candidates {
+        let mut row = vec![
+            format!("{:e}", k.width_m),
+            format!("{:e}", k.weight_in_water_kn),
+            format!("{:e}", k.failure_sliding_m),
+            k.goda_sliding_safety_factor.map_or(String::new(), |v| format!("{v:e}")),
+        ];
+        for p in [&k.dynamic, &k.rigid_block] {
+            row.extend(
+                [
+                    p.expected_sliding_m,
+                    p.expected_sliding_se_m,
+                    p.p50_m,
+                    p.p95_m,
+                    p.exceedance_probability,
+                    p.failure_probability,
+                ]
+                .iter()
+                .map(|v| format!("{v:e}")),
+            );
+        }
+        row.extend([k.dynamic_meets.to_string(), k.rigid_block_meets.to_string()]);
+        w.write_record(&row)?;
+    }
+    Ok(w.into_inner()?)
+}
+
+/// The design curve: E|S| (with its 90 % band) and the 95 % value against width for both models,
+/// the criterion and the required widths.
+fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
+    let pts = |f: &dyn Fn(&caisson::report::size::CandidateReport) -> f64| -> Vec<(f64, f64)> {
+        r.candidates.iter().map(|k| (k.width_m, f(k))).collect()
+    };
+    let band = |m: SizedModel| -> Vec<(f64, f64)> {
+        r.candidates
+            .iter()
+            .map(|k| {
+                let p = if m == SizedModel::Dynamic { &k.dynamic } else { &k.rigid_block };
+                let z = caisson::analysis::sizing::Z95;
+                (
+                    (p.expected_sliding_m - z * p.expected_sliding_se_m).max(0.0),
+                    p.expected_sliding_m + z * p.expected_sliding_se_m,
+                )
+            })
+            .collect()
+    };
+    let mut series = vec![
+        Series::ranges(
+            "dynamic model E|S| (90 % band)",
+            pts(&|k| k.dynamic.expected_sliding_m),
+            band(SizedModel::Dynamic),
+        ),
+        Series::line("", pts(&|k| k.dynamic.expected_sliding_m)),
+        Series::dashed("rigid block E|S|", pts(&|k| k.rigid_block.expected_sliding_m)),
+        Series::line("dynamic model, 95 % of |S|", pts(&|k| k.dynamic.p95_m)),
+    ];
+    let (lo, hi) = r.range_m;
+    if let Some(s) = r.criteria.expected_sliding_m {
+        series.push(Series::dashed(format!("criterion E|S| = {s} m"), vec![(lo, s), (hi, s)]));
+    }
+    let top = r.candidates.iter().map(|k| k.dynamic.p95_m.max(k.rigid_block.expected_sliding_m)).fold(0.0, f64::max);
+    for (name, w) in [
+        ("required, dynamic", r.dynamic.width_m()),
+        ("required, rigid block", r.rigid_block.width_m()),
+        ("Goda SF 1.2", r.goda.reached.width_m()),
+    ] {
+        if let Some(w) = w {
+            series.push(Series::markers(format!("{name}: {w:.2} m"), vec![(w, 0.0), (w, top)]));
+        }
+    }
+    panels(
+        &dir.join("design_curve.svg"),
+        &format!("{title}: sliding over the life against the caisson width"),
+        "caisson width B (m)",
+        &[Panel { y_label: "sliding over the life (m)".into(), series }],
+    )
+}

@@ -1,0 +1,148 @@
+//! `caisson size`: the same answer on any thread count, a required width monotone in the allowed
+//! sliding, the comparison widths, and keyed errors for `[size]`.
+
+mod support;
+
+use serde_json::Value;
+use support::{caisson, refused, write};
+
+/// A prototype caisson given by its construction (its weight follows its width) under short,
+/// heavy storms, so that a life takes milliseconds and the answer lies inside the range.
+fn size_text(criterion: &str) -> String {
+    format!(
+        r#"[caisson]
+width_m = 20.0
+length_m = 1.0
+unit_length_m = 20.0
+height_m = 24.5
+base_depth_m = 17.5
+wall_thickness_m = 0.5
+slab_thickness_m = 0.8
+partition_thickness_m = 0.2
+cells_across = 4
+cells_along = 4
+cap_height_m = 2.0
+[foundation]
+mu_static = 0.6
+e100_kpa = 3.5e5
+density_kg_per_m3 = 2000
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 20.0
+depth_at_wall_m = 16.5
+seabed_slope = 0.01
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.8
+[solver]
+dt_s = 1e-3
+dt_max_s = 0.2
+error_tolerance_m = 1e-6
+[design]
+life_years = 5
+lives = 12
+seed = 3
+storm_distribution = "weibull"
+storm_scale_m = 1.5
+storm_shape = 1.4
+storm_location_m = 7.5
+storm_duration_h = 0.2
+tidal_range_m = 2.0
+[size]
+range_m = [8.0, 30.0]
+{criterion}
+tolerance_m = 0.5
+curve_points = 4
+"#
+    )
+}
+
+fn sized(dir: &std::path::Path, criterion: &str, threads: &str) -> (Vec<u8>, Value) {
+    let f = write(dir, "s.toml", &size_text(criterion));
+    let o = caisson().args(["size", f.to_str().unwrap(), "--json", "--threads", threads]).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: Value = serde_json::from_slice(&o.stdout).expect("JSON on stdout");
+    (o.stdout, j)
+}
+
+fn width(j: &Value, model: &str) -> f64 {
+    assert_eq!(j[model]["status"], "found", "{model}: {}", j[model]);
+    j[model]["width_m"].as_f64().unwrap()
+}
+
+#[test]
+fn the_answer_does_not_depend_on_the_thread_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let (one, j) = sized(dir.path(), "expected_sliding_m = 0.05", "1");
+    let (two, _) = sized(dir.path(), "expected_sliding_m = 0.05", "2");
+    assert_eq!(one, two, "size.json must not depend on the thread count");
+    // The search: 4 grid widths, then bisection to 0.5 m; no width twice; every candidate ran
+    // the 12 lives; the required width meets the criterion and the one below the bracket not.
+    let cands = j["candidates"].as_array().unwrap();
+    assert!(cands.len() >= 4, "{}", cands.len());
+    let widths: Vec<f64> = cands.iter().map(|c| c["width_m"].as_f64().unwrap()).collect();
+    assert!(widths.windows(2).all(|w| w[0] < w[1]), "sorted, no width twice: {widths:?}");
+    assert_eq!(j["lives_simulated"].as_u64(), Some(12 * cands.len() as u64));
+    let w = width(&j, "dynamic");
+    let b = j["dynamic"]["bracket_m"].as_array().unwrap();
+    let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+    assert!(hi == w && hi - lo <= 0.5, "bracket {lo}..{hi}, width {w}");
+    let at = |x: f64| cands.iter().find(|c| c["width_m"].as_f64() == Some(x)).unwrap();
+    assert_eq!(at(hi)["dynamic_meets"], true);
+    assert_eq!(at(lo)["dynamic_meets"], false);
+    assert!(at(hi)["dynamic"]["expected_sliding_m"].as_f64().unwrap() <= 0.05);
+    // Goda's deterministic width: its safety factor reaches 1.2 there (to 1 mm).
+    assert_eq!(j["goda"]["status"], "found");
+    assert!(j["goda"]["width_m"].as_f64().unwrap() > 8.0);
+}
+
+/// The required width grows as the allowed sliding falls (common random numbers: the same lives
+/// at every width and for every criterion), for both models.
+#[test]
+fn the_required_width_is_monotone_in_the_allowed_sliding() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut last = (f64::INFINITY, f64::INFINITY);
+    let mut checked = 0;
+    for s_a in [0.01, 0.05, 0.3, 1.0] {
+        let (_, j) = sized(dir.path(), &format!("expected_sliding_m = {s_a}"), "2");
+        let (d, r) = (width(&j, "dynamic"), width(&j, "rigid_block"));
+        assert!(d <= last.0 && r <= last.1, "S_a {s_a}: {d}, {r} after {last:?}");
+        last = (d, r);
+        checked += 1;
+    }
+    assert_eq!(checked, 4);
+    assert!(last.0 < 20.0, "a larger allowed sliding must allow a narrower caisson: {last:?}");
+}
+
+#[test]
+fn bad_size_input_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        ("range_m = [8.0, 30.0]", "range_m = [30.0, 8.0]", "[size] range_m"),
+        ("range_m = [8.0, 30.0]", "range_m = [8.0]", "[size] range_m"),
+        ("expected_sliding_m = 0.05", "", "[size] expected_sliding_m"),
+        ("expected_sliding_m = 0.05", "exceedance_sliding_m = 0.3", "[size] exceedance_probability"),
+        ("expected_sliding_m = 0.05", "failure_probability = 1.5", "[size] failure_probability"),
+        ("tolerance_m = 0.5", "tolerance_m = 0.0", "[size] tolerance_m"),
+        ("curve_points = 4", "curve_points = 1", "[size] curve_points"),
+        ("[size]", "[size]\nvariable = \"height_m\"", "[size] variable"),
+    ];
+    let mut n = 0;
+    for (from, to, key) in cases {
+        let text = size_text("expected_sliding_m = 0.05").replace(from, to);
+        assert_ne!(text, size_text("expected_sliding_m = 0.05"), "{from} must be in the file");
+        let f = write(dir.path(), "bad.toml", &text);
+        refused(&["size", f.to_str().unwrap()], &[key]);
+        n += 1;
+    }
+    assert_eq!(n, 8);
+    // A caisson given by its weight cannot be sized by width: its weight would not follow.
+    let text = size_text("expected_sliding_m = 0.05").replace("unit_length_m = 20.0\n", "").replace(
+        "wall_thickness_m = 0.5\nslab_thickness_m = 0.8\npartition_thickness_m = 0.2\ncells_across = 4\ncells_along = 4\ncap_height_m = 2.0\n",
+        "weight_in_water_kn = 6000.0\n",
+    );
+    assert!(text.contains("weight_in_water_kn") && !text.contains("wall_thickness_m"));
+    let f = write(dir.path(), "weight.toml", &text);
+    refused(&["size", f.to_str().unwrap()], &["construction", "weight_in_water_kn"]);
+}

@@ -1,0 +1,476 @@
+//! Sizing (docs/size.md): the smallest caisson width whose lifetime sliding meets a performance
+//! criterion, found with the lifetime Monte Carlo of [`super::lifetime`] run at candidate widths.
+//!
+//! **Criteria** (any combination; all must hold), on the life's sliding magnitude |S| and the
+//! failure of [`super::lifetime::StormOutcome::failed`]:
+//!
+//! * expected sliding E|S| ≤ S_a (Shimosako & Takahashi 1999: 0.3 m; Goda & Takagi 2000: 0.1 m);
+//! * P(|S| > S_lim) ≤ p;
+//! * P(failure) ≤ p_f.
+//!
+//! **Common random numbers.** Every candidate runs lives 0 … N − 1 of the same seed: life i sees
+//! the same storms, tides, estimation errors and wave heights at every width (the per-life
+//! streams do not depend on the caisson, and the screen draws every wave whether it simulates it
+//! or not), so the difference between two candidates is the width's, not the sampling's, and the
+//! curve of E|S| against width is smooth and monotone within the noise of the few lives that
+//! change their fate.
+//!
+//! **Search.** The criterion is evaluated on a grid of `curve_points` widths over the range (the
+//! design curve); the smallest grid width that meets it and the one below bracket the answer,
+//! which is then bisected until the bracket is narrower than `tolerance_m`; the required width is
+//! the bracket's upper end (it meets the criterion). The rigid block (Shimosako model, computed
+//! in the same lives) gets its own bracket and bisection from the same evaluations. Every
+//! evaluated width is kept (a width is never run twice).
+//!
+//! **Confidence.** With n lives, the standard error of E|S| is s/√n (s the sample standard
+//! deviation of |S|) and that of a probability p̂ is √(p̂(1 − p̂)/n). A criterion is *met with
+//! confidence* at a width if it holds at the upper 95 % bound (estimate + 1.645 SE, one-sided),
+//! and *possibly met* if it holds at the lower bound (estimate − 1.645 SE). The widths where the
+//! evaluated candidates change from not met to met under each bound give the 90 % (two-sided)
+//! Monte Carlo interval of the required width; the report also gives, at the required width,
+//! Φ(margin / SE) of the tightest criterion, the normal-approximation probability that the
+//! criterion is met.
+
+use super::fragility::normal_cdf;
+use super::lifetime::StormOutcome;
+use serde::Serialize;
+
+/// One-sided 95 % normal quantile.
+pub const Z95: f64 = 1.644_853_626_951_472_2;
+
+/// The performance criteria (all given ones must hold).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct Criteria {
+    /// E|S| ≤ this, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub expected_sliding_m: Option<f64>,
+    /// P(|S| > `sliding_m`) ≤ `probability`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exceedance: Option<ExceedanceCriterion>,
+    /// P(failure) ≤ this.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub failure_probability: Option<f64>,
+}
+
+/// P(|S| > sliding_m) ≤ probability.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ExceedanceCriterion {
+    pub sliding_m: f64,
+    pub probability: f64,
+}
+
+/// What sizing needs of one model at one width: the estimates and their standard errors.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ModelPoint {
+    /// E|S|, m.
+    pub expected_sliding_m: f64,
+    /// Its standard error, m.
+    pub expected_sliding_se_m: f64,
+    /// Median and 95 % value of |S| (nearest rank), m.
+    pub p50_m: f64,
+    pub p95_m: f64,
+    /// P(|S| > the criterion's S_lim) (0 without an exceedance criterion).
+    pub exceedance_probability: f64,
+    pub failure_probability: f64,
+}
+
+/// Which model a search is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SizedModel {
+    Dynamic,
+    RigidBlock,
+}
+
+/// One evaluated width.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Candidate {
+    pub width_m: f64,
+    /// W' of the caisson at this width, N.
+    pub weight_in_water_n: f64,
+    pub lives: usize,
+    pub dynamic: ModelPoint,
+    pub rigid_block: ModelPoint,
+}
+
+impl Candidate {
+    pub fn point(&self, m: SizedModel) -> &ModelPoint {
+        match m {
+            SizedModel::Dynamic => &self.dynamic,
+            SizedModel::RigidBlock => &self.rigid_block,
+        }
+    }
+}
+
+/// The statistics of one model over `n` lives: magnitudes |S| and failures.
+pub fn model_point(magnitudes: &[f64], failed: &[bool], criteria: &Criteria) -> ModelPoint {
+    let n = magnitudes.len().max(1) as f64;
+    let mean = magnitudes.iter().sum::<f64>() / n;
+    let var =
+        if magnitudes.len() > 1 { magnitudes.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
+    let mut sorted = magnitudes.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let pct = |p: f64| {
+        if sorted.is_empty() {
+            0.0
+        } else {
+            sorted[((p / 100.0 * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len()) - 1]
+        }
+    };
+    ModelPoint {
+        expected_sliding_m: mean,
+        expected_sliding_se_m: (var / n).sqrt(),
+        p50_m: pct(50.0),
+        p95_m: pct(95.0),
+        exceedance_probability: criteria
+            .exceedance
+            .map_or(0.0, |e| magnitudes.iter().filter(|&&x| x > e.sliding_m).count() as f64 / n),
+        failure_probability: failed.iter().filter(|&&f| f).count() as f64 / n,
+    }
+}
+
+/// The candidate of `lives` (their outcomes, in index order) at `width_m` with the failure limit
+/// `failure_m`.
+pub fn candidate(
+    width_m: f64,
+    weight_in_water_n: f64,
+    lives: &[StormOutcome],
+    failure_m: f64,
+    criteria: &Criteria,
+) -> Candidate {
+    let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
+    let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
+    let failed: Vec<bool> = lives.iter().map(|l| l.failed(failure_m)).collect();
+    let rigid_failed: Vec<bool> = rigid.iter().map(|&s| s > failure_m).collect();
+    Candidate {
+        width_m,
+        weight_in_water_n,
+        lives: lives.len(),
+        dynamic: model_point(&dynamic, &failed, criteria),
+        rigid_block: model_point(&rigid, &rigid_failed, criteria),
+    }
+}
+
+impl Criteria {
+    /// Whether any criterion is given.
+    pub fn any(&self) -> bool {
+        self.expected_sliding_m.is_some() || self.exceedance.is_some() || self.failure_probability.is_some()
+    }
+
+    /// The margins (allowed − estimate) and standard errors of the given criteria at `p` with
+    /// `n` lives.
+    fn margins(&self, p: &ModelPoint, n: usize) -> Vec<(f64, f64)> {
+        let n = n.max(1) as f64;
+        let prob_se = |q: f64| (q * (1.0 - q) / n).sqrt();
+        let mut out = Vec::with_capacity(3);
+        if let Some(s) = self.expected_sliding_m {
+            out.push((s - p.expected_sliding_m, p.expected_sliding_se_m));
+        }
+        if let Some(e) = self.exceedance {
+            out.push((e.probability - p.exceedance_probability, prob_se(p.exceedance_probability)));
+        }
+        if let Some(f) = self.failure_probability {
+            out.push((f - p.failure_probability, prob_se(p.failure_probability)));
+        }
+        out
+    }
+
+    /// Whether every criterion holds at the estimate shifted by `z` standard errors (z = 0: the
+    /// estimate; z = Z95: the upper bound, met with confidence; z = −Z95: possibly met).
+    pub fn met(&self, p: &ModelPoint, n: usize, z: f64) -> bool {
+        self.margins(p, n).iter().all(|&(margin, se)| margin - z * se >= 0.0)
+    }
+
+    /// Φ(margin/SE) of the tightest criterion: the normal-approximation probability that the
+    /// criterion is met, given the Monte Carlo noise (1 or 0 when the SE is 0).
+    pub fn confidence(&self, p: &ModelPoint, n: usize) -> f64 {
+        self.margins(p, n)
+            .iter()
+            .map(|&(margin, se)| {
+                if se > 0.0 {
+                    normal_cdf(margin / se)
+                } else if margin >= 0.0 {
+                    1.0
+                } else {
+                    0.0
+                }
+            })
+            .fold(1.0, f64::min)
+    }
+}
+
+/// The search's controls.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SizeParams {
+    /// The widths searched, m (lo < hi).
+    pub range_m: (f64, f64),
+    pub criteria: Criteria,
+    /// Lives per candidate.
+    pub lives: usize,
+    /// Width tolerance of the bisection, m.
+    pub tolerance_m: f64,
+    /// Widths of the design curve's grid (≥ 2, ends included).
+    pub curve_points: usize,
+}
+
+/// The answer for one model.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "status", rename_all = "snake_case")]
+pub enum Required {
+    /// The smallest width meeting the criterion, within the tolerance (the bracket's upper end),
+    /// with the Monte Carlo interval (where the candidates' lower and upper 95 % bounds change
+    /// from not met to met; `None` where the range holds no such change) and the confidence at
+    /// the required width.
+    Found { width_m: f64, bracket_m: (f64, f64), interval_m: (Option<f64>, Option<f64>), confidence: f64 },
+    /// Already the smallest width of the range meets it: widen the range downwards.
+    AtLowerBound { width_m: f64 },
+    /// No width of the range meets it: widen the range upwards.
+    NotInRange { largest_m: f64 },
+}
+
+impl Required {
+    pub fn width_m(&self) -> Option<f64> {
+        match self {
+            Required::Found { width_m, .. } | Required::AtLowerBound { width_m } => Some(*width_m),
+            Required::NotInRange { .. } => None,
+        }
+    }
+}
+
+/// The result of a search: every evaluated candidate (sorted by width) and the answers.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Sizing {
+    pub candidates: Vec<Candidate>,
+    pub dynamic: Required,
+    pub rigid_block: Required,
+}
+
+/// The grid widths of the design curve.
+pub fn curve_widths(p: &SizeParams) -> Vec<f64> {
+    let k = p.curve_points.max(2);
+    let (lo, hi) = p.range_m;
+    (0..k).map(|i| if i + 1 == k { hi } else { lo + (hi - lo) * i as f64 / (k - 1) as f64 }).collect()
+}
+
+/// How many bisection steps narrow a bracket of `width_m` to the tolerance.
+pub fn bisection_steps(p: &SizeParams, width_m: f64) -> usize {
+    if width_m <= p.tolerance_m {
+        0
+    } else {
+        (width_m / p.tolerance_m).log2().ceil() as usize
+    }
+}
+
+/// Search the width (module docs). `evaluate(width)` runs the lives at that width; it is called
+/// once per width, never twice for the same one.
+pub fn size<E>(p: &SizeParams, evaluate: &mut dyn FnMut(f64) -> Result<Candidate, E>) -> Result<Sizing, E> {
+    let mut done: Vec<Candidate> = Vec::new();
+    let mut eval = |w: f64, done: &mut Vec<Candidate>| -> Result<usize, E> {
+        if let Some(i) = done.iter().position(|c| c.width_m == w) {
+            return Ok(i);
+        }
+        done.push(evaluate(w)?);
+        Ok(done.len() - 1)
+    };
+    for w in curve_widths(p) {
+        eval(w, &mut done)?;
+    }
+    let mut answers = Vec::with_capacity(2);
+    for model in [SizedModel::Dynamic, SizedModel::RigidBlock] {
+        let meets = |c: &Candidate| p.criteria.met(c.point(model), c.lives, 0.0);
+        let mut grid: Vec<&Candidate> = done.iter().collect();
+        grid.sort_by(|a, b| a.width_m.total_cmp(&b.width_m));
+        let first = grid.iter().position(|c| meets(c));
+        let answer = match first {
+            None => Required::NotInRange { largest_m: p.range_m.1 },
+            Some(0) => Required::AtLowerBound { width_m: grid[0].width_m },
+            Some(k) => {
+                let (mut a, mut b) = (grid[k - 1].width_m, grid[k].width_m);
+                while b - a > p.tolerance_m {
+                    let mid = 0.5 * (a + b);
+                    let i = eval(mid, &mut done)?;
+                    if meets(&done[i]) {
+                        b = mid;
+                    } else {
+                        a = mid;
+                    }
+                }
+                let at = done.iter().find(|c| c.width_m == b).expect("the bracket's end was evaluated");
+                let mut sorted: Vec<&Candidate> = done.iter().collect();
+                sorted.sort_by(|x, y| x.width_m.total_cmp(&y.width_m));
+                Required::Found {
+                    width_m: b,
+                    bracket_m: (a, b),
+                    interval_m: (crossing(&sorted, model, p, -Z95), crossing(&sorted, model, p, Z95)),
+                    confidence: p.criteria.confidence(at.point(model), at.lives),
+                }
+            }
+        };
+        answers.push(answer);
+    }
+    done.sort_by(|a, b| a.width_m.total_cmp(&b.width_m));
+    Ok(Sizing { candidates: done, dynamic: answers[0], rigid_block: answers[1] })
+}
+
+/// Where a deterministic criterion is first reached in a range of widths.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "status", rename_all = "snake_case")]
+pub enum Reached {
+    /// At this width (to the tolerance; the upper end of the final bracket).
+    Found { width_m: f64 },
+    /// Already at the smallest width of the range.
+    AtLowerBound { width_m: f64 },
+    /// Not within the range.
+    NotInRange { largest_m: f64 },
+}
+
+impl Reached {
+    pub fn width_m(&self) -> Option<f64> {
+        match self {
+            Reached::Found { width_m } | Reached::AtLowerBound { width_m } => Some(*width_m),
+            Reached::NotInRange { .. } => None,
+        }
+    }
+}
+
+/// The smallest width of `range_m` at which an increasing `f(width)` (e.g. Goda's sliding safety
+/// factor, `None` where undefined: taken as below) reaches `target`, by bisection to `tolerance_m`.
+pub fn smallest_width_reaching(
+    range_m: (f64, f64),
+    target: f64,
+    tolerance_m: f64,
+    f: &mut dyn FnMut(f64) -> Option<f64>,
+) -> Reached {
+    let reaches = |w: f64, f: &mut dyn FnMut(f64) -> Option<f64>| f(w).is_some_and(|v| v >= target);
+    let (mut a, mut b) = range_m;
+    if !reaches(b, f) {
+        return Reached::NotInRange { largest_m: b };
+    }
+    if reaches(a, f) {
+        return Reached::AtLowerBound { width_m: a };
+    }
+    while b - a > tolerance_m {
+        let mid = 0.5 * (a + b);
+        if reaches(mid, f) {
+            b = mid;
+        } else {
+            a = mid;
+        }
+    }
+    Reached::Found { width_m: b }
+}
+
+/// The smallest evaluated width from which on the criterion holds at `z` standard errors (every
+/// larger candidate meets it too), or `None` if the largest does not.
+fn crossing(sorted: &[&Candidate], model: SizedModel, p: &SizeParams, z: f64) -> Option<f64> {
+    let met: Vec<bool> = sorted.iter().map(|c| p.criteria.met(c.point(model), c.lives, z)).collect();
+    if !*met.last()? {
+        return None;
+    }
+    let k = met.iter().rposition(|&m| !m).map_or(0, |i| i + 1);
+    Some(sorted[k].width_m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(mean: f64) -> ModelPoint {
+        ModelPoint {
+            expected_sliding_m: mean,
+            expected_sliding_se_m: 0.0,
+            p50_m: mean,
+            p95_m: mean,
+            exceedance_probability: 0.0,
+            failure_probability: 0.0,
+        }
+    }
+
+    #[test]
+    fn statistics_of_a_sample_by_hand() {
+        let c = Criteria {
+            exceedance: Some(ExceedanceCriterion { sliding_m: 0.5, probability: 0.1 }),
+            ..Criteria::default()
+        };
+        let p = model_point(&[0.0, 1.0, 2.0, 0.2], &[false, false, true, false], &c);
+        assert!((p.expected_sliding_m - 0.8).abs() < 1e-15);
+        // s² = (0.64 + 0.04 + 1.44 + 0.36)/3 = 0.8266…, SE = √(s²/4).
+        assert!((p.expected_sliding_se_m - (2.48f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
+        assert_eq!((p.p50_m, p.p95_m, p.exceedance_probability, p.failure_probability), (0.2, 2.0, 0.5, 0.25));
+    }
+
+    /// A smooth decreasing E|S|(B) = 2/B² m with no noise: the search returns the root
+    /// B* = √(2/S_a) within the tolerance (upper end of the bracket), evaluates no width twice,
+    /// and the required width grows as S_a falls.
+    #[test]
+    fn the_search_finds_the_root_of_a_smooth_curve_within_its_tolerance() {
+        let mut last = 0.0;
+        for s_a in [0.05, 0.02, 0.01, 0.005] {
+            let p = SizeParams {
+                range_m: (5.0, 30.0),
+                criteria: Criteria { expected_sliding_m: Some(s_a), ..Criteria::default() },
+                lives: 1,
+                tolerance_m: 0.01,
+                curve_points: 6,
+            };
+            let mut widths = Vec::new();
+            let r = size::<()>(&p, &mut |b| {
+                widths.push(b);
+                Ok(Candidate {
+                    width_m: b,
+                    weight_in_water_n: 0.0,
+                    lives: 1,
+                    dynamic: point(2.0 / (b * b)),
+                    rigid_block: point(3.0 / (b * b)),
+                })
+            })
+            .unwrap();
+            let exact = (2.0 / s_a).sqrt();
+            let Required::Found { width_m, bracket_m, .. } = r.dynamic else { panic!("{:?}", r.dynamic) };
+            assert!(width_m >= exact && width_m - exact <= 0.01, "S_a {s_a}: {width_m} vs {exact}");
+            assert!(bracket_m.1 - bracket_m.0 <= 0.01);
+            let rb = r.rigid_block.width_m().unwrap();
+            assert!(rb >= (3.0 / s_a).sqrt() && rb - (3.0 / s_a).sqrt() <= 0.01);
+            let mut unique = widths.clone();
+            unique.sort_by(f64::total_cmp);
+            unique.dedup();
+            assert_eq!(unique.len(), widths.len(), "no width evaluated twice");
+            assert!(width_m > last, "monotone in S_a");
+            last = width_m;
+        }
+    }
+
+    /// f(B) = B/10 reaches 1.2 at B = 12 m.
+    #[test]
+    fn the_smallest_width_reaching_a_safety_factor() {
+        let mut f = |b: f64| Some(b / 10.0);
+        let Reached::Found { width_m: w } = smallest_width_reaching((5.0, 30.0), 1.2, 1e-3, &mut f) else { panic!() };
+        assert!((12.0..=12.001).contains(&w), "{w}");
+        assert_eq!(smallest_width_reaching((5.0, 11.0), 1.2, 1e-3, &mut f), Reached::NotInRange { largest_m: 11.0 });
+        assert_eq!(smallest_width_reaching((13.0, 20.0), 1.2, 1e-3, &mut f), Reached::AtLowerBound { width_m: 13.0 });
+    }
+
+    #[test]
+    fn a_range_too_narrow_says_which_way_to_widen() {
+        let p = SizeParams {
+            range_m: (5.0, 6.0),
+            criteria: Criteria { expected_sliding_m: Some(0.01), ..Criteria::default() },
+            lives: 1,
+            tolerance_m: 0.1,
+            curve_points: 3,
+        };
+        let eval = |k: f64| {
+            move |b: f64| -> Result<Candidate, ()> {
+                Ok(Candidate {
+                    width_m: b,
+                    weight_in_water_n: 0.0,
+                    lives: 1,
+                    dynamic: point(k / (b * b)),
+                    rigid_block: point(k / (b * b)),
+                })
+            }
+        };
+        assert_eq!(size(&p, &mut eval(2.0)).unwrap().dynamic, Required::NotInRange { largest_m: 6.0 });
+        assert_eq!(size(&p, &mut eval(0.1)).unwrap().dynamic, Required::AtLowerBound { width_m: 5.0 });
+    }
+}

@@ -1,0 +1,102 @@
+//! `caisson size`: `size.json` (keys in docs/size.md).
+
+use super::{kn, Provenance};
+use crate::analysis::checks::Warning;
+use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Reached, Required, SizeParams, Sizing};
+use serde::Serialize;
+
+/// One evaluated width (weights in kN).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CandidateReport {
+    pub width_m: f64,
+    pub weight_in_water_kn: f64,
+    /// The failure limit at this width, m.
+    pub failure_sliding_m: f64,
+    /// Goda's static sliding safety factor under the design wave (`null` where undefined).
+    pub goda_sliding_safety_factor: Option<f64>,
+    pub dynamic: ModelPoint,
+    pub rigid_block: ModelPoint,
+    /// Whether the criteria hold at the estimate (dynamic model, rigid block).
+    pub dynamic_meets: bool,
+    pub rigid_block_meets: bool,
+}
+
+/// The width Goda's deterministic design gives: the smallest with the static sliding safety
+/// factor at the target under the design wave.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GodaWidth {
+    pub safety_factor: f64,
+    #[serde(flatten)]
+    pub reached: Reached,
+}
+
+/// The results of a sizing run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SizeReport {
+    #[serde(flatten)]
+    pub provenance: Provenance,
+    /// The variable sized.
+    pub variable: &'static str,
+    pub range_m: (f64, f64),
+    pub criteria: Criteria,
+    pub lives_per_candidate: usize,
+    pub life_years: usize,
+    pub seed: u64,
+    pub tolerance_m: f64,
+    /// The required width by the dynamic model and by the rigid block (Shimosako model).
+    pub dynamic: Required,
+    pub rigid_block: Required,
+    pub goda: GodaWidth,
+    /// Every evaluated width, by width.
+    pub candidates: Vec<CandidateReport>,
+    /// Lives simulated (candidates × lives per candidate).
+    pub lives_simulated: usize,
+    pub warnings: Vec<Warning>,
+}
+
+impl SizeReport {
+    /// The report of `sizing`; `extra(width)` gives the failure limit (m) and Goda's safety factor
+    /// at each candidate's width.
+    pub fn new(
+        p: &SizeParams,
+        life_years: usize,
+        seed: u64,
+        sizing: &Sizing,
+        goda: GodaWidth,
+        extra: &dyn Fn(&Candidate) -> (f64, Option<f64>),
+    ) -> Self {
+        let candidates: Vec<CandidateReport> = sizing
+            .candidates
+            .iter()
+            .map(|c| {
+                let (failure_sliding_m, goda_sliding_safety_factor) = extra(c);
+                CandidateReport {
+                    width_m: c.width_m,
+                    weight_in_water_kn: kn(c.weight_in_water_n),
+                    failure_sliding_m,
+                    goda_sliding_safety_factor,
+                    dynamic: c.dynamic,
+                    rigid_block: c.rigid_block,
+                    dynamic_meets: p.criteria.met(&c.dynamic, c.lives, 0.0),
+                    rigid_block_meets: p.criteria.met(&c.rigid_block, c.lives, 0.0),
+                }
+            })
+            .collect();
+        SizeReport {
+            provenance: Provenance::CURRENT,
+            variable: "width_m",
+            range_m: p.range_m,
+            criteria: p.criteria,
+            lives_per_candidate: p.lives,
+            life_years,
+            seed,
+            tolerance_m: p.tolerance_m,
+            dynamic: sizing.dynamic,
+            rigid_block: sizing.rigid_block,
+            goda,
+            lives_simulated: sizing.candidates.iter().map(|c| c.lives).sum(),
+            candidates,
+            warnings: Vec::new(),
+        }
+    }
+}
