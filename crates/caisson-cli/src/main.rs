@@ -9,6 +9,7 @@ mod cmd_campaign;
 mod cmd_design;
 mod cmd_fragility;
 mod cmd_loads;
+mod cmd_merge;
 mod cmd_run;
 mod cmd_spectrum;
 mod cmd_validation;
@@ -124,6 +125,7 @@ fn main() -> ExitCode {
         cli::Command::Validation(a) => cmd_validation::run(a),
         cli::Command::Design(a) => cmd_design::run(a),
         cli::Command::Fragility(a) => cmd_fragility::run(a),
+        cli::Command::Merge(a) => cmd_merge::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
