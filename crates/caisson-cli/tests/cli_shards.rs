@@ -214,12 +214,18 @@ fn merge_refuses_overlaps_gaps_and_foreign_or_edited_shards_and_says_which() {
     std::fs::write(torn.join("checkpoint.jsonl"), &text[..text.len() - 40]).unwrap();
     merge_refused(&st.file, &[a, &torn, c], &out, &["cut short", "--life-range 7..16 --resume"]);
     cases += 1;
+    // A shard still being written: its lock holds the id of a running process (this test's).
+    let lock = b.join("checkpoint.jsonl.lock");
+    std::fs::write(&lock, format!("{}\n", std::process::id())).unwrap();
+    merge_refused(&st.file, &[a, b, c], &out, &["being written by a running", "wait for it to end"]);
+    std::fs::remove_file(&lock).unwrap();
+    cases += 1;
     // Lives beyond the lives to merge, and a shard given twice.
     let n16 = ["merge", s(&st.file), s(a), s(b), s(c), "--lives", "16", "--out", s(&out)];
     refused(&n16, &["holds life 16", "beyond the lives to merge, 0..16", "--lives 16"]);
     merge_refused(&st.file, &[a, b, &b.join("checkpoint.jsonl"), c], &out, &["given twice"]);
     cases += 2;
-    assert_eq!(cases, 9);
+    assert_eq!(cases, 10);
 }
 
 #[test]
