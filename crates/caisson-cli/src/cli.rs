@@ -28,6 +28,22 @@ fn lives(s: &str) -> Result<usize, String> {
     whole_in(s, 1, MAX_LIVES).map_err(|e| format!("{e}, as `[design] lives`"))
 }
 
+/// `--life-range START..END`: whole numbers, START < END ≤ [`MAX_LIVES`] (END exclusive).
+fn life_range(s: &str) -> Result<std::ops::Range<usize>, String> {
+    let bad = || {
+        format!(
+            "must be START..END, whole numbers with START < END ≤ {MAX_LIVES} (END exclusive: 0..100 is lives 0 to 99)"
+        )
+    };
+    let (a, b) = s.trim().split_once("..").ok_or_else(bad)?;
+    let (a, b) = (a.trim().parse::<u64>().map_err(|_| bad())?, b.trim().parse::<u64>().map_err(|_| bad())?);
+    if a < b && b <= MAX_LIVES as u64 {
+        Ok(a as usize..b as usize)
+    } else {
+        Err(bad())
+    }
+}
+
 #[derive(Parser, Debug)]
 #[command(
     name = "caisson",
@@ -57,6 +73,8 @@ pub enum Command {
     Fragility(FragilityArgs),
     /// Sizing: the smallest caisson width whose lifetime sliding meets the `[size]` criterion.
     Size(SizeArgs),
+    /// Merge the shards of a design run (`design --life-range`) into the outputs of one run.
+    Merge(MergeArgs),
 }
 
 #[derive(Args, Debug)]
@@ -90,6 +108,10 @@ pub struct DesignArgs {
     /// Override `[design] lives` (1 to 10000000).
     #[arg(long, value_parser = lives)]
     pub lives: Option<usize>,
+    /// Run only lives START..END (END exclusive) as a shard: its checkpoint and lives.csv in
+    /// --out, no statistics; `caisson merge` joins the shards. Instead of --lives.
+    #[arg(long, value_name = "START..END", value_parser = life_range, conflicts_with_all = ["lives", "json"], requires = "out")]
+    pub life_range: Option<std::ops::Range<usize>>,
     /// Complete an interrupted run from its checkpoint (identical results).
     #[arg(long)]
     pub resume: bool,
@@ -118,6 +140,25 @@ pub struct SizeArgs {
     /// Worker threads (0: one per core). Results do not depend on it.
     #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
+}
+
+#[derive(Args, Debug)]
+pub struct MergeArgs {
+    /// Design file (TOML) the shards were run from: its statistics settings, warnings and plot title.
+    pub scenario: PathBuf,
+    /// The shards: each the --out directory of a `caisson design --life-range` run (its
+    /// checkpoint.jsonl) or a checkpoint file.
+    #[arg(required = true, value_name = "SHARD")]
+    pub shards: Vec<PathBuf>,
+    /// Write design.json, lives.csv, histogram.svg, exceedance.svg and the merged checkpoint here.
+    #[arg(long, value_name = "DIR", required = true)]
+    pub out: PathBuf,
+    /// The lives the shards must cover, 0..N (default `[design] lives`; 1 to 10000000).
+    #[arg(long, value_parser = lives)]
+    pub lives: Option<usize>,
+    /// Print the results as JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Args, Debug)]

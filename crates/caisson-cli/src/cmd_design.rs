@@ -1,11 +1,18 @@
-//! `caisson design FILE.toml [--json] [--out DIR] [--threads N] [--resume] [--brute-force]`: the
-//! lifetime Monte Carlo of performance-based design (docs/model.md §6.4), lives in parallel, with a
-//! checkpoint that keeps every finished life.
+//! `caisson design FILE.toml [--json] [--out DIR] [--threads N] [--lives N | --life-range S..E]
+//! [--resume] [--brute-force]`: the lifetime Monte Carlo of performance-based design
+//! (docs/model.md §6.4), lives in parallel, with a checkpoint that keeps every finished life.
+//!
+//! **Shards** (`--life-range START..END`, END exclusive, instead of `--lives`): the run computes
+//! only those lives and writes no statistics (they would be of part of the lives): its checkpoint
+//! and `lives.csv` (with the lives' own indices). `caisson merge` (`cmd_merge.rs`) joins the
+//! shards and reports what one run of all the lives reports, byte for byte: each life depends only
+//! on the seed and its index.
 //!
 //! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the
 //! fingerprint of what every life depends on (the typed scenario, the screen and the stepping of
-//! `--brute-force`; [`design_fingerprint`]) and the tool and results versions, then one JSON line
-//! per finished life, written whole (one `write`) as each life ends. Each life line ends with
+//! `--brute-force`; [`design_fingerprint`]), the lives the run was asked for, whether it was
+//! brute force, and the tool and results versions, then one JSON line per finished life, written
+//! whole (one `write`) as each life ends. Each life line ends with
 //! `"check"`: the FNV-1a of the header line and of the line itself, so a line edited, copied from
 //! another checkpoint or merged with another is refused by `--resume` with an `Error:` naming it;
 //! so is a life that appears twice. A run killed at any moment (Ctrl-C, `kill`) leaves the lives
@@ -26,28 +33,51 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
+use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormCase, StormOutcome, LIFE_COLUMNS};
 use caisson::dynamics::Stepping;
 use caisson::report::design::{design_fingerprint, DesignReport};
-use caisson::scenario;
+use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::{BufRead, Write};
-use std::ops::ControlFlow;
+use std::ops::{ControlFlow, Range};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-/// The checkpoint format written: 2 adds the check of every life line (format 1 had none).
-const CHECKPOINT_FORMAT: u32 = 2;
+/// The checkpoint format written: 2 added the check of every life line (format 1 had none); 3
+/// adds the range of lives and `brute_force` to the header (for shards and `caisson merge`).
+pub(crate) const CHECKPOINT_FORMAT: u32 = 3;
 
+/// The first line of a checkpoint.
 #[derive(serde::Serialize, serde::Deserialize)]
-struct Header {
-    caisson_design_checkpoint: u32,
-    fingerprint: String,
-    lives: usize,
-    caisson_version: String,
-    results_version: u32,
+pub(crate) struct Header {
+    pub caisson_design_checkpoint: u32,
+    pub fingerprint: String,
+    /// The lives the run that wrote the header was asked for, `life_start..life_end` (end
+    /// exclusive; `0..lives` for a whole run). A `--resume` may ask for others: the life lines
+    /// say which lives the checkpoint holds.
+    pub life_start: usize,
+    pub life_end: usize,
+    /// Whether the lives were run with `--brute-force` (part of the fingerprint too).
+    pub brute_force: bool,
+    pub caisson_version: String,
+    pub results_version: u32,
+}
+
+impl Header {
+    /// The header this build writes.
+    pub fn new(fingerprint: String, lives: &Range<usize>, brute_force: bool) -> Self {
+        Header {
+            caisson_design_checkpoint: CHECKPOINT_FORMAT,
+            fingerprint,
+            life_start: lives.start,
+            life_end: lives.end,
+            brute_force,
+            caisson_version: caisson::VERSION.to_string(),
+            results_version: caisson::RESULTS_VERSION,
+        }
+    }
 }
 
 #[derive(serde::Serialize, serde::Deserialize)]
@@ -71,7 +101,7 @@ fn line_check(header_line: &str, body: &str) -> String {
 }
 
 /// A finished life as a checkpoint line, newline included: its JSON with `"check"` last.
-fn life_line(header_line: &str, life: usize, outcome: &StormOutcome) -> String {
+pub(crate) fn life_line(header_line: &str, life: usize, outcome: &StormOutcome) -> String {
     let body = serde_json::to_string(&LifeLine { life, outcome: *outcome }).expect("a life serializes");
     let check = line_check(header_line, &body);
     format!("{}{CHECK_KEY}{check}\"}}\n", &body[..body.len() - 1])
@@ -91,50 +121,90 @@ fn parse_life_line(header_line: &str, line: &str) -> Result<(usize, StormOutcome
     Ok((l.life, l.outcome))
 }
 
-/// What `--resume` reads from a checkpoint.
-struct Checkpoint {
+/// What is read from a checkpoint (by `--resume` and by `caisson merge`).
+pub(crate) struct Checkpoint {
     /// The header line as written (the lines' checks depend on it).
-    header_line: String,
-    lives: BTreeMap<usize, StormOutcome>,
+    pub header_line: String,
+    pub header: Header,
+    pub lives: BTreeMap<usize, StormOutcome>,
     /// Length of the header and the complete lines, bytes: a torn last line starts here.
-    complete_len: u64,
+    pub complete_len: u64,
     /// Bytes of a last line cut short (0: none).
-    torn_bytes: u64,
+    pub torn_bytes: u64,
 }
 
-/// Read a checkpoint for `--resume`: every complete line must be a life of this run, each life
-/// once (an input error naming the line otherwise); a last line without its newline is torn.
-fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<Checkpoint> {
+/// Who reads a checkpoint: the words of its errors.
+pub(crate) struct Reader {
+    /// How a message starts: `--resume` or `shard DIR`.
+    pub who: String,
+    /// What the fingerprint is compared with: `this run` or the scenario file.
+    pub this: String,
+    /// What to do when the checkpoint cannot be used at all.
+    pub again: String,
+    /// What to do about a refused life line.
+    pub line_fix: String,
+}
+
+impl Reader {
+    /// The reader of `--resume`.
+    fn resume() -> Self {
+        let again = "run without --resume to start again".to_string();
+        Reader {
+            who: "--resume".into(),
+            this: "this run".into(),
+            line_fix: format!("remove that line (and any after it) to keep the other lives, or {again}"),
+            again,
+        }
+    }
+}
+
+/// Read a checkpoint: a header of this format and results version whose fingerprint is
+/// `fingerprint_for(header)`, then every complete line a life of it, each life once (an input
+/// error naming the line otherwise); a last line without its newline is torn (reported in
+/// [`Checkpoint::torn_bytes`]). `on_life` is called once per life read.
+pub(crate) fn read_checkpoint(
+    path: &Path,
+    reader: &Reader,
+    fingerprint_for: &dyn Fn(&Header) -> String,
+    on_life: &dyn Fn(),
+) -> Result<Checkpoint> {
+    let Reader { who, this, again, line_fix } = reader;
     let file = std::fs::File::open(path)
-        .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
-    let mut reader = std::io::BufReader::new(file);
+        .map_err(|e| input_err(format!("{who}: cannot read the checkpoint {}: {e}", path.display())))?;
+    let mut file = std::io::BufReader::new(file);
     let mut buf = Vec::new();
     let mut read_line = |buf: &mut Vec<u8>| -> Result<bool> {
         buf.clear();
-        reader.read_until(b'\n', buf).with_context(|| format!("reading the checkpoint {}", path.display()))?;
+        file.read_until(b'\n', buf).with_context(|| format!("reading the checkpoint {}", path.display()))?;
         Ok(buf.last() == Some(&b'\n'))
     };
-    let again = "run without --resume to start again";
     let complete = read_line(&mut buf)?;
     let header_line = std::str::from_utf8(&buf).unwrap_or("").trim_end_matches('\n').to_string();
+    // A header of another format names its format if it has one.
+    let format = serde_json::from_str::<serde_json::Value>(&header_line)
+        .ok()
+        .and_then(|v| v.get("caisson_design_checkpoint").and_then(|f| f.as_u64()))
+        .filter(|_| complete);
+    if let Some(f) = format.filter(|&f| f != CHECKPOINT_FORMAT as u64) {
+        let version = serde_json::from_str::<serde_json::Value>(&header_line)
+            .ok()
+            .and_then(|v| v.get("caisson_version").and_then(|v| v.as_str().map(String::from)))
+            .unwrap_or_else(|| "?".into());
+        return Err(input_err(format!(
+            "{who}: the checkpoint {} is of format {f} (caisson {version}), this caisson reads format {CHECKPOINT_FORMAT} (whose lines carry a check and whose header gives the range of lives); {again}",
+            path.display(),
+        )));
+    }
     let header: Header = serde_json::from_str(&header_line).ok().filter(|_| complete).ok_or_else(|| {
         input_err(format!(
-            "--resume: {} line 1 is not a caisson design checkpoint header (of results version {}); {again}",
+            "{who}: {} line 1 is not a caisson design checkpoint header (of results version {}); {again}",
             path.display(),
             caisson::RESULTS_VERSION
         ))
     })?;
-    if header.caisson_design_checkpoint != CHECKPOINT_FORMAT {
-        return Err(input_err(format!(
-            "--resume: the checkpoint {} is of format {} (caisson {}), this caisson reads format {CHECKPOINT_FORMAT} (whose lines carry a check); {again}",
-            path.display(),
-            header.caisson_design_checkpoint,
-            header.caisson_version
-        )));
-    }
     if header.results_version != caisson::RESULTS_VERSION {
         return Err(input_err(format!(
-            "--resume: the checkpoint {} holds results version {} (caisson {}), this caisson {} computes results version {}; its lives would not match: {again}",
+            "{who}: the checkpoint {} holds results version {} (caisson {}), this caisson {} computes results version {}; its lives would not match: {again}",
             path.display(),
             header.results_version,
             header.caisson_version,
@@ -142,15 +212,17 @@ fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<Checkpoint> {
             caisson::RESULTS_VERSION
         )));
     }
+    let fingerprint = fingerprint_for(&header);
     if header.fingerprint != fingerprint {
         return Err(input_err(format!(
-            "--resume: the checkpoint {} was written for a different scenario or options (fingerprint {}, this run {}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}",
+            "{who}: the checkpoint {} was written for a different scenario or options (fingerprint {}, {this} {}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}",
             path.display(),
             header.fingerprint,
             fingerprint
         )));
     }
-    let mut cp = Checkpoint { header_line, lives: BTreeMap::new(), complete_len: buf.len() as u64, torn_bytes: 0 };
+    let mut cp =
+        Checkpoint { header_line, header, lives: BTreeMap::new(), complete_len: buf.len() as u64, torn_bytes: 0 };
     let mut line_of: BTreeMap<usize, usize> = BTreeMap::new();
     for n in 2.. {
         let complete = read_line(&mut buf)?;
@@ -158,16 +230,11 @@ fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<Checkpoint> {
             break;
         }
         if !complete {
-            // The run stopped while writing this line: it is dropped (and cut away before appending).
+            // The run stopped while writing this line.
             cp.torn_bytes = buf.len() as u64;
             break;
         }
-        let refuse = |why: String| {
-            input_err(format!(
-                "--resume: {} line {n} {why}; remove that line (and any after it) to keep the other lives, or {again}",
-                path.display()
-            ))
-        };
+        let refuse = |why: String| input_err(format!("{who}: {} line {n} {why}; {line_fix}", path.display()));
         let text = std::str::from_utf8(&buf[..buf.len() - 1]).map_err(|_| refuse("is not UTF-8 text".into()))?;
         let (life, outcome) = parse_life_line(&cp.header_line, text).map_err(refuse)?;
         if let Some(first) = line_of.insert(life, n) {
@@ -175,6 +242,7 @@ fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<Checkpoint> {
         }
         cp.lives.insert(life, outcome);
         cp.complete_len += buf.len() as u64;
+        on_life();
     }
     Ok(cp)
 }
@@ -236,12 +304,12 @@ impl CheckpointWriter {
 
 /// The lock of a checkpoint: `CHECKPOINT.lock`, created with `create_new`, holding the process
 /// id; removed on drop (and by the Ctrl-C handler).
-struct CheckpointLock {
+pub(crate) struct CheckpointLock {
     path: PathBuf,
 }
 
 impl CheckpointLock {
-    fn acquire(checkpoint: &Path) -> Result<Self> {
+    pub(crate) fn acquire(checkpoint: &Path) -> Result<Self> {
         let mut name = checkpoint.as_os_str().to_owned();
         name.push(".lock");
         let path = PathBuf::from(name);
@@ -265,7 +333,7 @@ impl CheckpointLock {
                         }
                         _ => {
                             return Err(input_err(format!(
-                                "the checkpoint {} is in use by another `caisson design` run{} (its lock {} exists): wait for that run to end or give another --out; if no such run is going on, remove {}",
+                                "the checkpoint {} is in use by another `caisson design` or `caisson merge` run{} (its lock {} exists): wait for that run to end or give another --out; if no such run is going on, remove {}",
                                 checkpoint.display(),
                                 holder.map_or(String::new(), |p| format!(" (process {p})")),
                                 path.display(),
@@ -293,7 +361,7 @@ impl Drop for CheckpointLock {
 
 /// Whether process `pid` is running (Linux: `/proc/PID`; elsewhere assumed running, so a stale
 /// lock is reported rather than removed).
-fn process_running(pid: u32) -> bool {
+pub(crate) fn process_running(pid: u32) -> bool {
     if cfg!(target_os = "linux") {
         pid == std::process::id() || Path::new("/proc").join(pid.to_string()).exists()
     } else {
@@ -301,10 +369,11 @@ fn process_running(pid: u32) -> bool {
     }
 }
 
-fn lives_csv(lives: &[StormOutcome]) -> Result<Vec<u8>> {
+/// `lives.csv`: one row per life, its index first.
+fn lives_csv<'a>(lives: impl Iterator<Item = (usize, &'a StormOutcome)>) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(std::iter::once("life").chain(LIFE_COLUMNS.iter().map(|(name, _)| *name)))?;
-    for (i, l) in lives.iter().enumerate() {
+    for (i, l) in lives {
         let cells = LIFE_COLUMNS.iter().map(|(_, c)| match c {
             LifeColumn::Metres(f) => format!("{:e}", f(l)),
             LifeColumn::Count(f) => f(l).to_string(),
@@ -396,19 +465,34 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     )
 }
 
-pub fn run(args: DesignArgs) -> Result<()> {
-    let mut sc = scenario::load(&args.scenario).map_err(input_err)?;
-    let mut design = sc.design_for("`caisson design`").map_err(input_err)?.clone();
-    if let Some(n) = args.lives {
+/// The scenario and `[design]` of a design file (`--lives` applied), with `--brute-force`: every
+/// wave through the dynamic model at the fixed step dt_s.
+/// (`what` names the command in the error of a file without `[design]`.)
+pub(crate) fn load_design(
+    path: &Path,
+    what: &str,
+    lives: Option<usize>,
+    brute_force: bool,
+) -> Result<(Scenario, DesignParams)> {
+    let mut sc = scenario::load(path).map_err(input_err)?;
+    let mut design = sc.design_for(what).map_err(input_err)?.clone();
+    if let Some(n) = lives {
         // 1 to 1e7 (checked by the parser, as `[design] lives`).
         design.lives = n;
     }
-    if args.brute_force {
-        // Brute force: every wave through the dynamic model at the fixed step dt_s.
+    if brute_force {
         design.screen = false;
         let solver = caisson::dynamics::SolverParams { stepping: Stepping::Fixed, ..sc.solver() };
         sc = sc.with_solver(solver).map_err(input_err)?;
     }
+    Ok((sc, design))
+}
+
+pub fn run(args: DesignArgs) -> Result<()> {
+    let (sc, design) = load_design(&args.scenario, "`caisson design`", args.lives, args.brute_force)?;
+    // A shard runs its range; a whole run lives 0..N.
+    let range = args.life_range.clone().unwrap_or(0..design.lives);
+    let shard = args.life_range.is_some();
     check_out_dir(args.out.as_deref())?;
     let checkpoint: Option<PathBuf> =
         args.checkpoint.clone().or_else(|| args.out.as_ref().map(|d| d.join("checkpoint.jsonl")));
@@ -427,29 +511,24 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let (mut done, writer) = match &checkpoint {
         Some(path) => {
             if args.resume {
-                let cp = read_checkpoint(path, &fingerprint)?;
+                let cp = read_checkpoint(path, &Reader::resume(), &|_| fingerprint.clone(), &|| {})?;
                 let w = CheckpointWriter::resume(path, &cp)?;
                 (cp.lives, Some(Mutex::new(w)))
             } else {
-                let header = Header {
-                    caisson_design_checkpoint: CHECKPOINT_FORMAT,
-                    fingerprint: fingerprint.clone(),
-                    lives: design.lives,
-                    caisson_version: caisson::VERSION.to_string(),
-                    results_version: caisson::RESULTS_VERSION,
-                };
+                let header = Header::new(fingerprint.clone(), &range, args.brute_force);
                 (BTreeMap::new(), Some(Mutex::new(CheckpointWriter::create(path, serde_json::to_string(&header)?)?)))
             }
         }
         None => (BTreeMap::new(), None),
     };
-    done.retain(|&i, _| i < design.lives);
+    // A checkpoint resumed for other lives keeps the lives outside them but does not use them.
+    done.retain(|i, _| range.contains(i));
     if writer.is_some() {
         // Ctrl-C: finish the lives in progress, keep them in the checkpoint, exit 130.
         crate::interrupt::graceful();
     }
-    let todo: Vec<usize> = (0..design.lives).filter(|i| !done.contains_key(i)).collect();
-    let pb = progress(design.lives as u64, "lives", "");
+    let todo: Vec<usize> = range.clone().filter(|i| !done.contains_key(i)).collect();
+    let pb = progress(range.len() as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let finished_now = AtomicUsize::new(0);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
@@ -475,43 +554,73 @@ pub fn run(args: DesignArgs) -> Result<()> {
         return Err(e);
     }
     done.extend(results);
-    if done.len() < design.lives && crate::interrupt::requested() {
+    let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
+    if done.len() < range.len() && crate::interrupt::requested() {
         return Err(anyhow::Error::new(crate::Interrupted(format!(
             "interrupted (Ctrl-C) after {} of {} lives; the finished lives are in {}: run again with --resume to complete",
             done.len(),
-            design.lives,
-            checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string())
+            range.len(),
+            kept()
         ))));
     }
-    if done.len() < design.lives {
+    if done.len() < range.len() {
         anyhow::bail!(
             "stopped after {} of {} lives (--stop-after); the finished lives are in {}; run again with --resume to complete",
             done.len(),
-            design.lives,
-            checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string())
+            range.len(),
+            kept()
         );
     }
+    if shard {
+        let dir = args.out.as_deref().expect("--life-range requires --out");
+        ensure_dir(dir)?;
+        write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
+        crate::sayln!(
+            "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {}; no statistics (`caisson merge` joins the shards)",
+            range.start,
+            range.end,
+            range.len(),
+            args.scenario.display(),
+            dir.display(),
+            kept()
+        );
+        return Ok(());
+    }
     let lives: Vec<StormOutcome> = done.into_values().collect();
+    report_lives(&args.scenario, &design, &case, &lives, args.json, args.out.as_deref())
+}
+
+/// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
+/// table or JSON on standard output and, with `out`, design.json, lives.csv, histogram.svg and
+/// exceedance.svg. What one design run reports; `caisson merge` reports through it too.
+pub(crate) fn report_lives(
+    scenario_path: &Path,
+    design: &DesignParams,
+    case: &StormCase<'_>,
+    lives: &[StormOutcome],
+    json: bool,
+    out: Option<&Path>,
+) -> Result<()> {
     let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
-    let mut report = DesignReport::new(&design, case.rigid_block_mu, failure_m, &lives);
+    let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
-    report.warnings.extend(caisson::analysis::checks::life_warnings(&lives, failure_m));
-    let json = report_json(&report, "design")?;
+    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, failure_m));
+    let doc = report_json(&report, "design")?;
     crate::output::print_warnings(&report.warnings);
-    if args.json {
-        crate::sayln!("{}", pretty(&json)?);
+    if json {
+        crate::sayln!("{}", pretty(&doc)?);
     } else {
         crate::say!("{}", design_text(&report));
     }
-    if let Some(dir) = &args.out {
+    if let Some(dir) = out {
         ensure_dir(dir)?;
-        write_atomic(&dir.join("design.json"), pretty(&json)?.as_bytes())?;
-        write_atomic(&dir.join("lives.csv"), &lives_csv(&lives)?)?;
-        let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
+        write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes())?;
+        write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?)?;
+        let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
         plots(dir, title, &dynamic, &rigid, failure_m)?;
-        if !args.json {
+        if !json {
             crate::sayln!(
                 "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",
                 dir.display()

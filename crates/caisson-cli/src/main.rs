@@ -9,6 +9,7 @@ mod cmd_campaign;
 mod cmd_design;
 mod cmd_fragility;
 mod cmd_loads;
+mod cmd_merge;
 mod cmd_run;
 mod cmd_size;
 mod cmd_spectrum;
@@ -126,6 +127,7 @@ fn main() -> ExitCode {
         cli::Command::Design(a) => cmd_design::run(a),
         cli::Command::Size(a) => cmd_size::run(a),
         cli::Command::Fragility(a) => cmd_fragility::run(a),
+        cli::Command::Merge(a) => cmd_merge::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

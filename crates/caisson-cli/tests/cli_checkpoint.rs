@@ -181,15 +181,20 @@ fn resume_cuts_away_a_torn_last_line() {
 }
 
 #[test]
-fn resume_refuses_a_checkpoint_of_format_1() {
+fn resume_refuses_a_checkpoint_of_an_older_format() {
     let dir = tempfile::tempdir().unwrap();
     let f = write(dir.path(), "d.toml", &design_text(6, 3));
     let out = dir.path().join("a");
     let cp = partial(&f, &out, 2);
-    let mut l = lines(&cp);
-    l[0] = l[0].replacen("\"caisson_design_checkpoint\":2", "\"caisson_design_checkpoint\":1", 1);
-    set_lines(&cp, &l);
-    resume_refused(&f, &out, &["format 1"]);
+    let original = lines(&cp);
+    // Format 1 (no checks) and 2 (no range of lives in the header).
+    for old in [1, 2] {
+        let mut l = original.clone();
+        l[0] = l[0].replacen("\"caisson_design_checkpoint\":3", &format!("\"caisson_design_checkpoint\":{old}"), 1);
+        assert_ne!(l[0], original[0]);
+        set_lines(&cp, &l);
+        resume_refused(&f, &out, &[&format!("format {old}"), "reads format 3"]);
+    }
 }
 
 #[test]

@@ -15,9 +15,17 @@
 //! * the conservative screen of [`simulate_storm`] (waves that provably cannot slide either
 //!   model are skipped; the share is reported).
 //!
-//! Storm j of level i draws from its own generator, `realization_rng(seed, i · storms + j)`; the
-//! (level, storm) pairs run with rayon and are collected in order, so the results do not depend
-//! on the number of threads. The library does not print: `progress` is called once per storm.
+//! **Streams.** Storm j at height H draws from its own generator, keyed by the height and the
+//! storm index, never by their position in the grid ([`storm_rng`]): the ChaCha8 generator of
+//! the seed, on the stream numbered by the bits of H1/3 (`f64::to_bits`), from word position
+//! j · 2^[`STORM_WORDS_LOG2`]. So adding heights, running heights apart or adding storms leaves
+//! every existing storm as it was. Distinct heights are distinct streams (`to_bits` is one to
+//! one); within a stream storm j owns the 2^40 32-bit words from j · 2^40, and a storm draws
+//! about 4 words per wave (a uniform height and a standard-normal rise-time deviate, 2 words
+//! each): storms could share numbers only beyond 2.7e11 waves per storm (`[fragility] storms`
+//! ≤ 10^6 < 2^20 keeps j · 2^40 inside ChaCha's 2^68 words). The (level, storm) pairs run with
+//! rayon and are collected in order, so the results do not depend on the number of threads. The
+//! library does not print: `progress` is called once per storm.
 //!
 //! **Counts.** k_i(s) = #{storms at H_i with |S| > s} (strictly greater), S the storm's net
 //! sliding (shoreward +; a rocking caisson can end a storm seaward, docs/design.md), for the
@@ -57,13 +65,25 @@
 
 use super::lifetime::{simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
-use crate::loads::generator::realization_rng;
+use crate::loads::risetime::LoadRng;
+use rand::SeedableRng;
 use rayon::prelude::*;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use thiserror::Error;
 
 /// H_max / H1/3 of a storm (Goda's design ratio).
 pub const HMAX_RATIO: f64 = 1.8;
+/// log2 of the 32-bit words of its stream each storm owns (module docs, "Streams").
+pub const STORM_WORDS_LOG2: u32 = 40;
+
+/// The generator of storm `storm` at H1/3 = `h13_m` (module docs, "Streams"): ChaCha8 seeded
+/// with `seed`, stream `h13_m.to_bits()`, word position `storm · 2^STORM_WORDS_LOG2`.
+pub fn storm_rng(seed: u64, h13_m: f64, storm: usize) -> LoadRng {
+    let mut rng = LoadRng::seed_from_u64(seed);
+    rng.set_stream(h13_m.to_bits());
+    rng.set_word_pos((storm as u128) << STORM_WORDS_LOG2);
+    rng
+}
 /// The largest β the fit accepts (in units of ln IM).
 pub const BETA_MAX: f64 = 20.0;
 /// The smallest β the search considers.
@@ -415,7 +435,7 @@ pub fn run_fragility(
         .map(|job| {
             let (level, storm) = (job / storms, job % storms);
             let h = p.heights_m[level];
-            let mut rng = realization_rng(p.seed, job);
+            let mut rng = storm_rng(p.seed, h, storm);
             let out = simulate_storm(st, &p.storm_input(h), &mut rng).map_err(|source| StormFailed {
                 h13_m: h,
                 storm,
@@ -556,6 +576,68 @@ mod tests {
         assert!(fit_lognormal(&im, &[0, 4, 7, 10], &n).is_ok());
         // Levels without trials are ignored.
         assert_eq!(fit_lognormal(&[1.0, 2.0], &[0, 0], &[0, 0]), Err(FitFailure::NoExceedance));
+    }
+
+    /// The storms of examples/fragility.toml, shortened to 30 min (141 waves).
+    fn example() -> crate::scenario::Scenario {
+        crate::scenario::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fragility.toml"))
+            .unwrap()
+    }
+
+    #[test]
+    fn storms_are_keyed_by_height_and_index_not_by_their_place_in_the_grid() {
+        let sc = example();
+        let case = sc.storm_case(true).unwrap();
+        let base = FragilityParams {
+            heights_m: vec![8.5, 10.5],
+            storms: 3,
+            storm_duration_s: 1800.0,
+            ..sc.fragility_for("test").unwrap().clone()
+        };
+        // Heights added below, between and above, more storms; and one height run alone.
+        let grown = FragilityParams { heights_m: vec![7.0, 8.5, 9.0, 10.5, 11.0], storms: 5, ..base.clone() };
+        let alone = FragilityParams { heights_m: vec![10.5], storms: 2, ..base.clone() };
+        let run = |p: &FragilityParams| run_fragility(&case, p, &|| {}).unwrap();
+        let (a, g, one) = (run(&base), run(&grown), run(&alone));
+        let mut compared = 0;
+        for level in &a.levels {
+            let other = g.levels.iter().find(|l| l.h13_m == level.h13_m).unwrap();
+            assert_eq!(other.storms[..3], level.storms[..], "H1/3 = {} m", level.h13_m);
+            compared += 3;
+        }
+        assert_eq!(one.levels[0].storms[..], a.levels[1].storms[..2]);
+        compared += 2;
+        assert_eq!(compared, 8);
+        // The comparison is not of empty storms: the storms at 10.5 m slide, and differ.
+        let top = &a.levels[1].storms;
+        assert!(top.iter().all(|o| o.sliding_m.abs() > 1e-4), "{top:?}");
+        assert!(top[0] != top[1] && top[1] != top[2]);
+    }
+
+    #[test]
+    fn storm_streams_are_distinct_and_a_storm_stays_inside_its_words() {
+        // Neighbouring heights (one ulp apart) and neighbouring storms draw different numbers.
+        let h = 8.5_f64;
+        let next = f64::from_bits(h.to_bits() + 1);
+        let first = |h: f64, j: usize| storm_rng(1, h, j).gen::<u64>();
+        let draws = [first(h, 0), first(next, 0), first(h, 1), first(h, 2), first(next, 1)];
+        for i in 0..draws.len() {
+            for k in i + 1..draws.len() {
+                assert_ne!(draws[i], draws[k], "draws {i} and {k}");
+            }
+        }
+        assert_ne!(first(h, 0), storm_rng(2, h, 0).gen::<u64>(), "the seed matters");
+        // A storm of the example draws about 4 words per wave, far from the 2^40 it owns.
+        let sc = example();
+        let case = sc.storm_case(true).unwrap();
+        let p = sc.fragility_for("test").unwrap();
+        let input = p.storm_input(11.0);
+        let mut rng = storm_rng(p.seed, 11.0, 7);
+        let start = rng.get_word_pos();
+        simulate_storm(&case, &input, &mut rng).unwrap();
+        let words = rng.get_word_pos() - start;
+        let waves = input.waves as u128;
+        assert!(words >= 4 * waves && words <= 5 * waves, "{words} words for {waves} waves");
     }
 
     #[test]

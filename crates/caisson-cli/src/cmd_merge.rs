@@ -1,0 +1,223 @@
+//! `caisson merge FILE.toml SHARD... --out DIR [--lives N] [--json]`: join the shards of a design
+//! run (`caisson design FILE --life-range START..END --out SHARD`) into what one
+//! `caisson design FILE --lives N --out DIR` writes, byte for byte: design.json, lives.csv,
+//! histogram.svg and exceedance.svg (the same [`report_lives`] on the same lives in index order:
+//! each life depends only on the seed and its index), and a checkpoint of lives 0..N whose header
+//! and lines are those one run writes (so `--resume` and further merges work).
+//!
+//! **Why the scenario file.** The statistics need what is not in the lives: the thresholds, the
+//! failure limit, life_years, the structure's warnings and the plots' title (the file's name). The
+//! shards are checked against the file: every shard's fingerprint must be the file's (with
+//! `--brute-force` if the shards were run with it, as their headers say), so the shards' lives
+//! are lives of this scenario; `lives`, `thresholds_m` and `failure_sliding_m` are not in the
+//! fingerprint (they change no life) and come from the file (`--lives` overrides `lives`).
+//!
+//! **Refused** with an `Error:` naming the shard and its checkpoint (exit 2), before anything is
+//! written: a checkpoint that cannot be read, of another format, results version or fingerprint;
+//! a life line that is edited, foreign, repeated or not a life line (the checks of `--resume`,
+//! with the line number); a last line cut short (the shard was stopped: resume it first); a shard
+//! still being written (its lock held by a running process); shards run with and without
+//! `--brute-force`; a shard given twice; a life in two shards (the life and both shards named);
+//! a life at or beyond N; and lives 0..N that are in no shard (the first missing range, how many
+//! are missing, and the shard to complete if one was run for them).
+//!
+//! A progress bar (on a terminal) counts the lives read. Ctrl-C stops at once: the outputs are
+//! written to temporary files and renamed into place whole (`output.rs`), and the lock of the
+//! output checkpoint is removed.
+
+use crate::cli::MergeArgs;
+use crate::cmd_design::{
+    life_line, load_design, process_running, read_checkpoint, report_lives, CheckpointLock, Header, Reader,
+};
+use crate::input_err;
+use crate::output::{check_out_dir, ensure_dir, progress, TempFile};
+use anyhow::{Context, Result};
+use caisson::analysis::lifetime::StormOutcome;
+use caisson::report::design::design_fingerprint;
+use std::io::{BufRead, Write};
+use std::path::{Path, PathBuf};
+
+/// No shard holds the life yet.
+const NONE: u32 = u32::MAX;
+
+/// A shard on the command line.
+struct Shard {
+    /// As given (the name in the errors).
+    arg: PathBuf,
+    /// Its checkpoint: `ARG/checkpoint.jsonl` for a directory, else ARG itself.
+    checkpoint: PathBuf,
+}
+
+impl Shard {
+    fn new(arg: &Path) -> Self {
+        let checkpoint = if arg.is_dir() { arg.join("checkpoint.jsonl") } else { arg.to_path_buf() };
+        Shard { arg: arg.to_path_buf(), checkpoint }
+    }
+
+    fn name(&self) -> String {
+        format!("shard {}", self.arg.display())
+    }
+}
+
+/// `START..END`.
+fn text(r: &std::ops::Range<usize>) -> String {
+    format!("{}..{}", r.start, r.end)
+}
+
+/// `brute_force` of a checkpoint's header, if the header says (read in full later).
+fn brute_force_of(path: &Path) -> Option<bool> {
+    let mut line = String::new();
+    std::io::BufReader::new(std::fs::File::open(path).ok()?).read_line(&mut line).ok()?;
+    serde_json::from_str::<serde_json::Value>(&line).ok()?.get("brute_force")?.as_bool()
+}
+
+/// Refuse a shard whose checkpoint is being written by a running process (its lock held).
+fn refuse_if_running(shard: &Shard) -> Result<()> {
+    let mut lock = shard.checkpoint.as_os_str().to_owned();
+    lock.push(".lock");
+    let lock = PathBuf::from(lock);
+    let holder = std::fs::read_to_string(&lock).ok().and_then(|t| t.trim().parse::<u32>().ok());
+    match holder {
+        Some(pid) if process_running(pid) => Err(input_err(format!(
+            "{}: its checkpoint {} is being written by a running `caisson design` (process {pid}, lock {}): wait for it to end, then merge",
+            shard.name(),
+            shard.checkpoint.display(),
+            lock.display()
+        ))),
+        _ => Ok(()),
+    }
+}
+
+pub fn run(args: MergeArgs) -> Result<()> {
+    check_out_dir(Some(&args.out))?;
+    let shards: Vec<Shard> = args.shards.iter().map(|a| Shard::new(a)).collect();
+    for (k, s) in shards.iter().enumerate() {
+        let same = |a: &Shard| match (a.checkpoint.canonicalize(), s.checkpoint.canonicalize()) {
+            (Ok(x), Ok(y)) => x == y,
+            _ => false,
+        };
+        if let Some(first) = shards[..k].iter().find(|a| same(a)) {
+            return Err(input_err(format!(
+                "{} is given twice (also as {}): give each shard once",
+                s.name(),
+                first.arg.display()
+            )));
+        }
+        refuse_if_running(s)?;
+    }
+    // The shards say whether they were run with --brute-force; they must agree.
+    let flags: Vec<(usize, bool)> =
+        shards.iter().enumerate().filter_map(|(k, s)| brute_force_of(&s.checkpoint).map(|b| (k, b))).collect();
+    let brute_force = flags.first().is_some_and(|&(_, b)| b);
+    if let Some(&(k, _)) = flags.iter().find(|&&(_, b)| b != brute_force) {
+        let (with, without) = if brute_force { (flags[0].0, k) } else { (k, flags[0].0) };
+        return Err(input_err(format!(
+            "{} was run with --brute-force and {} without: their lives are of different models; merge shards of one kind",
+            shards[with].name(),
+            shards[without].name()
+        )));
+    }
+    let (sc, design) = load_design(&args.scenario, "`caisson merge`", args.lives, brute_force)?;
+    let case = sc.storm_case(design.screen).map_err(input_err)?;
+    let fingerprint = design_fingerprint(&case, &design);
+    let n = design.lives;
+    let file = args.scenario.display().to_string();
+
+    // Read every shard: its lives into their places, each life from one shard only.
+    let pb = progress(n as u64, "reading the shards", "lives");
+    let mut lives: Vec<StormOutcome> = vec![StormOutcome::default(); n];
+    let mut owner: Vec<u32> = vec![NONE; n];
+    // The lives each shard was run for (its header).
+    let mut ranges: Vec<std::ops::Range<usize>> = Vec::with_capacity(shards.len());
+    for (k, s) in shards.iter().enumerate() {
+        let resume =
+            |range: &str| format!("caisson design {file} --life-range {range} --resume --out {}", s.arg.display());
+        let reader = Reader {
+            who: s.name(),
+            this: format!("{file} gives"),
+            again: "run that shard again (or leave it out)".into(),
+            line_fix:
+                "remove that line (and any after it) and complete the shard with --resume, or run that shard again"
+                    .into(),
+        };
+        let cp = read_checkpoint(&s.checkpoint, &reader, &|_| fingerprint.clone(), &|| pb.inc(1))?;
+        let asked = cp.header.life_start..cp.header.life_end;
+        let range = text(&asked);
+        if cp.torn_bytes > 0 {
+            return Err(input_err(format!(
+                "{}: its checkpoint {} ends in a line cut short ({} bytes: the run stopped while writing it): complete the shard first (`{}` drops that line)",
+                s.name(),
+                s.checkpoint.display(),
+                cp.torn_bytes,
+                resume(&range)
+            )));
+        }
+        if let Some((&life, _)) = cp.lives.range(n..).next() {
+            return Err(input_err(format!(
+                "{} (lives {range}) holds life {life}, beyond the lives to merge, 0..{n} ({}); give --lives N to merge lives 0..N",
+                s.name(),
+                if args.lives.is_some() { format!("--lives {n}") } else { format!("`[design] lives` = {n} of {file}") }
+            )));
+        }
+        for (life, outcome) in cp.lives {
+            if owner[life] != NONE {
+                let other = owner[life] as usize;
+                return Err(input_err(format!(
+                    "life {life} is in two shards: {} (lives {}) and {} (lives {range}); shards must not overlap: give each life to one shard",
+                    shards[other].name(),
+                    text(&ranges[other]),
+                    s.name()
+                )));
+            }
+            owner[life] = k as u32;
+            lives[life] = outcome;
+        }
+        ranges.push(asked);
+    }
+    pb.finish_and_clear();
+
+    // Every life 0..N in some shard.
+    let missing = owner.iter().filter(|&&o| o == NONE).count();
+    if let Some(start) = owner.iter().position(|&o| o == NONE) {
+        let end = owner[start..].iter().position(|&o| o != NONE).map_or(n, |e| start + e);
+        let gaps = (0..n).filter(|&i| owner[i] == NONE && (i == 0 || owner[i - 1] != NONE)).count();
+        let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
+        // A shard that was run for them and stopped.
+        let stopped = shards.iter().zip(&ranges).find(|(_, r)| r.start < end && start < r.end);
+        let hint = match stopped {
+            Some((s, r)) => format!(
+                "{} was run for lives {r} and is incomplete: complete it with `caisson design {file} --life-range {r} --resume --out {}`",
+                s.name(),
+                s.arg.display(),
+                r = text(r)
+            ),
+            None => format!("run them (`caisson design {file} --life-range {start}..{end} --out DIR`) and merge that shard too"),
+        };
+        return Err(input_err(format!(
+            "lives {start}..{end} are in no shard ({} lives{more}; the merge needs lives 0..{n}): {hint}",
+            end - start
+        )));
+    }
+
+    // The merged checkpoint: the header and the lines of one run of lives 0..N.
+    ensure_dir(&args.out)?;
+    let cp_path = args.out.join("checkpoint.jsonl");
+    let _lock = CheckpointLock::acquire(&cp_path)?;
+    let header_line = serde_json::to_string(&Header::new(fingerprint, &(0..n), brute_force))?;
+    let (tmp, f) = TempFile::create(&cp_path)?;
+    let mut w = std::io::BufWriter::new(f);
+    let written = (|| -> std::io::Result<()> {
+        writeln!(w, "{header_line}")?;
+        for (i, l) in lives.iter().enumerate() {
+            w.write_all(life_line(&header_line, i, l).as_bytes())?;
+        }
+        w.flush()
+    })();
+    written.with_context(|| format!("writing {}", cp_path.display()))?;
+    drop(w);
+    tmp.commit(&cp_path)?;
+    if !args.json {
+        crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
+    }
+    report_lives(&args.scenario, &design, &case, &lives, args.json, Some(&args.out))
+}
