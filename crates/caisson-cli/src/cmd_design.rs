@@ -489,6 +489,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
         let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m).collect();
         plots(dir, title, &dynamic, &rigid)?;
+        crate::output::tidy_out_dir(dir, "design", &checkpoint.iter().map(|p| p.as_path()).collect::<Vec<_>>());
         if !args.json {
             crate::sayln!(
                 "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",

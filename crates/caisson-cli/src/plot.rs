@@ -216,7 +216,7 @@ pub fn decimate(points: &[(f64, f64)], buckets: usize) -> Vec<(f64, f64)> {
         .iter()
         .filter(|p| finite(p))
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.0), hi.max(p.0)));
-    if buckets == 0 || n <= 2 * buckets + 2 || !(hi > lo) {
+    if buckets == 0 || n <= 2 * buckets + 2 || hi <= lo {
         return points.to_vec();
     }
     let width = (hi - lo) / buckets as f64;

@@ -135,7 +135,7 @@ impl HistoryEnvelope {
             self.halve();
         }
         let t = r.t_s;
-        if self.rows % self.rows_per_bucket == 0 {
+        if self.rows.is_multiple_of(self.rows_per_bucket) {
             for v in values() {
                 self.buckets.extend_from_slice(&[t, v, t, v]);
             }
