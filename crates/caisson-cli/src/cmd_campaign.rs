@@ -205,6 +205,7 @@ pub fn run(args: CampaignArgs) -> Result<()> {
         write_atomic(&dir.join("campaign.json"), pretty(&full)?.as_bytes())?;
         write_atomic(&dir.join("campaign.csv"), &campaign_csv(&results)?)?;
         campaign_plots(dir, "campaign", &campaign.title, &results)?;
+        crate::output::tidy_out_dir(dir, "campaign", &[]);
         if !args.json {
             crate::sayln!("\nWrote campaign.json (with every realization and wave), campaign.csv, campaign.svg, campaign_vs_height.svg to {}", dir.display());
         }

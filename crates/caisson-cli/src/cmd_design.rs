@@ -575,6 +575,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
         let dir = args.out.as_deref().expect("--life-range requires --out");
         ensure_dir(dir)?;
         write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
+        let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
+        crate::output::tidy_out_dir(dir, "design", &keep);
         crate::sayln!(
             "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {}; no statistics (`caisson merge` joins the shards)",
             range.start,
@@ -587,7 +589,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
         return Ok(());
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
-    report_lives(&args.scenario, &design, &case, &lives, args.json, args.out.as_deref())
+    let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
+    report_lives(&args.scenario, &design, &case, &lives, args.json, args.out.as_deref(), &keep)
 }
 
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
@@ -600,6 +603,7 @@ pub(crate) fn report_lives(
     lives: &[StormOutcome],
     json: bool,
     out: Option<&Path>,
+    keep: &[&Path],
 ) -> Result<()> {
     let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, lives);
@@ -620,6 +624,7 @@ pub(crate) fn report_lives(
         let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
         plots(dir, title, &dynamic, &rigid, failure_m)?;
+        crate::output::tidy_out_dir(dir, "design", keep);
         if !json {
             crate::sayln!(
                 "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",

@@ -215,6 +215,7 @@ pub fn run(args: FragilityArgs) -> Result<()> {
         write_atomic(&dir.join("fragility.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("fragility.csv"), &fragility_csv(&setup, &result)?)?;
         fragility_plot(&dir.join("fragility.svg"), name, &result)?;
+        crate::output::tidy_out_dir(dir, "fragility", &[]);
         if !args.json {
             crate::sayln!("\nWrote fragility.json, fragility.csv, fragility.svg to {}", dir.display());
         }

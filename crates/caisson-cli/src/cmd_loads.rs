@@ -97,6 +97,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
                 );
             }
         }
+        crate::output::tidy_out_dir(out, "loads", &[]);
     }
     Ok(())
 }

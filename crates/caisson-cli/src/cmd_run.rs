@@ -2,14 +2,18 @@
 
 use crate::cli::RunArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, report_json, write_atomic};
+use crate::output::{check_out_dir, ensure_dir, pretty, report_json, tidy_out_dir, write_atomic, TempFile};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::checks::{response_warnings, structure_warnings, Response};
-use caisson::analysis::run::{self as engine, History, RunSummary};
+use caisson::analysis::envelope::{Column, HistoryEnvelope};
+use caisson::analysis::run::{self as engine, HistoryRow, Rows, RunSummary, Sampler};
 use caisson::loads::LoadSpec;
 use caisson::report::run::RunReport;
 use caisson::scenario::{self, Scenario};
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
 
 pub fn summary_text(sc: &Scenario, s: &RunSummary) -> String {
     let f = &s.foundation;
@@ -84,66 +88,119 @@ pub fn summary_text(sc: &Scenario, s: &RunSummary) -> String {
     t
 }
 
-pub fn history_csv(h: &History) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "time_s",
-        "ux_m",
-        "uy_m",
-        "theta_rad",
-        "vx_m_per_s",
-        "fx_kn",
-        "fy_kn",
-        "moment_knm",
-        "reaction_x_kn",
-        "reaction_y_kn",
-        "reaction_moment_knm",
-        "sliding_resistance_kn",
-        "sliding_springs",
-    ])?;
-    for k in 0..h.len() {
-        w.write_record(&[
-            format!("{}", h.t_s[k]),
-            format!("{:e}", h.ux_m[k]),
-            format!("{:e}", h.uy_m[k]),
-            format!("{:e}", h.theta_rad[k]),
-            format!("{:e}", h.vx_m_per_s[k]),
-            format!("{}", h.fx_n[k] / 1e3),
-            format!("{}", h.fy_n[k] / 1e3),
-            format!("{}", h.m_nm[k] / 1e3),
-            format!("{}", h.reaction_x_n[k] / 1e3),
-            format!("{}", h.reaction_y_n[k] / 1e3),
-            format!("{}", h.reaction_m_nm[k] / 1e3),
-            format!("{}", h.sliding_resistance_n[k] / 1e3),
-            format!("{}", h.sliding_springs[k]),
-        ])?;
+/// `history.csv` and `springs.csv` written row by row while the run proceeds, each to a
+/// temporary file of its own ([`TempFile`]: created exclusively, removed if the run fails or is
+/// stopped, renamed into place by [`Self::finish`]), and the bounded picture of the histories
+/// that the plots are drawn from ([`HistoryEnvelope`]): a run of any length holds no history in
+/// memory.
+pub struct HistoryFiles {
+    dir: PathBuf,
+    history: (TempFile, BufWriter<File>),
+    springs: (TempFile, BufWriter<File>),
+    envelope: HistoryEnvelope,
+    /// The first write error and its file; later rows are not written, and `finish` reports it.
+    error: Option<(&'static str, std::io::Error)>,
+}
+
+const HISTORY_COLUMNS: [&str; 13] = [
+    "time_s",
+    "ux_m",
+    "uy_m",
+    "theta_rad",
+    "vx_m_per_s",
+    "fx_kn",
+    "fy_kn",
+    "moment_knm",
+    "reaction_x_kn",
+    "reaction_y_kn",
+    "reaction_moment_knm",
+    "sliding_resistance_kn",
+    "sliding_springs",
+];
+
+impl HistoryFiles {
+    /// Start both files in `dir` (which exists) with their header rows, for `springs` springs.
+    pub fn create(dir: &Path, springs: usize) -> Result<Self> {
+        let open = |name: &str| -> Result<(TempFile, BufWriter<File>)> {
+            let (tmp, f) = TempFile::create(&dir.join(name))?;
+            Ok((tmp, BufWriter::with_capacity(1 << 16, f)))
+        };
+        let mut files = HistoryFiles {
+            dir: dir.to_path_buf(),
+            history: open("history.csv")?,
+            springs: open("springs.csv")?,
+            envelope: HistoryEnvelope::new(),
+            error: None,
+        };
+        let mut header = String::from("time_s");
+        for (what, unit) in [("normal", "kn"), ("shear", "kn"), ("uy", "m")] {
+            for i in 1..=springs {
+                header.push_str(&format!(",{what}_{i}_{unit}"));
+            }
+        }
+        let h = &mut files.history.1;
+        let r = writeln!(h, "{}", HISTORY_COLUMNS.join(",")).and_then(|_| writeln!(files.springs.1, "{header}"));
+        r.with_context(|| format!("writing {}", dir.join("history.csv").display()))?;
+        Ok(files)
     }
-    Ok(w.into_inner()?)
-}
 
-pub fn springs_csv(h: &History) -> Result<Vec<u8>> {
-    let n = h.springs();
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let mut header = vec!["time_s".to_string()];
-    header.extend((1..=n).map(|i| format!("normal_{i}_kn")));
-    header.extend((1..=n).map(|i| format!("shear_{i}_kn")));
-    header.extend((1..=n).map(|i| format!("uy_{i}_m")));
-    w.write_record(&header)?;
-    for k in 0..h.len() {
-        let mut row = vec![format!("{}", h.t_s[k])];
-        row.extend(h.spring_forces_n[k * 2 * n..(k + 1) * 2 * n].iter().map(|v| format!("{}", v / 1e3)));
-        row.extend(h.spring_uy_m[k * n..(k + 1) * n].iter().map(|v| format!("{v:e}")));
-        w.write_record(&row)?;
+    /// Write one row to both files (the same numbers, in the same text, as the whole-history
+    /// writer of earlier versions) and add it to the picture.
+    pub fn row(&mut self, r: &HistoryRow<'_>) {
+        self.envelope.push(r);
+        if self.error.is_none() {
+            if let Err(e) = self.write_row(r) {
+                self.error = Some(e);
+            }
+        }
     }
-    Ok(w.into_inner()?)
+
+    fn write_row(&mut self, r: &HistoryRow<'_>) -> Result<(), (&'static str, std::io::Error)> {
+        Self::history_row(&mut self.history.1, r).map_err(|e| ("history.csv", e))?;
+        Self::springs_row(&mut self.springs.1, r).map_err(|e| ("springs.csv", e))
+    }
+
+    fn history_row(h: &mut impl Write, r: &HistoryRow<'_>) -> std::io::Result<()> {
+        write!(h, "{},{:e},{:e},{:e},{:e}", r.t_s, r.ux_m, r.uy_m, r.theta_rad, r.vx_m_per_s)?;
+        for v in [r.fx_n, r.fy_n, r.m_nm, r.reaction_x_n, r.reaction_y_n, r.reaction_m_nm, r.sliding_resistance_n] {
+            write!(h, ",{}", v / 1e3)?;
+        }
+        writeln!(h, ",{}", r.sliding_springs)
+    }
+
+    fn springs_row(s: &mut impl Write, r: &HistoryRow<'_>) -> std::io::Result<()> {
+        write!(s, "{}", r.t_s)?;
+        for x in r.springs {
+            write!(s, ",{}", x.normal_n / 1e3)?;
+        }
+        for x in r.springs {
+            write!(s, ",{}", x.shear_n / 1e3)?;
+        }
+        for i in 0..r.springs.len() {
+            write!(s, ",{:e}", r.spring_uy_m(i))?;
+        }
+        writeln!(s)
+    }
+
+    /// Flush both files and rename them into place; the picture of the histories for the plots.
+    pub fn finish(self) -> Result<HistoryEnvelope> {
+        let HistoryFiles { dir, history, springs, envelope, error } = self;
+        if let Some((name, e)) = error {
+            return Err(anyhow::Error::new(e).context(format!("writing {}", dir.join(name).display())));
+        }
+        for ((tmp, mut w), name) in [(history, "history.csv"), (springs, "springs.csv")] {
+            let path = dir.join(name);
+            w.flush().with_context(|| format!("writing {}", path.display()))?;
+            drop(w);
+            tmp.commit(&path)?;
+        }
+        Ok(envelope)
+    }
 }
 
-fn xy(t: &[f64], y: &[f64], scale: f64) -> Vec<(f64, f64)> {
-    t.iter().zip(y).map(|(&a, &b)| (a, b * scale)).collect()
-}
-
-pub fn write_plots(dir: &std::path::Path, h: &History, title: &str) -> Result<()> {
-    let t = &h.t_s;
+pub fn write_plots(dir: &std::path::Path, h: &HistoryEnvelope, title: &str) -> Result<()> {
+    let kn = |c: Column| -> Vec<(f64, f64)> { h.series(c).into_iter().map(|(t, v)| (t, v * 1e-3)).collect() };
+    let scaled = |c: Column, k: f64| -> Vec<(f64, f64)> { h.series(c).into_iter().map(|(t, v)| (t, v * k)).collect() };
     panels(
         &dir.join("loads.svg"),
         &format!("{title}: loads and reactions"),
@@ -152,23 +209,23 @@ pub fn write_plots(dir: &std::path::Path, h: &History, title: &str) -> Result<()
             Panel {
                 y_label: "horizontal (kN)".into(),
                 series: vec![
-                    Series::line("wave force F_x", xy(t, &h.fx_n, 1e-3)),
-                    Series::line("base reaction R_x", xy(t, &h.reaction_x_n, 1e-3)),
-                    Series::dashed("static sliding resistance", xy(t, &h.sliding_resistance_n, 1e-3)),
+                    Series::line("wave force F_x", kn(Column::Fx)),
+                    Series::line("base reaction R_x", kn(Column::ReactionX)),
+                    Series::dashed("static sliding resistance", kn(Column::SlidingResistance)),
                 ],
             },
             Panel {
                 y_label: "vertical (kN)".into(),
                 series: vec![
-                    Series::line("uplift F_y", xy(t, &h.fy_n, 1e-3)),
-                    Series::line("Σ spring reactions", xy(t, &h.reaction_y_n, 1e-3)),
+                    Series::line("uplift F_y", kn(Column::Fy)),
+                    Series::line("Σ spring reactions", kn(Column::ReactionY)),
                 ],
             },
             Panel {
                 y_label: "moment (kN·m)".into(),
                 series: vec![
-                    Series::line("wave moment (clockwise +)", xy(t, &h.m_nm, 1e-3)),
-                    Series::line("base reaction moment", xy(t, &h.reaction_m_nm, 1e-3)),
+                    Series::line("wave moment (clockwise +)", kn(Column::Moment)),
+                    Series::line("base reaction moment", kn(Column::ReactionMoment)),
                 ],
             },
         ],
@@ -180,38 +237,71 @@ pub fn write_plots(dir: &std::path::Path, h: &History, title: &str) -> Result<()
         &[
             Panel {
                 y_label: "u_x (mm)".into(),
-                series: vec![Series::line("horizontal (shoreward +)", xy(t, &h.ux_m, 1e3))],
+                series: vec![Series::line("horizontal (shoreward +)", scaled(Column::Ux, 1e3))],
             },
             Panel {
                 y_label: "v_x (m/s)".into(),
-                series: vec![Series::line("horizontal velocity", xy(t, &h.vx_m_per_s, 1.0))],
+                series: vec![Series::line("horizontal velocity", scaled(Column::Vx, 1.0))],
             },
-            Panel { y_label: "u_y (mm)".into(), series: vec![Series::line("vertical (up +)", xy(t, &h.uy_m, 1e3))] },
+            Panel {
+                y_label: "u_y (mm)".into(),
+                series: vec![Series::line("vertical (up +)", scaled(Column::Uy, 1e3))],
+            },
             Panel {
                 y_label: "θ (mrad)".into(),
-                series: vec![Series::line("rotation (clockwise +)", xy(t, &h.theta_rad, 1e3))],
+                series: vec![Series::line("rotation (clockwise +)", scaled(Column::Theta, 1e3))],
             },
         ],
     )?;
-    let n = h.springs();
-    let per_spring = |offset: usize| -> Vec<Series> {
-        (0..n)
-            .map(|i| {
-                let pts = (0..h.len()).map(|k| (t[k], h.spring_forces_n[k * 2 * n + offset + i] / 1e3)).collect();
-                Series::line(format!("x = {:+.3} m", h.spring_x_m[i]), pts)
-            })
-            .collect()
+    let per_spring = |column: fn(usize) -> Column| -> Vec<Series> {
+        (0..h.springs()).map(|i| Series::line(format!("x = {:+.3} m", h.spring_x_m()[i]), kn(column(i)))).collect()
     };
     panels(
         &dir.join("springs.svg"),
         &format!("{title}: spring reactions (seaward → shoreward)"),
         "time (s)",
         &[
-            Panel { y_label: "normal N_i (kN)".into(), series: per_spring(0) },
-            Panel { y_label: "shear F_i (kN)".into(), series: per_spring(n) },
+            Panel { y_label: "normal N_i (kN)".into(), series: per_spring(Column::Normal) },
+            Panel { y_label: "shear F_i (kN)".into(), series: per_spring(Column::Shear) },
         ],
     )?;
     Ok(())
+}
+
+/// Create `dir` (and its missing parents) for a run's files; the directories this call created
+/// are removed again, if still empty, when the run fails (the guard's drop, unless
+/// [`OutDir::keep`]): a failed run leaves no empty directory behind.
+pub struct OutDir {
+    /// The directories created, innermost first.
+    created: Vec<PathBuf>,
+}
+
+impl OutDir {
+    pub fn create(dir: &Path) -> Result<Self> {
+        let created = dir
+            .ancestors()
+            .filter(|p| !p.as_os_str().is_empty())
+            .take_while(|p| std::fs::symlink_metadata(p).is_err())
+            .map(Path::to_path_buf)
+            .collect();
+        ensure_dir(dir)?;
+        Ok(OutDir { created })
+    }
+    /// The run succeeded: keep the directories.
+    pub fn keep(mut self) {
+        self.created.clear();
+    }
+}
+
+impl Drop for OutDir {
+    fn drop(&mut self) {
+        // Only empty directories are removed (the temporary files are gone by now).
+        for d in &self.created {
+            if std::fs::remove_dir(d).is_err() {
+                break;
+            }
+        }
+    }
 }
 
 pub fn run(args: RunArgs) -> Result<()> {
@@ -233,27 +323,37 @@ pub fn run(args: RunArgs) -> Result<()> {
 
 /// `caisson run` on a `[load]` scenario.
 fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
-    let result =
-        engine::run(sc.structure(), load, sc.duration_s, args.out.is_some()).context("the dynamic run failed")?;
+    // With --out the histories go to their files as the run proceeds.
+    let out = args.out.as_deref().map(OutDir::create).transpose()?;
+    let mut files = match &args.out {
+        Some(dir) => Some(HistoryFiles::create(dir, sc.foundation().springs)?),
+        None => None,
+    };
+    let mut rows = files.as_mut().map(|f| Rows::new(Sampler::of(sc.structure()), |r: &HistoryRow<'_>| f.row(r)));
+    let summary =
+        engine::run_observed(sc.structure(), load, sc.duration_s, rows.as_mut()).context("the dynamic run failed")?;
+    drop(rows);
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
     let s = sc.structure();
     let mut warnings = structure_warnings(s);
-    warnings.extend(response_warnings(s, &Response::from(&result.summary)));
-    let report = RunReport::new(&result.summary, x, warnings);
+    warnings.extend(response_warnings(s, &Response::from(&summary)));
+    let report = RunReport::new(&summary, x, warnings);
     let json = report_json(&report, "summary")?;
     crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {
-        crate::say!("{}", summary_text(sc, &result.summary));
+        crate::say!("{}", summary_text(sc, &summary));
     }
-    if let (Some(dir), Some(h)) = (&args.out, &result.history) {
-        ensure_dir(dir)?;
+    if let (Some(dir), Some(files)) = (&args.out, files) {
         write_atomic(&dir.join("summary.json"), pretty(&json)?.as_bytes())?;
-        write_atomic(&dir.join("history.csv"), &history_csv(h)?)?;
-        write_atomic(&dir.join("springs.csv"), &springs_csv(h)?)?;
+        let envelope = files.finish()?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
-        write_plots(dir, h, title)?;
+        write_plots(dir, &envelope, title)?;
+        if let Some(o) = out {
+            o.keep();
+        }
+        tidy_out_dir(dir, "run", &[]);
         if !args.json {
             crate::sayln!(
                 "\nWrote summary.json, history.csv, springs.csv, loads.svg, displacements.svg, springs.svg to {}",

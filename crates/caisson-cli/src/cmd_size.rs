@@ -110,6 +110,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
         write_atomic(&dir.join("candidates.csv"), &candidates_csv(&report)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("size");
         plot(dir, title, &report)?;
+        crate::output::tidy_out_dir(dir, "size", &[]);
         if !args.json {
             crate::sayln!("\nWrote size.json, candidates.csv, design_curve.svg to {}", dir.display());
         }

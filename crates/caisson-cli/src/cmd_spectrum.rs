@@ -154,6 +154,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
                 },
             ],
         )?;
+        crate::output::tidy_out_dir(dir, "spectrum", &[]);
         if !args.json {
             crate::sayln!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
         }

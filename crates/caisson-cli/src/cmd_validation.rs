@@ -538,6 +538,7 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let _ = writeln!(t, "{CHOICES}");
     let path = out.join("validation.md");
     write_atomic(&path, t.as_bytes())?;
+    crate::output::tidy_out_dir(&out, "validation", &[]);
     crate::sayln!(
         "Wrote {} and its figures in {} ({} of {} findings reproduced with seed-2011, {} with consistent)",
         path.display(),

@@ -40,6 +40,119 @@ pub fn remove_pending_and_exit(code: i32) -> ! {
     std::process::exit(code)
 }
 
+/// Every output file this process has written (renamed into place), for [`tidy_out_dir`].
+static WRITTEN: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn written() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    WRITTEN.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The files each command writes into its `--out` directory (`*`: any text; `figures/`: the
+/// subdirectory). No two commands share a name.
+pub const OUTPUTS: &[(&str, &[&str])] = &[
+    (
+        "run",
+        &[
+            "summary.json",
+            "history.csv",
+            "springs.csv",
+            "loads.svg",
+            "displacements.svg",
+            "springs.svg",
+            "realizations.csv",
+            "waves.csv",
+            "sliding.svg",
+        ],
+    ),
+    ("spectrum", &["spectrum.csv", "spectrum.json", "spectrum.svg"]),
+    ("loads", &["loads.json", "wave_loads.csv", "wave_loads.svg"]),
+    ("campaign", &["campaign.json", "campaign.csv", "campaign.svg", "campaign_vs_height.svg"]),
+    ("design", &["design.json", "lives.csv", "histogram.svg", "exceedance.svg", CHECKPOINT]),
+    ("fragility", &["fragility.json", "fragility.csv", "fragility.svg"]),
+    ("size", &["size.json", "candidates.csv", "design_curve.svg"]),
+    ("validation", &["validation.md", "figures/validation_*.svg"]),
+];
+
+/// A design checkpoint: work that `--resume` continues, never removed by another run.
+const CHECKPOINT: &str = "checkpoint.jsonl";
+
+/// Whether `name` matches `pattern` (at most one `*`).
+fn matches(pattern: &str, name: &str) -> bool {
+    match pattern.split_once('*') {
+        Some((pre, post)) => name.len() >= pre.len() + post.len() && name.starts_with(pre) && name.ends_with(post),
+        None => pattern == name,
+    }
+}
+
+/// The files (or links) in `dir` that `pattern` names, with their names relative to `dir`.
+fn present(dir: &Path, pattern: &str) -> Vec<(String, PathBuf)> {
+    let (sub, file) = pattern.rsplit_once('/').map_or(("", pattern), |(d, f)| (d, f));
+    let here = if sub.is_empty() { dir.to_path_buf() } else { dir.join(sub) };
+    let mut out = Vec::new();
+    if !file.contains('*') {
+        let p = here.join(file);
+        if std::fs::symlink_metadata(&p).is_ok_and(|m| !m.is_dir()) {
+            out.push((pattern.to_string(), p));
+        }
+        return out;
+    }
+    let Ok(entries) = std::fs::read_dir(&here) else { return out };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        if matches(file, &name) && e.file_type().is_ok_and(|t| !t.is_dir()) {
+            let rel = if sub.is_empty() { name } else { format!("{sub}/{name}") };
+            out.push((rel, e.path()));
+        }
+    }
+    out.sort();
+    out
+}
+
+/// After `command` has written its files into `dir`: no file there may be mistaken for this
+/// run's results. Files that `command` writes (by name, [`OUTPUTS`]) but did not write this time
+/// are left from an earlier run: they are removed, and a line on stderr names them (a design
+/// checkpoint other than `keep` is named in a `Warning:` instead: it may hold work to resume).
+/// Files that other commands write are named in a `Warning:`. Other files are not caisson's and
+/// are left alone.
+pub fn tidy_out_dir(dir: &Path, command: &str, keep: &[&Path]) {
+    let written = written().clone();
+    let mut removed = Vec::new();
+    let mut foreign: Vec<String> = Vec::new();
+    for (cmd, patterns) in OUTPUTS {
+        let mut names = Vec::new();
+        for pattern in patterns.iter() {
+            for (rel, path) in present(dir, pattern) {
+                let ours = *cmd == command;
+                if ours && (written.contains(&path) || keep.contains(&path.as_path())) {
+                    continue;
+                }
+                if ours && *pattern != CHECKPOINT {
+                    match std::fs::remove_file(&path) {
+                        Ok(()) => removed.push(rel),
+                        Err(e) => names.push(format!("{rel} (cannot be removed: {e})")),
+                    }
+                } else {
+                    names.push(rel);
+                }
+            }
+        }
+        if !names.is_empty() {
+            let by = if *cmd == command { "an earlier run".to_string() } else { format!("`caisson {cmd}`") };
+            foreign.push(format!("{} (written by {by})", names.join(", ")));
+        }
+    }
+    if !removed.is_empty() {
+        eprintln!(
+            "Removed {} from {}: an earlier `caisson {command}` wrote them and this run does not",
+            removed.join(", "),
+            dir.display()
+        );
+    }
+    if !foreign.is_empty() {
+        eprintln!("Warning: {} also holds {}: they are not results of this run", dir.display(), foreign.join("; "));
+    }
+}
+
 /// A temporary file beside its destination, created exclusively; removed on drop unless
 /// [committed](TempFile::commit).
 pub struct TempFile {
@@ -86,6 +199,7 @@ impl TempFile {
             files.retain(|p| p != &self.path);
             self.committed = true;
         }
+        written().push(dest.to_path_buf());
         if let Some(dir) = dest.parent().filter(|d| !d.as_os_str().is_empty()) {
             let _ = std::fs::File::open(dir).and_then(|d| d.sync_all());
         }

@@ -116,6 +116,7 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
         root.fill(&WHITE).map_err(|e| anyhow::anyhow!("{e}"))?;
         let root = root.titled(title, ("sans-serif", 20)).map_err(|e| anyhow::anyhow!("{e}"))?;
         let areas = root.split_evenly((panels.len(), 1));
+        let buckets = line_buckets(panels);
         for (panel, area) in panels.iter().zip(areas.iter()) {
             let keep = |&(x, y): &(f64, f64)| (!scales.log_x || x > 0.0) && (!scales.log_y || y > 0.0);
             let shown = Panel {
@@ -133,6 +134,7 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                     .collect(),
             };
             let (xr, yr) = bounds(&shown);
+            let look = Look { x_label, buckets, xr, yr };
             let positive = |f: fn(&(f64, f64)) -> f64| {
                 let v = shown.series.iter().flat_map(|s| s.points.iter().map(f));
                 v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
@@ -145,25 +147,17 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
             let err = |e: plotters::drawing::DrawingAreaErrorKind<_>| anyhow::anyhow!("{e}");
             match (scales.log_x, scales.log_y) {
                 (false, false) => {
-                    draw(builder().build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(err)?, &shown, x_label)?
+                    draw(builder().build_cartesian_2d(xr.0..xr.1, yr.0..yr.1).map_err(err)?, &shown, &look)?
                 }
                 (true, false) => {
                     let (a, b) = positive(|p| p.0);
                     let x = log_range(a, b);
-                    draw(
-                        builder().build_cartesian_2d((x.0..x.1).log_scale(), yr.0..yr.1).map_err(err)?,
-                        &shown,
-                        x_label,
-                    )?
+                    draw(builder().build_cartesian_2d((x.0..x.1).log_scale(), yr.0..yr.1).map_err(err)?, &shown, &look)?
                 }
                 (false, true) => {
                     let (a, b) = positive(|p| p.1);
                     let y = log_range(a, b);
-                    draw(
-                        builder().build_cartesian_2d(xr.0..xr.1, (y.0..y.1).log_scale()).map_err(err)?,
-                        &shown,
-                        x_label,
-                    )?
+                    draw(builder().build_cartesian_2d(xr.0..xr.1, (y.0..y.1).log_scale()).map_err(err)?, &shown, &look)?
                 }
                 (true, true) => {
                     let (x, y) = (positive(|p| p.0), positive(|p| p.1));
@@ -171,7 +165,7 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                     draw(
                         builder().build_cartesian_2d((x.0..x.1).log_scale(), (y.0..y.1).log_scale()).map_err(err)?,
                         &shown,
-                        x_label,
+                        &look,
                     )?
                 }
             }
@@ -182,11 +176,20 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
     Ok(())
 }
 
-/// Draw one panel's series, mesh and legend on `chart` (any coordinates of f64 values).
+/// How a panel is drawn: its x label, the x-buckets of its lines and its (linear) data ranges.
+struct Look<'a> {
+    x_label: &'a str,
+    buckets: usize,
+    xr: (f64, f64),
+    yr: (f64, f64),
+}
+
+/// Draw one panel's series, mesh and legend on `chart` (any coordinates of f64 values); lines
+/// decimated ([`decimate`]).
 fn draw<'a, X, Y>(
     mut chart: ChartContext<'a, SVGBackend<'a>, Cartesian2d<X, Y>>,
     panel: &Panel,
-    x_label: &str,
+    look: &Look,
 ) -> Result<()>
 where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
@@ -194,7 +197,7 @@ where
 {
     chart
         .configure_mesh()
-        .x_desc(x_label)
+        .x_desc(look.x_label)
         .y_desc(panel.y_label.as_str())
         .light_line_style(WHITE.mix(0.0))
         .draw()
@@ -235,12 +238,16 @@ where
             chart
                 .draw_series(s.points.iter().map(|&(x, y)| Circle::new((x, y), 3, style)))
                 .map_err(|e| anyhow::anyhow!("{e}"))?
-        } else if s.dashed {
+        } else if s.dashed && dashes(&decimate(&s.points, look.buckets), look.xr, look.yr) <= MAX_DASHES {
             chart
-                .draw_series(DashedLineSeries::new(s.points.iter().copied(), 6, 4, style))
+                .draw_series(DashedLineSeries::new(decimate(&s.points, look.buckets), 6, 4, style))
                 .map_err(|e| anyhow::anyhow!("{e}"))?
         } else {
-            chart.draw_series(LineSeries::new(s.points.iter().copied(), style)).map_err(|e| anyhow::anyhow!("{e}"))?
+            // A dashed line that zigzags over the panel (a thousand waves) would be tens of
+            // thousands of dashes that do not show as dashes: it is drawn solid, thin and grey.
+            chart
+                .draw_series(LineSeries::new(decimate(&s.points, look.buckets), style))
+                .map_err(|e| anyhow::anyhow!("{e}"))?
         };
         // Only labelled series enter the legend (no empty entries).
         if !label.is_empty() {
@@ -257,4 +264,133 @@ where
             .map_err(|e| anyhow::anyhow!("{e}"))?;
     }
     Ok(())
+}
+
+/// Most points the lines of one figure keep together (about 8 bytes of SVG each), before
+/// [`MAX_BUCKETS`] and [`MIN_BUCKETS`].
+const FIGURE_POINTS: usize = 40_000;
+/// Most x-buckets of a line: more than the ~800 pixel columns of a panel, so a bucket is
+/// narrower than a pixel and its minimum and maximum draw what all its points would.
+const MAX_BUCKETS: usize = 1000;
+/// Fewest x-buckets of a line, however many lines a figure has.
+const MIN_BUCKETS: usize = 100;
+
+/// Most dashes of a dashed line (one SVG element each, ~100 bytes); a line that would need more
+/// is drawn solid.
+const MAX_DASHES: usize = 2000;
+
+/// About how many dashes (6 px dash, 4 px gap) a dashed line through `points` draws on a panel of
+/// about 800 × 200 pixels spanning `x` and `y`.
+fn dashes(points: &[(f64, f64)], x: (f64, f64), y: (f64, f64)) -> usize {
+    let (sx, sy) = (800.0 / (x.1 - x.0), 200.0 / (y.1 - y.0));
+    let pixels: f64 = points
+        .windows(2)
+        .map(|w| ((w[1].0 - w[0].0) * sx).hypot((w[1].1 - w[0].1) * sy))
+        .filter(|l| l.is_finite())
+        .sum();
+    (pixels / 10.0) as usize
+}
+
+/// The x-buckets of each line of a figure: [`FIGURE_POINTS`] shared by its lines (markers are not
+/// decimated), from [`MIN_BUCKETS`] to [`MAX_BUCKETS`].
+fn line_buckets(panels: &[Panel]) -> usize {
+    let lines = panels.iter().flat_map(|p| &p.series).filter(|s| !s.markers).count().max(1);
+    (FIGURE_POINTS / (2 * lines)).clamp(MIN_BUCKETS, MAX_BUCKETS)
+}
+
+/// The points of a line reduced for drawing: the x range is cut into `buckets` equal buckets,
+/// and of each run of consecutive points in one bucket only the lowest and the highest are
+/// kept, in their order, so every peak survives; the first and the last point are always kept,
+/// and a point that is not finite is passed through. A line of at most 2 `buckets` + 2 points
+/// is returned as it is.
+pub fn decimate(points: &[(f64, f64)], buckets: usize) -> Vec<(f64, f64)> {
+    let n = points.len();
+    let finite = |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite();
+    let (lo, hi) = points
+        .iter()
+        .filter(|p| finite(p))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.0), hi.max(p.0)));
+    if buckets == 0 || n <= 2 * buckets + 2 || hi <= lo {
+        return points.to_vec();
+    }
+    let width = (hi - lo) / buckets as f64;
+    let bucket = |x: f64| (((x - lo) / width) as usize).min(buckets - 1);
+    let mut out = Vec::with_capacity(2 * buckets + 2);
+    out.push(points[0]);
+    let mut i = 1;
+    while i < n - 1 {
+        if !finite(&points[i]) {
+            out.push(points[i]);
+            i += 1;
+            continue;
+        }
+        let b = bucket(points[i].0);
+        let (mut low, mut high) = (i, i);
+        let mut j = i + 1;
+        while j < n - 1 && finite(&points[j]) && bucket(points[j].0) == b {
+            if points[j].1 < points[low].1 {
+                low = j;
+            }
+            if points[j].1 > points[high].1 {
+                high = j;
+            }
+            j += 1;
+        }
+        out.push(points[low.min(high)]);
+        if low != high {
+            out.push(points[low.max(high)]);
+        }
+        i = j;
+    }
+    out.push(points[n - 1]);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A long line keeps at most two points per bucket plus its ends, its extremes and its
+    /// order; a short one is untouched.
+    #[test]
+    fn decimation_keeps_ends_peaks_and_order() {
+        let n = 100_001;
+        let pts: Vec<(f64, f64)> = (0..n)
+            .map(|k| {
+                let x = k as f64 * 1e-3;
+                (
+                    x,
+                    if k == 31_415 {
+                        50.0
+                    } else if k == 77_777 {
+                        -50.0
+                    } else {
+                        (7.0 * x).sin()
+                    },
+                )
+            })
+            .collect();
+        let d = decimate(&pts, 1000);
+        assert!(d.len() <= 2 * 1000 + 2 && d.len() > 1000, "{} points", d.len());
+        assert_eq!(d[0], pts[0]);
+        assert_eq!(*d.last().unwrap(), pts[n - 1]);
+        assert!(d.contains(&pts[31_415]) && d.contains(&pts[77_777]), "peaks kept");
+        assert!(d.windows(2).all(|w| w[0].0 < w[1].0), "order kept");
+        // Every bucket of the original keeps its own extremes.
+        let width = (pts[n - 1].0 - pts[0].0) / 1000.0;
+        let mut checked = 0;
+        for b in 0..1000 {
+            let inside: Vec<&(f64, f64)> =
+                pts[1..n - 1].iter().filter(|p| ((p.0 / width) as usize).min(999) == b).collect();
+            let top = inside.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+            let kept =
+                d.iter().filter(|p| ((p.0 / width) as usize).min(999) == b).map(|p| p.1).fold(f64::MIN, f64::max);
+            assert_eq!(top, kept, "bucket {b}");
+            checked += 1;
+        }
+        assert_eq!(checked, 1000);
+        let short: Vec<(f64, f64)> = pts[..2002].to_vec();
+        assert_eq!(decimate(&short, 1000), short);
+        assert_eq!(line_buckets(&[]), MAX_BUCKETS);
+    }
 }

@@ -2,12 +2,12 @@
 //! CSV and the seed's Figs. 12/14-style plots of one realization. Also the progress bar and the
 //! thread pool shared with `caisson campaign`.
 
-use crate::cmd_run::{history_csv, springs_csv, write_plots};
+use crate::cmd_run::{write_plots, HistoryFiles, OutDir};
 use crate::input_err;
-use crate::output::{ensure_dir, pretty, progress, report_json, write_atomic};
+use crate::output::{pretty, progress, report_json, tidy_out_dir, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::run::{FoundationSummary, History};
+use caisson::analysis::run::{FoundationSummary, HistoryRow, Rows, Sampler};
 use caisson::analysis::train::{run_realizations, TrainCase, TrainSummary};
 use caisson::loads::regime::Regime;
 use caisson::report::train::{describe_train, TrainRunReport};
@@ -196,22 +196,22 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
         crate::say!("{}", summary_text(&case, &summary));
     }
     if let Some(dir) = out {
-        // Realization 0 again, with its time histories (deterministic: the same numbers).
-        let solver = case.structure.solver;
-        let samples = (case.duration_s() / solver.output_interval_s).ceil() as usize + 1;
-        let (c, f) = (&case.structure.caisson, &case.structure.foundation);
-        let x = f.spring_positions(c.width_m);
-        let mut h = History::new(solver.output_interval_s, samples, x, c.weight_in_water_n, f.mu_static);
-        case.run(0, Some(&mut h)).context("the dynamic run failed")?;
-        ensure_dir(dir)?;
+        // Realization 0 again, its time histories written as it runs (deterministic: the same
+        // numbers).
+        let guard = OutDir::create(dir)?;
+        let mut files = HistoryFiles::create(dir, case.structure.foundation.springs)?;
+        let mut rows = Rows::new(Sampler::of(case.structure), |r: &HistoryRow<'_>| files.row(r));
+        case.run(0, Some(&mut rows)).context("the dynamic run failed")?;
+        drop(rows);
         write_atomic(&dir.join("summary.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("realizations.csv"), &realizations_csv(&summary)?)?;
         write_atomic(&dir.join("waves.csv"), &waves_csv(&summary)?)?;
-        write_atomic(&dir.join("history.csv"), &history_csv(&h)?)?;
-        write_atomic(&dir.join("springs.csv"), &springs_csv(&h)?)?;
+        let envelope = files.finish()?;
         let title = path.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
-        write_plots(dir, &h, &format!("{title}, realization 0"))?;
+        write_plots(dir, &envelope, &format!("{title}, realization 0"))?;
         cumulative_plot(&dir.join("sliding.svg"), title, &summary)?;
+        guard.keep();
+        tidy_out_dir(dir, "run", &[]);
         if !json_out {
             crate::sayln!("\nWrote summary.json, realizations.csv, waves.csv, history.csv and springs.csv (realization 0), loads.svg, displacements.svg, springs.svg, sliding.svg to {}", dir.display());
         }

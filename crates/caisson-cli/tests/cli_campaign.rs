@@ -330,7 +330,7 @@ fn bad_wave_train_keys_are_named_with_the_allowed_values() {
     );
     let cases: [(&str, String, &[&str]); 13] = [
         ("campaign", edit(&c, "waves = 3 ", "waves = 0 "), &["`[waves] waves` = 0", "1 to 1000000"]),
-        ("run", edit(&w, "waves = 3 ", "waves = 1.5 "), &["line", "waves = 1.5", "expected i64"]),
+        ("run", edit(&w, "waves = 3 ", "waves = 1.5 "), &["line", "`[waves] waves` must be a whole number, got 1.5"]),
         (
             "campaign",
             edit(&c, "realizations = 2", "realizations = -4"),
@@ -357,7 +357,11 @@ fn bad_wave_train_keys_are_named_with_the_allowed_values() {
             &["`[waves] height_variability_fraction` = 0.6", "below 1"],
         ),
         ("run", edit(&w, "seed = 1", "seed = -1"), &["`[waves] seed` = -1", "≥ 0"]),
-        ("campaign", edit(&c, "seed = 1", "seed = \"one\""), &["line", "seed = \"one\""]),
+        (
+            "campaign",
+            edit(&c, "seed = 1", "seed = \"one\""),
+            &["line", "`[waves] seed` must be a whole number, got the string \"one\""],
+        ),
         ("run", edit(&w, "seed = 1", "seed = 1\nrigid_block_mu = 0"), &["`[waves] rigid_block_mu` = 0", "> 0 and ≤ 2"]),
         (
             "campaign",

@@ -281,7 +281,10 @@ fn key_of_another_load_kind() {
 
 #[test]
 fn string_where_a_number_is_expected() {
-    bad_toml(&edit("width_m = 0.78", "width_m = \"wide\""), &["scenario.toml line 3", "wide", "expected"]);
+    bad_toml(
+        &edit("width_m = 0.78", "width_m = \"wide\""),
+        &["scenario.toml line 3", "`[caisson] width_m` must be a number (m), got the string \"wide\""],
+    );
 }
 
 #[test]

@@ -104,6 +104,11 @@ fn lib_error(py: Python<'_>, e: LibError, text: Option<&str>) -> PyErr {
             scenario_error(py, message, Some(key), Some(value), Some(allowed))
         }
         LibError::Missing { key, hint } => scenario_error(py, message, Some(key), None, Some(hint)),
+        LibError::WrongType { key, expected, got, .. } => {
+            // The value as written: `"20"`, `2.5`, `a list`.
+            let value = got.strip_prefix("the string ").unwrap_or(&got).trim_end_matches(" in the list").to_string();
+            scenario_error(py, message, Some(key), Some(value), Some(format!("must be {expected}")))
+        }
         LibError::Syntax { line, .. } => {
             let key = text.and_then(|t| key_at_line(t, line));
             scenario_error(py, message, key, None, None)

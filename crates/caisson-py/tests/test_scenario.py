@@ -66,6 +66,18 @@ def test_unknown_key_names_the_table_and_key():
     assert "unknown field `widht_m`" in str(err.value)
 
 
+def test_a_value_of_the_wrong_kind_names_the_key_and_the_kind(tmp_path):
+    sc = caisson.Scenario.from_toml(EXAMPLES / "table5_triangle.toml")
+    with pytest.raises(caisson.ScenarioError) as err:
+        sc.replace(caisson={"width_m": "20"})
+    e = err.value
+    assert (e.key, e.value, e.allowed) == ("[caisson] width_m", '"20"', "must be a number (m)")
+    assert str(e).endswith('`[caisson] width_m` must be a number (m), got the string "20"')
+    with pytest.raises(caisson.ScenarioError) as err:
+        sc.replace(foundation={"springs": 2.5})
+    assert (err.value.key, err.value.value, err.value.allowed) == ("[foundation] springs", "2.5", "must be a whole number")
+
+
 def test_missing_table_names_it():
     with pytest.raises(caisson.ScenarioError) as err:
         caisson.Design(caisson.Scenario.from_toml(EXAMPLES / "table5_triangle.toml"))

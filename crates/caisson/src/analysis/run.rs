@@ -1,5 +1,6 @@
 //! A single run: build the model from a scenario, integrate, and collect the results the user
-//! asks for (peaks always; decimated histories on request).
+//! asks for (peaks always; the time histories on request: kept whole ([`History`]) or handed
+//! row by row to the caller as the run proceeds ([`Rows`])).
 //!
 //! Definitions of the reported quantities:
 //!
@@ -44,7 +45,7 @@
 
 use super::Structure;
 use crate::dynamics::{Model, Observer, Simulation, SolveError, SolverStats, StepView};
-use crate::foundation::Foundation;
+use crate::foundation::{Foundation, SpringResponse};
 use crate::loads::LoadHistory;
 use crate::structure::Caisson;
 
@@ -192,8 +193,133 @@ impl Observer for Peaks {
     }
 }
 
-/// Decimated time histories (SI). Column-per-quantity vectors of equal length.
-#[derive(Debug, Clone, Default)]
+/// One row of the time histories (SI): the state, loads and reactions of the committed step that
+/// [`Sampler`] picks for an output interval. The columns of `history.csv` and `springs.csv`.
+#[derive(Debug, Clone, Copy)]
+pub struct HistoryRow<'a> {
+    pub t_s: f64,
+    pub ux_m: f64,
+    pub uy_m: f64,
+    pub theta_rad: f64,
+    pub vx_m_per_s: f64,
+    pub fx_n: f64,
+    pub fy_n: f64,
+    pub m_nm: f64,
+    pub reaction_x_n: f64,
+    pub reaction_y_n: f64,
+    pub reaction_m_nm: f64,
+    /// μ_s (W' − F_y(t)), N.
+    pub sliding_resistance_n: f64,
+    pub sliding_springs: u32,
+    /// The springs' responses (normal and shear forces), seaward first.
+    pub springs: &'a [SpringResponse],
+    /// Spring positions, m.
+    pub spring_x_m: &'a [f64],
+}
+
+impl HistoryRow<'_> {
+    /// Vertical displacement of spring `i`, u_y − θ x_i, m.
+    pub fn spring_uy_m(&self, i: usize) -> f64 {
+        self.uy_m - self.theta_rad * self.spring_x_m[i]
+    }
+}
+
+/// Picks the rows of the time histories: the first committed step at or after each
+/// `output_interval_s`, from t = 0.
+#[derive(Debug, Clone)]
+pub struct Sampler {
+    interval_s: f64,
+    next_s: f64,
+    weight_n: f64,
+    mu_static: f64,
+    spring_x_m: Vec<f64>,
+}
+
+impl Sampler {
+    pub fn new(interval_s: f64, spring_x_m: Vec<f64>, weight_n: f64, mu_static: f64) -> Self {
+        Sampler { interval_s, next_s: 0.0, weight_n, mu_static, spring_x_m }
+    }
+
+    /// The rows of a run of `structure` (its solver's output interval).
+    pub fn of(structure: &Structure) -> Self {
+        let (c, f) = (&structure.caisson, &structure.foundation);
+        Sampler::new(
+            structure.solver.output_interval_s,
+            f.spring_positions(c.width_m),
+            c.weight_in_water_n,
+            f.mu_static,
+        )
+    }
+
+    /// Spring positions, m.
+    pub fn spring_x_m(&self) -> &[f64] {
+        &self.spring_x_m
+    }
+
+    /// Whether the step at `t_s` is the next row (if so, the next row is due an interval later).
+    fn due(&mut self, t_s: f64) -> bool {
+        if t_s + 1e-12 < self.next_s {
+            return false;
+        }
+        while self.next_s <= t_s + 1e-12 {
+            self.next_s += self.interval_s;
+        }
+        true
+    }
+
+    /// The row of step `s`.
+    fn row<'a>(&'a self, s: &'a StepView<'_>) -> HistoryRow<'a> {
+        let u = &s.state.u;
+        HistoryRow {
+            t_s: s.t_s,
+            ux_m: u[0],
+            uy_m: u[1],
+            theta_rad: u[2],
+            vx_m_per_s: s.state.v[0],
+            fx_n: s.load.fx_n,
+            fy_n: s.load.fy_n,
+            m_nm: s.load.m_nm,
+            reaction_x_n: s.reaction.horizontal_n,
+            reaction_y_n: s.reaction.normal_n,
+            reaction_m_nm: s.reaction.moment_nm,
+            sliding_resistance_n: self.mu_static * (self.weight_n - s.load.fy_n),
+            sliding_springs: s.reaction.sliding_springs as u32,
+            springs: s.springs,
+            spring_x_m: &self.spring_x_m,
+        }
+    }
+}
+
+/// An observer that hands every row of the time histories to `sink` as the run proceeds and
+/// keeps none: the caller writes them out (or keeps a bounded picture of them,
+/// [`super::envelope::HistoryEnvelope`]), so a run of any length holds no history in memory.
+pub struct Rows<F> {
+    sampler: Sampler,
+    sink: F,
+}
+
+impl<F: FnMut(&HistoryRow<'_>)> Rows<F> {
+    pub fn new(sampler: Sampler, sink: F) -> Self {
+        Rows { sampler, sink }
+    }
+    /// The sink back.
+    pub fn into_sink(self) -> F {
+        self.sink
+    }
+}
+
+impl<F: FnMut(&HistoryRow<'_>)> Observer for Rows<F> {
+    fn observe(&mut self, s: &StepView<'_>) {
+        if self.sampler.due(s.t_s) {
+            let row = self.sampler.row(s);
+            (self.sink)(&row);
+        }
+    }
+}
+
+/// Time histories (SI) kept whole in memory, one row per output interval. Column-per-quantity
+/// vectors of equal length. A long run is better streamed with [`Rows`].
+#[derive(Debug, Clone)]
 pub struct History {
     pub t_s: Vec<f64>,
     pub ux_m: Vec<f64>,
@@ -215,10 +341,7 @@ pub struct History {
     pub spring_forces_n: Vec<f64>,
     /// Per sample, n vertical spring displacements (u_y − θ x_i), m.
     pub spring_uy_m: Vec<f64>,
-    interval_s: f64,
-    next_s: f64,
-    weight_n: f64,
-    mu_static: f64,
+    sampler: Sampler,
 }
 
 impl History {
@@ -242,11 +365,8 @@ impl History {
             sliding_springs: Vec::with_capacity(cap),
             spring_forces_n: Vec::with_capacity(cap * 2 * n),
             spring_uy_m: Vec::with_capacity(cap * n),
+            sampler: Sampler::new(interval_s, spring_x_m.clone(), weight_n, mu_static),
             spring_x_m,
-            interval_s,
-            next_s: 0.0,
-            weight_n,
-            mu_static,
         }
     }
 
@@ -263,36 +383,34 @@ impl History {
 
 impl Observer for History {
     fn observe(&mut self, s: &StepView<'_>) {
-        if s.t_s + 1e-12 < self.next_s {
+        if !self.sampler.due(s.t_s) {
             return;
         }
-        while self.next_s <= s.t_s + 1e-12 {
-            self.next_s += self.interval_s;
-        }
-        let u = &s.state.u;
-        self.t_s.push(s.t_s);
-        self.ux_m.push(u[0]);
-        self.uy_m.push(u[1]);
-        self.theta_rad.push(u[2]);
-        self.vx_m_per_s.push(s.state.v[0]);
-        self.fx_n.push(s.load.fx_n);
-        self.fy_n.push(s.load.fy_n);
-        self.m_nm.push(s.load.m_nm);
-        self.reaction_x_n.push(s.reaction.horizontal_n);
-        self.reaction_y_n.push(s.reaction.normal_n);
-        self.reaction_m_nm.push(s.reaction.moment_nm);
-        self.sliding_resistance_n.push(self.mu_static * (self.weight_n - s.load.fy_n));
-        self.sliding_springs.push(s.reaction.sliding_springs as u32);
-        self.spring_forces_n.extend(s.springs.iter().map(|r| r.normal_n));
-        self.spring_forces_n.extend(s.springs.iter().map(|r| r.shear_n));
-        self.spring_uy_m.extend(self.spring_x_m.iter().map(|x| u[1] - u[2] * x));
+        let r = self.sampler.row(s);
+        self.t_s.push(r.t_s);
+        self.ux_m.push(r.ux_m);
+        self.uy_m.push(r.uy_m);
+        self.theta_rad.push(r.theta_rad);
+        self.vx_m_per_s.push(r.vx_m_per_s);
+        self.fx_n.push(r.fx_n);
+        self.fy_n.push(r.fy_n);
+        self.m_nm.push(r.m_nm);
+        self.reaction_x_n.push(r.reaction_x_n);
+        self.reaction_y_n.push(r.reaction_y_n);
+        self.reaction_m_nm.push(r.reaction_m_nm);
+        self.sliding_resistance_n.push(r.sliding_resistance_n);
+        self.sliding_springs.push(r.sliding_springs);
+        self.spring_forces_n.extend(r.springs.iter().map(|x| x.normal_n));
+        self.spring_forces_n.extend(r.springs.iter().map(|x| x.shear_n));
+        self.spring_uy_m.extend((0..r.spring_x_m.len()).map(|i| r.spring_uy_m(i)));
     }
 }
 
-/// Both observers at once (the run and the wave-train drivers).
-pub(crate) struct Both<'a>(pub(crate) &'a mut Peaks, pub(crate) Option<&'a mut History>);
+/// Both observers at once (the run and the wave-train drivers): the peaks and, if any, the
+/// histories' observer.
+pub(crate) struct Both<'a, O: Observer + ?Sized>(pub(crate) &'a mut Peaks, pub(crate) Option<&'a mut O>);
 
-impl Observer for Both<'_> {
+impl<O: Observer + ?Sized> Observer for Both<'_, O> {
     #[inline]
     fn observe(&mut self, s: &StepView<'_>) {
         self.0.observe(s);
@@ -319,24 +437,39 @@ pub fn permanent_sliding_m(sim: &Simulation) -> f64 {
 }
 
 /// Integrate `load` on `structure` for `duration_s` (from static equilibrium); with
-/// `record_history`, keep the decimated time histories.
+/// `record_history`, keep the time histories whole in memory ([`History`]; a long run is better
+/// streamed with [`run_observed`] and [`Rows`]).
 pub fn run<L: LoadHistory + ?Sized>(
     structure: &Structure,
     load: &L,
     duration_s: f64,
     record_history: bool,
 ) -> Result<RunResult, SolveError> {
+    let solver = structure.solver;
+    let mut history = record_history.then(|| {
+        let samples = (duration_s / solver.output_interval_s).ceil() as usize + 1;
+        let (c, f) = (&structure.caisson, &structure.foundation);
+        History::new(solver.output_interval_s, samples, f.spring_positions(c.width_m), c.weight_in_water_n, f.mu_static)
+    });
+    let summary = run_observed(structure, load, duration_s, history.as_mut())?;
+    Ok(RunResult { summary, history })
+}
+
+/// [`run`] with an observer of its own (`rows`, e.g. [`Rows`] or a [`History`]) that sees the
+/// initial static equilibrium at t = 0 and then every committed step.
+pub fn run_observed<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
+    structure: &Structure,
+    load: &L,
+    duration_s: f64,
+    mut rows: Option<&mut O>,
+) -> Result<RunSummary, SolveError> {
     let (caisson, foundation, solver) = (&structure.caisson, &structure.foundation, structure.solver);
     let model = Model::new(caisson, foundation);
     let fsum = FoundationSummary::new(caisson, foundation, &model);
-    let mut history = record_history.then(|| {
-        let samples = (duration_s / solver.output_interval_s).ceil() as usize + 1;
-        History::new(solver.output_interval_s, samples, model.x_m.clone(), model.weight_n, model.mu_static)
-    });
     let mut sim = Simulation::new(model, solver, load);
     let mut peaks = Peaks::default();
-    {
-        // Record the initial (static equilibrium) state.
+    if let Some(h) = rows.as_deref_mut() {
+        // The initial (static equilibrium) state.
         let view = StepView {
             t_s: 0.0,
             state: sim.state(),
@@ -345,13 +478,11 @@ pub fn run<L: LoadHistory + ?Sized>(
             springs: sim.springs(),
             iterations: 0,
         };
-        if let Some(h) = history.as_mut() {
-            h.observe(&view);
-        }
+        h.observe(&view);
     }
-    sim.run_until(duration_s, load, &mut Both(&mut peaks, history.as_mut()))?;
+    sim.run_until(duration_s, load, &mut Both(&mut peaks, rows))?;
     let st = sim.state();
-    let summary = RunSummary {
+    Ok(RunSummary {
         permanent_sliding_m: permanent_sliding_m(&sim),
         max_horizontal_displacement_m: peaks.max_ux,
         max_rotation_rad: peaks.max_theta,
@@ -371,6 +502,5 @@ pub fn run<L: LoadHistory + ?Sized>(
         max_dashpot_over_friction: peaks.max_dashpot_over_friction,
         max_dashpot_moment_nm: peaks.max_dashpot_moment_nm,
         max_wave_moment_nm: peaks.max_wave_moment_nm,
-    };
-    Ok(RunResult { summary, history })
+    })
 }

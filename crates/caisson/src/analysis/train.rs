@@ -18,7 +18,7 @@
 //!   the static resistance (max P ≤ μ_s (W' − max U)) is skipped: it cannot slide the block.
 
 use super::checks::{response_warnings, Response, Warning};
-use super::run::{permanent_sliding_m, Both, History, Peaks};
+use super::run::{permanent_sliding_m, Both, Peaks};
 use super::{Progress, Structure};
 use crate::dynamics::{Observer, Simulation, SolveError, SolverStats, StepView};
 use crate::foundation::Foundation;
@@ -174,9 +174,9 @@ impl Observer for WavePeak {
     }
 }
 
-struct Three<'a>(Both<'a>, &'a mut WavePeak);
+struct Three<'a, O: Observer + ?Sized>(Both<'a, O>, &'a mut WavePeak);
 
-impl Observer for Three<'_> {
+impl<O: Observer + ?Sized> Observer for Three<'_, O> {
     #[inline]
     fn observe(&mut self, s: &StepView<'_>) {
         self.0.observe(s);
@@ -226,8 +226,9 @@ impl TrainCase<'_> {
         self.waves.rigid_block_mu(&self.structure.foundation)
     }
 
-    /// Run realization `index`; with `history`, record its decimated time histories.
-    pub fn run(&self, index: usize, history: Option<&mut History>) -> Result<RealizationResult, TrainRunError> {
+    /// Run realization `index`; `history` (a [`History`](super::run::History) or
+    /// [`Rows`](super::run::Rows)) sees its initial state and every committed step.
+    pub fn run(&self, index: usize, history: Option<&mut dyn Observer>) -> Result<RealizationResult, TrainRunError> {
         let w = self.waves;
         let drawn = realization_waves(&w.model, &w.train, w.regime(), index)?;
         let train = w.model.train(&drawn.records)?;

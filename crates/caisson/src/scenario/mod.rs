@@ -42,6 +42,9 @@ pub enum ScenarioError {
     Read { path: PathBuf, message: String },
     #[error("{path} line {line}, column {column}: {message}{}", if source_line.is_empty() { String::new() } else { format!(" (in `{source_line}`)") })]
     Syntax { path: PathBuf, line: usize, column: usize, message: String, source_line: String },
+    /// A value of the wrong kind (text for a number, a decimal for a whole number, ...).
+    #[error("{path}{}: `{key}` must be {expected}, got {got}", line.map_or(String::new(), |l| format!(" line {l}")))]
+    WrongType { path: PathBuf, line: Option<usize>, key: String, expected: String, got: String },
     #[error("missing key `{key}`: {hint}")]
     Missing { key: String, hint: String },
     #[error("`{key}` = {value}: {allowed}")]
@@ -62,7 +65,9 @@ impl ScenarioError {
     /// The key this error is about, if it is about one key.
     pub fn key(&self) -> Option<&str> {
         match self {
-            ScenarioError::Missing { key, .. } | ScenarioError::OutOfRange { key, .. } => Some(key),
+            ScenarioError::Missing { key, .. }
+            | ScenarioError::OutOfRange { key, .. }
+            | ScenarioError::WrongType { key, .. } => Some(key),
             _ => None,
         }
     }
@@ -303,6 +308,9 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
                 (line, column)
             })
             .unwrap_or((0, 0));
+        if let Some(wrong) = wrong_type(text, path, e.message(), line) {
+            return wrong;
+        }
         let source_line =
             if line > 0 { text.lines().nth(line - 1).unwrap_or("").trim().to_string() } else { String::new() };
         ScenarioError::Syntax {
@@ -313,6 +321,85 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
             source_line,
         }
     })
+}
+
+/// A value of the wrong kind, in engineering words: "`[caisson] width_m` must be a number (m), got
+/// the string \"20\"" instead of serde's "invalid type: string \"20\", expected f64". `message` is
+/// the parser's, `line` where it points (0: unknown). The parser does not say which key it was
+/// reading; the file is read again as plain TOML values, whose deserializer names the key path.
+/// `None` if the error is of another kind.
+fn wrong_type(text: &str, path: &Path, message: &str, line: usize) -> Option<ScenarioError> {
+    message.strip_prefix("invalid type: ")?;
+    let table: toml::Table = toml::from_str(text).ok()?;
+    let root = toml::Value::Table(table);
+    let again = ScenarioFile::deserialize(root.clone()).err()?;
+    let shown = again.to_string();
+    let first = shown.lines().next()?.trim();
+    let keys: Vec<&str> = shown.lines().find_map(|l| l.strip_prefix("in `")?.strip_suffix('`'))?.split('.').collect();
+    let (got, expected) = first.strip_prefix("invalid type: ")?.rsplit_once(", expected ")?;
+    let last = *keys.last()?;
+    let key = match keys.len() {
+        1 => format!("[{last}]"),
+        n => format!("[{}] {last}", keys[..n - 1].join(".")),
+    };
+    let unit = unit_of(last).map_or(String::new(), |u| format!(" ({u})"));
+    let kind = |e: &str| -> String {
+        match e {
+            "f64" | "f32" => format!("a number{unit}"),
+            "i64" | "i32" | "u64" | "u32" | "usize" => format!("a whole number{unit}"),
+            "a boolean" => "true or false (without quotes)".into(),
+            "a string" => "text in quotes".into(),
+            "a sequence" if unit.is_empty() => "a list in brackets".into(),
+            "a sequence" => format!("a list of numbers in brackets{unit}"),
+            e if e.starts_with("struct ") => "a table".into(),
+            e => e.into(),
+        }
+    };
+    // A wrong element of a list: the value at the key is a list.
+    let value = keys.iter().try_fold(&root, |v, k| v.get(k));
+    let in_list = matches!(value, Some(toml::Value::Array(_))) && expected != "a sequence" && got != "sequence";
+    // serde's words for the value: string "20", floating point `2.5`, integer `5`, boolean `true`,
+    // sequence, map.
+    let mut got = match (got.strip_prefix("string "), got.split('`').nth(1)) {
+        (Some(s), _) => format!("the string {s}"),
+        (None, Some(v)) => v.to_string(),
+        _ if got == "sequence" => "a list".into(),
+        _ if got == "map" => "a table".into(),
+        _ => got.to_string(),
+    };
+    let expected = if in_list {
+        got.push_str(" in the list");
+        match expected {
+            "f64" | "f32" => format!("a list of numbers{unit}"),
+            e => format!("a list of {}", kind(e)),
+        }
+    } else {
+        kind(expected)
+    };
+    // The line is the parser's when both readings stopped at the same error.
+    let line = (line > 0 && first == message.trim()).then_some(line);
+    Some(ScenarioError::WrongType { path: path.to_path_buf(), line, key, expected, got })
+}
+
+/// The unit of a key from its suffix (docs/scenario.md: key names carry their unit).
+fn unit_of(key: &str) -> Option<&'static str> {
+    const SUFFIXES: [(&str, &str); 14] = [
+        ("_kg_per_m3", "kg/m³"),
+        ("_kns_per_m", "kN·s/m"),
+        ("_kn_per_m", "kN/m"),
+        ("_kg_m2", "kg·m²"),
+        ("_knm", "kN·m"),
+        ("_kpa", "kPa"),
+        ("_kn", "kN"),
+        ("_kg", "kg"),
+        ("_deg", "degrees"),
+        ("_years", "years"),
+        ("_h", "h"),
+        ("_m", "m"),
+        ("_s", "s"),
+        ("_pa", "Pa"),
+    ];
+    SUFFIXES.iter().find(|(s, _)| key.ends_with(s)).map(|(_, u)| *u)
 }
 
 /// Read a scenario file, parse it once and validate every table it holds. Relative file names
