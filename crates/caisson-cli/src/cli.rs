@@ -134,12 +134,15 @@ pub struct SizeArgs {
     /// Print the results as JSON.
     #[arg(long)]
     pub json: bool,
-    /// Write size.json, candidates.csv and design_curve.svg here.
+    /// Write size.json, candidates.csv, design_curve.svg and the checkpoint here.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Worker threads (0: one per core). Results do not depend on it.
     #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
+    /// Complete an interrupted run from DIR/size_checkpoint.jsonl (identical results).
+    #[arg(long)]
+    pub resume: bool,
 }
 
 #[derive(Args, Debug)]

@@ -92,7 +92,7 @@ const CHECK_KEY: &str = ",\"check\":\"";
 const CHECK_TAIL_LEN: usize = CHECK_KEY.len() + 16 + 2;
 
 /// The check of a life line: FNV-1a of the header line, a newline and the life's JSON.
-fn line_check(header_line: &str, body: &str) -> String {
+pub(crate) fn line_check(header_line: &str, body: &str) -> String {
     let mut bytes = Vec::with_capacity(header_line.len() + 1 + body.len());
     bytes.extend_from_slice(header_line.as_bytes());
     bytes.push(b'\n');

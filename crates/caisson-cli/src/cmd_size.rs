@@ -3,6 +3,7 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
+use crate::cmd_design::line_check;
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
 use crate::plot::{panels, Panel, Series};
@@ -12,9 +13,11 @@ use caisson::analysis::lifetime::{run_lives, StormOutcome};
 use caisson::analysis::sizing::{
     bisection_steps, candidate, curve_widths, size, smallest_width_reaching, Candidate, Reached, Required, SizedModel,
 };
+use caisson::report::design::design_fingerprint;
 use caisson::report::size::{GodaWidth, SizeReport};
 use caisson::scenario::{self, Scenario};
 use std::fmt::Write as _;
+use std::io::Write as _;
 use std::ops::ControlFlow;
 use std::path::Path;
 
@@ -37,6 +40,82 @@ fn goda_safety(sc: &Scenario) -> Option<f64> {
     ws.model.safety(&loads, sc.caisson().weight_in_water_n, sc.foundation().mu_static).sliding
 }
 
+/// The checkpoint of a sizing run in `--out`: a header line, then one line per finished
+/// candidate width (its statistics, ending with the `"check"` of the header and the line, as the
+/// design checkpoint's lines do).
+const CHECKPOINT: &str = "size_checkpoint.jsonl";
+const CHECKPOINT_FORMAT: u32 = 1;
+
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Header {
+    caisson_size_checkpoint: u32,
+    fingerprint: String,
+    caisson_version: String,
+    results_version: u32,
+}
+
+/// The key that ends every candidate line.
+const CHECK_KEY: &str = ",\"check\":\"";
+
+fn candidate_line(header_line: &str, c: &Candidate) -> Result<String> {
+    let body = serde_json::to_string(c)?;
+    let check = line_check(header_line, &body);
+    Ok(format!("{}{CHECK_KEY}{check}\"}}\n", &body[..body.len() - 1]))
+}
+
+fn parse_candidate_line(header_line: &str, line: &str) -> std::result::Result<Candidate, String> {
+    let (head, tail) = line.rsplit_once(CHECK_KEY).ok_or("is not a candidate line of a sizing checkpoint")?;
+    let check = tail.strip_suffix("\"}").ok_or("is not a candidate line of a sizing checkpoint")?;
+    let body = format!("{head}}}");
+    if line_check(header_line, &body) != check {
+        return Err("does not match its check: it was edited, or it comes from another checkpoint".into());
+    }
+    serde_json::from_str(&body).map_err(|e| format!("is not a candidate: {e}"))
+}
+
+/// The finished candidates of the checkpoint `path` of this run (`fingerprint`), or why not.
+fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<(String, Vec<Candidate>)> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
+    let mut lines = text.split_inclusive('\n');
+    let header_line = lines.next().unwrap_or("").trim_end_matches('\n').to_string();
+    let again = "run without --resume to start again";
+    let header: Header = serde_json::from_str(&header_line).map_err(|_| {
+        input_err(format!("--resume: {} does not start with a sizing checkpoint header; {again}", path.display()))
+    })?;
+    if header.caisson_size_checkpoint != CHECKPOINT_FORMAT || header.results_version != caisson::RESULTS_VERSION {
+        return Err(input_err(format!(
+            "--resume: {} is of checkpoint format {} and results version {} (this caisson: {CHECKPOINT_FORMAT} and {}); {again}",
+            path.display(),
+            header.caisson_size_checkpoint,
+            header.results_version,
+            caisson::RESULTS_VERSION
+        )));
+    }
+    if header.fingerprint != fingerprint {
+        return Err(input_err(format!(
+            "--resume: {} belongs to another sizing run (another scenario, [design] or [size]); {again}",
+            path.display()
+        )));
+    }
+    let mut done: Vec<Candidate> = Vec::new();
+    for (k, line) in lines.enumerate() {
+        let Some(line) = line.strip_suffix('\n') else { break }; // a torn last line: cut away
+        let c = parse_candidate_line(&header_line, line)
+            .map_err(|why| input_err(format!("--resume: {} line {}: {why}", path.display(), k + 2)))?;
+        if done.iter().any(|d| d.width_m == c.width_m) {
+            return Err(input_err(format!(
+                "--resume: {} line {}: the width {} m appears twice",
+                path.display(),
+                k + 2,
+                c.width_m
+            )));
+        }
+        done.push(c);
+    }
+    Ok((header_line, done))
+}
+
 pub fn run(args: SizeArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     let p = *sc.size_for("`caisson size`").map_err(input_err)?;
@@ -51,10 +130,53 @@ pub fn run(args: SizeArgs) -> Result<()> {
     for w in curve_widths(&p) {
         at_width(&sc, w)?.storm_case(design.screen).map_err(input_err)?;
     }
+    if args.resume && args.out.is_none() {
+        return Err(input_err("--resume needs the checkpoint: give --out DIR (DIR/size_checkpoint.jsonl)"));
+    }
+    let case = sc.storm_case(design.screen).map_err(input_err)?;
+    let fingerprint = caisson::report::fingerprint(&(design_fingerprint(&case, &design), &p));
+    let checkpoint = args.out.as_ref().map(|d| d.join(CHECKPOINT));
+    if let Some(dir) = &args.out {
+        ensure_dir(dir)?;
+    }
+    let _lock = checkpoint.as_deref().map(crate::cmd_design::CheckpointLock::acquire).transpose()?;
+    let mut finished: Vec<Candidate> = Vec::new();
+    let mut writer: Option<(String, std::fs::File)> = None;
+    if let Some(path) = &checkpoint {
+        let (header_line, done) = if args.resume {
+            read_checkpoint(path, &fingerprint)?
+        } else {
+            let header = Header {
+                caisson_size_checkpoint: CHECKPOINT_FORMAT,
+                fingerprint: fingerprint.clone(),
+                caisson_version: caisson::VERSION.to_string(),
+                results_version: caisson::RESULTS_VERSION,
+            };
+            (serde_json::to_string(&header)?, Vec::new())
+        };
+        // The checkpoint rewritten whole (its header and the complete lines), then appended to.
+        let mut text = format!("{header_line}\n");
+        for c in &done {
+            text.push_str(&candidate_line(&header_line, c)?);
+        }
+        write_atomic(path, text.as_bytes())?;
+        let f = std::fs::OpenOptions::new()
+            .append(true)
+            .open(path)
+            .with_context(|| format!("opening the checkpoint {}", path.display()))?;
+        writer = Some((header_line, f));
+        finished = done;
+    }
+    let resumed = finished.len();
+    let writer = std::cell::RefCell::new(writer);
     let grid = curve_widths(&p).len();
     let estimate = grid + 2 * bisection_steps(&p, (p.range_m.1 - p.range_m.0) / (grid - 1) as f64);
     let pb = progress((estimate * p.lives) as u64, "candidates", "lives");
     let mut evaluate = |w: f64| -> Result<Candidate> {
+        if let Some(c) = finished.iter().find(|c| c.width_m == w) {
+            pb.inc(p.lives as u64);
+            return Ok(c.clone());
+        }
         let sw = at_width(&sc, w)?;
         let case = sw.storm_case(design.screen).map_err(input_err)?;
         pb.set_message(format!("B = {w:.3} m"));
@@ -70,21 +192,41 @@ pub fn run(args: SizeArgs) -> Result<()> {
         let lives = with_threads(args.threads, || run_lives(&case, &design.life, design.seed, &indices, &on_life))?
             .with_context(|| format!("the lives at the width {w} m"))?;
         if lives.len() < p.lives {
-            return Err(anyhow::Error::new(crate::Interrupted(
-                "interrupted (Ctrl-C): nothing was written; the candidates already computed are lost (a sizing run keeps no checkpoint yet)".into(),
-            )));
+            return Err(anyhow::Error::new(crate::Interrupted(match &checkpoint {
+                Some(path) => format!(
+                    "interrupted (Ctrl-C) at the width {w} m; the finished widths are in {}: run again with --resume to complete",
+                    path.display()
+                ),
+                None => "interrupted (Ctrl-C); nothing was kept (give --out DIR to keep the finished widths)".into(),
+            })));
         }
         let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
         let failure_m = design.failure_limit_m(w);
-        Ok(candidate(w, sw.caisson().weight_in_water_n, &outcomes, failure_m, &p.criteria))
+        let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, failure_m, &p.criteria);
+        if let Some((header_line, f)) = writer.borrow_mut().as_mut() {
+            let path = checkpoint.as_deref().expect("a checkpoint with a writer");
+            f.write_all(candidate_line(header_line, &c)?.as_bytes())
+                .and_then(|_| f.sync_data())
+                .with_context(|| format!("writing the checkpoint {}", path.display()))?;
+        }
+        Ok(c)
     };
     if !args.json {
-        crate::sayln!("Sizing the width over {} .. {} m: {} lives per candidate", p.range_m.0, p.range_m.1, p.lives);
+        crate::sayln!(
+            "Sizing the width over {} .. {} m: {} lives per candidate{}",
+            p.range_m.0,
+            p.range_m.1,
+            p.lives,
+            if resumed > 0 { format!(" ({resumed} widths from the checkpoint)") } else { String::new() }
+        );
     }
     crate::interrupt::graceful();
     let sizing = size(&p, &mut evaluate)?;
     pb.finish_and_clear();
-    let goda_width = smallest_width_reaching(p.range_m, GODA_SAFETY_FACTOR, GODA_TOLERANCE_M, &mut |w| {
+    // The deterministic width is cheap: it is searched from a quarter of the range's smallest
+    // width, so it shows even where it lies far below the widths the dynamic model needs.
+    let goda_range = (p.range_m.0 / 4.0, p.range_m.1);
+    let goda_width = smallest_width_reaching(goda_range, GODA_SAFETY_FACTOR, GODA_TOLERANCE_M, &mut |w| {
         at_width(&sc, w).ok().and_then(|s| goda_safety(&s))
     });
     let goda = GodaWidth { safety_factor: GODA_SAFETY_FACTOR, reached: goda_width };
@@ -110,9 +252,13 @@ pub fn run(args: SizeArgs) -> Result<()> {
         write_atomic(&dir.join("candidates.csv"), &candidates_csv(&report)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("size");
         plot(dir, title, &report)?;
-        crate::output::tidy_out_dir(dir, "size", &[]);
+        let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
+        crate::output::tidy_out_dir(dir, "size", &keep);
         if !args.json {
-            crate::sayln!("\nWrote size.json, candidates.csv, design_curve.svg to {}", dir.display());
+            crate::sayln!(
+                "\nWrote size.json, candidates.csv, design_curve.svg (and size_checkpoint.jsonl) to {}",
+                dir.display()
+            );
         }
     }
     Ok(())

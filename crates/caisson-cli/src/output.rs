@@ -69,7 +69,7 @@ pub const OUTPUTS: &[(&str, &[&str])] = &[
     ("campaign", &["campaign.json", "campaign.csv", "campaign.svg", "campaign_vs_height.svg"]),
     ("design", &["design.json", "lives.csv", "histogram.svg", "exceedance.svg", CHECKPOINT]),
     ("fragility", &["fragility.json", "fragility.csv", "fragility.svg"]),
-    ("size", &["size.json", "candidates.csv", "design_curve.svg"]),
+    ("size", &["size.json", "candidates.csv", "design_curve.svg", "size_checkpoint.jsonl"]),
     ("validation", &["validation.md", "figures/validation_*.svg"]),
 ];
 

@@ -146,3 +146,39 @@ fn bad_size_input_is_named() {
     let f = write(dir.path(), "weight.toml", &text);
     refused(&["size", f.to_str().unwrap()], &["construction", "weight_in_water_kn"]);
 }
+
+/// A sizing run keeps every finished width in `DIR/size_checkpoint.jsonl`; `--resume` reuses
+/// them (a torn last line is cut away) and reports exactly what an uninterrupted run reports. An
+/// edited line and a checkpoint of another search are refused, naming the line or the file.
+#[test]
+fn a_resumed_sizing_run_reports_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(dir.path(), "s.toml", &size_text("expected_sliding_m = 0.05"));
+    let out = dir.path().join("out");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["size", f.to_str().unwrap(), "--out", out.to_str().unwrap(), "--threads", "2"];
+        args.extend_from_slice(extra);
+        let o = caisson().args(&args).output().unwrap();
+        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+        (String::from_utf8_lossy(&o.stdout).to_string(), std::fs::read(out.join("size.json")).unwrap())
+    };
+    let (_, full) = run(&[]);
+    let cp = out.join("size_checkpoint.jsonl");
+    let text = std::fs::read_to_string(&cp).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines.len() >= 6, "a header and the candidates: {}", lines.len());
+    // Keep the header, two widths and half of the third (a run killed while writing it).
+    let torn = format!("{}\n{}\n{}\n{}", lines[0], lines[1], lines[2], &lines[3][..lines[3].len() / 2]);
+    std::fs::write(&cp, &torn).unwrap();
+    let (said, resumed) = run(&["--resume"]);
+    assert!(said.contains("(2 widths from the checkpoint)"), "{said}");
+    assert_eq!(resumed, full, "the resumed run reports exactly the same");
+    assert_eq!(std::fs::read_to_string(&cp).unwrap(), text, "the checkpoint is whole again");
+    // An edited line.
+    std::fs::write(&cp, text.replacen("\"lives\":12", "\"lives\":13", 1)).unwrap();
+    refused(&["size", f.to_str().unwrap(), "--out", out.to_str().unwrap(), "--resume"], &["line 2", "check"]);
+    // Another search (another criterion): another fingerprint.
+    std::fs::write(&cp, &text).unwrap();
+    let other = write(dir.path(), "other.toml", &size_text("expected_sliding_m = 0.3"));
+    refused(&["size", other.to_str().unwrap(), "--out", out.to_str().unwrap(), "--resume"], &["another sizing run"]);
+}

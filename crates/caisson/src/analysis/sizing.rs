@@ -60,7 +60,7 @@ pub struct ExceedanceCriterion {
 }
 
 /// What sizing needs of one model at one width: the estimates and their standard errors.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
 pub struct ModelPoint {
     /// E|S|, m.
     pub expected_sliding_m: f64,
@@ -83,7 +83,7 @@ pub enum SizedModel {
 }
 
 /// One evaluated width.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct Candidate {
     pub width_m: f64,
     /// W' of the caisson at this width, N.
