@@ -6,12 +6,12 @@ use crate::cli::SizeArgs;
 use crate::cmd_design::line_check;
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
-use crate::plot::{panels, Panel, Series};
+use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::checks::structure_warnings;
 use caisson::analysis::lifetime::{run_lives, StormOutcome};
 use caisson::analysis::sizing::{
-    bisection_steps, candidate, curve_widths, size, smallest_width_reaching, Candidate, Reached, Required, SizedModel,
+    bisection_steps, candidate, curve_widths, size, smallest_width_reaching, Candidate, Reached, Required,
 };
 use caisson::report::design::design_fingerprint;
 use caisson::report::size::{GodaWidth, SizeReport};
@@ -342,24 +342,31 @@ fn size_text(r: &SizeReport) -> String {
         r.goda.safety_factor
     );
     let _ = writeln!(t);
+    let exceed = r.criteria.exceedance.map(|e| e.sliding_m);
     let _ = writeln!(
         t,
-        "  B (m)   W' (kN/m)  Goda SF   E|S| dynamic (± SE)    E|S| rigid block   P(|S|>S_lim) dyn  P(fail) dyn  meets"
+        "  B (m)  W' (kN/m)  Goda SF  E|S| dynamic ± SE (m)  E|S| rigid (m)  {}  P(fail) dyn  P(fail) rigid  meets the criterion",
+        exceed.map_or("                  ".to_string(), |s| format!("P(|S| > {s:<4} m) dyn"))
     );
     for k in &r.candidates {
+        let meets: Vec<&str> = [(k.dynamic_meets, "dynamic"), (k.rigid_block_meets, "rigid block")]
+            .iter()
+            .filter(|m| m.0)
+            .map(|m| m.1)
+            .collect();
         let _ = writeln!(
             t,
-            "{:7.2} {:11.0} {:8} {:10.4} ± {:<8.4} m {:10.4} m {:>16.4} {:>12.4}  {}{}",
+            "{:7.2} {:10.0} {:8} {:10.4} ± {:<8.4}  {:14.4}  {:>18}  {:>11.4}  {:>13.4}  {}",
             k.width_m,
             k.weight_in_water_kn,
             k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.3}")),
             k.dynamic.expected_sliding_m,
             k.dynamic.expected_sliding_se_m,
             k.rigid_block.expected_sliding_m,
-            k.dynamic.exceedance_probability,
+            exceed.map_or(String::new(), |_| format!("{:.4}", k.dynamic.exceedance_probability)),
             k.dynamic.failure_probability,
-            if k.dynamic_meets { "dynamic" } else { "-" },
-            if k.rigid_block_meets { ", rigid block" } else { "" }
+            k.rigid_block.failure_probability,
+            if meets.is_empty() { "-".to_string() } else { meets.join(", ") }
         );
     }
     let _ = writeln!(t, "\n{} lives simulated in {} candidates", r.lives_simulated, r.candidates.len());
@@ -414,53 +421,45 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
     Ok(w.into_inner()?)
 }
 
-/// The design curve: E|S| (with its 90 % band) and the 95 % value against width for both models,
-/// the criterion and the required widths.
+/// The design curve on a logarithmic sliding axis: E|S| (with its 90 % band) and the 95 % value
+/// against width for the dynamic model, E|S| of the rigid block, the criterion and the widths.
 fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
+    // Below 0.1 mm the caisson has not slid to speak of: the axis starts there.
+    const FLOOR_M: f64 = 1e-4;
     let pts = |f: &dyn Fn(&caisson::report::size::CandidateReport) -> f64| -> Vec<(f64, f64)> {
-        r.candidates.iter().map(|k| (k.width_m, f(k))).collect()
+        r.candidates.iter().map(|k| (k.width_m, f(k).max(FLOOR_M))).collect()
     };
-    let band = |m: SizedModel| -> Vec<(f64, f64)> {
-        r.candidates
-            .iter()
-            .map(|k| {
-                let p = if m == SizedModel::Dynamic { &k.dynamic } else { &k.rigid_block };
-                let z = caisson::analysis::sizing::Z95;
-                (
-                    (p.expected_sliding_m - z * p.expected_sliding_se_m).max(0.0),
-                    p.expected_sliding_m + z * p.expected_sliding_se_m,
-                )
-            })
-            .collect()
-    };
+    let z = caisson::analysis::sizing::Z95;
     let mut series = vec![
-        Series::ranges(
-            "dynamic model E|S| (90 % band)",
-            pts(&|k| k.dynamic.expected_sliding_m),
-            band(SizedModel::Dynamic),
+        Series::line("dynamic model: E|S|", pts(&|k| k.dynamic.expected_sliding_m)),
+        Series::dashed(
+            "dynamic model: 90 % band of E|S|",
+            pts(&|k| k.dynamic.expected_sliding_m + z * k.dynamic.expected_sliding_se_m),
         ),
-        Series::line("", pts(&|k| k.dynamic.expected_sliding_m)),
-        Series::dashed("rigid block E|S|", pts(&|k| k.rigid_block.expected_sliding_m)),
-        Series::line("dynamic model, 95 % of |S|", pts(&|k| k.dynamic.p95_m)),
+        Series::dashed("", pts(&|k| k.dynamic.expected_sliding_m - z * k.dynamic.expected_sliding_se_m)),
+        Series::line("dynamic model: 95 % of |S|", pts(&|k| k.dynamic.p95_m)),
+        Series::line("rigid block: E|S|", pts(&|k| k.rigid_block.expected_sliding_m)),
     ];
     let (lo, hi) = r.range_m;
     if let Some(s) = r.criteria.expected_sliding_m {
-        series.push(Series::dashed(format!("criterion E|S| = {s} m"), vec![(lo, s), (hi, s)]));
+        series.push(Series::line(format!("criterion E|S| = {s} m"), vec![(lo, s), (hi, s)]));
     }
-    let top = r.candidates.iter().map(|k| k.dynamic.p95_m.max(k.rigid_block.expected_sliding_m)).fold(0.0, f64::max);
-    for (name, w) in [
-        ("required, dynamic", r.dynamic.width_m()),
-        ("required, rigid block", r.rigid_block.width_m()),
-        ("Goda SF 1.2", r.goda.reached.width_m()),
-    ] {
+    let top =
+        r.candidates.iter().map(|k| k.dynamic.p95_m.max(k.rigid_block.expected_sliding_m)).fold(FLOOR_M, f64::max);
+    for (name, w) in [("required, dynamic", r.dynamic.width_m()), ("required, rigid block", r.rigid_block.width_m())] {
         if let Some(w) = w {
-            series.push(Series::markers(format!("{name}: {w:.2} m"), vec![(w, 0.0), (w, top)]));
+            series.push(Series::line(format!("{name}: {w:.2} m"), vec![(w, FLOOR_M), (w, top)]));
         }
     }
-    panels(
+    let goda = match r.goda.reached.width_m() {
+        Some(w) => format!("; Goda's width (safety factor 1.2): {w:.2} m"),
+        None => String::new(),
+    };
+    crate::plot::panels_scaled(
         &dir.join("design_curve.svg"),
         &format!("{title}: sliding over the life against the caisson width"),
-        "caisson width B (m)",
+        &format!("caisson width B (m){goda}"),
         &[Panel { y_label: "sliding over the life (m)".into(), series }],
+        crate::plot::Scales { log_x: false, log_y: true },
     )
 }
