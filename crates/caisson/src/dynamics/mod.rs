@@ -11,8 +11,9 @@
 //! ([`crate::foundation`]), f_S the interface springs (and, in the `elastic` damping mode, their
 //! dashpots), p the wave forces and W' the weight in water (docs/model.md §10 item 6).
 //!
-//! Each step t → t + h is explicit in its phases: **load** p(t + h) → **predictor** δ = 0 →
-//! **Newton corrector** on the displacement increment δ = q_{n+1} − q_n, with
+//! Each step t → t + h is explicit in its phases: **load** p(t + h) → **predictor** (by default
+//! the last step's acceleration carried over, q̈_{n+1} = q̈_n, i.e. δ = h q̇_n + h²/2 q̈_n:
+//! [`Predictor`]) → **Newton corrector** on the displacement increment δ = q_{n+1} − q_n, with
 //!
 //! ```text
 //! q̈_{n+1} = δ/(β h²) − q̇_n/(β h) − (1/(2β) − 1) q̈_n
@@ -49,7 +50,7 @@
 mod params;
 mod solve3;
 
-pub use params::{AdaptiveParams, SolverParams, Stepping, MAX_FIXED_STEPS};
+pub use params::{AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
 
 use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
 use crate::loads::{LoadHistory, WaveForce};
@@ -414,7 +415,10 @@ impl Simulation {
         let k_dyn = m * c1 + c * (gamma * c2);
         let tol = self.solver.tolerance * self.model.weight_n;
         let inv_b = 1.0 / self.model.width_m;
-        let mut delta = Vector3::zeros();
+        let mut delta = match self.solver.predictor {
+            Predictor::LastDisplacement => Vector3::zeros(),
+            Predictor::ConstantAcceleration => vn * h + an * (0.5 * h * h),
+        };
         let mut norm = f64::INFINITY;
         for it in 0..=self.solver.max_iterations {
             let a = delta * c1 - vn * c2 - an * c3;
