@@ -1,11 +1,16 @@
 //! Engine benchmarks: one time step with 10 springs, and a 15-wave test (45.6 s of loading,
-//! 15 waves of 3.04 s, at dt = 1e-4 s and with the adaptive stepper) on the seed's Table 5 caisson.
+//! 15 waves of 3.04 s, at dt = 1e-4 s and with the adaptive stepper) on the seed's Table 5 caisson;
+//! the waves of a design run (examples/design_breakwater.toml: one reused `Simulation`, reset to
+//! rest before each wave, no observer, as `analysis::lifetime` runs them) and one realization of a
+//! wave campaign (examples/pari_breaking_campaign.toml: 15 waves with the run's peak observers).
 //!
 //! Run: `cargo bench -p caisson --bench engine`. Figures are recorded in BENCHMARKS.md.
 
 use caisson::analysis::run::run;
 use caisson::analysis::Structure;
 use caisson::dynamics::{AdaptiveParams, Simulation, Stepping};
+use caisson::loads::history::WaveTrain;
+use caisson::loads::regime::RegimeChoice;
 use caisson::loads::{LoadHistory, WaveForce};
 use caisson::scenario::Scenario;
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -71,6 +76,43 @@ fn bench(c: &mut Criterion) {
     g.bench_function("45.6s_adaptive", |b| {
         b.iter(|| run(&adaptive, black_box(&load), 45.6, false).unwrap().summary.permanent_sliding_m)
     });
+    g.finish();
+
+    // The waves of a design run that reach the dynamic model: heights about the sliding threshold
+    // of the design example's caisson (T = 12.8 s, automatic regime: the highest break on the wall
+    // with an impact), each from rest through one reused simulation.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let design = caisson::scenario::load(&root.join("examples/design_breakwater.toml")).unwrap();
+    let site = &design.waves.as_ref().unwrap().model;
+    let period_s = 12.8;
+    let trains: Vec<WaveTrain> = [9.0, 10.0, 11.0, 11.5, 12.0, 12.5, 12.7, 12.79]
+        .iter()
+        .map(|&h| {
+            let loads = site.evaluate_with(h, period_s, RegimeChoice::Auto).unwrap();
+            WaveTrain::new(vec![site.event(&loads, None, 0.0)]).unwrap()
+        })
+        .collect();
+    let mut sim = Simulation::new(design.structure().model(), design.solver(), &trains[0]);
+    let mut g = c.benchmark_group("design_waves");
+    g.bench_function("8_waves_T12.8s", |b| {
+        b.iter(|| {
+            let mut sliding_m = 0.0;
+            for train in &trains {
+                sim.reset(train);
+                sim.run_until(period_s, black_box(train), &mut ()).unwrap();
+                sliding_m += caisson::analysis::run::permanent_sliding_m(&sim);
+            }
+            sliding_m
+        })
+    });
+    g.finish();
+
+    // One realization of the PARI breaking campaign (15 irregular breaking waves, the run's peak
+    // observers on every step).
+    let campaign = caisson::scenario::load(&root.join("examples/pari_breaking_campaign.toml")).unwrap();
+    let case = campaign.train_case().unwrap();
+    let mut g = c.benchmark_group("campaign");
+    g.bench_function("pari_breaking_realization", |b| b.iter(|| case.run(black_box(0), None).unwrap().sliding_m));
     g.finish();
 }
 

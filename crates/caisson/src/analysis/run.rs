@@ -177,13 +177,25 @@ impl Observer for Peaks {
             }
         }
         self.was_sliding = sliding;
+        // Comparisons rather than f64::max/min (which also handle NaN, and cost several times
+        // more): a committed step has finite spring forces (a non-finite residual is a failed
+        // iteration), so both give the same peaks.
+        let (mut max_n, mut min_n, mut max_shear) = (self.max_n, self.min_n, self.max_shear);
         let mut friction = 0.0;
         for r in s.springs {
-            self.max_n = self.max_n.max(r.normal_n);
-            self.min_n = self.min_n.min(r.normal_n);
-            self.max_shear = self.max_shear.max(r.shear_n.abs());
-            friction += r.shear_n.abs();
+            let shear = r.shear_n.abs();
+            if r.normal_n > max_n {
+                max_n = r.normal_n;
+            }
+            if r.normal_n < min_n {
+                min_n = r.normal_n;
+            }
+            if shear > max_shear {
+                max_shear = shear;
+            }
+            friction += shear;
         }
+        (self.max_n, self.min_n, self.max_shear) = (max_n, min_n, max_shear);
         if sliding && s.reaction.sliding_springs == s.reaction.contact_springs && friction > 0.0 {
             self.max_dashpot_over_friction =
                 self.max_dashpot_over_friction.max(s.reaction.dashpot_horizontal_n.abs() / friction);

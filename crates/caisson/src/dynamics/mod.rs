@@ -11,8 +11,9 @@
 //! ([`crate::foundation`]), f_S the interface springs (and, in the `elastic` damping mode, their
 //! dashpots), p the wave forces and W' the weight in water (docs/model.md §10 item 6).
 //!
-//! Each step t → t + h is explicit in its phases: **load** p(t + h) → **predictor** δ = 0 →
-//! **Newton corrector** on the displacement increment δ = q_{n+1} − q_n, with
+//! Each step t → t + h is explicit in its phases: **load** p(t + h) → **predictor** (by default
+//! the last step's acceleration carried over, q̈_{n+1} = q̈_n, i.e. δ = h q̇_n + h²/2 q̈_n:
+//! [`Predictor`]) → **Newton corrector** on the displacement increment δ = q_{n+1} − q_n, with
 //!
 //! ```text
 //! q̈_{n+1} = δ/(β h²) − q̇_n/(β h) − (1/(2β) − 1) q̈_n
@@ -38,10 +39,18 @@
 //!
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
+//!
+//! **Cost of an iteration**: the resisting force is summed at every iterate (one pass over the
+//! springs that stores their trial responses), the tangent only when a correction follows (a
+//! second pass over the stored responses), and the base reaction only for an observer that looks
+//! at the step ([`Observer::observes`]). The 3×3 solve is nalgebra's LU with partial pivoting
+//! unrolled (`solve3`, identical to the last bit). Splitting the single pass changed no result:
+//! every sum has its terms in the same order as before.
 
 mod params;
+mod solve3;
 
-pub use params::{AdaptiveParams, SolverParams, Stepping, MAX_FIXED_STEPS};
+pub use params::{AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
 
 use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
 use crate::loads::{LoadHistory, WaveForce};
@@ -188,10 +197,21 @@ pub struct StepView<'a> {
 /// production observers.
 pub trait Observer {
     fn observe(&mut self, view: &StepView<'_>);
+    /// Whether [`Self::observe`] looks at the steps at all; `false` spares the engine building
+    /// the [`StepView`] (the base reaction) of every step.
+    #[inline]
+    fn observes(&self) -> bool {
+        true
+    }
 }
 
+/// No observer: a run that needs only its final state (the waves of a design run).
 impl Observer for () {
     fn observe(&mut self, _: &StepView<'_>) {}
+    #[inline]
+    fn observes(&self) -> bool {
+        false
+    }
 }
 
 /// Solver statistics.
@@ -220,8 +240,8 @@ pub struct Simulation {
     pub model: Model,
     pub solver: SolverParams,
     state: State,
+    /// The springs' trial responses at the last iterate.
     trial: Vec<SpringResponse>,
-    reaction: Reaction,
     pub stats: SolverStats,
     gravity: Vector3<f64>,
     /// Adaptive stepping: the next step to try, s.
@@ -254,7 +274,6 @@ impl Simulation {
             solver,
             state,
             trial: vec![SpringResponse::default(); n],
-            reaction: Reaction::default(),
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
             h_next: solver.dt_s,
@@ -274,7 +293,7 @@ impl Simulation {
         self.state.springs.iter_mut().for_each(|s| *s = SpringState::default());
         self.h_next = self.solver.dt_s;
         let p0 = self.load_vector(load.at(0.0));
-        let (f, _) = self.assemble(self.state.u, [0.0; 3], self.solver.dt_s);
+        let f = self.resisting_force(self.state.u, [0.0; 3], self.solver.dt_s);
         let rhs = p0 - f;
         let a0 = self.model.mass.lu().solve(&rhs).unwrap_or_else(Vector3::zeros);
         self.state.a = [a0[0], a0[1], a0[2]];
@@ -286,9 +305,30 @@ impl Simulation {
     pub fn state(&self) -> &State {
         &self.state
     }
+    /// The base reaction of the committed step (of the static equilibrium after [`Self::new`]
+    /// and [`Self::reset`]), from the springs' responses and the committed velocity.
     pub fn reaction(&self) -> Reaction {
-        self.reaction
+        let v = self.state.v;
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        let mut reaction = Reaction::default();
+        for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
+            if cdy > 0.0 && r.normal_n > 0.0 {
+                let fd = cdy * (v[1] - v[2] * x);
+                reaction.dashpot_moment_nm -= x * fd;
+            }
+            reaction.horizontal_n += r.shear_n;
+            reaction.normal_n += r.normal_n;
+            reaction.moment_nm += x * r.normal_n;
+            reaction.contact_springs += (r.normal_n > 0.0) as usize;
+            reaction.sliding_springs += (r.state.sliding && r.normal_n > 0.0) as usize;
+        }
+        reaction.dashpot_horizontal_n = self.model.damping[(0, 0)] * v[0];
+        reaction.horizontal_n += reaction.dashpot_horizontal_n;
+        reaction.dashpot_moment_nm += self.model.damping[(2, 2)] * v[2];
+        reaction
     }
+    /// The springs' responses at the committed step (the static equilibrium after [`Self::new`]
+    /// and [`Self::reset`]).
     pub fn springs(&self) -> &[SpringResponse] {
         &self.trial
     }
@@ -298,63 +338,67 @@ impl Simulation {
         Vector3::new(w.fx_n, w.fy_n, w.m_nm) + self.gravity
     }
 
-    /// Resisting force f_S (springs, and their dashpots in the elastic mode) and its tangent at
-    /// trial displacement `u` and velocity `v`, from the committed spring states. Fills
-    /// `self.trial` and `self.reaction`.
+    /// Resisting force f_S (springs, and their dashpots) at trial displacement `u` and velocity
+    /// `v`, from the committed spring states. Fills `self.trial` (what [`Self::tangent`] and
+    /// [`Self::reaction`] are summed from).
     #[inline]
-    fn assemble(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> (Vector3<f64>, Matrix3<f64>) {
-        let law = self.model.law;
-        let cd = self.model.spring_dashpot_ns_per_m;
+    fn resisting_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
+        let cd_over_h = self.model.spring_dashpot_ns_per_m / h;
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
-        let dv_du = self.solver.gamma / (self.solver.beta * h);
-        let cd_over_h = cd / h;
+        let law = self.model.law;
         let ux_n = self.state.u[0];
-        let mut f = Vector3::zeros();
-        let mut k = Matrix3::zeros();
-        let mut reaction = Reaction::default();
-        for ((x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
-            let x = *x;
+        let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
+        for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
             // Elastic mode: the dashpot sits beside the spring, on its elastic displacement.
             let r = law.trial_with_dashpot(*c, u[0], u[1] - u[2] * x, ux_n - c.slip_m, cd_over_h);
-            let fx = r.shear_n;
-            let kxx = r.dshear_dux;
-            let kxy = r.dshear_duy;
-            let dn = r.dnormal_duy;
             if cdy > 0.0 && r.normal_n > 0.0 {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
                 // local vertical coordinate u_y − θ x.
                 let fd = cdy * (v[1] - v[2] * x);
-                let kd = cdy * dv_du;
-                f[1] += fd;
-                f[2] -= x * fd;
-                reaction.dashpot_moment_nm -= x * fd;
-                k[(1, 1)] += kd;
-                k[(1, 2)] -= x * kd;
-                k[(2, 1)] -= x * kd;
-                k[(2, 2)] += x * x * kd;
+                f1 += fd;
+                f2 -= x * fd;
             }
-            f[0] += fx;
-            f[1] -= r.normal_n;
-            f[2] += x * r.normal_n;
-            k[(0, 0)] += kxx;
-            k[(0, 1)] += kxy;
-            k[(0, 2)] -= x * kxy;
-            k[(1, 1)] -= dn;
-            k[(1, 2)] += x * dn;
-            k[(2, 1)] += x * dn;
-            k[(2, 2)] -= x * x * dn;
-            reaction.horizontal_n += fx;
-            reaction.normal_n += r.normal_n;
-            reaction.moment_nm += x * r.normal_n;
-            reaction.contact_springs += (r.normal_n > 0.0) as usize;
-            reaction.sliding_springs += (r.state.sliding && r.normal_n > 0.0) as usize;
+            f0 += r.shear_n;
+            f1 -= r.normal_n;
+            f2 += x * r.normal_n;
             *out = r;
         }
-        reaction.dashpot_horizontal_n = self.model.damping[(0, 0)] * v[0];
-        reaction.horizontal_n += reaction.dashpot_horizontal_n;
-        reaction.dashpot_moment_nm += self.model.damping[(2, 2)] * v[2];
-        self.reaction = reaction;
-        (f, k)
+        Vector3::new(f0, f1, f2)
+    }
+
+    /// The tangent ∂f_S/∂q of the trial responses in `self.trial` (left by
+    /// [`Self::resisting_force`] for a step of length `h`): the springs' terms and, through
+    /// v = q̇_n + γ/(β h) δ + ..., their vertical dashpots.
+    #[inline]
+    fn tangent(&self, h: f64) -> Matrix3<f64> {
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        let kd = cdy * (self.solver.gamma / (self.solver.beta * h));
+        let (mut k00, mut k01, mut k02) = (0.0, 0.0, 0.0);
+        let (mut k11, mut k12, mut k21, mut k22) = (0.0, 0.0, 0.0, 0.0);
+        for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
+            if cdy > 0.0 && r.normal_n > 0.0 {
+                k11 += kd;
+                k12 -= x * kd;
+                k21 -= x * kd;
+                k22 += x * x * kd;
+            }
+            let (kxy, dn) = (r.dshear_duy, r.dnormal_duy);
+            k00 += r.dshear_dux;
+            k01 += kxy;
+            k02 -= x * kxy;
+            k11 -= dn;
+            k12 += x * dn;
+            k21 += x * dn;
+            k22 -= x * x * dn;
+        }
+        Matrix3::new(k00, k01, k02, 0.0, k11, k12, 0.0, k21, k22)
+    }
+
+    /// Resisting force and tangent together (the finite-difference test of the tangent).
+    #[cfg(test)]
+    fn assemble(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> (Vector3<f64>, Matrix3<f64>) {
+        let f = self.resisting_force(u, v, h);
+        (f, self.tangent(h))
     }
 
     /// Newton-Raphson for one step of length `h` to load `p`. Commits nothing.
@@ -371,13 +415,16 @@ impl Simulation {
         let k_dyn = m * c1 + c * (gamma * c2);
         let tol = self.solver.tolerance * self.model.weight_n;
         let inv_b = 1.0 / self.model.width_m;
-        let mut delta = Vector3::zeros();
+        let mut delta = match self.solver.predictor {
+            Predictor::LastDisplacement => Vector3::zeros(),
+            Predictor::ConstantAcceleration => vn * h + an * (0.5 * h * h),
+        };
         let mut norm = f64::INFINITY;
         for it in 0..=self.solver.max_iterations {
             let a = delta * c1 - vn * c2 - an * c3;
             let v = vn + (an * (1.0 - gamma) + a * gamma) * h;
             let u = un + delta;
-            let (fs, kt) = self.assemble([u[0], u[1], u[2]], [v[0], v[1], v[2]], h);
+            let fs = self.resisting_force([u[0], u[1], u[2]], [v[0], v[1], v[2]], h);
             let r = p - m * a - c * v - fs;
             norm = r[0].abs().max(r[1].abs()).max(r[2].abs() * inv_b);
             if !norm.is_finite() {
@@ -389,7 +436,7 @@ impl Simulation {
             if it == self.solver.max_iterations {
                 break;
             }
-            match (k_dyn + kt).lu().solve(&r) {
+            match solve3::lu_solve(&(k_dyn + self.tangent(h)), &r) {
                 Some(d) => delta += d,
                 None => return Err((it, norm)),
             }
@@ -426,15 +473,17 @@ impl Simulation {
             Ok(c) => {
                 let it = c.iterations;
                 self.commit(h, c);
-                // `assemble` left the trial of the converged iterate in `self.trial`/`reaction`.
-                obs.observe(&StepView {
-                    t_s: self.state.t_s,
-                    state: &self.state,
-                    load: w,
-                    reaction: self.reaction,
-                    springs: &self.trial,
-                    iterations: it,
-                });
+                // `resisting_force` left the trial of the converged iterate in `self.trial`.
+                if obs.observes() {
+                    obs.observe(&StepView {
+                        t_s: self.state.t_s,
+                        state: &self.state,
+                        load: w,
+                        reaction: self.reaction(),
+                        springs: &self.trial,
+                        iterations: it,
+                    });
+                }
                 Ok(())
             }
             Err((iterations, residual)) => {
@@ -519,14 +568,16 @@ impl Simulation {
                     let it = c.iterations;
                     self.commit(h, c);
                     self.state.t_s = t1;
-                    obs.observe(&StepView {
-                        t_s: t1,
-                        state: &self.state,
-                        load: w,
-                        reaction: self.reaction,
-                        springs: &self.trial,
-                        iterations: it,
-                    });
+                    if obs.observes() {
+                        obs.observe(&StepView {
+                            t_s: t1,
+                            state: &self.state,
+                            load: w,
+                            reaction: self.reaction(),
+                            springs: &self.trial,
+                            iterations: it,
+                        });
+                    }
                     let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
                     self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
                     level = 0;
