@@ -15,7 +15,9 @@ EXAMPLES = ROOT / "examples"
 
 
 def cli_path() -> Path:
-    p = Path(os.environ.get("CAISSON_BIN", ROOT / "target" / "release" / "caisson"))
+    """$CAISSON_BIN, or the release build in $CARGO_TARGET_DIR (default: target/)."""
+    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")
+    p = Path(os.environ.get("CAISSON_BIN", target / "release" / "caisson"))
     if not p.exists():
         pytest.fail(f"the caisson CLI is not built at {p}: run `cargo build --release -p caisson-cli` (scripts/test.sh does)")
     return p
