@@ -17,6 +17,7 @@ use caisson::analysis::checks::{life_warnings, response_warnings, structure_warn
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, History};
+use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
 use caisson::foundation::DampingMode;
 use caisson::loads::series::ForceSeries;
@@ -26,6 +27,7 @@ use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::report::fragility::FragilityReport;
 use caisson::report::loads::LoadsReport;
 use caisson::report::run::RunReport;
+use caisson::report::spectrum::SpectrumReport;
 use caisson::report::train::TrainRunReport;
 use caisson::scenario::{Scenario, ScenarioError as LibError};
 use caisson::waves::{breaking, dispersion, surf_zone};
@@ -393,6 +395,88 @@ fn run_load<'py>(
     Ok((json, cols))
 }
 
+/// The shock spectrum of the scenario's triangular `[load]` at the ratios t_r/T0 `tr_over_t0`
+/// (any order; each in [`RATIO_RANGE`], at most [`MAX_STEPS`] time steps in all): the
+/// `caisson spectrum --json` report without its points as JSON text, and the points as columns
+/// (names and numpy arrays, in the order of `spectrum.csv`), one row per ratio in the order given.
+#[pyfunction]
+#[pyo3(signature = (sc, tr_over_t0, threads=1, progress=None))]
+fn spectrum(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    tr_over_t0: PyReadonlyArray1<'_, f64>,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<(String, Vec<String>, Vec<Py<PyAny>>)> {
+    let sc = &sc.sc;
+    let base = match &sc.load {
+        Some(LoadSpec::Triangle(base)) => *base,
+        other => {
+            let value = match other {
+                None => None,
+                Some(LoadSpec::Static(_)) => Some("\"static\"".to_string()),
+                Some(_) => Some("\"series\"".to_string()),
+            };
+            let key = if value.is_some() { "[load] kind" } else { "[load]" };
+            return Err(scenario_error(
+                py,
+                "caisson.spectrum needs `[load] kind = \"triangle\"` (its peak forces are swept over rise times)"
+                    .into(),
+                Some(key.into()),
+                value,
+                Some("kind = \"triangle\"".into()),
+            ));
+        }
+    };
+    let ratios = tr_over_t0.as_slice()?.to_vec();
+    let (lo, hi) = RATIO_RANGE;
+    let allowed = format!("finite numbers from {lo} to {hi}, at least one");
+    let bad = |value: String, message: String| {
+        scenario_error(py, message, Some("tr_over_t0".into()), Some(value), Some(allowed.clone()))
+    };
+    if ratios.is_empty() {
+        return Err(bad("an empty array".into(), format!("`tr_over_t0` is empty: give {allowed}")));
+    }
+    if let Some((i, x)) = ratios.iter().enumerate().find(|(_, x)| !(x.is_finite() && (lo..=hi).contains(*x))) {
+        return Err(bad(
+            x.to_string(),
+            format!("`tr_over_t0` = {x} (element {i}): must be a finite number from {lo} to {hi}"),
+        ));
+    }
+    let steps = estimated_steps(sc.structure(), &ratios);
+    if steps.is_nan() || steps > MAX_STEPS {
+        return Err(bad(
+            format!("{} ratios", ratios.len()),
+            format!(
+                "`tr_over_t0`: the sweep would take about {steps:.2e} time steps (T0 = {:.4} s, [solver] dt_s = {} s); at most {MAX_STEPS:.0e}: raise the smallest ratio, lower the largest or give fewer",
+                sc.structure().model().natural_period_s(),
+                sc.solver().dt_s
+            ),
+        ));
+    }
+    let structure = sc.structure();
+    let points =
+        drive(py, threads, ratios.len(), progress, |tick| sweep(structure, base, &ratios, tick))?.map_err(run_error)?;
+    let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
+    let report = SpectrumReport::new(
+        structure.model().natural_period_s(),
+        &base,
+        resistance_n,
+        &points,
+        structure_warnings(structure),
+    );
+    let mut table = columns::Columns::default();
+    for p in &report.points {
+        table.push_row(p).map_err(PyRuntimeError::new_err)?;
+    }
+    let mut head = report;
+    head.points.clear();
+    let mut head = serde_json::to_value(&head).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    head.as_object_mut().map(|m| m.remove("points"));
+    let (names, cols) = table.into_python(py)?;
+    Ok((report_json(&head, "spectrum")?, names, cols))
+}
+
 /// The wave-train realizations of a `[waves]` scenario: the wave-train `summary.json` text.
 #[pyfunction]
 #[pyo3(signature = (sc, threads=1, progress=None))]
@@ -710,6 +794,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<CoreScenario>()?;
     m.add_function(wrap_pyfunction!(run_load, m)?)?;
     m.add_function(wrap_pyfunction!(run_trains, m)?)?;
+    m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(loads_report, m)?)?;
     m.add_function(wrap_pyfunction!(loads_columns, m)?)?;
     m.add_function(wrap_pyfunction!(wavelength_m, m)?)?;

@@ -11,7 +11,7 @@ import pandas as pd
 import pytest
 
 import caisson
-from conftest import cli, read_csv_exact
+from conftest import assert_same_json, cli, read_csv_exact
 
 LIVES = 12
 # Out of order and of unequal sizes: 0..5, 5..9, 9..12.
@@ -58,23 +58,6 @@ storm_duration_h = 0.2
 tidal_range_m = 2.0
 failure_sliding_m = 0.002
 """
-
-
-def assert_same_json(got, want, path: str = "") -> int:
-    """`got` == `want` with the same keys, list lengths and JSON types (an int is not a float),
-    numbers bit for bit; returns how many numbers, strings and booleans were compared."""
-    assert type(got) is type(want), f"{path}: {type(got).__name__} != {type(want).__name__}"
-    if isinstance(want, dict):
-        assert list(sorted(got)) == list(sorted(want)), f"{path}: keys differ: {sorted(set(got) ^ set(want))}"
-        return sum(assert_same_json(got[k], want[k], f"{path}.{k}") for k in want)
-    if isinstance(want, list):
-        assert len(got) == len(want), f"{path}: {len(got)} items != {len(want)}"
-        return sum(assert_same_json(g, w, f"{path}[{i}]") for i, (g, w) in enumerate(zip(got, want)))
-    if isinstance(want, float):
-        assert np.float64(got).tobytes() == np.float64(want).tobytes(), f"{path}: {got!r} != {want!r}"
-    else:
-        assert got == want, f"{path}: {got!r} != {want!r}"
-    return 1
 
 
 @pytest.fixture

@@ -39,6 +39,7 @@ __all__ = [
     "RunResult",
     "run",
     "campaign",
+    "spectrum",
     "Design",
     "Fragility",
     "FragilityResult",
@@ -366,6 +367,32 @@ def campaign(
         "report_json": json.dumps(report),
     }
     return xr.Dataset(data, coords={"condition": np.arange(len(conds)), "realization": np.arange(nr)}, attrs=attrs)
+
+
+def spectrum(scenario: Scenario, tr_over_t0: Any, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
+    """The shock spectrum of the caisson under the scenario's triangular pulse (``caisson
+    spectrum``, docs/cli.md; seed §5.2): the pulse (``[load] kind = "triangle"``, its peak forces
+    kept) run with rise times t_r = ``tr_over_t0`` · T0.
+
+    ``tr_over_t0``: ratios t_r/T0 (dimensionless), any order, each from 0.001 to 1000, at most
+    10⁸ time steps in all (``caisson spectrum --tr-over-t0 FROM:TO:COUNT`` gives them spaced
+    logarithmically). One row per ratio, in the order given, with the columns of
+    ``spectrum.csv``: ``tr_over_t0``, ``rise_time_s`` (t_r, s), ``psi`` (Ψ = max |u_x| / (F/K_x)
+    of the dynamic model), ``psi_closed_form`` (undamped oscillator), ``permanent_sliding_m``,
+    ``shimosako_sliding_m`` and ``rigid_block_sliding_m`` (closed forms, m),
+    ``max_horizontal_reaction_kn`` (kN). ``.attrs``: the other keys of ``caisson spectrum
+    --json``: ``natural_period_s`` (T0, s), ``peak_horizontal_kn``, ``peak_uplift_kn``,
+    ``static_sliding_resistance_kn`` (kN), ``warnings``, ``caisson_version``,
+    ``results_version``. ``progress``: per ratio. Bad ratios raise :class:`ScenarioError` with
+    ``.key == "tr_over_t0"``.
+    """
+    r = np.asarray(tr_over_t0, dtype=np.float64)
+    if r.ndim > 1:
+        raise ScenarioError(f"`tr_over_t0`: must be a number or a one-dimensional array, got shape {r.shape}")
+    head, names, cols = _core.spectrum(scenario._core, np.ascontiguousarray(r.ravel()), threads, progress)
+    frame = pd.DataFrame(dict(zip(names, cols)), copy=False)
+    frame.attrs.update(json.loads(head))
+    return frame
 
 
 _LIFE_COLUMNS = tuple(_core.life_columns())
