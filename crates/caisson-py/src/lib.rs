@@ -465,15 +465,14 @@ fn spectrum(
         &points,
         structure_warnings(structure),
     );
-    let mut table = columns::Columns::default();
-    for p in &report.points {
-        table.push_row(p).map_err(PyRuntimeError::new_err)?;
-    }
-    let mut head = report;
-    head.points.clear();
-    let mut head = serde_json::to_value(&head).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    report_json(&report, "spectrum")?; // refuses a non-finite number anywhere, as the CLI does
+    let points = &report.points;
+    let (names, cols) = columns::build(py, points.len(), &points[0], |table| -> Result<(), String> {
+        points.iter().try_for_each(|p| table.push_row(p))
+    })?
+    .map_err(PyRuntimeError::new_err)?;
+    let mut head = serde_json::to_value(&report).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
     head.as_object_mut().map(|m| m.remove("points"));
-    let (names, cols) = table.into_python(py)?;
     Ok((report_json(&head, "spectrum")?, names, cols))
 }
 
@@ -531,17 +530,24 @@ fn loads_columns<'py>(
         }
     }
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    let table = py.detach(|| -> Result<columns::Columns, String> {
-        let mut table = columns::Columns::default();
+    let row = |h: f64, t: f64| -> Result<LoadsReport, String> {
+        let loads = ws.model.evaluate(h, t).map_err(|e| e.to_string())?;
+        let safety = ws.model.safety(&loads, w, mu);
+        Ok(LoadsReport::new(ws, &loads, &safety, w, mu))
+    };
+    // The first row fixes the columns (the scenario's own wave when there is no row).
+    let first = match (h.first(), t.first()) {
+        (Some(&h0), Some(&t0)) => row(h0, t0),
+        _ => row(ws.height_m(), ws.period_s()),
+    };
+    let first = first.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))?;
+    let table = columns::build(py, h.len(), &first, |table| -> Result<(), String> {
         for (&h, &t) in h.iter().zip(t) {
-            let loads = ws.model.evaluate(h, t).map_err(|e| e.to_string())?;
-            let safety = ws.model.safety(&loads, w, mu);
-            table.push_row(&LoadsReport::new(ws, &loads, &safety, w, mu))?;
+            table.push_row(&row(h, t)?)?;
         }
-        Ok(table)
-    });
-    let table = table.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))?;
-    table.into_python(py)
+        Ok(())
+    })?;
+    table.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))
 }
 
 /// Linear wavelength L(T, h), m, element-wise.
@@ -783,6 +789,30 @@ fn _bench_run_s(py: Python<'_>, sc: &CoreScenario, repeats: usize) -> PyResult<f
     })
 }
 
+/// Benchmark helper (BENCHMARKS.md, not API): seconds (wall clock) that the first phases of
+/// [`loads_columns`] take inside Rust on `heights_m` at the scenario's period: 0 the model and
+/// Goda's safety factors, 1 these and the report rows (not the columns).
+#[pyfunction]
+fn _bench_loads_s(py: Python<'_>, sc: &CoreScenario, heights_m: PyReadonlyArray1<'_, f64>, phase: u8) -> PyResult<f64> {
+    let sc = &sc.sc;
+    let ws = sc.waves_for("bench").map_err(|e| lib_error(py, e, None))?;
+    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
+    let (t, heights) = (ws.period_s(), heights_m.as_slice()?);
+    py.detach(|| {
+        let t0 = std::time::Instant::now();
+        for &h in heights {
+            let loads = ws.model.evaluate(h, t).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+            let safety = ws.model.safety(&loads, w, mu);
+            if phase == 0 {
+                std::hint::black_box(safety);
+            } else {
+                std::hint::black_box(LoadsReport::new(ws, &loads, &safety, w, mu));
+            }
+        }
+        Ok(t0.elapsed().as_secs_f64())
+    })
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -808,5 +838,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
     m.add_function(wrap_pyfunction!(_bench_run_s, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_loads_s, m)?)?;
     Ok(())
 }
