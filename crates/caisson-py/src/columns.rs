@@ -402,7 +402,8 @@ impl ser::Error for Error {
 
 type R = Result<(), Error>;
 
-/// The path element of a map key after the first row (not compared).
+/// The key of every map value: map keys are read in the first row only (for the names), later a
+/// map value matches the column at its position.
 const ANY_KEY: &str = "\u{0}";
 
 fn unsupported(what: &str) -> Error {
