@@ -17,6 +17,7 @@ use caisson::analysis::checks::{life_warnings, response_warnings, structure_warn
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, History};
+use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
 use caisson::foundation::DampingMode;
 use caisson::loads::series::ForceSeries;
@@ -26,6 +27,7 @@ use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::report::fragility::FragilityReport;
 use caisson::report::loads::LoadsReport;
 use caisson::report::run::RunReport;
+use caisson::report::spectrum::SpectrumReport;
 use caisson::report::train::TrainRunReport;
 use caisson::scenario::{Scenario, ScenarioError as LibError};
 use caisson::waves::{breaking, dispersion, surf_zone};
@@ -393,6 +395,87 @@ fn run_load<'py>(
     Ok((json, cols))
 }
 
+/// The shock spectrum of the scenario's triangular `[load]` at the ratios t_r/T0 `tr_over_t0`
+/// (any order; each in [`RATIO_RANGE`], at most [`MAX_STEPS`] time steps in all): the
+/// `caisson spectrum --json` report without its points as JSON text, and the points as columns
+/// (names and numpy arrays, in the order of `spectrum.csv`), one row per ratio in the order given.
+#[pyfunction]
+#[pyo3(signature = (sc, tr_over_t0, threads=1, progress=None))]
+fn spectrum(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    tr_over_t0: PyReadonlyArray1<'_, f64>,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<(String, Vec<String>, Vec<Py<PyAny>>)> {
+    let sc = &sc.sc;
+    let base = match &sc.load {
+        Some(LoadSpec::Triangle(base)) => *base,
+        other => {
+            let value = match other {
+                None => None,
+                Some(LoadSpec::Static(_)) => Some("\"static\"".to_string()),
+                Some(_) => Some("\"series\"".to_string()),
+            };
+            let key = if value.is_some() { "[load] kind" } else { "[load]" };
+            return Err(scenario_error(
+                py,
+                "caisson.spectrum needs `[load] kind = \"triangle\"` (its peak forces are swept over rise times)"
+                    .into(),
+                Some(key.into()),
+                value,
+                Some("kind = \"triangle\"".into()),
+            ));
+        }
+    };
+    let ratios = tr_over_t0.as_slice()?.to_vec();
+    let (lo, hi) = RATIO_RANGE;
+    let allowed = format!("finite numbers from {lo} to {hi}, at least one");
+    let bad = |value: String, message: String| {
+        scenario_error(py, message, Some("tr_over_t0".into()), Some(value), Some(allowed.clone()))
+    };
+    if ratios.is_empty() {
+        return Err(bad("an empty array".into(), format!("`tr_over_t0` is empty: give {allowed}")));
+    }
+    if let Some((i, x)) = ratios.iter().enumerate().find(|(_, x)| !(x.is_finite() && (lo..=hi).contains(*x))) {
+        return Err(bad(
+            x.to_string(),
+            format!("`tr_over_t0` = {x} (element {i}): must be a finite number from {lo} to {hi}"),
+        ));
+    }
+    let steps = estimated_steps(sc.structure(), &ratios);
+    if steps.is_nan() || steps > MAX_STEPS {
+        return Err(bad(
+            format!("{} ratios", ratios.len()),
+            format!(
+                "`tr_over_t0`: the sweep would take about {steps:.2e} time steps (T0 = {:.4} s, [solver] dt_s = {} s); at most {MAX_STEPS:.0e}: raise the smallest ratio, lower the largest or give fewer",
+                sc.structure().model().natural_period_s(),
+                sc.solver().dt_s
+            ),
+        ));
+    }
+    let structure = sc.structure();
+    let points =
+        drive(py, threads, ratios.len(), progress, |tick| sweep(structure, base, &ratios, tick))?.map_err(run_error)?;
+    let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
+    let report = SpectrumReport::new(
+        structure.model().natural_period_s(),
+        &base,
+        resistance_n,
+        &points,
+        structure_warnings(structure),
+    );
+    report_json(&report, "spectrum")?; // refuses a non-finite number anywhere, as the CLI does
+    let points = &report.points;
+    let (names, cols) = columns::build(py, points.len(), &points[0], |table| -> Result<(), String> {
+        points.iter().try_for_each(|p| table.push_row(p))
+    })?
+    .map_err(PyRuntimeError::new_err)?;
+    let mut head = serde_json::to_value(&report).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    head.as_object_mut().map(|m| m.remove("points"));
+    Ok((report_json(&head, "spectrum")?, names, cols))
+}
+
 /// The wave-train realizations of a `[waves]` scenario: the wave-train `summary.json` text.
 #[pyfunction]
 #[pyo3(signature = (sc, threads=1, progress=None))]
@@ -447,17 +530,24 @@ fn loads_columns<'py>(
         }
     }
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    let table = py.detach(|| -> Result<columns::Columns, String> {
-        let mut table = columns::Columns::default();
+    let row = |h: f64, t: f64| -> Result<LoadsReport, String> {
+        let loads = ws.model.evaluate(h, t).map_err(|e| e.to_string())?;
+        let safety = ws.model.safety(&loads, w, mu);
+        Ok(LoadsReport::new(ws, &loads, &safety, w, mu))
+    };
+    // The first row fixes the columns (the scenario's own wave when there is no row).
+    let first = match (h.first(), t.first()) {
+        (Some(&h0), Some(&t0)) => row(h0, t0),
+        _ => row(ws.height_m(), ws.period_s()),
+    };
+    let first = first.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))?;
+    let table = columns::build(py, h.len(), &first, |table| -> Result<(), String> {
         for (&h, &t) in h.iter().zip(t) {
-            let loads = ws.model.evaluate(h, t).map_err(|e| e.to_string())?;
-            let safety = ws.model.safety(&loads, w, mu);
-            table.push_row(&LoadsReport::new(ws, &loads, &safety, w, mu))?;
+            table.push_row(&row(h, t)?)?;
         }
-        Ok(table)
-    });
-    let table = table.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))?;
-    table.into_python(py)
+        Ok(())
+    })?;
+    table.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))
 }
 
 /// Linear wavelength L(T, h), m, element-wise.
@@ -699,6 +789,30 @@ fn _bench_run_s(py: Python<'_>, sc: &CoreScenario, repeats: usize) -> PyResult<f
     })
 }
 
+/// Benchmark helper (BENCHMARKS.md, not API): seconds (wall clock) that the first phases of
+/// [`loads_columns`] take inside Rust on `heights_m` at the scenario's period: 0 the model and
+/// Goda's safety factors, 1 these and the report rows (not the columns).
+#[pyfunction]
+fn _bench_loads_s(py: Python<'_>, sc: &CoreScenario, heights_m: PyReadonlyArray1<'_, f64>, phase: u8) -> PyResult<f64> {
+    let sc = &sc.sc;
+    let ws = sc.waves_for("bench").map_err(|e| lib_error(py, e, None))?;
+    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
+    let (t, heights) = (ws.period_s(), heights_m.as_slice()?);
+    py.detach(|| {
+        let t0 = std::time::Instant::now();
+        for &h in heights {
+            let loads = ws.model.evaluate(h, t).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+            let safety = ws.model.safety(&loads, w, mu);
+            if phase == 0 {
+                std::hint::black_box(safety);
+            } else {
+                std::hint::black_box(LoadsReport::new(ws, &loads, &safety, w, mu));
+            }
+        }
+        Ok(t0.elapsed().as_secs_f64())
+    })
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -710,6 +824,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<CoreScenario>()?;
     m.add_function(wrap_pyfunction!(run_load, m)?)?;
     m.add_function(wrap_pyfunction!(run_trains, m)?)?;
+    m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(loads_report, m)?)?;
     m.add_function(wrap_pyfunction!(loads_columns, m)?)?;
     m.add_function(wrap_pyfunction!(wavelength_m, m)?)?;
@@ -723,5 +838,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
     m.add_function(wrap_pyfunction!(_bench_run_s, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_loads_s, m)?)?;
     Ok(())
 }

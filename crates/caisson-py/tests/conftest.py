@@ -8,6 +8,7 @@ import os
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[3]
@@ -15,7 +16,9 @@ EXAMPLES = ROOT / "examples"
 
 
 def cli_path() -> Path:
-    p = Path(os.environ.get("CAISSON_BIN", ROOT / "target" / "release" / "caisson"))
+    """$CAISSON_BIN, or the release build in $CARGO_TARGET_DIR (default: target/)."""
+    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")
+    p = Path(os.environ.get("CAISSON_BIN", target / "release" / "caisson"))
     if not p.exists():
         pytest.fail(f"the caisson CLI is not built at {p}: run `cargo build --release -p caisson-cli` (scripts/test.sh does)")
     return p
@@ -54,6 +57,23 @@ def read_csv_exact(path) -> "pd.DataFrame":
         except ValueError:
             cols[name] = [float(t) for t in text]
     return pd.DataFrame(cols)
+
+
+def assert_same_json(got, want, path: str = "") -> int:
+    """`got` == `want` with the same keys, list lengths and JSON types (an int is not a float),
+    numbers bit for bit (a float by its 8 bytes); returns how many numbers, strings and booleans were compared."""
+    assert type(got) is type(want), f"{path}: {type(got).__name__} != {type(want).__name__}"
+    if isinstance(want, dict):
+        assert list(sorted(got)) == list(sorted(want)), f"{path}: keys differ: {sorted(set(got) ^ set(want))}"
+        return sum(assert_same_json(got[k], want[k], f"{path}.{k}") for k in want)
+    if isinstance(want, list):
+        assert len(got) == len(want), f"{path}: {len(got)} items != {len(want)}"
+        return sum(assert_same_json(g, w, f"{path}[{i}]") for i, (g, w) in enumerate(zip(got, want)))
+    if isinstance(want, float):
+        assert np.float64(got).tobytes() == np.float64(want).tobytes(), f"{path}: {got!r} != {want!r}"
+    else:
+        assert got == want, f"{path}: {got!r} != {want!r}"
+    return 1
 
 
 def short_design_toml(tmp_path: Path, lives: int = 40, years: int = 20) -> Path:

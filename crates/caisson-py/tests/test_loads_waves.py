@@ -57,6 +57,33 @@ def test_evaluate_is_the_report_of_each_height():
     assert set(frame["regime.regime"]) == {"breaking", "non-breaking"}
 
 
+def test_every_column_of_every_row_is_the_report_of_its_height():
+    """The columns (built from the first row's layout, widened when a later row has a value where
+    the first had null) hold every key of each height's `caisson loads --json`, exactly."""
+    sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
+    # The first wave (2 m: breaking, no rise-time distribution, no heel pressure) has nulls where
+    # later waves have numbers; both regimes.
+    heights = np.array([2.0, 0.45, 0.05, 0.5, 0.3])
+    frame = caisson.loads.evaluate(sc, heights)
+    assert set(frame["regime.regime"]) == {"breaking", "non-breaking"}
+    checked = widened = 0
+    first = flatten(caisson.loads.report(sc.replace(waves={"height_m": float(heights[0])})))
+    for i, h in enumerate(heights):
+        flat = flatten(caisson.loads.report(sc.replace(waves={"height_m": float(h)})))
+        flat.pop("caisson_version"), flat.pop("results_version")
+        assert sorted(frame.columns) == sorted(flat)
+        for k, v in flat.items():
+            got = frame[k].iloc[i]
+            if v is None:
+                assert got is None or (isinstance(got, float) and math.isnan(got)), (h, k, got)
+            else:
+                assert got == v and type(v)(got) == v, (h, k, got, v)  # exact
+                widened += first[k] is None
+            checked += 1
+    assert checked == len(heights) * len(frame.columns)
+    assert widened > 0  # some column was null in the first row and has values later
+
+
 def test_evaluate_broadcasts_heights_and_periods():
     sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
     h = np.array([[0.1], [0.2]])

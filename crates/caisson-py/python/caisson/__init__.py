@@ -39,6 +39,7 @@ __all__ = [
     "RunResult",
     "run",
     "campaign",
+    "spectrum",
     "Design",
     "Fragility",
     "FragilityResult",
@@ -368,6 +369,32 @@ def campaign(
     return xr.Dataset(data, coords={"condition": np.arange(len(conds)), "realization": np.arange(nr)}, attrs=attrs)
 
 
+def spectrum(scenario: Scenario, tr_over_t0: Any, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
+    """The shock spectrum of the caisson under the scenario's triangular pulse (``caisson
+    spectrum``, docs/cli.md; seed §5.2): the pulse (``[load] kind = "triangle"``, its peak forces
+    kept) run with rise times t_r = ``tr_over_t0`` · T0.
+
+    ``tr_over_t0``: ratios t_r/T0 (dimensionless), any order, each from 0.001 to 1000, at most
+    10⁸ time steps in all (``caisson spectrum --tr-over-t0 FROM:TO:COUNT`` gives them spaced
+    logarithmically). One row per ratio, in the order given, with the columns of
+    ``spectrum.csv``: ``tr_over_t0``, ``rise_time_s`` (t_r, s), ``psi`` (Ψ = max |u_x| / (F/K_x)
+    of the dynamic model), ``psi_closed_form`` (undamped oscillator), ``permanent_sliding_m``,
+    ``shimosako_sliding_m`` and ``rigid_block_sliding_m`` (closed forms, m),
+    ``max_horizontal_reaction_kn`` (kN). ``.attrs``: the other keys of ``caisson spectrum
+    --json``: ``natural_period_s`` (T0, s), ``peak_horizontal_kn``, ``peak_uplift_kn``,
+    ``static_sliding_resistance_kn`` (kN), ``warnings``, ``caisson_version``,
+    ``results_version``. ``progress``: per ratio. Bad ratios raise :class:`ScenarioError` with
+    ``.key == "tr_over_t0"``.
+    """
+    r = np.asarray(tr_over_t0, dtype=np.float64)
+    if r.ndim > 1:
+        raise ScenarioError(f"`tr_over_t0`: must be a number or a one-dimensional array, got shape {r.shape}")
+    head, names, cols = _core.spectrum(scenario._core, np.ascontiguousarray(r.ravel()), threads, progress)
+    frame = pd.DataFrame(dict(zip(names, cols)), copy=False)
+    frame.attrs.update(json.loads(head))
+    return frame
+
+
 _LIFE_COLUMNS = tuple(_core.life_columns())
 
 
@@ -421,16 +448,45 @@ class Design:
     def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> dict:
         """``design.json`` (the dict of ``caisson design --json``) of the lives given (one
         DataFrame or several, e.g. shards from workers, in any order). The statistics of lives
-        0 .. N − 1 are exactly those of ``caisson design`` with N lives."""
-        frame = lives if isinstance(lives, pd.DataFrame) else pd.concat(list(lives), ignore_index=True)
+        0 .. N − 1 are exactly those of ``caisson design`` with N lives. Raises ``ValueError``
+        for a life given twice, a missing column (``life`` and those of ``lives.csv``), no lives,
+        a non-finite length or a count that is not a whole number ≥ 0."""
+        frames = [lives] if isinstance(lives, pd.DataFrame) else list(lives)
+        need = ("life",) + _LIFE_COLUMNS
+        for k, f in enumerate(frames):
+            if not isinstance(f, pd.DataFrame):
+                raise TypeError(f"the lives must be DataFrames of simulate_lives, got {type(f).__name__}")
+            missing = [c for c in need if c not in f.columns]
+            if missing:
+                which = "the lives have" if len(frames) == 1 else f"shard {k} (of {len(frames)}) has"
+                raise ValueError(f"{which} no column {missing[0]!r} (the lives need {', '.join(need)})")
+        frame = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=list(need))
+        if len(frame) == 0:
+            raise ValueError("no lives given: the statistics need at least one life (a DataFrame of simulate_lives)")
+        life = frame["life"].to_numpy()
+        cols = {}
+        for c in need:
+            v = frame[c].to_numpy()
+            metres = c.endswith("_m")
+            allowed = "must be a finite number (m)" if metres else "must be a whole number ≥ 0"
+            if metres or v.dtype.kind not in "iu":
+                try:
+                    v = v.astype(np.float64)
+                except (TypeError, ValueError):
+                    raise ValueError(f"column {c!r} holds {v.dtype} values: {allowed}") from None
+            if metres:
+                bad = ~np.isfinite(v)
+            else:
+                bad = v < 0 if v.dtype.kind in "iu" else ~((v >= 0) & (v == np.floor(v)) & np.isfinite(v))
+            if bad.any():
+                i = int(np.argmax(bad))
+                raise ValueError(f"column {c!r} = {v[i]} in row {i} (life {life[i]}): {allowed}")
+            cols[c] = v
         if frame["life"].duplicated().any():
             dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
             raise ValueError(f"life {dup} appears more than once")
-        frame = frame.sort_values("life", kind="stable")
-        missing = [c for c in _LIFE_COLUMNS if c not in frame.columns]
-        if missing:
-            raise ValueError(f"the lives have no column {missing[0]!r} (they need {', '.join(_LIFE_COLUMNS)})")
-        cols = {c: frame[c].to_numpy(dtype=np.float64 if c.endswith("_m") else np.uint64).tolist() for c in _LIFE_COLUMNS}
+        order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
+        cols = {c: (v[order].astype(np.float64) if c.endswith("_m") else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
         return json.loads(_core.design_statistics(self._scenario._core, cols))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:

@@ -35,14 +35,25 @@ def evaluate(scenario, heights_m: Any, period_s: Any = None) -> pd.DataFrame:
     h = np.ascontiguousarray(h).ravel()
     t = np.ascontiguousarray(t).ravel()
     names, cols = _core.loads_columns(scenario._core, h, t)
+    return _frame(names, cols, len(h))
+
+
+def _frame(names, cols, rows: int) -> pd.DataFrame:
+    """A DataFrame of the columns of ``_core`` (numbers: numpy arrays, used without a copy;
+    text: (codes, distinct values), code 2^32 − 1 null, as pandas' default text dtype)."""
     data = {}
     for name, col in zip(names, cols):
-        if isinstance(col, tuple):  # text: (codes, distinct values); code 2^32 - 1 is null
+        if isinstance(col, tuple):
             codes, values = col
-            lookup = np.array(list(values) + [None], dtype=object)
-            col = lookup[np.minimum(codes, len(values))]
+            # The distinct values as pandas makes text by default (None: missing), then one
+            # vectorised take: the column pandas would make of the strings, faster.
+            lookup = pd.Series(list(values) + [None]).array
+            col = lookup.take(np.minimum(codes, len(values)).astype(np.intp))
         data[name] = col
-    attrs = {k: data.pop(k)[0] if len(h) else None for k in ("caisson_version", "results_version")}
+    attrs = {}
+    for k in ("caisson_version", "results_version"):
+        v = data.pop(k)[0] if rows else None
+        attrs[k] = v.item() if isinstance(v, np.generic) else v
     frame = pd.DataFrame(data, copy=False)
     frame.attrs.update(attrs)
     return frame

@@ -16,6 +16,14 @@ use crate::dynamics::{SolveError, SolverParams};
 use crate::loads::pulse::TrianglePulse;
 use rayon::prelude::*;
 
+/// Smallest and largest t_r/T0 of a sweep: below, the steps of t_r/20 make a point last about
+/// 200 T0/t_r steps; above, the point lasts 4 t_r. (The limits of `caisson spectrum
+/// --tr-over-t0` and of the Python `caisson.spectrum`.)
+pub const RATIO_RANGE: (f64, f64) = (1e-3, 1e3);
+/// Most time steps a sweep may take, all points together ([`estimated_steps`]; about a minute or
+/// two on one core).
+pub const MAX_STEPS: f64 = 1e8;
+
 /// One point of the spectrum.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SpectrumPoint {

@@ -1,0 +1,135 @@
+"""`caisson design --life-range` shards joined by `caisson merge` against the same shards simulated
+in Python: `Design.statistics` is the merged `design.json` key for key, bit for bit (warnings
+too), and the lives are the merged `lives.csv` row for row. And what `Design.statistics` refuses."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import caisson
+from conftest import assert_same_json, cli, read_csv_exact
+
+LIVES = 12
+# Out of order and of unequal sizes: 0..5, 5..9, 9..12.
+RANGES = [(5, 9), (0, 5), (9, 12)]
+
+# The small design of crates/caisson-cli/tests/cli_design.rs (12 lives of 5 years, about 0.1 s),
+# with a failure limit of 2 mm so that most lives fail: the merged design.json has warnings.
+DESIGN = f"""
+[caisson]
+width_m = 20.0
+length_m = 1.0
+height_m = 24.5
+base_depth_m = 17.5
+weight_in_water_kn = 4500.0
+[foundation]
+mu_static = 0.6
+mu_dynamic = 0.6
+e100_kpa = 3.5e5
+density_kg_per_m3 = 2000
+damping_mode = "elastic"
+vertical_damping = "springs"
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 20.0
+depth_at_wall_m = 16.5
+seabed_slope = 0.01
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.8
+[solver]
+dt_s = 1e-3
+dt_max_s = 0.05
+error_tolerance_m = 1e-6
+[design]
+life_years = 5
+lives = {LIVES}
+seed = 3
+storm_distribution = "weibull"
+storm_scale_m = 1.5
+storm_shape = 1.4
+storm_location_m = 7.5
+storm_duration_h = 0.2
+tidal_range_m = 2.0
+failure_sliding_m = 0.002
+"""
+
+
+@pytest.fixture
+def design_file(tmp_path):
+    p = tmp_path / "design_small.toml"
+    p.write_text(DESIGN)
+    return p
+
+
+def test_cli_shards_merged_equal_python_shards_bit_for_bit(tmp_path, design_file):
+    shard_dirs = []
+    for a, b in RANGES:
+        d = tmp_path / f"shard_{a}_{b}"
+        cli("design", design_file, "--life-range", f"{a}..{b}", "--out", d)
+        shard_dirs.append(d)
+    merged = tmp_path / "merged"
+    cli("merge", design_file, *shard_dirs[::-1], "--out", merged)
+    want = json.loads((merged / "design.json").read_text())
+    want_lives = read_csv_exact(merged / "lives.csv")
+    assert len(want_lives) == LIVES and list(want_lives["life"]) == list(range(LIVES))
+
+    design = caisson.Design(caisson.Scenario.from_toml(design_file))
+    parts = [design.simulate_lives(range(a, b)) for a, b in RANGES]
+    # Each Python shard is the CLI shard's lives.csv.
+    for (a, b), part, d in zip(RANGES, parts, shard_dirs):
+        pd.testing.assert_frame_equal(part, read_csv_exact(d / "lives.csv"), check_exact=True, check_dtype=False)
+
+    got = design.statistics(parts)
+    compared = assert_same_json(got, want)
+    assert compared > 70, compared  # design.json has 79 values here: all of them, not a handful
+    assert got["lives"] == LIVES
+    codes = [w["code"] for w in want["warnings"]]
+    assert "failed-lives" in codes, codes  # the warnings are compared, not two empty lists
+    assert got["warnings"] == want["warnings"]
+
+    lives = pd.concat(parts, ignore_index=True).sort_values("life", ignore_index=True)
+    assert list(lives.columns) == list(want_lives.columns)
+    rows = 0
+    for got_row, want_row in zip(lives.itertuples(index=False), want_lives.itertuples(index=False)):
+        assert tuple(got_row) == tuple(want_row), (got_row, want_row)  # exact: floats parsed exactly
+        rows += 1
+    assert rows == LIVES
+
+
+def test_statistics_refuses_repeated_lives_missing_columns_and_bad_values(design_file):
+    design = caisson.Design(caisson.Scenario.from_toml(design_file))
+    part = design.simulate_lives(range(3))
+    ok = design.statistics(part)
+    assert ok["lives"] == 3
+    with pytest.raises(ValueError, match=r"^life 1 appears more than once$"):
+        design.statistics([part, part.iloc[1:2]])
+    with pytest.raises(ValueError, match=r"^the lives have no column 'waves' \(the lives need life, sliding_m, "):
+        design.statistics(part.drop(columns="waves"))
+    with pytest.raises(ValueError, match=r"^shard 1 \(of 2\) has no column 'life'"):
+        design.statistics([part, part.drop(columns="life")])
+    with pytest.raises(ValueError, match=r"^no lives given"):
+        design.statistics([])
+    with pytest.raises(ValueError, match=r"^no lives given"):
+        design.statistics(part.iloc[0:0])
+    bad = part.astype({"waves": "int64"})
+    bad.loc[2, "waves"] = -1
+    with pytest.raises(ValueError, match=r"^column 'waves' = -1 in row 2 \(life 2\): must be a whole number ≥ 0$"):
+        design.statistics(bad)
+    bad = part.astype({"rocking_waves": "float64"})
+    bad.loc[0, "rocking_waves"] = 2.5
+    with pytest.raises(ValueError, match=r"^column 'rocking_waves' = 2.5 in row 0 \(life 0\): must be a whole number"):
+        design.statistics(bad)
+    bad = part.copy()
+    bad.loc[1, "sliding_m"] = np.nan
+    with pytest.raises(ValueError, match=r"^column 'sliding_m' = nan in row 1 \(life 1\): must be a finite number \(m\)$"):
+        design.statistics(bad)
+    with pytest.raises(TypeError, match="DataFrames"):
+        design.statistics([part, {"life": [3]}])
+    # A whole-number column stored as floats (e.g. after a join) is accepted unchanged.
+    assert design.statistics(part.astype({"waves": "float64"})) == ok
