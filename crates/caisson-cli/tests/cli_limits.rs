@@ -122,6 +122,47 @@ fn series_file_that_never_ends_is_refused() {
     refused(&["run", f.to_str().unwrap()], &["/dev/zero", "128 MiB"]);
 }
 
+#[cfg(unix)]
+#[test]
+fn scenario_file_that_never_ends_is_refused_quickly_naming_the_file_and_the_limit() {
+    let start = std::time::Instant::now();
+    for cmd in ["run", "loads", "campaign", "design", "fragility", "spectrum"] {
+        refused(&[cmd, "/dev/zero"], &["scenario file /dev/zero", "larger than 1 MiB"]);
+    }
+    // Each reads at most 1 MiB + 1 byte: far below a second even on a loaded machine (the limit
+    // of `caisson()` is 60 s; without the limit /dev/zero is read until memory runs out).
+    assert!(start.elapsed() < std::time::Duration::from_secs(30), "{:?}", start.elapsed());
+}
+
+#[test]
+fn huge_scenario_and_series_files_are_refused_by_their_size_without_reading_them() {
+    let dir = tempfile::tempdir().unwrap();
+    // Sparse files: their size is all that is checked, so 1 TiB costs nothing.
+    let sparse = |name: &str, len: u64| {
+        let p = dir.path().join(name);
+        std::fs::File::create(&p).unwrap().set_len(len).unwrap();
+        p
+    };
+    let big = sparse("big.toml", 1 << 40);
+    refused(&["run", big.to_str().unwrap()], &["big.toml", "larger than 1 MiB"]);
+    // Just over the limit, as a file of text: refused too; at the limit it is read (and parsed).
+    let over = write(dir.path(), "over.toml", &"#".repeat((1 << 20) + 1));
+    refused(&["run", over.to_str().unwrap()], &["over.toml", "larger than 1 MiB"]);
+    let at = write(dir.path(), "at.toml", &"#".repeat(1 << 20));
+    let err = refused(&["run", at.to_str().unwrap()], &["at.toml"]);
+    assert!(!err.contains("larger than"), "a file of 1 MiB is read (and found to have no [caisson]): {err}");
+    let csv = sparse("forces.csv", 1 << 40);
+    let text = std::fs::read_to_string(example("table5_triangle.toml")).unwrap();
+    let start = text.find("[load]").unwrap();
+    let end = start + text[start..].find("[solver]").unwrap();
+    let f = write(
+        dir.path(),
+        "series.toml",
+        &format!("{}[load]\nkind = \"series\"\nfile = \"forces.csv\"\n\n{}", &text[..start], &text[end..]),
+    );
+    refused(&["run", f.to_str().unwrap()], &[csv.file_name().unwrap().to_str().unwrap(), "larger than 128 MiB"]);
+}
+
 #[test]
 fn wave_trains_of_40000_waves_obey_the_step_limit_under_adaptive_stepping() {
     let dir = tempfile::tempdir().unwrap();

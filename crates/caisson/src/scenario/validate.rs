@@ -355,18 +355,7 @@ pub const MAX_SERIES_BYTES: u64 = 128 << 20;
 
 /// The text of a series file of at most [`MAX_SERIES_BYTES`] (checked before and while reading).
 fn read_series(path: &Path) -> Result<String, String> {
-    use std::io::Read;
-    let limit = || format!("is larger than {} MiB, the most a force series may be", MAX_SERIES_BYTES >> 20);
-    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    if file.metadata().map_err(|e| e.to_string())?.len() > MAX_SERIES_BYTES {
-        return Err(limit());
-    }
-    let mut bytes = Vec::new();
-    file.take(MAX_SERIES_BYTES + 1).read_to_end(&mut bytes).map_err(|e| e.to_string())?;
-    if bytes.len() as u64 > MAX_SERIES_BYTES {
-        return Err(limit());
-    }
-    String::from_utf8(bytes).map_err(|_| "is not UTF-8 text (a CSV file is expected)".to_string())
+    super::read_limited(path, MAX_SERIES_BYTES, "a force series", "a CSV file")
 }
 
 fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
