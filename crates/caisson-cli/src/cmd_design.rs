@@ -474,6 +474,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let mut report = DesignReport::new(&design, case.rigid_block_mu, &lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
+    if let Some(ws) = &sc.waves {
+        report.warnings.extend(caisson::analysis::checks::wave_load_warnings(case.structure, ws));
+    }
     let json = report_json(&report, "design")?;
     crate::output::print_warnings(&report.warnings);
     if args.json {

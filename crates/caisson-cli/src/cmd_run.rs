@@ -5,7 +5,7 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::checks::{response_warnings, structure_warnings, Response};
+use caisson::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response};
 use caisson::analysis::run::{self as engine, History, RunSummary};
 use caisson::loads::LoadSpec;
 use caisson::report::run::RunReport;
@@ -238,6 +238,7 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
     let s = sc.structure();
     let mut warnings = structure_warnings(s);
+    warnings.extend(run_load_warnings(s, load));
     warnings.extend(response_warnings(s, &Response::from(&result.summary)));
     let report = RunReport::new(&result.summary, x, warnings);
     let json = report_json(&report, "summary")?;

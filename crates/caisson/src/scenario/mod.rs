@@ -14,6 +14,7 @@
 //! never the file's text.
 
 pub mod campaign;
+mod coherence;
 pub mod design;
 pub mod fragility;
 mod validate;
@@ -405,6 +406,7 @@ impl Scenario {
     pub fn with_solver(mut self, solver: SolverParams) -> Result<Scenario, ScenarioError> {
         solver.check_run(self.duration_s).map_err(|e| keyed("[solver]", SOLVER_KEYS, e))?;
         self.structure.solver = solver;
+        coherence::check_time_step(&self.structure)?;
         Ok(self)
     }
 
@@ -424,6 +426,10 @@ impl Scenario {
         self.foundation_spec = foundation_spec;
         self.structure.caisson = caisson;
         self.structure.foundation = foundation;
+        coherence::check_time_step(&self.structure)?;
+        if let Some(d) = &self.design {
+            coherence::check_floating(&self.structure.caisson, rho_w, d)?;
+        }
         Ok(self)
     }
 

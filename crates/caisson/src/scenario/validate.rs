@@ -4,8 +4,8 @@
 //! together) and names the key of every error.
 
 use super::{
-    campaign, design, fragility, keyed, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS, FOUNDATION_KEYS,
-    LOAD_KEYS, SOLVER_KEYS,
+    campaign, coherence, design, fragility, keyed, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
+    FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
 use crate::dynamics::{AdaptiveParams, SolverParams};
@@ -70,9 +70,13 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         Some(_) => Some(waves::validate_waves(f, &caisson)?),
         None => None,
     };
+    if let Some(w) = &wave_setup {
+        coherence::check_waves(&caisson, w)?;
+    }
     let (load, default_duration) = match &f.load {
         Some(_) => {
             let (l, d) = validate_load(f, &caisson, base_dir)?;
+            coherence::check_load(&caisson, &l)?;
             (Some(l), d)
         }
         // A wave-train scenario: its waves of its period (1 s without waves).
@@ -96,13 +100,16 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         design: None,
         fragility: None,
     };
+    coherence::check_time_step(&sc.structure)?;
     if f.campaign.is_some() {
         sc.campaign = Some(campaign::validate_campaign(f)?);
         // Every condition must build (its height, weight and regime on this scenario).
         sc.campaign()?;
     }
     if f.design.is_some() {
-        sc.design = Some(design::validate_design(f)?);
+        let d = design::validate_design(f)?;
+        coherence::check_floating(sc.caisson(), rho_w, &d)?;
+        sc.design = Some(d);
     }
     if f.fragility.is_some() {
         sc.fragility = Some(fragility::validate_fragility(f, &sc)?);
