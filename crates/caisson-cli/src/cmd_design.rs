@@ -398,6 +398,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
         ));
     }
     let case = sc.storm_case(design.screen).map_err(input_err)?;
+    let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
+    let estimate = caisson::analysis::work::design(&case, &design, waves);
+    let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = design_fingerprint(&case, &design);
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
     if let Some(parent) = checkpoint.as_deref().and_then(Path::parent).filter(|p| !p.as_os_str().is_empty()) {
@@ -429,6 +432,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
         crate::interrupt::graceful();
     }
     let todo: Vec<usize> = (0..design.lives).filter(|i| !done.contains_key(i)).collect();
+    crate::work::say(note);
     let pb = progress(design.lives as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let finished_now = AtomicUsize::new(0);

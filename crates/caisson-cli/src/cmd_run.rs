@@ -217,6 +217,7 @@ pub fn write_plots(dir: &std::path::Path, h: &History, title: &str) -> Result<()
 pub fn run(args: RunArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     check_out_dir(args.out.as_deref())?;
+    crate::work::say(crate::work::check_run(&sc, args.out.is_some())?);
     match &sc.load {
         Some(load) => run_load(&args, &sc, load),
         None if sc.waves.is_some() => {

@@ -15,6 +15,7 @@ pub mod lifetime;
 pub mod run;
 pub mod spectrum;
 pub mod train;
+pub mod work;
 
 use crate::dynamics::{Model, SolverParams};
 use crate::foundation::Foundation;
