@@ -186,6 +186,8 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
 pub fn run(args: CampaignArgs) -> Result<()> {
     let campaign = load_campaign(&args.campaign, args.damping_mode.as_deref())?;
     check_out_dir(args.out.as_deref())?;
+    let estimate = caisson::analysis::work::campaign(&campaign.setups, args.out.is_some());
+    crate::work::say(crate::work::check("campaign", &estimate, &crate::work::CAMPAIGN)?);
     let total: usize = campaign.setups.iter().map(|s| s.waves.train.realizations).sum();
     let pb = progress(total as u64, &format!("{} conditions", campaign.setups.len()), "realizations");
     let results =

@@ -196,6 +196,8 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     let params = sc.fragility_for("`caisson fragility`").map_err(input_err)?;
     check_out_dir(args.out.as_deref())?;
     let case = sc.storm_case(true).map_err(input_err)?;
+    let estimate = caisson::analysis::work::fragility(&case, params);
+    crate::work::say(crate::work::check("fragility", &estimate, &crate::work::FRAGILITY)?);
     let setup = Setup { structure: sc.structure(), waves: sc.waves_for("a fragility").map_err(input_err)?, params };
     let pb = progress((params.heights_m.len() * params.storms) as u64, "storms", "");
     let result = with_threads(args.threads, || run_fragility(&case, params, &|| pb.inc(1)))?

@@ -60,6 +60,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     };
     let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
     report.warnings = caisson::analysis::checks::structure_warnings(sc.structure());
+    report.warnings.extend(caisson::analysis::checks::wave_load_warnings(sc.structure(), ws));
     if let Some((records, _)) = &history {
         report.history = Some(HistoryInfo {
             waves: args.waves,

@@ -219,5 +219,5 @@ pub fn run(args: MergeArgs) -> Result<()> {
     if !args.json {
         crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
     }
-    report_lives(&args.scenario, &design, &case, &lives, args.json, Some(&args.out), &[])
+    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, Some(&args.out), &[])
 }

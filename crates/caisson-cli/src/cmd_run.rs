@@ -5,7 +5,7 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, report_json, tidy_out_dir, write_atomic, TempFile};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::checks::{response_warnings, structure_warnings, Response};
+use caisson::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response};
 use caisson::analysis::envelope::{Column, HistoryEnvelope};
 use caisson::analysis::run::{self as engine, HistoryRow, Rows, RunSummary, Sampler};
 use caisson::loads::LoadSpec;
@@ -307,6 +307,7 @@ impl Drop for OutDir {
 pub fn run(args: RunArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     check_out_dir(args.out.as_deref())?;
+    crate::work::say(crate::work::check_run(&sc, args.out.is_some())?);
     match &sc.load {
         Some(load) => run_load(&args, &sc, load),
         None if sc.waves.is_some() => {
@@ -336,6 +337,7 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
     let s = sc.structure();
     let mut warnings = structure_warnings(s);
+    warnings.extend(run_load_warnings(s, load));
     warnings.extend(response_warnings(s, &Response::from(&summary)));
     let report = RunReport::new(&summary, x, warnings);
     let json = report_json(&report, "summary")?;

@@ -17,6 +17,7 @@ mod cmd_validation;
 mod output;
 mod plot;
 mod train_out;
+mod work;
 
 use clap::Parser;
 use std::process::ExitCode;

@@ -122,6 +122,47 @@ fn series_file_that_never_ends_is_refused() {
     refused(&["run", f.to_str().unwrap()], &["/dev/zero", "128 MiB"]);
 }
 
+#[cfg(unix)]
+#[test]
+fn scenario_file_that_never_ends_is_refused_quickly_naming_the_file_and_the_limit() {
+    let start = std::time::Instant::now();
+    for cmd in ["run", "loads", "campaign", "design", "fragility", "spectrum"] {
+        refused(&[cmd, "/dev/zero"], &["scenario file /dev/zero", "larger than 1 MiB"]);
+    }
+    // Each reads at most 1 MiB + 1 byte: far below a second even on a loaded machine (the limit
+    // of `caisson()` is 60 s; without the limit /dev/zero is read until memory runs out).
+    assert!(start.elapsed() < std::time::Duration::from_secs(30), "{:?}", start.elapsed());
+}
+
+#[test]
+fn huge_scenario_and_series_files_are_refused_by_their_size_without_reading_them() {
+    let dir = tempfile::tempdir().unwrap();
+    // Sparse files: their size is all that is checked, so 1 TiB costs nothing.
+    let sparse = |name: &str, len: u64| {
+        let p = dir.path().join(name);
+        std::fs::File::create(&p).unwrap().set_len(len).unwrap();
+        p
+    };
+    let big = sparse("big.toml", 1 << 40);
+    refused(&["run", big.to_str().unwrap()], &["big.toml", "larger than 1 MiB"]);
+    // Just over the limit, as a file of text: refused too; at the limit it is read (and parsed).
+    let over = write(dir.path(), "over.toml", &"#".repeat((1 << 20) + 1));
+    refused(&["run", over.to_str().unwrap()], &["over.toml", "larger than 1 MiB"]);
+    let at = write(dir.path(), "at.toml", &"#".repeat(1 << 20));
+    let err = refused(&["run", at.to_str().unwrap()], &["at.toml"]);
+    assert!(!err.contains("larger than"), "a file of 1 MiB is read (and found to have no [caisson]): {err}");
+    let csv = sparse("forces.csv", 1 << 40);
+    let text = std::fs::read_to_string(example("table5_triangle.toml")).unwrap();
+    let start = text.find("[load]").unwrap();
+    let end = start + text[start..].find("[solver]").unwrap();
+    let f = write(
+        dir.path(),
+        "series.toml",
+        &format!("{}[load]\nkind = \"series\"\nfile = \"forces.csv\"\n\n{}", &text[..start], &text[end..]),
+    );
+    refused(&["run", f.to_str().unwrap()], &[csv.file_name().unwrap().to_str().unwrap(), "larger than 128 MiB"]);
+}
+
 #[test]
 fn wave_trains_of_40000_waves_obey_the_step_limit_under_adaptive_stepping() {
     let dir = tempfile::tempdir().unwrap();
@@ -184,4 +225,107 @@ fn dt_s_1e156_with_a_rise_time_of_5e158_is_refused() {
         &text.replacen("dt_s = 1e-4", "dt_s = 2.0", 1).replacen("duration_s = 0.6", "duration_s = 60", 1),
     );
     refused(&["run", f.to_str().unwrap()], &["[solver] dt_s", "at most 1 (s)"]);
+}
+
+/// The example `name` with `from` replaced by `to` (which must be there), written to `dir`.
+fn variant(dir: &std::path::Path, name: &str, edits: &[(&str, &str)]) -> std::path::PathBuf {
+    let mut text = std::fs::read_to_string(example(name)).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{name} has `{from}`");
+        text = text.replacen(from, to, 1);
+    }
+    write(dir, name, &text)
+}
+
+#[test]
+fn run_of_ten_million_history_rows_is_refused_by_its_memory_estimate() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = variant(dir.path(), "table5_triangle.toml", &[("duration_s = 0.6", "duration_s = 10000")]);
+    let out = dir.path().join("out");
+    let err = refused(
+        &["run", f.to_str().unwrap(), "--out", out.to_str().unwrap()],
+        &["held in memory", "10000001 history rows", "the budget is 4.0 GiB", "[load] duration_s", "--out"],
+    );
+    assert!(err.contains("about 10.2 GiB"), "the estimate is given: {err}");
+    assert!(!out.exists(), "nothing written");
+}
+
+#[test]
+fn run_of_1000_realizations_of_10000_waves_is_refused_by_its_memory_estimate() {
+    let dir = tempfile::tempdir().unwrap();
+    let f =
+        variant(dir.path(), "pari_breaking_loads.toml", &[("[waves]", "[waves]\nwaves = 10000\nrealizations = 1000")]);
+    let err = refused(
+        &["run", f.to_str().unwrap()],
+        &["1000 realizations × 10000 waves", "held in memory", "the budget is 4.0 GiB", "[waves] waves"],
+    );
+    assert!(err.contains("about 19.1 GiB"), "the estimate is given: {err}");
+}
+
+#[test]
+fn campaign_of_15_conditions_of_1000_realizations_of_10000_waves_is_refused_by_its_step_estimate() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = variant(
+        dir.path(),
+        "pari_breaking_campaign.toml",
+        &[("waves = 15 ", "waves = 10000 "), ("realizations = 10", "realizations = 1000")],
+    );
+    let err = refused(
+        &["campaign", f.to_str().unwrap()],
+        &["time steps of the dynamic model", "15 conditions", "the budget is 2e10 time steps", "[waves] waves"],
+    );
+    assert!(err.contains("e11 time steps"), "the estimate (about 1e11) is given: {err}");
+}
+
+#[test]
+fn design_of_ten_million_lives_is_refused_by_its_wave_estimate() {
+    let err = refused(
+        &["design", &example("design_breakwater.toml"), "--lives", "10000000"],
+        &["10000000 lives × 50 years", "the budget is 2e10 waves", "--lives"],
+    );
+    assert!(err.contains("about 3.72e11 waves"), "the estimate is given: {err}");
+}
+
+#[test]
+fn design_of_the_example_by_brute_force_is_refused_by_its_step_estimate() {
+    // Every one of 1.9e8 waves at fixed steps of 1 ms: about 1.8e12 steps (BENCHMARKS.md: 69 h).
+    let err = refused(
+        &["design", &example("design_breakwater.toml"), "--brute-force"],
+        &["time steps", "fixed steps of 0.001 s", "the budget is 2e10 time steps", "--brute-force"],
+    );
+    assert!(err.contains("e12 time steps"), "the estimate is given: {err}");
+}
+
+#[test]
+fn fragility_of_a_million_storms_per_height_is_refused_by_its_step_estimate() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = variant(dir.path(), "fragility.toml", &[("storms = 100 ", "storms = 1000000 ")]);
+    let err = refused(
+        &["fragility", f.to_str().unwrap()],
+        &[
+            "9 heights × 1000000 storms × 563 waves",
+            "simulated (screen pilot)",
+            "the budget is 2e10 time steps",
+            "[fragility] storms",
+        ],
+    );
+    assert!(err.contains("e11 time steps"), "the estimate is given: {err}");
+}
+
+#[test]
+fn a_long_design_run_says_its_estimate() {
+    // 3000 lives: 1.1e8 waves, over the 1e8 at which the estimate is said; stopped after one life.
+    let dir = tempfile::tempdir().unwrap();
+    let o = caisson()
+        .args(["design", &example("design_breakwater.toml"), "--lives", "3000", "--stop-after", "1"])
+        .args(["--out", dir.path().join("out").to_str().unwrap()])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.starts_with("Estimated work: about "), "{err}");
+    assert!(err.contains("e8 waves") && err.contains("3000 lives × 50 years"), "{err}");
+    // A short run says nothing.
+    let o = caisson().args(["design", &example("design_breakwater.toml"), "--lives", "2", "--json"]).output().unwrap();
+    assert!(o.status.success());
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("Estimated work"));
 }

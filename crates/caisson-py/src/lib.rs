@@ -13,7 +13,9 @@
 mod columns;
 
 use caisson::analysis::campaign::run_campaign;
-use caisson::analysis::checks::{life_warnings, response_warnings, structure_warnings, Response};
+use caisson::analysis::checks::{
+    life_warnings, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
+};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, History};
@@ -386,6 +388,7 @@ fn run_load<'py>(
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
     let s = sc.structure();
     let mut warnings = structure_warnings(s);
+    warnings.extend(run_load_warnings(s, load));
     warnings.extend(response_warnings(s, &Response::from(&result.summary)));
     let json = report_json(&RunReport::new(&result.summary, x, warnings), "summary")?;
     let cols = match &result.history {
@@ -496,6 +499,7 @@ fn loads_report(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
     let safety = ws.model.safety(&loads, w, mu);
     let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
     report.warnings = structure_warnings(sc.structure());
+    report.warnings.extend(wave_load_warnings(sc.structure(), ws));
     serde_json::to_string(&report).map_err(|e| PyRuntimeError::new_err(e.to_string()))
 }
 
@@ -718,6 +722,9 @@ fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDic
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
     report.warnings = structure_warnings(case.structure);
     report.warnings.extend(life_warnings(&lives, failure_m));
+    if let Some(ws) = &sc.sc.waves {
+        report.warnings.extend(wave_load_warnings(case.structure, ws));
+    }
     report_json(&report, "design")
 }
 

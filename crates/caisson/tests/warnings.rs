@@ -3,7 +3,10 @@
 
 mod support;
 
-use caisson::analysis::checks::{response_warnings, structure_warnings, Response, FAILURE_FRACTION_OF_WIDTH};
+use caisson::analysis::checks::{
+    newmark_period_ratio, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
+    FAILURE_FRACTION_OF_WIDTH,
+};
 use caisson::analysis::run::run;
 use caisson::scenario::Scenario;
 use caisson::Profile;
@@ -42,8 +45,103 @@ fn every_bundled_example_has_plausible_inputs() {
         "table5_triangle.toml",
     ];
     for name in names {
-        assert_eq!(codes(&structure_warnings(example(name).structure())), Vec::<&str>::new(), "{name}");
+        let sc = example(name);
+        assert_eq!(codes(&structure_warnings(sc.structure())), Vec::<&str>::new(), "{name}");
+        // Their loads are a few times their weight or less: no `implausible-load`.
+        let mut loads = Vec::new();
+        if let Some(l) = &sc.load {
+            loads.extend(run_load_warnings(sc.structure(), l));
+        }
+        if let Some(w) = &sc.waves {
+            loads.extend(wave_load_warnings(sc.structure(), w));
+        }
+        if let Ok(c) = sc.campaign() {
+            for s in &c.setups {
+                loads.extend(wave_load_warnings(&s.structure, &s.waves));
+            }
+        }
+        assert_eq!(codes(&loads), Vec::<&str>::new(), "{name}");
     }
+}
+
+const TABLE5: &str = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = PEAK\nrise_time_s = 0.05\n[solver]\nSOLVER\n";
+
+fn table5(peak: &str, solver: &str) -> Scenario {
+    scenario(&TABLE5.replace("PEAK", peak).replace("SOLVER", solver))
+}
+
+/// Fixed steps over T0/10 (T0 = 0.0218 s for this caisson): the warning gives the period error
+/// of the average-acceleration scheme; T0/20 or adaptive steps are silent.
+#[test]
+fn a_fixed_step_over_a_tenth_of_the_natural_period_is_flagged() {
+    let coarse = table5("12.0", "dt_s = 0.005");
+    let t0 = coarse.structure().model().natural_period_s();
+    assert!((t0 - 0.0218).abs() < 1e-3, "T0 = {t0}");
+    let w = structure_warnings(coarse.structure());
+    assert_eq!(codes(&w), ["coarse-time-step"]);
+    assert_eq!(w[0].numbers["dt_s"], 0.005);
+    assert_eq!(w[0].numbers["period_ratio"], newmark_period_ratio(0.005 / t0));
+    assert!(w[0].message.contains("[solver] dt_s") && w[0].message.contains("adaptive"), "{}", w[0].message);
+    for fine in ["dt_s = 0.001", "dt_s = 0.005\nstepping = \"adaptive\""] {
+        assert!(structure_warnings(table5("12.0", fine).structure()).is_empty(), "{fine}");
+    }
+}
+
+/// The period elongation of the average-acceleration scheme, against an independent integration
+/// of an undamped oscillator (ẍ + ω² x = 0 by Newmark γ = ½, β = ¼, written out here): the
+/// period from the upward zero crossings of 200 cycles, at 4 and 10 steps per period. The
+/// crossings are interpolated linearly (an error below 1e-3 of a step, over 200 periods).
+#[test]
+fn newmark_period_ratio_matches_an_integrated_oscillator() {
+    for steps_per_period in [4.0, 10.0] {
+        let (omega, dt) = (2.0 * std::f64::consts::PI, 1.0 / steps_per_period);
+        let (mut x, mut v, mut a) = (0.0f64, 1.0f64, 0.0f64);
+        let (mut t, mut crossings) = (0.0, Vec::new());
+        while crossings.len() < 201 {
+            // Newmark average acceleration: x1 = x + dt v + dt²/4 (a + a1), a1 = −ω² x1.
+            let x1 = (x + dt * v + 0.25 * dt * dt * a) / (1.0 + 0.25 * dt * dt * omega * omega);
+            let a1 = -omega * omega * x1;
+            let v1 = v + 0.5 * dt * (a + a1);
+            if x < 0.0 && x1 >= 0.0 {
+                crossings.push(t + dt * (-x) / (x1 - x));
+            }
+            (x, v, a, t) = (x1, v1, a1, t + dt);
+        }
+        let period = (crossings[200] - crossings[0]) / 200.0;
+        let ratio = newmark_period_ratio(dt);
+        assert!((period / ratio - 1.0).abs() < 1e-3, "{steps_per_period} steps: {period} against {ratio}");
+    }
+    assert_eq!(newmark_period_ratio(0.0), 1.0);
+    // 3 % at T0/10, 56 % at T0/2 (the numbers of the module docs).
+    assert!((newmark_period_ratio(0.1) - 1.032).abs() < 1e-3);
+    assert!((newmark_period_ratio(0.5) - 1.565).abs() < 1e-3);
+}
+
+/// A peak force in N written in the kN key (12 000 instead of 12 on the 8.24 kN caisson: 1456 W')
+/// is flagged; 12 kN is not.
+#[test]
+fn a_load_in_n_is_flagged() {
+    let slip = table5("12000.0", "dt_s = 1e-4");
+    let w = run_load_warnings(slip.structure(), slip.load.as_ref().unwrap());
+    assert_eq!(codes(&w), ["implausible-load"]);
+    assert!(w[0].message.contains("peak_horizontal_kn") && w[0].message.contains("1456 times"), "{}", w[0].message);
+    let right = table5("12.0", "dt_s = 1e-4");
+    assert!(run_load_warnings(right.structure(), right.load.as_ref().unwrap()).is_empty());
+}
+
+/// The PARI breaking caisson with its length in mm (780 instead of 0.78 m, the weight a total):
+/// the wave force over 780 m is hundreds of times the weight.
+#[test]
+fn a_length_in_mm_is_flagged_by_the_wave_loads() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/pari_breaking_loads.toml"),
+    )
+    .unwrap();
+    assert!(text.contains("length_m = 1.0"));
+    let slip = scenario(&text.replace("length_m = 1.0", "length_m = 1000.0"));
+    let w = wave_load_warnings(slip.structure(), slip.waves.as_ref().unwrap());
+    assert_eq!(codes(&w), ["implausible-load"]);
+    assert!(w[0].message.contains("length_m") && w[0].numbers["peak_kn"] > 100.0 * 16.17, "{}", w[0].message);
 }
 
 /// E100 given in MPa (350 instead of 3.5e5 kPa): 1000 × softer, a static settlement of metres and

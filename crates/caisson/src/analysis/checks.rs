@@ -8,6 +8,8 @@
 //! | `implausible-settlement` | W'/K_y > 0.2 m | a caisson on a rubble mound settles by millimetres to centimetres; 24.7 m is E100 given in MPa |
 //! | `implausible-natural-period` | T0 outside 2 ms to 3 s | flume caissons sway at about 0.02 s, prototypes at 0.1-1 s |
 //! | `implausible-base-pressure` | W'/(B l) outside 1 to 1000 kPa | flume caissons bear about 10 kPa, prototypes 100-400 kPa; a weight in MN or N gives 1000 × less or more |
+//! | `coarse-time-step` | fixed steps `dt_s` > T0/10 | Newmark's average acceleration stays stable at any step but lengthens the period of the response, T̄/T = Ω/(2 atan(Ω/2)), Ω = 2π dt/T0 (Chopra 2012, §5.5): 3 % at T0/10, 56 % at T0/2; a short impulse falls between steps (docs/model.md §9.1 recommends T0/20); steps over T0 are refused by the scenario |
+//! | `implausible-load` | a peak wave force (or uplift) above 100 W' | no wave load on a caisson exceeds a few times its weight in water; a force in N written as kN gives 1000 × more (beyond 10⁴ W' the scenario refuses it) |
 //! | `undamped-adaptive` | C = 0 with adaptive steps | the stepper's error estimate assumes damped transients; without damping an independent check found −1.90 mm adaptive against −0.094 mm fixed |
 //! | `dashpot-exceeds-friction` | C u̇_x > μ N while sliding (`damping_mode = "total"`) | a Coulomb interface carries no more than μN; the dashpot then limits the slide (docs/model.md §10 item 30) |
 //! | `rotational-dashpot-moment` | with `vertical_damping = "seed"`, the dashpots' moment > ½ the largest wave moment | they, not the springs, hold the caisson upright (the seed's 10C as N·m·s/rad, item 10) |
@@ -20,9 +22,13 @@
 
 use super::lifetime::StormOutcome;
 use super::run::RunSummary;
+use super::train::WaveSetup;
 use super::Structure;
 use crate::dynamics::Stepping;
 use crate::foundation::VerticalDamping;
+use crate::loads::generator::TrainKind;
+use crate::loads::regime::RegimeChoice;
+use crate::loads::{LoadSpec, WaveForce};
 use std::collections::BTreeMap;
 
 /// A result or input to check (module docs).
@@ -46,6 +52,17 @@ pub const MAX_SETTLEMENT_M: f64 = 0.2;
 pub const NATURAL_PERIOD_RANGE_S: (f64, f64) = (2e-3, 3.0);
 /// Plausible mean base pressures W'/(B l), Pa.
 pub const BASE_PRESSURE_RANGE_PA: (f64, f64) = (1e3, 1e6);
+/// Fixed steps longer than this fraction of T0 are coarse (`coarse-time-step`).
+pub const COARSE_STEP_FRACTION_OF_T0: f64 = 0.1;
+/// Peak wave forces above this multiple of W' are implausible (`implausible-load`).
+pub const PLAUSIBLE_LOAD_OVER_WEIGHT: f64 = 100.0;
+/// Peak wave forces above this multiple of W' are input errors (refused by the scenario): a
+/// caisson pushed at 10⁴ g slides kilometres and the Newton-Raphson iteration loses its
+/// tolerance (relative to W') in the round-off of the load.
+pub const MAX_LOAD_OVER_WEIGHT: f64 = 1e4;
+/// H_max / H1/3 of the nominal wave of an irregular train (Goda's design ratio, as the storms of
+/// [`super::fragility`]).
+const NOMINAL_HMAX_RATIO: f64 = 1.8;
 /// Rotation beyond which the caisson is rocking, not vibrating, rad.
 pub const ROCKING_LIMIT_RAD: f64 = 0.01;
 /// Sliding beyond which the caisson has failed, as a fraction of the base width.
@@ -91,6 +108,20 @@ pub fn structure_warnings(s: &Structure) -> Vec<Warning> {
             &[("base_pressure_kpa", q / 1e3), ("low_kpa", lo / 1e3), ("high_kpa", hi / 1e3)],
         ));
     }
+    if s.solver.stepping == Stepping::Fixed && s.solver.dt_s > COARSE_STEP_FRACTION_OF_T0 * t0 {
+        let dt = s.solver.dt_s;
+        let ratio = newmark_period_ratio(dt / t0);
+        out.push(Warning::new(
+            "coarse-time-step",
+            format!(
+                "the fixed time step dt_s = {dt} s is {:.2} of the natural period T0 = {t0:.4} s: the response's period comes out {:.1} % too long (Newmark's average acceleration) and an impulse shorter than a few steps is missed; lower `[solver] dt_s` to T0/20 = {:.2e} s or use stepping = \"adaptive\"",
+                dt / t0,
+                100.0 * (ratio - 1.0),
+                t0 / 20.0
+            ),
+            &[("dt_s", dt), ("natural_period_s", t0), ("period_ratio", ratio)],
+        ));
+    }
     if s.foundation.stiffness.damping_ns_per_m == 0.0 && matches!(s.solver.stepping, Stepping::Adaptive(_)) {
         out.push(Warning::new(
             "undamped-adaptive",
@@ -99,6 +130,93 @@ pub fn structure_warnings(s: &Structure) -> Vec<Warning> {
         ));
     }
     out
+}
+
+/// The period of Newmark's average-acceleration scheme (γ = ½, β = ¼) over the true period, for a
+/// step of `dt_over_t` periods: Ω/(2 atan(Ω/2)), Ω = 2π dt/T (the scheme's amplification
+/// matrix has eigenvalues of modulus 1 and phase 2 atan(Ω/2) per step; Chopra 2012, §5.5).
+pub fn newmark_period_ratio(dt_over_t: f64) -> f64 {
+    let omega = 2.0 * std::f64::consts::PI * dt_over_t;
+    if omega == 0.0 {
+        1.0
+    } else {
+        omega / (2.0 * (0.5 * omega).atan())
+    }
+}
+
+/// The peak |horizontal force| and |uplift| of the nominal wave of `waves` (its regular height,
+/// or H_max = 1.8 H1/3 of irregular waves) at the wall, totals over the caisson's length (the
+/// larger of the quasi-static and the impact components), N; `None` if the wave's loads cannot
+/// be evaluated.
+pub fn nominal_wave_peak(waves: &WaveSetup) -> Option<WaveForce> {
+    let h = match waves.train.kind {
+        TrainKind::Regular { .. } => waves.height_m(),
+        TrainKind::Irregular { .. } => NOMINAL_HMAX_RATIO * waves.height_m(),
+    };
+    let m = &waves.model;
+    // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
+    let loads = m
+        .evaluate_with(h, waves.period_s(), m.options.regime)
+        .or_else(|_| m.evaluate_with(h, waves.period_s(), RegimeChoice::Auto))
+        .ok()?;
+    let e = m.event(&loads, None, 0.0);
+    Some(WaveForce {
+        fx_n: e.impact.x.fx_n.abs().max(e.quasi.x.fx_n.abs()),
+        fy_n: e.impact.y.fy_n.abs().max(e.quasi.y.fy_n.abs()),
+        m_nm: 0.0,
+    })
+}
+
+/// What a load's peak is checked against: the scenario's keys to name in a message.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadSource {
+    /// A `[load]` table (a pulse or a force series): its forces are totals in kN.
+    Load,
+    /// The wave loads of `[waves]`: per metre × `[caisson] length_m`.
+    Waves,
+}
+
+impl LoadSource {
+    /// What to check when a load is far above the weight.
+    pub fn likely_slip(self) -> &'static str {
+        match self {
+            LoadSource::Load => "are `[load] peak_horizontal_kn` and `peak_uplift_kn` (or the series file's fx_kn, fy_kn) in kN, not N, and is `[caisson] weight_in_water_kn` in kN, not MN?",
+            LoadSource::Waves => "is `[caisson] weight_in_water_kn` in kN (not MN) and the total over `[caisson] length_m`, and `length_m` in m (not mm)?",
+        }
+    }
+}
+
+/// The check of a load's peak forces against the caisson's weight in water (module docs).
+pub fn load_warnings(s: &Structure, peak: WaveForce, source: LoadSource) -> Vec<Warning> {
+    let w = s.caisson.weight_in_water_n;
+    let mut out = Vec::new();
+    for (what, force) in [("horizontal force", peak.fx_n.abs()), ("uplift", peak.fy_n.abs())] {
+        if force > PLAUSIBLE_LOAD_OVER_WEIGHT * w {
+            out.push(Warning::new(
+                "implausible-load",
+                format!(
+                    "the peak wave {what} is {:.4e} kN, {:.0} times the weight in water W' = {:.4} kN, where wave loads on a caisson reach a few times W': {}",
+                    force / 1e3,
+                    force / w,
+                    w / 1e3,
+                    source.likely_slip()
+                ),
+                &[("peak_kn", force / 1e3), ("weight_in_water_kn", w / 1e3), ("limit_over_weight", PLAUSIBLE_LOAD_OVER_WEIGHT)],
+            ));
+            break;
+        }
+    }
+    out
+}
+
+/// [`load_warnings`] of a `[load]`.
+pub fn run_load_warnings(s: &Structure, load: &LoadSpec) -> Vec<Warning> {
+    load_warnings(s, load.peak_abs(), LoadSource::Load)
+}
+
+/// [`load_warnings`] of the nominal wave of `waves` ([`nominal_wave_peak`]).
+pub fn wave_load_warnings(s: &Structure, waves: &WaveSetup) -> Vec<Warning> {
+    nominal_wave_peak(waves).map_or_else(Vec::new, |p| load_warnings(s, p, LoadSource::Waves))
 }
 
 /// What a run (or the worst of several) found, for [`response_warnings`].

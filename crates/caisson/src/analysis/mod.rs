@@ -17,6 +17,7 @@ pub mod run;
 pub mod sizing;
 pub mod spectrum;
 pub mod train;
+pub mod work;
 
 use crate::dynamics::{Model, SolverParams};
 use crate::foundation::Foundation;

@@ -35,6 +35,18 @@ pub enum LoadSpec {
     Series(series::ForceSeries),
 }
 
+impl LoadSpec {
+    /// The largest |F_x|, |F_y| and |M| of the load over time (each on its own), N and N·m.
+    pub fn peak_abs(&self) -> WaveForce {
+        let abs = |w: WaveForce| WaveForce { fx_n: w.fx_n.abs(), fy_n: w.fy_n.abs(), m_nm: w.m_nm.abs() };
+        match self {
+            LoadSpec::Triangle(l) => abs(l.peak),
+            LoadSpec::Static(l) => abs(l.peak),
+            LoadSpec::Series(l) => l.peak_abs(),
+        }
+    }
+}
+
 impl LoadHistory for LoadSpec {
     #[inline]
     fn at(&self, t_s: f64) -> WaveForce {

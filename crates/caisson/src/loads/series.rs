@@ -110,6 +110,15 @@ impl ForceSeries {
         self.t_s.partition_point(|&x| x <= t_s)
     }
 
+    /// The largest |F_x|, |F_y| and |M| over the samples (each on its own), N and N·m.
+    pub fn peak_abs(&self) -> WaveForce {
+        self.f.iter().fold(WaveForce::ZERO, |p, f| WaveForce {
+            fx_n: p.fx_n.max(f.fx_n.abs()),
+            fy_n: p.fy_n.max(f.fy_n.abs()),
+            m_nm: p.m_nm.max(f.m_nm.abs()),
+        })
+    }
+
     pub fn first_time_s(&self) -> f64 {
         self.t_s[0]
     }

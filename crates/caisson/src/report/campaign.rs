@@ -3,7 +3,7 @@
 use super::train::{describe_train, RealizationReport};
 use super::{kn, Provenance, SpreadReport};
 use crate::analysis::campaign::{Campaign, ConditionResult};
-use crate::analysis::checks::{structure_warnings, Warning};
+use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::train::realization_warnings;
 use crate::foundation::DampingMode;
 use crate::loads::regime::{Regime, RegimeChoice};
@@ -100,6 +100,7 @@ impl CampaignReport {
                 .enumerate()
                 .flat_map(|(i, (s, r))| {
                     let mut w = structure_warnings(&s.structure);
+                    w.extend(wave_load_warnings(&s.structure, &s.waves));
                     w.extend(realization_warnings(&s.case(), &r.summary.realizations));
                     w.into_iter().map(move |mut w| {
                         w.message = format!("condition {}: {}", i + 1, w.message);

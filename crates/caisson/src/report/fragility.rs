@@ -1,7 +1,7 @@
 //! `caisson fragility`: `fragility.json` (keys in docs/fragility.md).
 
 use super::Provenance;
-use crate::analysis::checks::{structure_warnings, Warning};
+use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
 use crate::analysis::train::WaveSetup;
 use crate::analysis::Structure;
@@ -172,7 +172,11 @@ impl FragilityReport {
                     rigid_block: FitReport::from(&f.rigid_block),
                 })
                 .collect(),
-            warnings: structure_warnings(structure),
+            warnings: {
+                let mut w = structure_warnings(structure);
+                w.extend(wave_load_warnings(structure, waves));
+                w
+            },
         }
     }
 }

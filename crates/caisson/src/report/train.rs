@@ -1,7 +1,7 @@
 //! `caisson run` on a `[waves]` scenario: the wave-train `summary.json` (keys in docs/cli.md).
 
 use super::{kn, FoundationReport, Provenance, SpreadReport};
-use crate::analysis::checks::{structure_warnings, Warning};
+use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::run::FoundationSummary;
 use crate::analysis::train::{realization_warnings, RealizationResult, TrainCase, TrainSummary, WaveSetup};
 use crate::analysis::Structure;
@@ -169,6 +169,7 @@ impl TrainRunReport {
             solver: TrainSolverReport::of(&s.realizations),
             warnings: {
                 let mut w = structure_warnings(structure);
+                w.extend(wave_load_warnings(structure, waves));
                 w.extend(realization_warnings(&TrainCase { structure, waves }, &s.realizations));
                 w
             },

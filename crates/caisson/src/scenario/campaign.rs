@@ -212,6 +212,7 @@ pub(super) fn build(sc: &Scenario) -> R<Campaign> {
                 format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
             ))
         })?;
+        super::coherence::check_waves(c.caisson(), &waves).map_err(prefix)?;
         setups.push(ConditionSetup { condition: *cond, structure: c.structure().clone(), waves });
     }
     let title = spec.title.clone().unwrap_or_else(|| "campaign".to_string());

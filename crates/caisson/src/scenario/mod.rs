@@ -14,6 +14,7 @@
 //! never the file's text.
 
 pub mod campaign;
+mod coherence;
 pub mod design;
 pub mod fragility;
 pub mod size;
@@ -405,9 +406,35 @@ fn unit_of(key: &str) -> Option<&'static str> {
 /// Read a scenario file, parse it once and validate every table it holds. Relative file names
 /// in it (a force series) are taken from the file's directory.
 pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| ScenarioError::Read { path: path.to_path_buf(), message: e.to_string() })?;
+    let text = read_limited(path, MAX_SCENARIO_BYTES, "a scenario file", "a TOML file")
+        .map_err(|message| ScenarioError::Read { path: path.to_path_buf(), message })?;
     Scenario::from_toml(&text, path, path.parent().unwrap_or(Path::new(".")))
+}
+
+/// Largest scenario file read, bytes: a thousand times the largest example; a file that never
+/// ends (`/dev/zero`) or a data file given by mistake is refused after reading at most this much.
+pub const MAX_SCENARIO_BYTES: u64 = 1 << 20;
+
+/// The UTF-8 text of the file at `path` if it holds at most `max` bytes: checked on its size
+/// first (a large file is refused without reading it), then while reading (a device or pipe
+/// that never ends is read no further than `max` + 1 bytes). `what` names the kind of file in
+/// the message, `expected` what it should be.
+pub(crate) fn read_limited(path: &Path, max: u64, what: &str, expected: &str) -> Result<String, String> {
+    use std::io::Read;
+    let limit = || {
+        let size = if max >= 1 << 20 { format!("{} MiB", max >> 20) } else { format!("{} KiB", max >> 10) };
+        format!("is larger than {size}, the most {what} may be")
+    };
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    if file.metadata().map_err(|e| e.to_string())?.len() > max {
+        return Err(limit());
+    }
+    let mut bytes = Vec::new();
+    file.take(max + 1).read_to_end(&mut bytes).map_err(|e| e.to_string())?;
+    if bytes.len() as u64 > max {
+        return Err(limit());
+    }
+    String::from_utf8(bytes).map_err(|_| format!("is not UTF-8 text ({expected} is expected)"))
 }
 
 /// A validated scenario: the typed parameters of every table of the file (module docs).
@@ -505,6 +532,7 @@ impl Scenario {
     pub fn with_solver(mut self, solver: SolverParams) -> Result<Scenario, ScenarioError> {
         solver.check_run(self.duration_s).map_err(|e| keyed("[solver]", SOLVER_KEYS, e))?;
         self.structure.solver = solver;
+        coherence::check_time_step(&self.structure)?;
         Ok(self)
     }
 
@@ -524,6 +552,10 @@ impl Scenario {
         self.foundation_spec = foundation_spec;
         self.structure.caisson = caisson;
         self.structure.foundation = foundation;
+        coherence::check_time_step(&self.structure)?;
+        if let Some(d) = &self.design {
+            coherence::check_floating(&self.structure.caisson, rho_w, d)?;
+        }
         Ok(self)
     }
 

@@ -4,7 +4,7 @@
 //! together) and names the key of every error.
 
 use super::{
-    campaign, design, fragility, keyed, size, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
+    campaign, coherence, design, fragility, keyed, size, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
     FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
@@ -70,9 +70,13 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         Some(_) => Some(waves::validate_waves(f, &caisson)?),
         None => None,
     };
+    if let Some(w) = &wave_setup {
+        coherence::check_waves(&caisson, w)?;
+    }
     let (load, default_duration) = match &f.load {
         Some(_) => {
             let (l, d) = validate_load(f, &caisson, base_dir)?;
+            coherence::check_load(&caisson, &l)?;
             (Some(l), d)
         }
         // A wave-train scenario: its waves of its period (1 s without waves).
@@ -97,6 +101,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         fragility: None,
         size: None,
     };
+    coherence::check_time_step(&sc.structure)?;
     if f.campaign.is_some() {
         if sc.caisson_spec.construction().is_some() {
             return Err(ScenarioError::Conflict {
@@ -108,7 +113,9 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         sc.campaign()?;
     }
     if f.design.is_some() {
-        sc.design = Some(design::validate_design(f)?);
+        let d = design::validate_design(f)?;
+        coherence::check_floating(sc.caisson(), rho_w, &d)?;
+        sc.design = Some(d);
     }
     if f.fragility.is_some() {
         sc.fragility = Some(fragility::validate_fragility(f, &sc)?);
@@ -462,18 +469,7 @@ pub const MAX_SERIES_BYTES: u64 = 128 << 20;
 
 /// The text of a series file of at most [`MAX_SERIES_BYTES`] (checked before and while reading).
 fn read_series(path: &Path) -> Result<String, String> {
-    use std::io::Read;
-    let limit = || format!("is larger than {} MiB, the most a force series may be", MAX_SERIES_BYTES >> 20);
-    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    if file.metadata().map_err(|e| e.to_string())?.len() > MAX_SERIES_BYTES {
-        return Err(limit());
-    }
-    let mut bytes = Vec::new();
-    file.take(MAX_SERIES_BYTES + 1).read_to_end(&mut bytes).map_err(|e| e.to_string())?;
-    if bytes.len() as u64 > MAX_SERIES_BYTES {
-        return Err(limit());
-    }
-    String::from_utf8(bytes).map_err(|_| "is not UTF-8 text (a CSV file is expected)".to_string())
+    super::read_limited(path, MAX_SERIES_BYTES, "a force series", "a CSV file")
 }
 
 fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {

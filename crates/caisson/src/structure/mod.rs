@@ -78,15 +78,33 @@ pub struct CaissonSpec {
     pub mass_matrix: Option<MassMatrix>,
 }
 
+/// The smallest width, length or height of a caisson, m (a thousandth of a flume model's).
+pub const MIN_DIMENSION_M: f64 = 1e-3;
+/// The largest height over base width of a caisson.
+pub const MAX_SLENDERNESS: f64 = 100.0;
+
 impl CaissonSpec {
     /// The caisson in water of density `rho_w` (kg/m³), every quantity checked, with the
     /// defaults of `profile`.
     pub fn build(&self, rho_w: f64, profile: Profile) -> Result<Caisson, ParamError> {
         // Bounds far beyond any breakwater, so that an absurd number (a unit slip by 10^k) is an
-        // input error naming its key rather than an overflow deep in a run.
-        let width_m = positive_up_to("width_m", self.width_m, 1e3)?;
-        let length_m = positive_up_to("length_m", self.length_m, 1e4)?;
-        let height_m = positive_up_to("height_m", self.height_m, 1e3)?;
+        // input error naming its key rather than an overflow deep in a run: 1 mm to 1 km (10 km
+        // alongshore), and a base at least 1/100 of the height (a flume caisson is about as wide
+        // as tall, a prototype 0.5 to 1.5 times; a post 10^4 times taller than wide rocks over
+        // at once and its run fails to converge).
+        let size = |q, v, hi| positive(q, v).and_then(|v| between(q, v, MIN_DIMENSION_M, hi));
+        let width_m = size("width_m", self.width_m, 1e3)?;
+        let length_m = size("length_m", self.length_m, 1e4)?;
+        let height_m = size("height_m", self.height_m, 1e3)?;
+        if height_m > MAX_SLENDERNESS * width_m {
+            return Err(rule(
+                "width_m",
+                width_m,
+                format!(
+                    "must be at least 1/{MAX_SLENDERNESS} of the caisson height {height_m} m (a caisson is not {MAX_SLENDERNESS} times taller than wide)"
+                ),
+            ));
+        }
         let base_depth_m = self.base_depth_m;
         if !(base_depth_m.is_finite() && (0.0..=height_m).contains(&base_depth_m)) {
             return Err(rule(

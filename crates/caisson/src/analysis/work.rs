@@ -1,0 +1,428 @@
+//! Work estimates: what a driver will do, known before it starts, so that a caller can refuse a
+//! run beyond a budget (the CLI does, docs/cli.md "Limits") or say how long it will be.
+//!
+//! A [`WorkEstimate`] counts three things:
+//!
+//! * **time steps** of the dynamic model, all simulations together: the simulated time of
+//!   loading × steps per second. With fixed steps that is 1/`dt_s` (exact, but for halvings).
+//!   With adaptive steps it is measured by a **pilot**: the first wave (of realization 0, or a
+//!   representative wave of a storm) run with the scenario's solver, at most
+//!   [`PILOT_MAX_STEPS`] steps (far fewer than the run); if the pilot fails, 1/`dt_s` (the first
+//!   step) is used.
+//! * **waves** drawn: every wave of every train, storm and life. A design or fragility run draws
+//!   each wave's height and screens it even when it does not simulate it (about 0.1 µs each).
+//! * **memory** held until the end of the run, bytes: the results kept for the outputs (every
+//!   wave of a train in the JSON summary, a life, a storm) and the time histories of `--out`,
+//!   from the sizes measured on the examples (below); the solver's own state is small and fixed.
+//!
+//! Which waves of a design or fragility run reach the dynamic model depends on the screen
+//! ([`super::lifetime`]); the share is estimated by a **screen pilot**: the first lives (or the
+//! storms of up to 16 heights) with few waves per storm, through the real screen, with a coarse
+//! adaptive solver (the screen does not depend on the solver, and the coarse one keeps the pilot
+//! short). The simulated time is that share of the waves' time (a storm of N waves of period T
+//! lasts N T).
+//!
+//! Every estimate is deterministic (the pilots use the run's first random streams), so a run is
+//! refused or accepted the same way every time. It is an estimate, not a bound (tests/work.rs):
+//! the steps of the wave-train and campaign examples within 15 % (measured 1-7 %), the waves of
+//! the design example within 3 % and its screened share within a factor of 3 (measured 1.7: the
+//! rare large storms that pass most waves may or may not be among the pilot's 128), the
+//! fragility example's share within 10 % (measured 1.3 %). A pilot takes about 15 ms.
+//!
+//! Memory per item (measured with `/usr/bin/time -f %M` on the examples scaled up, rounded up):
+//! a history row of n springs holds 8 (12 + 3n) + 4 bytes of samples plus about 25 bytes per
+//! spring column of `springs.csv` text (1.1 kB at n = 10); a wave of a train about 2 kB (its
+//! result and its entry of the JSON summary); a campaign wave 200 B (2 kB in `campaign.json`);
+//! a life or a storm 256 B.
+
+use super::campaign::ConditionSetup;
+use super::fragility::FragilityParams;
+use super::lifetime::{simulate_life, simulate_storm, DesignParams, LifeParams, StormCase};
+use super::train::{TrainCase, WaveSetup};
+use super::Structure;
+use crate::dynamics::{AdaptiveParams, Simulation, SolverParams, Stepping};
+use crate::loads::generator::{realization_rng, realization_waves, TrainKind, TrainSpec};
+use crate::loads::history::WaveTrain;
+use crate::loads::regime::RegimeChoice;
+use crate::loads::LoadHistory;
+
+/// Most steps of a pilot run (about 0.1 s).
+pub const PILOT_MAX_STEPS: u64 = 200_000;
+/// Bytes of a wave of a train held until the end (its result and JSON entry).
+pub const BYTES_PER_TRAIN_WAVE: f64 = 2048.0;
+/// Bytes of a wave of a campaign held until the end (its result); with every wave in the JSON,
+/// [`BYTES_PER_TRAIN_WAVE`] more.
+pub const BYTES_PER_CAMPAIGN_WAVE: f64 = 200.0;
+/// Bytes of a life (design) or a storm (fragility) held until the end.
+pub const BYTES_PER_LIFE: f64 = 256.0;
+
+/// Bytes of one row of the time histories (`--out`) with `springs` springs (module docs).
+pub fn bytes_per_history_row(springs: usize) -> f64 {
+    let n = springs as f64;
+    8.0 * (12.0 + 3.0 * n) + 4.0 + 25.0 * 3.0 * n
+}
+
+/// How the steps of an estimate were counted.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum StepsFrom {
+    /// Fixed steps: the simulated time over `dt_s`.
+    FixedSteps { dt_s: f64 },
+    /// Adaptive steps, measured by a pilot run: steps per second of loading.
+    Pilot { steps_per_s: f64 },
+    /// Adaptive steps whose pilot failed (or none was possible): the simulated time over the
+    /// first step `dt_s`.
+    FirstStep { dt_s: f64 },
+}
+
+impl StepsFrom {
+    /// Steps per second of loading.
+    pub fn steps_per_s(&self) -> f64 {
+        match *self {
+            StepsFrom::FixedSteps { dt_s } | StepsFrom::FirstStep { dt_s } => 1.0 / dt_s,
+            StepsFrom::Pilot { steps_per_s } => steps_per_s,
+        }
+    }
+
+    /// In words.
+    pub fn describe(&self) -> String {
+        match *self {
+            StepsFrom::FixedSteps { dt_s } => format!("fixed steps of {dt_s} s"),
+            StepsFrom::Pilot { steps_per_s } => {
+                format!("about {steps_per_s:.0} adaptive steps per second of loading (from a pilot run)")
+            }
+            StepsFrom::FirstStep { dt_s } => format!("adaptive steps counted as steps of the first step {dt_s} s"),
+        }
+    }
+}
+
+/// What a driver will do (module docs).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct WorkEstimate {
+    /// Time steps of the dynamic model, all simulations together.
+    pub steps: f64,
+    /// Waves drawn (trains: waves run; design and fragility: every wave, screened or not).
+    pub waves: f64,
+    /// Bytes held in memory until the end of the run.
+    pub memory_bytes: f64,
+    /// Seconds of loading run through the dynamic model.
+    pub simulated_s: f64,
+    pub steps_from: StepsFrom,
+    /// Share of the waves that reach the dynamic model (1 without a screen).
+    pub simulated_share: f64,
+    /// The count in words (e.g. "15 conditions × 10 realizations × 15 waves").
+    pub basis: String,
+}
+
+/// Limits of a run's work.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Budget {
+    pub steps: f64,
+    pub waves: f64,
+    pub memory_bytes: f64,
+}
+
+impl Budget {
+    /// The CLI's budget (docs/cli.md "Limits"): 2·10¹⁰ time steps (about two hours of one core at
+    /// 0.3-0.4 µs a step), 2·10¹⁰ waves drawn (about an hour), 4 GiB held. The bundled examples
+    /// stay 90 times or more below each (the design example, the largest, at 2.1·10⁸ steps and
+    /// 1.9·10⁸ waves).
+    pub const DEFAULT: Budget = Budget { steps: 2e10, waves: 2e10, memory_bytes: 4.0 * 1024.0 * 1024.0 * 1024.0 };
+}
+
+/// What an estimate exceeds first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Resource {
+    Steps,
+    Waves,
+    Memory,
+}
+
+impl WorkEstimate {
+    /// The first of steps, waves and memory over `budget`: (which, estimate, limit).
+    pub fn excess(&self, budget: &Budget) -> Option<(Resource, f64, f64)> {
+        [
+            (Resource::Waves, self.waves, budget.waves),
+            (Resource::Steps, self.steps, budget.steps),
+            (Resource::Memory, self.memory_bytes, budget.memory_bytes),
+        ]
+        .into_iter()
+        .find(|&(_, est, limit)| est.is_nan() || est > limit)
+    }
+}
+
+/// Steps per second of loading of `structure`'s solver on `load` from rest, run until `end_s`
+/// or [`PILOT_MAX_STEPS`] steps; `None` if it fails.
+fn pilot_rate(structure: &Structure, load: &dyn LoadHistory, end_s: f64) -> Option<f64> {
+    let mut sim = Simulation::new(structure.model(), structure.solver, load);
+    let slice = end_s / 64.0;
+    let mut t = 0.0;
+    while t < end_s && sim.stats.steps < PILOT_MAX_STEPS {
+        t = (t + slice).min(end_s);
+        sim.run_until(t, load, &mut ()).ok()?;
+    }
+    let rate = sim.stats.steps as f64 / sim.state().t_s;
+    rate.is_finite().then_some(rate)
+}
+
+/// How the steps of `structure` are counted; `pilot` runs the pilot (adaptive steps only).
+fn steps_from(structure: &Structure, pilot: impl FnOnce() -> Option<f64>) -> StepsFrom {
+    let dt_s = structure.solver.dt_s;
+    match structure.solver.stepping {
+        Stepping::Fixed => StepsFrom::FixedSteps { dt_s },
+        Stepping::Adaptive(_) => match pilot() {
+            Some(steps_per_s) => StepsFrom::Pilot { steps_per_s },
+            None => StepsFrom::FirstStep { dt_s },
+        },
+    }
+}
+
+/// A `[load]` run of `duration_s` (`analysis::run::run`); `history`: with its time histories.
+/// Adaptive steps are counted as steps of the first step `dt_s` (the run's own limit,
+/// [`SolverParams::check_run`]).
+pub fn run(structure: &Structure, duration_s: f64, history: bool) -> WorkEstimate {
+    let s = &structure.solver;
+    let steps_from = match s.stepping {
+        Stepping::Fixed => StepsFrom::FixedSteps { dt_s: s.dt_s },
+        Stepping::Adaptive(_) => StepsFrom::FirstStep { dt_s: s.dt_s },
+    };
+    let rows = if history { (duration_s / s.output_interval_s).ceil() + 1.0 } else { 0.0 };
+    WorkEstimate {
+        steps: duration_s * steps_from.steps_per_s(),
+        waves: 0.0,
+        memory_bytes: rows * bytes_per_history_row(structure.foundation.springs),
+        simulated_s: duration_s,
+        steps_from,
+        simulated_share: 1.0,
+        basis: format!(
+            "{duration_s} s of loading{}",
+            if history { format!(", {rows} history rows") } else { String::new() }
+        ),
+    }
+}
+
+/// The first wave of realization 0 of `waves` on `structure`: the pilot of a train.
+fn train_pilot(structure: &Structure, waves: &WaveSetup) -> Option<f64> {
+    let spec = TrainSpec { waves: 1, realizations: 1, ..waves.train };
+    let drawn = realization_waves(&waves.model, &spec, waves.regime(), 0).ok()?;
+    let train = waves.model.train(&drawn.records).ok()?;
+    pilot_rate(structure, &train, train.duration_s())
+}
+
+/// Wave-train realizations (`train::run_realizations`); `history`: with the time histories of
+/// realization 0 (`caisson run --out`).
+pub fn train(case: &TrainCase<'_>, history: bool) -> WorkEstimate {
+    let t = &case.waves.train;
+    let (n, r) = (t.waves as f64, t.realizations as f64);
+    let duration_s = n * t.period_s;
+    let steps_from = steps_from(case.structure, || train_pilot(case.structure, case.waves));
+    let rows = if history { (duration_s / case.structure.solver.output_interval_s).ceil() + 1.0 } else { 0.0 };
+    WorkEstimate {
+        steps: r * duration_s * steps_from.steps_per_s(),
+        waves: r * n,
+        memory_bytes: r * n * BYTES_PER_TRAIN_WAVE + rows * bytes_per_history_row(case.structure.foundation.springs),
+        simulated_s: r * duration_s,
+        steps_from,
+        simulated_share: 1.0,
+        basis: format!("{} realizations × {} waves of {} s", t.realizations, t.waves, t.period_s),
+    }
+}
+
+/// A campaign (`campaign::run_campaign`); `every_wave`: `campaign.json` with every wave. The
+/// pilots run on up to 8 conditions spread over the list; their mean rate is used.
+pub fn campaign(setups: &[ConditionSetup], every_wave: bool) -> WorkEstimate {
+    let (mut waves, mut simulated_s) = (0.0, 0.0);
+    for s in setups {
+        let t = &s.waves.train;
+        waves += (t.waves * t.realizations) as f64;
+        simulated_s += (t.waves * t.realizations) as f64 * t.period_s;
+    }
+    let picked: Vec<&ConditionSetup> = match setups.len() {
+        0 => Vec::new(),
+        n => (0..n.min(8)).map(|k| &setups[k * n / n.min(8)]).collect(),
+    };
+    let first = picked.first().map(|s| &s.structure);
+    let steps_from = match first {
+        None => StepsFrom::FixedSteps { dt_s: SolverParams::default().dt_s },
+        Some(structure) => steps_from(structure, || {
+            let rates: Vec<f64> = picked.iter().filter_map(|s| train_pilot(&s.structure, &s.waves)).collect();
+            (rates.len() == picked.len()).then(|| rates.iter().sum::<f64>() / rates.len() as f64)
+        }),
+    };
+    let per_wave = BYTES_PER_CAMPAIGN_WAVE + if every_wave { BYTES_PER_TRAIN_WAVE } else { 0.0 };
+    WorkEstimate {
+        steps: simulated_s * steps_from.steps_per_s(),
+        waves,
+        memory_bytes: waves * per_wave,
+        simulated_s,
+        steps_from,
+        simulated_share: 1.0,
+        basis: format!("{} conditions, {waves} waves in all", setups.len()),
+    }
+}
+
+/// The structure of a screen pilot: the scenario's, with a coarse adaptive solver (module docs).
+fn coarse(structure: &Structure) -> Structure {
+    let dt = structure.solver.dt_s.min(1e-3);
+    let solver = SolverParams::fixed(dt)
+        .and_then(|s| s.with_adaptive(AdaptiveParams { dt_min_s: dt.min(1e-6), dt_max_s: 1.0, tolerance_m: 1e-3 }))
+        .and_then(|s| s.with_iterations(50, 20))
+        .unwrap_or(structure.solver);
+    Structure { solver, ..structure.clone() }
+}
+
+/// Steps per second of loading of the real solver on one wave of height `h_m` and period
+/// `period_s` at the site of `case` (the pilot of a storm's simulated waves).
+fn storm_pilot(case: &StormCase<'_>, h_m: f64, period_s: f64) -> Option<f64> {
+    let m = case.model;
+    let loads = m
+        .evaluate_with(h_m, period_s, m.options.regime)
+        .or_else(|_| m.evaluate_with(h_m, period_s, RegimeChoice::Auto))
+        .ok()?;
+    let train = WaveTrain::new(vec![m.event(&loads, None, 0.0)]).ok()?;
+    pilot_rate(case.structure, &train, period_s)
+}
+
+/// The largest wave of the scenario's `[waves]` (H, or H_max = 1.8 H1/3) and its period: the
+/// representative wave of a design run's storms.
+fn design_wave(waves: &WaveSetup) -> (f64, f64) {
+    let h = match waves.train.kind {
+        TrainKind::Regular { .. } => waves.height_m(),
+        TrainKind::Irregular { .. } => 1.8 * waves.height_m(),
+    };
+    (h, waves.period_s())
+}
+
+/// Lives of the screen pilot of a design run, and storms per pilot life, and waves per storm.
+const PILOT_LIVES: usize = 16;
+const PILOT_STORMS: usize = 8;
+const PILOT_WAVES_PER_STORM: f64 = 16.0;
+
+/// A design run (`lifetime::run_lives`) of `p.lives` lives; `waves` is the scenario's `[waves]`
+/// (the representative wave of the step pilot: [`design_wave`]).
+pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> WorkEstimate {
+    let life = &p.life;
+    // Mean waves per storm over the storm distribution (its 64 quantiles), T = a H0^b.
+    let period = |q: f64| life.period_coefficient * life.storms.quantile_m(q).max(1e-3).powf(life.period_exponent);
+    let per_storm: f64 =
+        (0..64).map(|k| (life.storm_duration_s / period((k as f64 + 0.5) / 64.0)).round().max(1.0)).sum::<f64>() / 64.0;
+    let storms = p.lives as f64 * life.life_years as f64;
+    let waves_drawn = storms * per_storm;
+    let share = if case.screen { design_screen_share(case, p) } else { 1.0 };
+    let (h, t) = design_wave(waves);
+    let steps_from = steps_from(case.structure, || storm_pilot(case, h, t));
+    let simulated_s = storms * life.storm_duration_s * share;
+    WorkEstimate {
+        steps: simulated_s * steps_from.steps_per_s(),
+        waves: waves_drawn,
+        memory_bytes: p.lives as f64 * BYTES_PER_LIFE,
+        simulated_s,
+        steps_from,
+        simulated_share: share,
+        basis: format!(
+            "{} lives × {} years × about {per_storm:.0} waves per storm, {:.3} % of them simulated (screen pilot)",
+            p.lives,
+            life.life_years,
+            100.0 * share
+        ),
+    }
+}
+
+/// The share of a design run's waves that reach the dynamic model, from its first lives with
+/// short storms (module docs); a pilot life that fails counts as all simulated.
+fn design_screen_share(case: &StormCase<'_>, p: &DesignParams) -> f64 {
+    let coarse = coarse(case.structure);
+    let pilot_case = StormCase { structure: &coarse, ..*case };
+    let life = &p.life;
+    let t_median = life.period_coefficient * life.storms.quantile_m(0.5).max(1e-3).powf(life.period_exponent);
+    let storms = life.life_years.min(PILOT_STORMS);
+    let pilot = LifeParams {
+        life_years: storms,
+        storm_duration_s: (PILOT_WAVES_PER_STORM * t_median).min(life.storm_duration_s),
+        ..*life
+    };
+    let (mut waves, mut simulated) = (0u64, 0u64);
+    for i in 0..p.lives.min(PILOT_LIVES) {
+        match simulate_life(&pilot_case, &pilot, p.seed, i) {
+            Ok(o) => {
+                waves += o.waves;
+                simulated += o.simulated_waves;
+            }
+            Err(_) => {
+                let n = (storms as f64 * PILOT_WAVES_PER_STORM) as u64;
+                waves += n;
+                simulated += n;
+            }
+        }
+    }
+    if waves == 0 {
+        1.0
+    } else {
+        simulated as f64 / waves as f64
+    }
+}
+
+/// Heights, storms per height and waves per storm of the screen pilot of a fragility run.
+const PILOT_LEVELS: usize = 16;
+const PILOT_LEVEL_STORMS: usize = 4;
+const PILOT_LEVEL_WAVES: usize = 32;
+
+/// A fragility run (`fragility::run_fragility`).
+pub fn fragility(case: &StormCase<'_>, p: &FragilityParams) -> WorkEstimate {
+    let levels = p.heights_m.len();
+    let n = p.waves_per_storm();
+    let waves_drawn = (levels * p.storms * n) as f64;
+    let share = if case.screen { fragility_screen_share(case, p) } else { 1.0 };
+    let middle = p.heights_m.get(levels / 2).copied().unwrap_or(1.0);
+    let steps_from = steps_from(case.structure, || storm_pilot(case, p.storm_input(middle).hmax_m, p.period_s));
+    let simulated_s = waves_drawn * p.period_s * share;
+    WorkEstimate {
+        steps: simulated_s * steps_from.steps_per_s(),
+        waves: waves_drawn,
+        memory_bytes: (levels * p.storms) as f64 * BYTES_PER_LIFE,
+        simulated_s,
+        steps_from,
+        simulated_share: share,
+        basis: format!(
+            "{levels} heights × {} storms × {n} waves, {:.3} % of them simulated (screen pilot)",
+            p.storms,
+            100.0 * share
+        ),
+    }
+}
+
+/// The share of a fragility run's waves that reach the dynamic model: the mean over up to 16
+/// heights spread over the grid of their first storms, shortened (module docs).
+fn fragility_screen_share(case: &StormCase<'_>, p: &FragilityParams) -> f64 {
+    let coarse = coarse(case.structure);
+    let pilot_case = StormCase { structure: &coarse, ..*case };
+    let levels = p.heights_m.len();
+    let picked = levels.min(PILOT_LEVELS);
+    let mut shares = Vec::with_capacity(picked);
+    for k in 0..picked {
+        let level = k * levels / picked;
+        let input = p.storm_input(p.heights_m[level]);
+        let input = super::lifetime::StormInput { waves: input.waves.min(PILOT_LEVEL_WAVES), ..input };
+        let (mut waves, mut simulated) = (0u64, 0u64);
+        for j in 0..p.storms.min(PILOT_LEVEL_STORMS) {
+            let mut rng = realization_rng(p.seed, level * p.storms + j);
+            match simulate_storm(&pilot_case, &input, &mut rng) {
+                Ok(o) => {
+                    waves += o.waves;
+                    simulated += o.simulated_waves;
+                }
+                Err(_) => {
+                    waves += input.waves as u64;
+                    simulated += input.waves as u64;
+                }
+            }
+        }
+        shares.push(if waves == 0 { 1.0 } else { simulated as f64 / waves as f64 });
+    }
+    if shares.is_empty() {
+        1.0
+    } else {
+        shares.iter().sum::<f64>() / shares.len() as f64
+    }
+}
