@@ -717,6 +717,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
 /// table or JSON on standard output and, with `out`, design.json, lives.csv, histogram.svg and
 /// exceedance.svg. What one design run reports; `caisson merge` reports through it too.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn report_lives(
     scenario_path: &Path,
     design: &DesignParams,
