@@ -67,10 +67,18 @@ pub fn check(command: &str, e: &WorkEstimate, advice: &Advice) -> Result<Option<
         let (what, limit, change) = match resource {
             Resource::Steps => (
                 format!(
-                    "about {estimate:.2e} time steps of the dynamic model ({}; {:.3e} s of loading at {})",
+                    "about {estimate:.2e} time steps of the dynamic model ({}; {:.3e} s of loading at {}{})",
                     e.basis,
                     e.simulated_s,
-                    e.steps_from.describe()
+                    e.steps_from.describe(),
+                    if e.step_cost == 1.0 {
+                        String::new()
+                    } else {
+                        format!(
+                            "; {:.2e} steps, each of {:.3} steps on 10 springs, the budget's unit",
+                            e.steps, e.step_cost
+                        )
+                    }
                 ),
                 format!("{:.0e} time steps", b.steps),
                 advice.steps,
@@ -88,10 +96,10 @@ pub fn check(command: &str, e: &WorkEstimate, advice: &Advice) -> Result<Option<
             "`caisson {command}` would take {what}; the budget is {limit} (docs/cli.md, Limits): {change}"
         )));
     }
-    Ok((e.steps >= LONG || e.waves >= LONG).then(|| {
+    Ok((e.weighted_steps() >= LONG || e.waves >= LONG).then(|| {
         format!(
             "Estimated work: about {:.1e} time steps and {:.1e} waves, {} held ({}); the budget is {:.0e} steps, {:.0e} waves, {}",
-            e.steps,
+            e.weighted_steps(),
             e.waves,
             bytes(e.memory_bytes),
             e.basis,

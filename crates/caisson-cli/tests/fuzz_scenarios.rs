@@ -296,10 +296,13 @@ fn plan(name: &str, cmd: &str, text: &str) -> (Plan, String) {
         _ => None,
     };
     let Some(e) = estimate else { return (Plan::Run, "no estimate".into()) };
-    let words = format!("{:.2e} steps, {:.2e} waves, {:.0} MB", e.steps, e.waves, e.memory_bytes / 1e6);
+    let words =
+        format!("{:.2e} weighted steps, {:.2e} waves, {:.0} MB", e.weighted_steps(), e.waves, e.memory_bytes / 1e6);
     if e.excess(&Budget::DEFAULT).is_some() {
         (Plan::OverBudget, words)
-    } else if e.steps * S_PER_STEP + e.waves * S_PER_WAVE > QUICK_CPU_S || e.memory_bytes > QUICK_MEMORY_BYTES {
+    } else if e.weighted_steps() * S_PER_STEP + e.waves * S_PER_WAVE > QUICK_CPU_S
+        || e.memory_bytes > QUICK_MEMORY_BYTES
+    {
         (Plan::Long, words)
     } else {
         (Plan::Run, words)

@@ -9,7 +9,7 @@
 //! | `implausible-natural-period` | T0 outside 2 ms to 3 s | flume caissons sway at about 0.02 s, prototypes at 0.1-1 s |
 //! | `implausible-base-pressure` | W'/(B l) outside 1 to 1000 kPa | flume caissons bear about 10 kPa, prototypes 100-400 kPa; a weight in MN or N gives 1000 × less or more |
 //! | `coarse-time-step` | fixed steps `dt_s` > T0/10 | Newmark's average acceleration stays stable at any step but lengthens the period of the response, T̄/T = Ω/(2 atan(Ω/2)), Ω = 2π dt/T0 (Chopra 2012, §5.5): 3 % at T0/10, 56 % at T0/2; a short impulse falls between steps (docs/model.md §9.1 recommends T0/20); steps over T0 are refused by the scenario |
-//! | `implausible-load` | a peak wave force (or uplift) above 100 W' | no wave load on a caisson exceeds a few times its weight in water; a force in N written as kN gives 1000 × more (beyond 10⁴ W' the scenario refuses it) |
+//! | `implausible-load` | a peak wave force (or uplift) above 100 W' | no wave load on a caisson exceeds a few times its weight in water; a force in N written as kN gives 1000 × more (beyond 10³ W' the scenario refuses it) |
 //! | `undamped-adaptive` | C = 0 with adaptive steps | the stepper's error estimate assumes damped transients; without damping an independent check found −1.90 mm adaptive against −0.094 mm fixed |
 //! | `dashpot-exceeds-friction` | C u̇_x > μ N while sliding (`damping_mode = "total"`) | a Coulomb interface carries no more than μN; the dashpot then limits the slide (docs/model.md §10 item 30) |
 //! | `rotational-dashpot-moment` | with `vertical_damping = "seed"`, the dashpots' moment > ½ the largest wave moment | they, not the springs, hold the caisson upright (the seed's 10C as N·m·s/rad, item 10) |
@@ -26,7 +26,7 @@ use super::train::WaveSetup;
 use super::Structure;
 use crate::dynamics::Stepping;
 use crate::foundation::VerticalDamping;
-use crate::loads::generator::TrainKind;
+use crate::loads::generator::{HeightVariability, TrainKind};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::{LoadSpec, WaveForce};
 use std::collections::BTreeMap;
@@ -56,11 +56,14 @@ pub const BASE_PRESSURE_RANGE_PA: (f64, f64) = (1e3, 1e6);
 pub const COARSE_STEP_FRACTION_OF_T0: f64 = 0.1;
 /// Peak wave forces above this multiple of W' are implausible (`implausible-load`).
 pub const PLAUSIBLE_LOAD_OVER_WEIGHT: f64 = 100.0;
-/// Peak wave forces above this multiple of W' are input errors (refused by the scenario): a
-/// caisson pushed at 10⁴ g slides kilometres and the Newton-Raphson iteration loses its
-/// tolerance (relative to W') in the round-off of the load.
-pub const MAX_LOAD_OVER_WEIGHT: f64 = 1e4;
-/// H_max / H1/3 of the nominal wave of an irregular train (Goda's design ratio, as the storms of
+/// Peak wave forces above this multiple of W' are input errors (refused by the scenario): pushed
+/// by a thousand times its weight in water a caisson slides hundreds of metres per wave, and the
+/// Newton-Raphson tolerance (relative to W') falls below the round-off of its spring forces
+/// (K (u − s) with u and s of hundreds of metres): the PARI non-breaking campaign with `length_m
+/// = 3000` (its waves 1100 times its weight in water) failed to converge, and so did its caisson
+/// with a weight in water 10⁴ times smaller (3600 W').
+pub const MAX_LOAD_OVER_WEIGHT: f64 = 1e3;
+/// H_max / H1/3 of the largest wave of an irregular train (Goda's design ratio, as the storms of
 /// [`super::fragility`]).
 const NOMINAL_HMAX_RATIO: f64 = 1.8;
 /// Rotation beyond which the caisson is rocking, not vibrating, rad.
@@ -144,14 +147,18 @@ pub fn newmark_period_ratio(dt_over_t: f64) -> f64 {
     }
 }
 
-/// The peak |horizontal force| and |uplift| of the nominal wave of `waves` (its regular height,
-/// or H_max = 1.8 H1/3 of irregular waves) at the wall, totals over the caisson's length (the
-/// larger of the quasi-static and the impact components), N; `None` if the wave's loads cannot
-/// be evaluated.
+/// The peak |horizontal force| and |uplift| of the largest wave of `waves` (regular waves: the
+/// nominal height at the top of its variability, H (1 + cov k) or H (1 + δ); irregular waves:
+/// H_max = 1.8 H1/3) at the wall, totals over the caisson's length (the larger of the
+/// quasi-static and the impact components), N; `None` if the wave's loads cannot be evaluated.
 pub fn nominal_wave_peak(waves: &WaveSetup) -> Option<WaveForce> {
     let h = match waves.train.kind {
-        TrainKind::Regular { .. } => waves.height_m(),
-        TrainKind::Irregular { .. } => NOMINAL_HMAX_RATIO * waves.height_m(),
+        TrainKind::Regular { height_m, variability } => match variability {
+            HeightVariability::Normal { cov, truncation_sigmas } => height_m * (1.0 + cov * truncation_sigmas),
+            HeightVariability::Uniform { half_width } => height_m * (1.0 + half_width),
+            HeightVariability::None => height_m,
+        },
+        TrainKind::Irregular { significant_height_m } => NOMINAL_HMAX_RATIO * significant_height_m,
     };
     let m = &waves.model;
     // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
@@ -214,7 +221,7 @@ pub fn run_load_warnings(s: &Structure, load: &LoadSpec) -> Vec<Warning> {
     load_warnings(s, load.peak_abs(), LoadSource::Load)
 }
 
-/// [`load_warnings`] of the nominal wave of `waves` ([`nominal_wave_peak`]).
+/// [`load_warnings`] of the largest wave of `waves` ([`nominal_wave_peak`]).
 pub fn wave_load_warnings(s: &Structure, waves: &WaveSetup) -> Vec<Warning> {
     nominal_wave_peak(waves).map_or_else(Vec::new, |p| load_warnings(s, p, LoadSource::Waves))
 }

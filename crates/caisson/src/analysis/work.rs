@@ -9,6 +9,9 @@
 //!   representative wave of a storm) run with the scenario's solver, at most
 //!   [`PILOT_MAX_STEPS`] steps (far fewer than the run); if the pilot fails, 1/`dt_s` (the first
 //!   step) is used.
+//!   A step's cost grows with the number of springs n (their assembly): it counts
+//!   [`step_cost`] = (n + 10)/20 steps of the seed's 10 springs (measured: 0.64 at n = 2, 5.9 at
+//!   100, 14.8 at 300; the budget is in steps of 10 springs).
 //! * **waves** drawn: every wave of every train, storm and life. A design or fragility run draws
 //!   each wave's height and screens it even when it does not simulate it (about 0.1 µs each).
 //! * **memory** held until the end of the run, bytes: the results kept for the outputs (every
@@ -24,7 +27,7 @@
 //!
 //! Every estimate is deterministic (the pilots use the run's first random streams), so a run is
 //! refused or accepted the same way every time. It is an estimate, not a bound (tests/work.rs):
-//! the steps of the wave-train and campaign examples within 15 % (measured 1-7 %), the waves of
+//! the steps of the wave-train and campaign examples within 15 % (measured 1-2 %), the waves of
 //! the design example within 3 % and its screened share within a factor of 3 (measured 1.7: the
 //! rare large storms that pass most waves may or may not be among the pilot's 128), the
 //! fragility example's share within 10 % (measured 1.3 %). A pilot takes about 15 ms.
@@ -60,6 +63,12 @@ pub const BYTES_PER_LIFE: f64 = 256.0;
 pub fn bytes_per_history_row(springs: usize) -> f64 {
     let n = springs as f64;
     8.0 * (12.0 + 3.0 * n) + 4.0 + 25.0 * 3.0 * n
+}
+
+/// The cost of a time step on `springs` springs in steps on the seed's 10: (n + 10)/20 (module
+/// docs).
+pub fn step_cost(springs: usize) -> f64 {
+    (springs as f64 + 10.0) / 20.0
 }
 
 /// How the steps of an estimate were counted.
@@ -101,6 +110,8 @@ impl StepsFrom {
 pub struct WorkEstimate {
     /// Time steps of the dynamic model, all simulations together.
     pub steps: f64,
+    /// The cost of one of them in steps on 10 springs ([`step_cost`]).
+    pub step_cost: f64,
     /// Waves drawn (trains: waves run; design and fragility: every wave, screened or not).
     pub waves: f64,
     /// Bytes held in memory until the end of the run.
@@ -125,7 +136,7 @@ pub struct Budget {
 impl Budget {
     /// The CLI's budget (docs/cli.md "Limits"): 2·10¹⁰ time steps (about two hours of one core at
     /// 0.3-0.4 µs a step), 2·10¹⁰ waves drawn (about an hour), 4 GiB held. The bundled examples
-    /// stay 90 times or more below each (the design example, the largest, at 2.1·10⁸ steps and
+    /// stay 90 times or more below each (the design example, the largest, at 1.9·10⁸ steps and
     /// 1.9·10⁸ waves).
     pub const DEFAULT: Budget = Budget { steps: 2e10, waves: 2e10, memory_bytes: 4.0 * 1024.0 * 1024.0 * 1024.0 };
 }
@@ -140,11 +151,17 @@ pub enum Resource {
 }
 
 impl WorkEstimate {
-    /// The first of steps, waves and memory over `budget`: (which, estimate, limit).
+    /// The steps in steps on 10 springs, [`Self::steps`] × [`Self::step_cost`]: what the budget
+    /// counts.
+    pub fn weighted_steps(&self) -> f64 {
+        self.steps * self.step_cost
+    }
+
+    /// The first of weighted steps, waves and memory over `budget`: (which, estimate, limit).
     pub fn excess(&self, budget: &Budget) -> Option<(Resource, f64, f64)> {
         [
             (Resource::Waves, self.waves, budget.waves),
-            (Resource::Steps, self.steps, budget.steps),
+            (Resource::Steps, self.weighted_steps(), budget.steps),
             (Resource::Memory, self.memory_bytes, budget.memory_bytes),
         ]
         .into_iter()
@@ -153,12 +170,14 @@ impl WorkEstimate {
 }
 
 /// Steps per second of loading of `structure`'s solver on `load` from rest, run until `end_s`
-/// or [`PILOT_MAX_STEPS`] steps; `None` if it fails.
+/// or [`PILOT_MAX_STEPS`] steps on 10 springs ([`step_cost`]), checked after each sixteenth of
+/// the way; `None` if it fails.
 fn pilot_rate(structure: &Structure, load: &dyn LoadHistory, end_s: f64) -> Option<f64> {
     let mut sim = Simulation::new(structure.model(), structure.solver, load);
-    let slice = end_s / 64.0;
+    let cap = (PILOT_MAX_STEPS as f64 / step_cost(structure.foundation.springs)) as u64;
+    let slice = end_s / 16.0;
     let mut t = 0.0;
-    while t < end_s && sim.stats.steps < PILOT_MAX_STEPS {
+    while t < end_s && sim.stats.steps < cap {
         t = (t + slice).min(end_s);
         sim.run_until(t, load, &mut ()).ok()?;
     }
@@ -190,6 +209,7 @@ pub fn run(structure: &Structure, duration_s: f64, history: bool) -> WorkEstimat
     let rows = if history { (duration_s / s.output_interval_s).ceil() + 1.0 } else { 0.0 };
     WorkEstimate {
         steps: duration_s * steps_from.steps_per_s(),
+        step_cost: step_cost(structure.foundation.springs),
         waves: 0.0,
         memory_bytes: rows * bytes_per_history_row(structure.foundation.springs),
         simulated_s: duration_s,
@@ -220,6 +240,7 @@ pub fn train(case: &TrainCase<'_>, history: bool) -> WorkEstimate {
     let rows = if history { (duration_s / case.structure.solver.output_interval_s).ceil() + 1.0 } else { 0.0 };
     WorkEstimate {
         steps: r * duration_s * steps_from.steps_per_s(),
+        step_cost: step_cost(case.structure.foundation.springs),
         waves: r * n,
         memory_bytes: r * n * BYTES_PER_TRAIN_WAVE + rows * bytes_per_history_row(case.structure.foundation.springs),
         simulated_s: r * duration_s,
@@ -253,6 +274,7 @@ pub fn campaign(setups: &[ConditionSetup], every_wave: bool) -> WorkEstimate {
     let per_wave = BYTES_PER_CAMPAIGN_WAVE + if every_wave { BYTES_PER_TRAIN_WAVE } else { 0.0 };
     WorkEstimate {
         steps: simulated_s * steps_from.steps_per_s(),
+        step_cost: first.map_or(1.0, |s| step_cost(s.foundation.springs)),
         waves,
         memory_bytes: waves * per_wave,
         simulated_s,
@@ -315,6 +337,7 @@ pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> Work
     let simulated_s = storms * life.storm_duration_s * share;
     WorkEstimate {
         steps: simulated_s * steps_from.steps_per_s(),
+        step_cost: step_cost(case.structure.foundation.springs),
         waves: waves_drawn,
         memory_bytes: p.lives as f64 * BYTES_PER_LIFE,
         simulated_s,
@@ -379,6 +402,7 @@ pub fn fragility(case: &StormCase<'_>, p: &FragilityParams) -> WorkEstimate {
     let simulated_s = waves_drawn * p.period_s * share;
     WorkEstimate {
         steps: simulated_s * steps_from.steps_per_s(),
+        step_cost: step_cost(case.structure.foundation.springs),
         waves: waves_drawn,
         memory_bytes: (levels * p.storms) as f64 * BYTES_PER_LIFE,
         simulated_s,

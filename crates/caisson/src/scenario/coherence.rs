@@ -7,7 +7,7 @@
 //!   T0) no longer converge (docs/model.md §9.1 recommends T0/20; a step above T0/10 is a
 //!   warning, [`crate::analysis::checks`]).
 //! * **Loads far beyond the weight**: the peak horizontal force and uplift of a `[load]` (its
-//!   peaks, or the largest samples of a series) and of the nominal wave of `[waves]` at most
+//!   peaks, or the largest samples of a series) and of the largest wave of `[waves]` at most
 //!   [`MAX_LOAD_OVER_WEIGHT`] × W' (above 100 W' a warning).
 //! * **A caisson that floats at high tide** (`[design]`): the tide lowers the weight in water by
 //!   ρ_w g B l ζ (docs/model.md §6.4 step 3), so W' − ρ_w g B l R must stay positive.
@@ -74,7 +74,7 @@ pub(super) fn check_load(caisson: &Caisson, load: &LoadSpec) -> R<()> {
     Err(ScenarioError::range(&key, value, rule(caisson, ratio, LoadSource::Load)))
 }
 
-/// The nominal wave of `waves` against the weight (module docs).
+/// The largest wave of `waves` against the weight (module docs).
 pub(super) fn check_waves(caisson: &Caisson, waves: &WaveSetup) -> R<()> {
     let Some(peak) = nominal_wave_peak(waves) else { return Ok(()) };
     let Some((i, force, ratio)) = over_weight(caisson, peak) else { return Ok(()) };
@@ -82,7 +82,7 @@ pub(super) fn check_waves(caisson: &Caisson, waves: &WaveSetup) -> R<()> {
         "[caisson] weight_in_water_kn",
         format!("{:e}", caisson.weight_in_water_n / 1e3),
         format!(
-            "the {} of the nominal wave ([waves], {:.4e} kN over length_m = {} m) {}",
+            "the {} of the largest wave of [waves] ({:.4e} kN over length_m = {} m) {}",
             ["horizontal force", "uplift"][i],
             force / 1e3,
             caisson.length_m,
