@@ -32,7 +32,7 @@
 //! criterion is met.
 
 use super::fragility::normal_cdf;
-use super::lifetime::StormOutcome;
+use super::lifetime::{life_statistics, StormOutcome};
 use serde::Serialize;
 
 /// One-sided 95 % normal quantile.
@@ -105,26 +105,18 @@ impl Candidate {
 /// The statistics of one model over `n` lives: magnitudes |S| and failures.
 pub fn model_point(magnitudes: &[f64], failed: &[bool], criteria: &Criteria) -> ModelPoint {
     let n = magnitudes.len().max(1) as f64;
-    let mean = magnitudes.iter().sum::<f64>() / n;
+    // Mean and nearest-rank percentiles as the design report computes them.
+    let s = life_statistics(magnitudes, &criteria.exceedance.map(|e| vec![e.sliding_m]).unwrap_or_default());
+    let pct = |p: f64| s.percentiles_m.iter().find(|(q, _)| *q == p).map_or(0.0, |(_, v)| *v);
+    let mean = s.mean_m;
     let var =
         if magnitudes.len() > 1 { magnitudes.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
-    let mut sorted = magnitudes.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let pct = |p: f64| {
-        if sorted.is_empty() {
-            0.0
-        } else {
-            sorted[((p / 100.0 * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len()) - 1]
-        }
-    };
     ModelPoint {
         expected_sliding_m: mean,
         expected_sliding_se_m: (var / n).sqrt(),
         p50_m: pct(50.0),
         p95_m: pct(95.0),
-        exceedance_probability: criteria
-            .exceedance
-            .map_or(0.0, |e| magnitudes.iter().filter(|&&x| x > e.sliding_m).count() as f64 / n),
+        exceedance_probability: s.exceedance.first().map_or(0.0, |(_, p)| *p),
         failure_probability: failed.iter().filter(|&&f| f).count() as f64 / n,
     }
 }
