@@ -65,3 +65,39 @@ fn rocking_displacement_is_read_where_the_caisson_comes_to_rest() {
     assert!((rest - sim.state().u[0]).abs() < 1e-5, "at rest u_x = {} m vs {rest} m", sim.state().u[0]);
     assert!((unloaded - rest).abs() < 1e-6, "read at 7 s {unloaded} m vs at rest {rest} m");
 }
+
+/// A pure moment ramped up over 60 s (quasi-static: the rocking period is about 1 s) to `ratio`
+/// times the lift-off moment of the screen, (6 M/B) f = W'.
+struct MomentRamp {
+    moment_nm: f64,
+}
+
+impl LoadHistory for MomentRamp {
+    fn at(&self, t: f64) -> WaveForce {
+        WaveForce { fx_n: 0.0, fy_n: 0.0, m_nm: self.moment_nm * (t / 60.0).min(1.0) }
+    }
+}
+
+/// The screen's lift-off test (analysis::lifetime, docs/design.md) against the engine: n equal
+/// springs lift their outermost one at (6 M/B) · n/(n + 1) = W' (closed form of
+/// `Model::lift_off_factor`), so 2 % below that moment every spring stays in contact and 2 %
+/// above the seaward one lifts. The 2 % margin covers the dynamic overshoot of a 60 s ramp,
+/// 1 + T_θ/(π 60 s) ≈ 1.005.
+#[test]
+fn the_outermost_spring_lifts_where_the_screen_says() {
+    let s = scenario(CAISSON);
+    let model = s.structure().model();
+    let n = model.x_m.len() as f64;
+    assert_eq!(n, 10.0);
+    assert!((model.lift_off_factor() - n / (n + 1.0)).abs() < 1e-12, "f = {}", model.lift_off_factor());
+    assert!(model.rocking_period_s() < 2.0, "T_θ = {} s", model.rocking_period_s());
+    let (w, b) = (model.weight_n, model.width_m);
+    let lift_moment_nm = w * b / (6.0 * model.lift_off_factor());
+    for (ratio, lifts) in [(0.98, false), (1.02, true)] {
+        let load = MomentRamp { moment_nm: ratio * lift_moment_nm };
+        let mut sim = Simulation::new(s.structure().model(), s.solver(), &load);
+        let mut peaks = Peaks::default();
+        sim.run_until(61.0, &load, &mut peaks).unwrap();
+        assert_eq!(peaks.min_n == 0.0, lifts, "M = {ratio} × the lift-off moment: min N = {} N", peaks.min_n);
+    }
+}

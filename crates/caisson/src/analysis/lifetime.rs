@@ -30,11 +30,16 @@
 //! Ψ_i = 2 on impulsive components (the largest amplification of a single rising-and-falling
 //! pulse on a linear oscillator from rest, reached by a step; Chopra §4.7-4.11) and
 //! Ψ_q = 1 + T0/(π t_q) on the pulsating component, the bound of a load that rises over
-//! t_q = T/4 (Chopra §4.8, ramp load) — **or** if the seaward heel can lift off, 6 M_eff/B ≥
-//! W' − U_eff (linear base pressure; M_eff the amplified moment about the base centre): a rocking
-//! caisson ratchets shoreward by millimetres as its lifted springs re-contact, well below the
-//! sliding resistance (without this condition a full run differed from the screened one by
-//! 1 %, `tests/lifetime.rs`). The test is made per storm on a grid of 64 heights from 0
+//! t_q = T/4 (Chopra §4.8, ramp load) — **or** if the seaward spring can lift off,
+//! (6 M_eff/B) f ≥ W' − U_eff: a rocking caisson ratchets shoreward by millimetres as its lifted
+//! springs re-contact, well below the sliding resistance (without this condition a full run
+//! differed from the screened one by 1 %, `tests/lifetime.rs`). M_eff is the moment about the
+//! base centre amplified like the forces, its pulsating part with the longer of T0 and the
+//! rocking period T_θ = 2π (m_θ/K_θ)^½ (K_θ = Σ k_y x_i²) in Ψ. f is the lift-off factor of the
+//! springs ([`Model::lift_off_factor`]): n equal springs at x_i carry N_i = V/n + M x_i/Σx_j²
+//! statically, so the outermost one lifts at (6 M/B) · n/(n + 1) = V (f = 10/11 for the 10
+//! springs of the seed; f = 1 is the continuous linear base pressure, 6 M/B = V, which
+//! simulated 22 % more waves of the design example, none of which lifted or slid). The test is made per storm on a grid of 64 heights from 0
 //! to H_max plus the breaker height at the wall; a wave is simulated if the grid cell of its height
 //! or a neighbouring cell can slide. The friction used is the smaller of μ_s and the rigid block's
 //! μ, so a screened wave slides neither model. The share of waves screened is reported;
@@ -279,14 +284,31 @@ pub const PSI_IMPULSE: f64 = 2.0;
 /// Cells of the per-storm screen grid.
 const SCREEN_CELLS: usize = 64;
 
-/// Effective peak forces of one wave's event for the screen, and the friction test.
-fn may_slide(e: &WaveEvent, psi_q: f64, weight_n: f64, mu: f64, width_m: f64) -> bool {
-    let p = (PSI_IMPULSE * e.impact.x.fx_n).max(psi_q * e.quasi.x.fx_n);
-    let u = (PSI_IMPULSE * e.impact.y.fy_n).max(psi_q * e.quasi.y.fy_n).max(0.0);
-    let m = (PSI_IMPULSE * e.impact.total().m_nm).max(psi_q * e.quasi.total().m_nm).max(0.0);
-    // Sliding, or the seaward heel lifting off (linear base pressure (W' − U)/B − 6M/B² ≤ 0):
-    // a rocking caisson ratchets shoreward a little as its springs re-contact.
-    p > mu * (weight_n - u) || 6.0 * m / width_m >= weight_n - u
+/// The screen's amplifications and resistance for one storm (module docs).
+#[derive(Debug, Clone, Copy)]
+struct ScreenBound {
+    /// Ψ_q on the pulsating horizontal and vertical components.
+    psi_q: f64,
+    /// Ψ_m on the pulsating moment (the longer of the horizontal and rocking periods).
+    psi_m: f64,
+    /// W', N.
+    weight_n: f64,
+    /// The smaller friction coefficient of the two models.
+    mu: f64,
+    /// B, m.
+    width_m: f64,
+    /// f of [`Model::lift_off_factor`].
+    lift_factor: f64,
+}
+
+/// Effective peak forces of one wave's event for the screen, and the friction and lift-off tests.
+fn may_slide(e: &WaveEvent, b: &ScreenBound) -> bool {
+    let p = (PSI_IMPULSE * e.impact.x.fx_n).max(b.psi_q * e.quasi.x.fx_n);
+    let u = (PSI_IMPULSE * e.impact.y.fy_n).max(b.psi_q * e.quasi.y.fy_n).max(0.0);
+    let m = (PSI_IMPULSE * e.impact.total().m_nm).max(b.psi_m * e.quasi.total().m_nm).max(0.0);
+    // Sliding, or the seaward spring lifting off ((6 M/B) f ≥ W' − U): a rocking caisson
+    // ratchets shoreward a little as its springs re-contact.
+    p > b.mu * (b.weight_n - u) || 6.0 * m / b.width_m * b.lift_factor >= b.weight_n - u
 }
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
@@ -322,9 +344,16 @@ fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f6
     foundation.mu_dynamic *= s.friction_factor;
     let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
     let dyn_model = Model::new(&caisson, &foundation);
-    let psi_q = 1.0 + dyn_model.natural_period_s() / (PI * 0.25 * s.period_s);
-    let mu_screen = foundation.mu_static.min(block.mu_static);
-    let w = caisson.weight_in_water_n;
+    let ramp = |t0: f64| 1.0 + t0 / (PI * 0.25 * s.period_s);
+    let t0 = dyn_model.natural_period_s();
+    let bound = ScreenBound {
+        psi_q: ramp(t0),
+        psi_m: ramp(t0.max(dyn_model.rocking_period_s())),
+        weight_n: caisson.weight_in_water_n,
+        mu: foundation.mu_static.min(block.mu_static),
+        width_m: caisson.width_m,
+        lift_factor: dyn_model.lift_off_factor(),
+    };
     let event_of = |loads: &WaveLoads, rise: Option<f64>| model.event(loads, rise, 0.0).scaled(s.force_factor);
     // Screen grid over [0, H_max] (+ the breaker height at the wall as an extra node).
     let hmax = s.hmax_m.max(1e-6);
@@ -335,14 +364,14 @@ fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f6
             let h = (i as f64 * dh).max(1e-3 * hmax);
             *flag = model
                 .evaluate_with(h, s.period_s, RegimeChoice::Auto)
-                .map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen, caisson.width_m));
+                .map_or(true, |l| may_slide(&event_of(&l, None), &bound));
         }
         let hbr = model.breaker_height_at_wall_m(s.period_s);
         if hbr < hmax {
             let j = (hbr / dh) as usize;
             let flag = model
                 .evaluate_with(hbr, s.period_s, RegimeChoice::Auto)
-                .map_or(true, |l| may_slide(&event_of(&l, None), psi_q, w, mu_screen, caisson.width_m));
+                .map_or(true, |l| may_slide(&event_of(&l, None), &bound));
             node[j] |= flag;
             node[(j + 1).min(SCREEN_CELLS)] |= flag;
         }

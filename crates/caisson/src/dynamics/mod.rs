@@ -144,6 +144,31 @@ impl Model {
         2.0 * std::f64::consts::PI * (self.horizontal_mass_kg() / self.kx_n_per_m).sqrt()
     }
 
+    /// Undamped natural period of the rocking mode alone, T_θ = 2π sqrt(m_θ / K_θ) with m_θ the
+    /// rotational inertia about the base centre (added inertia included) and K_θ = Σ k_y,i x_i²
+    /// the springs' rocking stiffness, s (infinite for a single central spring).
+    pub fn rocking_period_s(&self) -> f64 {
+        let k_theta: f64 = self.x_m.iter().map(|x| self.law.ky_n_per_m * x * x).sum();
+        2.0 * std::f64::consts::PI * (self.mass[(2, 2)] / k_theta).sqrt()
+    }
+
+    /// The factor f of the springs' lift-off test: under a static vertical load V (compression
+    /// +) and moment M about the base centre the first spring lifts when (6 M / B) f ≥ V. Equal
+    /// springs k at x_i (Σ x_i = 0) carry N_i = V/n + M x_i / Σ x_j², so the outermost one
+    /// (x_max) lifts when M x_max n / Σ x_j² ≥ V: f = B n x_max / (6 Σ x_j²), which for n springs
+    /// at the centres of n equal cells is n/(n + 1) (1 for a continuous linear base pressure);
+    /// 1 when the springs have no lever arm.
+    pub fn lift_off_factor(&self) -> f64 {
+        let n = self.x_m.len() as f64;
+        let sum_x2: f64 = self.x_m.iter().map(|x| x * x).sum();
+        let x_max = self.x_m.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        if sum_x2 > 0.0 && x_max > 0.0 {
+            self.width_m * n * x_max / (6.0 * sum_x2)
+        } else {
+            1.0
+        }
+    }
+
     /// Static settlement under self-weight, W'/K_y, m (downward positive).
     pub fn static_settlement_m(&self) -> f64 {
         self.weight_n / self.ky_n_per_m
