@@ -27,20 +27,11 @@ const ENGINE_ABS_M: f64 = 1e-6;
 /// The caisson of width `b` m on the stiff, undamped foundation of tests/verification.rs
 /// (`rigid_block_sliding_matches_closed_form`), the pulse through the base centre.
 fn at_width(b: f64) -> Scenario {
-    scenario(&format!(
-        r#"
-[caisson]
-width_m = {b}
-height_m = 1.12
-base_depth_m = 0.8
-weight_in_water_kn = {w}
-mass_matrix = "diagonal"
-[foundation]
-kx_kn_per_m = 1.5e7
-ky_kn_per_m = 1.4e7
-damping_kns_per_m = 0.0
-mu_static = {MU}
-mu_dynamic = {MU}
+    let caisson = support::rigid_block_caisson(b, WEIGHT_PER_WIDTH_KN_PER_M * b, MU);
+    scenario(
+        &(caisson
+            + &format!(
+                r#"
 [load]
 kind = "triangle"
 peak_horizontal_kn = {PEAK_KN}
@@ -49,9 +40,9 @@ horizontal_lever_m = 0.0
 duration_s = 1.5
 [solver]
 dt_s = 2e-5
-"#,
-        w = WEIGHT_PER_WIDTH_KN_PER_M * b
-    ))
+"#
+            )),
+    )
 }
 
 /// The exact slide at width `b`, m (A = P, B = μ W', t_d = 2 t_r; the mass m_c + M_a of the

@@ -96,20 +96,9 @@ fn rigid_block(ratio_a_over_b: f64, uplift_over_w: f64) -> (f64, f64) {
     let mu = 0.6;
     let p = mu * (ratio_a_over_b * w - uplift_over_w * w); // A = P + μU = ratio·μW
     let tr = 0.1;
-    let text = format!(
-        r#"
-[caisson]
-width_m = 0.78
-height_m = 1.12
-base_depth_m = 0.8
-weight_in_water_kn = {w}
-mass_matrix = "diagonal"
-[foundation]
-kx_kn_per_m = 1.5e7
-ky_kn_per_m = 1.4e7
-damping_kns_per_m = 0.0
-mu_static = {mu}
-mu_dynamic = {mu}
+    let text = support::rigid_block_caisson(0.78, w, mu)
+        + &format!(
+            r#"
 [load]
 kind = "triangle"
 peak_horizontal_kn = {p}
@@ -121,8 +110,8 @@ duration_s = 1.5
 [solver]
 dt_s = 2e-5
 "#,
-        u = uplift_over_w * w
-    );
+            u = uplift_over_w * w
+        );
     let s = scenario(&text);
     let m = s.structure().model().horizontal_mass_kg();
     let exact = rigid_block_sliding_m(ratio_a_over_b * mu * w * 1e3, mu * w * 1e3, m, 2.0 * tr);

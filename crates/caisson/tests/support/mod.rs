@@ -14,3 +14,26 @@ pub fn example(name: &str) -> Scenario {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
     caisson::scenario::load(&dir.join(name)).unwrap_or_else(|e| panic!("examples/{name}: {e}"))
 }
+
+/// The seed's Table 5 caisson (0.78 m wide, W' `weight_kn`) on a foundation 100 × stiffer than
+/// Table 6, undamped, with μ_s = μ_d = `mu`: under a force through its base centre it is the
+/// rigid block of docs/model.md §6.3 (tests/verification.rs, tests/sizing.rs). `width_m` replaces
+/// the width.
+pub fn rigid_block_caisson(width_m: f64, weight_kn: f64, mu: f64) -> String {
+    format!(
+        r#"
+[caisson]
+width_m = {width_m}
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = {weight_kn}
+mass_matrix = "diagonal"
+[foundation]
+kx_kn_per_m = 1.5e7
+ky_kn_per_m = 1.4e7
+damping_kns_per_m = 0.0
+mu_static = {mu}
+mu_dynamic = {mu}
+"#
+    )
+}
