@@ -600,3 +600,86 @@ pub fn print_warnings(warnings: &[caisson::analysis::checks::Warning]) {
         eprintln!("Warning: {}", w.message);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::check_finite_fields;
+    use serde::Serialize;
+    use std::collections::BTreeMap;
+
+    #[derive(Serialize, Clone)]
+    struct Flat {
+        x: f64,
+    }
+
+    #[derive(Serialize, Clone)]
+    enum Shape {
+        Newtype(f64),
+        Fields { y: f64 },
+        Tuple(f64, f64),
+        Unit,
+    }
+
+    #[derive(Serialize, Clone)]
+    struct Inner {
+        a: f64,
+        b: Option<f64>,
+        v: Vec<f32>,
+        t: (f64, f64),
+        m: BTreeMap<String, f64>,
+    }
+
+    #[derive(Serialize, Clone)]
+    struct Report {
+        #[serde(flatten)]
+        flat: Flat,
+        name: &'static str,
+        n: u64,
+        i: i32,
+        yes: bool,
+        inner: Inner,
+        shapes: Vec<Shape>,
+    }
+
+    fn report() -> Report {
+        Report {
+            flat: Flat { x: 1.0 },
+            name: "r",
+            n: 3,
+            i: -1,
+            yes: true,
+            inner: Inner {
+                a: 2.0,
+                b: None,
+                v: vec![1.0, 2.0, 3.0],
+                t: (4.0, 5.0),
+                m: BTreeMap::from([("k".to_string(), 6.0)]),
+            },
+            shapes: vec![Shape::Newtype(7.0), Shape::Fields { y: 8.0 }, Shape::Tuple(9.0, 10.0), Shape::Unit],
+        }
+    }
+
+    /// Every non-finite number is found with the path of its field; finite values, null
+    /// (`None`), text, integers and booleans pass.
+    #[test]
+    fn non_finite_numbers_are_named_by_their_path() {
+        assert_eq!(check_finite_fields(&report(), "r"), Ok(()));
+        let cases: Vec<(fn(&mut Report), &str)> = vec![
+            (|r| r.flat.x = f64::NAN, "r.x is NaN"),
+            (|r| r.inner.a = f64::INFINITY, "r.inner.a is inf"),
+            (|r| r.inner.b = Some(f64::NEG_INFINITY), "r.inner.b is -inf"),
+            (|r| r.inner.v[2] = f32::NAN, "r.inner.v[2] is NaN"),
+            (|r| r.inner.t.1 = f64::NAN, "r.inner.t[1] is NaN"),
+            (|r| r.inner.m.insert("k".into(), f64::NAN).map_or((), |_| ()), "r.inner.m.k is NaN"),
+            (|r| r.shapes[0] = Shape::Newtype(f64::NAN), "r.shapes[0].Newtype is NaN"),
+            (|r| r.shapes[1] = Shape::Fields { y: f64::NAN }, "r.shapes[1].y is NaN"),
+            (|r| r.shapes[2] = Shape::Tuple(1.0, f64::NAN), "r.shapes[2][1] is NaN"),
+        ];
+        for (edit, want) in &cases {
+            let mut r = report();
+            edit(&mut r);
+            assert_eq!(check_finite_fields(&r, "r"), Err(want.to_string()));
+        }
+        assert_eq!(cases.len(), 9);
+    }
+}
