@@ -602,7 +602,8 @@ mod tests {
     #[test]
     fn non_finite_numbers_are_named_by_their_path() {
         assert_eq!(check_finite_fields(&report(), "r"), Ok(()));
-        let cases: Vec<(fn(&mut Report), &str)> = vec![
+        type Edit = fn(&mut Report);
+        let cases: Vec<(Edit, &str)> = vec![
             (|r| r.flat.x = f64::NAN, "r.x is NaN"),
             (|r| r.inner.a = f64::INFINITY, "r.inner.a is inf"),
             (|r| r.inner.b = Some(f64::NEG_INFINITY), "r.inner.b is -inf"),
