@@ -3,14 +3,13 @@
 from __future__ import annotations
 
 import math
-import threading
 
 import numpy as np
 import pandas as pd
 import pytest
 
 import caisson
-from conftest import EXAMPLES, cli_json
+from conftest import EXAMPLES, cli_json, turns_while
 
 LOAD_EXAMPLES = ["pari_breaking_loads.toml", "pari_nonbreaking_loads.toml", "design_breakwater.toml", "fragility.toml"]
 
@@ -122,12 +121,7 @@ def test_evaluate_is_the_same_on_any_number_of_threads():
 def test_evaluate_releases_the_gil():
     sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
     heights = np.linspace(0.05, 0.5, 400_000)
-    t = threading.Thread(target=caisson.loads.evaluate, args=(sc, heights))
-    count = 0
-    t.start()
-    while t.is_alive():
-        count += 1
-    t.join()
+    count = turns_while(caisson.loads.evaluate, sc, heights)
     # With the GIL held while the waves are evaluated, this loop could not have turned.
     assert count > 1000, count
 

@@ -293,40 +293,26 @@ trait Column {
     fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S);
 }
 
-impl Column for f64 {
-    #[inline(always)]
-    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
-        sink.number(name, Some(self))
-    }
+/// `impl Column for T` calling `sink.method(name, value)`, for each `T => method(value)`.
+macro_rules! columns_of {
+    ($($t:ty => $method:ident(|$v:ident| $value:expr)),* $(,)?) => {
+        $(impl Column for $t {
+            #[inline(always)]
+            fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
+                let $v = self;
+                sink.$method(name, $value)
+            }
+        })*
+    };
 }
 
-impl Column for Option<f64> {
-    #[inline(always)]
-    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
-        sink.number(name, self)
-    }
-}
-
-impl Column for bool {
-    #[inline(always)]
-    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
-        sink.flag(name, self)
-    }
-}
-
-impl Column for &'static str {
-    #[inline(always)]
-    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
-        sink.text(name, self)
-    }
-}
-
-impl Column for Regime {
-    #[inline(always)]
-    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
-        sink.text(name, self.name())
-    }
-}
+columns_of!(
+    f64 => number(|x| Some(x)),
+    Option<f64> => number(|x| x),
+    bool => flag(|b| b),
+    &'static str => text(|s| s),
+    Regime => text(|r| r.name()),
+);
 
 impl Column for RiseTimeModel {
     #[inline(always)]
