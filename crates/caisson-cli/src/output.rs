@@ -307,27 +307,56 @@ mod finite {
         }
     }
 
+    type R = Result<(), NotFinite>;
+
     pub struct Check<'a> {
         pub path: &'a mut Vec<String>,
     }
 
+    /// A sequence, tuple, map or struct: its elements are `[i]`, its fields `.name`.
     pub struct Compound<'a> {
         path: &'a mut Vec<String>,
         index: usize,
         key: Option<String>,
     }
 
+    impl<'a> Check<'a> {
+        fn compound(self) -> Result<Compound<'a>, NotFinite> {
+            Ok(Compound { path: self.path, index: 0, key: None })
+        }
+    }
+
     impl Compound<'_> {
-        fn visit<T: Serialize + ?Sized>(&mut self, step: String, v: &T) -> Result<(), NotFinite> {
+        fn visit<T: Serialize + ?Sized>(&mut self, step: String, v: &T) -> R {
             self.path.push(step);
             v.serialize(Check { path: &mut *self.path })?;
             self.path.pop();
             Ok(())
         }
-        fn element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+        fn element<T: Serialize + ?Sized>(&mut self, v: &T) -> R {
             self.index += 1;
             self.visit(format!("[{}]", self.index - 1), v)
         }
+    }
+
+    /// `fn serialize_x(self, _: T) -> R { Ok(()) }` for each `serialize_x: T`: values that are
+    /// always finite.
+    macro_rules! finite_values {
+        ($($method:ident: $t:ty),* $(,)?) => {
+            $(fn $method(self, _: $t) -> R {
+                Ok(())
+            })*
+        };
+    }
+
+    /// `fn serialize_x(self, _: A, ...) -> Result<Compound, _>` for each `serialize_x(A, ...)`:
+    /// the values of a sequence, tuple, map or struct are checked one by one.
+    macro_rules! opens_compound {
+        ($a:lifetime; $($method:ident($($arg:ty),*)),* $(,)?) => {
+            $(fn $method(self, $(_: $arg),*) -> Result<Compound<$a>, NotFinite> {
+                self.compound()
+            })*
+        };
     }
 
     impl<'a> ser::Serializer for Check<'a> {
@@ -341,68 +370,34 @@ mod finite {
         type SerializeStruct = Compound<'a>;
         type SerializeStructVariant = Compound<'a>;
 
-        fn serialize_f64(self, v: f64) -> Result<(), NotFinite> {
+        fn serialize_f64(self, v: f64) -> R {
             if v.is_finite() {
                 Ok(())
             } else {
                 Err(NotFinite(format!("{} is {v}", self.path.concat())))
             }
         }
-        fn serialize_f32(self, v: f32) -> Result<(), NotFinite> {
+        fn serialize_f32(self, v: f32) -> R {
             self.serialize_f64(v as f64)
         }
-        fn serialize_bool(self, _: bool) -> Result<(), NotFinite> {
+        finite_values!(
+            serialize_bool: bool, serialize_i8: i8, serialize_i16: i16, serialize_i32: i32, serialize_i64: i64,
+            serialize_u8: u8, serialize_u16: u16, serialize_u32: u32, serialize_u64: u64, serialize_char: char,
+            serialize_str: &str, serialize_bytes: &[u8], serialize_unit_struct: &'static str,
+        );
+        fn serialize_none(self) -> R {
             Ok(())
         }
-        fn serialize_i8(self, _: i8) -> Result<(), NotFinite> {
+        fn serialize_unit(self) -> R {
             Ok(())
         }
-        fn serialize_i16(self, _: i16) -> Result<(), NotFinite> {
+        fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> R {
             Ok(())
         }
-        fn serialize_i32(self, _: i32) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_i64(self, _: i64) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_u8(self, _: u8) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_u16(self, _: u16) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_u32(self, _: u32) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_u64(self, _: u64) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_char(self, _: char) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_str(self, _: &str) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_bytes(self, _: &[u8]) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_none(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_some<T: Serialize + ?Sized>(self, v: &T) -> Result<(), NotFinite> {
+        fn serialize_some<T: Serialize + ?Sized>(self, v: &T) -> R {
             v.serialize(self)
         }
-        fn serialize_unit(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_unit_struct(self, _: &'static str) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), NotFinite> {
-            Ok(())
-        }
-        fn serialize_newtype_struct<T: Serialize + ?Sized>(self, _: &'static str, v: &T) -> Result<(), NotFinite> {
+        fn serialize_newtype_struct<T: Serialize + ?Sized>(self, _: &'static str, v: &T) -> R {
             v.serialize(self)
         }
         fn serialize_newtype_variant<T: Serialize + ?Sized>(
@@ -411,88 +406,51 @@ mod finite {
             _: u32,
             variant: &'static str,
             v: &T,
-        ) -> Result<(), NotFinite> {
-            Compound { path: self.path, index: 0, key: None }.visit(format!(".{variant}"), v)
+        ) -> R {
+            self.compound()?.visit(format!(".{variant}"), v)
         }
-        fn serialize_seq(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
-        fn serialize_tuple(self, _: usize) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
-        fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
-        fn serialize_tuple_variant(
-            self,
-            _: &'static str,
-            _: u32,
-            _: &'static str,
-            _: usize,
-        ) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
-        fn serialize_map(self, _: Option<usize>) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
-        fn serialize_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
-        fn serialize_struct_variant(
-            self,
-            _: &'static str,
-            _: u32,
-            _: &'static str,
-            _: usize,
-        ) -> Result<Compound<'a>, NotFinite> {
-            Ok(Compound { path: self.path, index: 0, key: None })
-        }
+        opens_compound!('a;
+            serialize_seq(Option<usize>), serialize_tuple(usize), serialize_tuple_struct(&'static str, usize),
+            serialize_tuple_variant(&'static str, u32, &'static str, usize), serialize_map(Option<usize>),
+            serialize_struct(&'static str, usize), serialize_struct_variant(&'static str, u32, &'static str, usize),
+        );
     }
 
-    impl ser::SerializeSeq for Compound<'_> {
-        type Ok = ();
-        type Error = NotFinite;
-        fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
-            self.element(v)
-        }
-        fn end(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
+    /// The sequence-like traits (elements `[i]`) and the struct-like ones (fields `.name`).
+    macro_rules! compound {
+        ($($trait:ident :: $method:ident),*; $($struct_trait:ident),*) => {
+            $(impl ser::$trait for Compound<'_> {
+                type Ok = ();
+                type Error = NotFinite;
+                fn $method<T: Serialize + ?Sized>(&mut self, v: &T) -> R {
+                    self.element(v)
+                }
+                fn end(self) -> R {
+                    Ok(())
+                }
+            })*
+            $(impl ser::$struct_trait for Compound<'_> {
+                type Ok = ();
+                type Error = NotFinite;
+                fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> R {
+                    self.visit(format!(".{key}"), v)
+                }
+                fn end(self) -> R {
+                    Ok(())
+                }
+            })*
+        };
     }
-    impl ser::SerializeTuple for Compound<'_> {
-        type Ok = ();
-        type Error = NotFinite;
-        fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
-            self.element(v)
-        }
-        fn end(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-    }
-    impl ser::SerializeTupleStruct for Compound<'_> {
-        type Ok = ();
-        type Error = NotFinite;
-        fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
-            self.element(v)
-        }
-        fn end(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-    }
-    impl ser::SerializeTupleVariant for Compound<'_> {
-        type Ok = ();
-        type Error = NotFinite;
-        fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
-            self.element(v)
-        }
-        fn end(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-    }
+    compound!(
+        SerializeSeq::serialize_element, SerializeTuple::serialize_element,
+        SerializeTupleStruct::serialize_field, SerializeTupleVariant::serialize_field;
+        SerializeStruct, SerializeStructVariant
+    );
+
     impl ser::SerializeMap for Compound<'_> {
         type Ok = ();
         type Error = NotFinite;
-        fn serialize_key<T: Serialize + ?Sized>(&mut self, k: &T) -> Result<(), NotFinite> {
+        fn serialize_key<T: Serialize + ?Sized>(&mut self, k: &T) -> R {
             // The key names the value (a flattened struct serializes as a map).
             self.key = match serde_json::to_value(k) {
                 Ok(serde_json::Value::String(s)) => Some(s),
@@ -500,33 +458,13 @@ mod finite {
             };
             self.visit("[key]".into(), k)
         }
-        fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), NotFinite> {
+        fn serialize_value<T: Serialize + ?Sized>(&mut self, v: &T) -> R {
             match self.key.take() {
                 Some(k) => self.visit(format!(".{k}"), v),
                 None => self.element(v),
             }
         }
-        fn end(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-    }
-    impl ser::SerializeStruct for Compound<'_> {
-        type Ok = ();
-        type Error = NotFinite;
-        fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
-            self.visit(format!(".{key}"), v)
-        }
-        fn end(self) -> Result<(), NotFinite> {
-            Ok(())
-        }
-    }
-    impl ser::SerializeStructVariant for Compound<'_> {
-        type Ok = ();
-        type Error = NotFinite;
-        fn serialize_field<T: Serialize + ?Sized>(&mut self, key: &'static str, v: &T) -> Result<(), NotFinite> {
-            self.visit(format!(".{key}"), v)
-        }
-        fn end(self) -> Result<(), NotFinite> {
+        fn end(self) -> R {
             Ok(())
         }
     }
@@ -598,5 +536,89 @@ pub fn progress(len: u64, what: &str, items: &str) -> indicatif::ProgressBar {
 pub fn print_warnings(warnings: &[caisson::analysis::checks::Warning]) {
     for w in warnings {
         eprintln!("Warning: {}", w.message);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::check_finite_fields;
+    use serde::Serialize;
+    use std::collections::BTreeMap;
+
+    #[derive(Serialize, Clone)]
+    struct Flat {
+        x: f64,
+    }
+
+    #[derive(Serialize, Clone)]
+    enum Shape {
+        Newtype(f64),
+        Fields { y: f64 },
+        Tuple(f64, f64),
+        Unit,
+    }
+
+    #[derive(Serialize, Clone)]
+    struct Inner {
+        a: f64,
+        b: Option<f64>,
+        v: Vec<f32>,
+        t: (f64, f64),
+        m: BTreeMap<String, f64>,
+    }
+
+    #[derive(Serialize, Clone)]
+    struct Report {
+        #[serde(flatten)]
+        flat: Flat,
+        name: &'static str,
+        n: u64,
+        i: i32,
+        yes: bool,
+        inner: Inner,
+        shapes: Vec<Shape>,
+    }
+
+    fn report() -> Report {
+        Report {
+            flat: Flat { x: 1.0 },
+            name: "r",
+            n: 3,
+            i: -1,
+            yes: true,
+            inner: Inner {
+                a: 2.0,
+                b: None,
+                v: vec![1.0, 2.0, 3.0],
+                t: (4.0, 5.0),
+                m: BTreeMap::from([("k".to_string(), 6.0)]),
+            },
+            shapes: vec![Shape::Newtype(7.0), Shape::Fields { y: 8.0 }, Shape::Tuple(9.0, 10.0), Shape::Unit],
+        }
+    }
+
+    /// Every non-finite number is found with the path of its field; finite values, null
+    /// (`None`), text, integers and booleans pass.
+    #[test]
+    fn non_finite_numbers_are_named_by_their_path() {
+        assert_eq!(check_finite_fields(&report(), "r"), Ok(()));
+        type Edit = fn(&mut Report);
+        let cases: Vec<(Edit, &str)> = vec![
+            (|r| r.flat.x = f64::NAN, "r.x is NaN"),
+            (|r| r.inner.a = f64::INFINITY, "r.inner.a is inf"),
+            (|r| r.inner.b = Some(f64::NEG_INFINITY), "r.inner.b is -inf"),
+            (|r| r.inner.v[2] = f32::NAN, "r.inner.v[2] is NaN"),
+            (|r| r.inner.t.1 = f64::NAN, "r.inner.t[1] is NaN"),
+            (|r| r.inner.m.insert("k".into(), f64::NAN).map_or((), |_| ()), "r.inner.m.k is NaN"),
+            (|r| r.shapes[0] = Shape::Newtype(f64::NAN), "r.shapes[0].Newtype is NaN"),
+            (|r| r.shapes[1] = Shape::Fields { y: f64::NAN }, "r.shapes[1].y is NaN"),
+            (|r| r.shapes[2] = Shape::Tuple(1.0, f64::NAN), "r.shapes[2][1] is NaN"),
+        ];
+        for (edit, want) in &cases {
+            let mut r = report();
+            edit(&mut r);
+            assert_eq!(check_finite_fields(&r, "r"), Err(want.to_string()));
+        }
+        assert_eq!(cases.len(), 9);
     }
 }

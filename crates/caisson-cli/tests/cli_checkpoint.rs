@@ -3,69 +3,15 @@
 //! on the same checkpoint refuses up front (and a stale lock is taken over); a resumed run is
 //! byte-identical to an uninterrupted one in every output file.
 
-use assert_cmd::Command;
+mod support;
+
 use std::path::{Path, PathBuf};
 use std::time::Duration;
+use support::{design_text, s, write};
 
-/// A prototype caisson light enough that the largest waves slide it, with short storms (a life
-/// takes milliseconds). Same as `cli_design.rs`.
-fn design_text(lives: usize, seed: u64) -> String {
-    format!(
-        r#"
-[caisson]
-width_m = 20.0
-length_m = 1.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 4500.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-damping_mode = "elastic"
-vertical_damping = "springs"
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[design]
-life_years = 5
-lives = {lives}
-seed = {seed}
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.2
-tidal_range_m = 2.0
-"#
-    )
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn caisson() -> Command {
-    let mut c = Command::cargo_bin("caisson").unwrap();
-    c.timeout(Duration::from_secs(120));
-    c
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
+/// The time limit of one command (runs of many lives on a loaded machine).
+fn caisson() -> assert_cmd::Command {
+    support::caisson_within(120)
 }
 
 /// Run `design FILE --out OUT --stop-after N` (exit 1: the lives kept in the checkpoint).
@@ -100,8 +46,8 @@ fn set_lines(path: &Path, lines: &[String]) {
 #[test]
 fn resume_refuses_a_foreign_life_line() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(6, 3));
-    let g = write(dir.path(), "g.toml", &design_text(6, 4));
+    let f = write(dir.path(), "d.toml", &design_text(6, 3, ""));
+    let g = write(dir.path(), "g.toml", &design_text(6, 4, ""));
     let cp = partial(&f, &dir.path().join("a"), 2);
     let other = partial(&g, &dir.path().join("b"), 4);
     // Life 3 of another scenario (another seed) appended to this checkpoint.
@@ -114,7 +60,7 @@ fn resume_refuses_a_foreign_life_line() {
 #[test]
 fn resume_refuses_a_duplicated_life_line() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(6, 3));
+    let f = write(dir.path(), "d.toml", &design_text(6, 3, ""));
     let out = dir.path().join("a");
     let cp = partial(&f, &out, 3);
     let mut l = lines(&cp);
@@ -126,7 +72,7 @@ fn resume_refuses_a_duplicated_life_line() {
 #[test]
 fn resume_refuses_an_edited_life_line() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(6, 3));
+    let f = write(dir.path(), "d.toml", &design_text(6, 3, ""));
     let out = dir.path().join("a");
     let cp = partial(&f, &out, 3);
     let mut l = lines(&cp);
@@ -147,7 +93,7 @@ fn resume_refuses_an_edited_life_line() {
 fn resume_refuses_two_torn_lines_merged_into_one() {
     // What two runs writing one checkpoint used to leave: a torn line followed by another line.
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(6, 3));
+    let f = write(dir.path(), "d.toml", &design_text(6, 3, ""));
     let out = dir.path().join("a");
     let cp = partial(&f, &out, 3);
     let mut l = lines(&cp);
@@ -161,7 +107,7 @@ fn resume_refuses_two_torn_lines_merged_into_one() {
 #[test]
 fn resume_cuts_away_a_torn_last_line() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(8, 3));
+    let f = write(dir.path(), "d.toml", &design_text(8, 3, ""));
     let out = dir.path().join("a");
     let cp = partial(&f, &out, 3);
     let l = lines(&cp);
@@ -183,7 +129,7 @@ fn resume_cuts_away_a_torn_last_line() {
 #[test]
 fn resume_refuses_a_checkpoint_of_an_older_format() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(6, 3));
+    let f = write(dir.path(), "d.toml", &design_text(6, 3, ""));
     let out = dir.path().join("a");
     let cp = partial(&f, &out, 2);
     let original = lines(&cp);
@@ -200,7 +146,7 @@ fn resume_refuses_a_checkpoint_of_an_older_format() {
 #[test]
 fn a_second_run_into_the_same_out_is_refused_while_the_first_runs() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(100_000, 3));
+    let f = write(dir.path(), "d.toml", &design_text(100_000, 3, ""));
     let out = dir.path().join("out");
     let mut first = std::process::Command::new(assert_cmd::cargo::cargo_bin("caisson"))
         .args(["design", s(&f), "--threads", "1", "--out", s(&out)])
@@ -224,7 +170,7 @@ fn a_second_run_into_the_same_out_is_refused_while_the_first_runs() {
     first.kill().unwrap();
     first.wait().unwrap();
     assert!(lock.exists(), "SIGKILL leaves the lock");
-    let g = write(dir.path(), "small.toml", &design_text(3, 3));
+    let g = write(dir.path(), "small.toml", &design_text(3, 3, ""));
     let o = caisson().args(["design", s(&g), "--resume", "--out", s(&out)]).output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     // The checkpoint is of another `lives` but the same fingerprint: it resumes.
@@ -237,7 +183,7 @@ fn a_second_run_into_the_same_out_is_refused_while_the_first_runs() {
 fn resume_is_byte_identical_in_every_output_file() {
     let dir = tempfile::tempdir().unwrap();
     // Enough lives that a float that does not round-trip would show (1 ulp in ~8 % of rows).
-    let f = write(dir.path(), "d.toml", &design_text(60, 3));
+    let f = write(dir.path(), "d.toml", &design_text(60, 3, ""));
     let full = dir.path().join("full");
     let part = dir.path().join("part");
     let reference =

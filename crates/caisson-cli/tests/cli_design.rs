@@ -1,64 +1,19 @@
 //! `caisson design`: JSON contract, thread-count determinism, checkpoint and resume (after
 //! `--stop-after` and after a real kill), and keyed errors for `[design]`.
 
-use assert_cmd::Command;
+mod support;
+
 use serde_json::Value;
-use std::path::{Path, PathBuf};
+use support::write;
 
-/// A prototype caisson light enough that the largest waves slide it, with short storms so that a
-/// life takes milliseconds.
+/// The time limit of one command (runs of many lives on a loaded machine).
+fn caisson() -> assert_cmd::Command {
+    support::caisson_within(120)
+}
+
+/// The small design (`tests/data/small_design.toml`, seed 3) with `lives` lives and `extra`.
 fn design_text(lives: usize, extra: &str) -> String {
-    format!(
-        r#"
-[caisson]
-width_m = 20.0
-length_m = 1.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 4500.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-damping_mode = "elastic"
-vertical_damping = "springs"
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[design]
-life_years = 5
-lives = {lives}
-seed = 3
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.2
-tidal_range_m = 2.0
-{extra}
-"#
-    )
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn caisson() -> Command {
-    Command::cargo_bin("caisson").unwrap()
+    support::design_text(lives, 3, extra)
 }
 
 fn json_of(out: &[u8]) -> Value {

@@ -6,55 +6,7 @@
 mod support;
 
 use std::path::{Path, PathBuf};
-use support::{caisson, refused, write};
-
-/// The small design of `cli_design.rs` (a life takes milliseconds), with `seed`.
-fn design_text(lives: usize, seed: u64) -> String {
-    format!(
-        r#"
-[caisson]
-width_m = 20.0
-length_m = 1.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 4500.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-damping_mode = "elastic"
-vertical_damping = "springs"
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[design]
-life_years = 5
-lives = {lives}
-seed = {seed}
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.2
-tidal_range_m = 2.0
-"#
-    )
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
+use support::{caisson, design_text, refused, s, write};
 
 /// The output files of a design run (the checkpoint is compared apart: its lines are in the order
 /// the lives finished).
@@ -104,7 +56,7 @@ struct Setup {
 }
 
 fn setup(dir: &Path) -> Setup {
-    let file = write(dir, "d.toml", &design_text(24, 3));
+    let file = write(dir, "d.toml", &design_text(24, 3, ""));
     let full = dir.join("full");
     let o = caisson().args(["design", s(&file), "--json", "--threads", "2", "--out", s(&full)]).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -177,7 +129,7 @@ fn merge_refuses_overlaps_gaps_and_foreign_or_edited_shards_and_says_which() {
     merge_refused(&st.file, &[a, b], &out, &["lives 16..24 are in no shard", "--life-range 16..24"]);
     cases += 2;
     // Another scenario (another seed): another fingerprint.
-    let g = write(dir.path(), "g.toml", &design_text(24, 4));
+    let g = write(dir.path(), "g.toml", &design_text(24, 4, ""));
     let foreign = dir.path().join("foreign");
     shard(&g, "7..16", &foreign, &[]);
     let f_name = format!("shard {}", foreign.display());
@@ -256,7 +208,7 @@ fn a_shard_resumes_after_stop_after_and_merges_to_the_same_result() {
 #[test]
 fn bad_life_ranges_are_refused_naming_the_option() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "d.toml", &design_text(4, 3));
+    let f = write(dir.path(), "d.toml", &design_text(4, 3, ""));
     let out = dir.path().join("out");
     let mut cases = 0;
     for bad in ["5..5", "7..3", "0..10000001", "3", "a..b", "-1..4", "1...4"] {

@@ -4,14 +4,16 @@
 
 1. Call overhead of caisson.run on a short scenario (table5_triangle.toml cut to 100 steps, no
    history) against the same run timed inside Rust in the same process.
-2. caisson.loads.evaluate on 10^5 heights (wall and CPU; `--loads`: only this, e.g. with
-   PYTHONPATH pointing at another build's python/ directory to compare two builds).
+2. caisson.loads.evaluate on 10^5 heights (wall and CPU, one thread; wall with `threads=2` where
+   the build has it; `--loads`: only this, e.g. with PYTHONPATH pointing at another build's
+   python/ directory to compare two builds).
 3. (--dask) The Dask sweep (examples/python/sweep_dask.py) on 1 and 2 workers.
 """
 
 from __future__ import annotations
 
 import argparse
+import inspect
 import re
 import statistics
 import subprocess
@@ -37,6 +39,13 @@ def best_of(f, repeats: int, number: int) -> float:
     return statistics.median(times)
 
 
+def timed(f) -> tuple[float, float]:
+    """(wall, CPU of this process) seconds of one call."""
+    c0, t0 = time.process_time(), time.perf_counter()
+    f()
+    return time.perf_counter() - t0, time.process_time() - c0
+
+
 def main() -> None:
     a = argparse.ArgumentParser()
     a.add_argument("--dask", action="store_true")
@@ -53,14 +62,12 @@ def main() -> None:
     pari = caisson.Scenario.from_toml(ROOT / "examples" / "pari_breaking_loads.toml")
     heights = np.linspace(0.01, 0.6, 100_000)
     caisson.loads.evaluate(pari, heights[:1000])
-    wall, cpu = [], []
-    for _ in range(7):
-        c0, t0 = time.process_time(), time.perf_counter()
-        caisson.loads.evaluate(pari, heights)
-        wall.append(time.perf_counter() - t0)
-        cpu.append(time.process_time() - c0)
+    wall, cpu = zip(*(timed(lambda: caisson.loads.evaluate(pari, heights)) for _ in range(7)))
     t = statistics.median(wall)
     print(f"caisson.loads.evaluate, 1e5 heights, median of 7: {t:.3f} s wall ({t / 1e5 * 1e6:.2f} µs per wave), {statistics.median(cpu):.3f} s CPU")
+    if "threads" in inspect.signature(caisson.loads.evaluate).parameters:  # builds after issue 10's second speed-up
+        two = statistics.median(timed(lambda: caisson.loads.evaluate(pari, heights, threads=2))[0] for _ in range(7))
+        print(f"  threads=2: {two:.3f} s wall")
     if hasattr(_core, "_bench_loads_s"):  # builds after the speed-up
         model = statistics.median(_core._bench_loads_s(pari._core, heights, 0) for _ in range(7))
         report = statistics.median(_core._bench_loads_s(pari._core, heights, 1) for _ in range(7))

@@ -4,7 +4,8 @@
 //! have the same keys in the same order (checked). Numbers go to float or integer columns
 //! (`None` as NaN), strings and booleans to their own.
 //!
-//! Speed (`caisson.loads.evaluate` writes 80 columns of 10^5 rows): the first row fixes the
+//! Used for the spectrum's points (`caisson.loads.evaluate` has a hand-written table,
+//! `loads_table.rs`, without serde's walk). Speed: the first row fixes the
 //! columns ([`Layout`]); the values then go into one numpy array of `columns × rows` 64-bit
 //! slots allocated by numpy (which asks for huge pages: a page fault per 2 MB, not per 4 kB), a
 //! float or an integer straight into its slot after a check of its key by pointer, and each

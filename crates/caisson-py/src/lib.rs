@@ -11,6 +11,7 @@
 //! `progress(done, total)`.
 
 mod columns;
+mod loads_table;
 
 use caisson::analysis::campaign::run_campaign;
 use caisson::analysis::checks::{
@@ -508,14 +509,17 @@ fn regime_error(py: Python<'_>, e: caisson::loads::regime::RegimeError) -> PyErr
 }
 
 /// The `caisson loads --json` quantities of many waves (heights and periods of equal length) as
-/// columns: (flattened key names, values). Keys are joined by "." (`goda.horizontal_force_kn_per_m`).
+/// columns: (flattened key names, values) ([`loads_table`]). Keys are joined by "."
+/// (`goda.horizontal_force_kn_per_m`). `threads`: 1 this thread, 0 one per core, n a local pool.
 #[pyfunction]
+#[pyo3(signature = (sc, heights_m, periods_s, threads=1))]
 fn loads_columns<'py>(
     py: Python<'py>,
     sc: &CoreScenario,
     heights_m: PyReadonlyArray1<'py, f64>,
     periods_s: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Vec<String>, Vec<Py<PyAny>>)> {
+    threads: usize,
+) -> PyResult<loads_table::Table> {
     let sc = &sc.sc;
     let ws = sc.waves_for("caisson.loads.evaluate").map_err(|e| lib_error(py, e, None))?;
     let (h, t) = (heights_m.as_slice()?, periods_s.as_slice()?);
@@ -534,24 +538,8 @@ fn loads_columns<'py>(
         }
     }
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    let row = |h: f64, t: f64| -> Result<LoadsReport, String> {
-        let loads = ws.model.evaluate(h, t).map_err(|e| e.to_string())?;
-        let safety = ws.model.safety(&loads, w, mu);
-        Ok(LoadsReport::new(ws, &loads, &safety, w, mu))
-    };
-    // The first row fixes the columns (the scenario's own wave when there is no row).
-    let first = match (h.first(), t.first()) {
-        (Some(&h0), Some(&t0)) => row(h0, t0),
-        _ => row(ws.height_m(), ws.period_s()),
-    };
-    let first = first.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))?;
-    let table = columns::build(py, h.len(), &first, |table| -> Result<(), String> {
-        for (&h, &t) in h.iter().zip(t) {
-            table.push_row(&row(h, t)?)?;
-        }
-        Ok(())
-    })?;
-    table.map_err(|e| scenario_error(py, e, Some("[waves] regime".into()), None, None))
+    loads_table::build(py, ws, w, mu, h, t, threads)?
+        .map_err(|(_, e)| scenario_error(py, e, Some("[waves] regime".into()), None, None))
 }
 
 /// Linear wavelength L(T, h), m, element-wise.

@@ -24,6 +24,20 @@ def cli_path() -> Path:
     return p
 
 
+def turns_while(f, *args) -> int:
+    """How many times a loop in this thread turned while `f(*args)` ran in another thread: a few
+    when `f` holds the GIL, many when it releases it."""
+    import threading
+
+    t = threading.Thread(target=f, args=args)
+    count = 0
+    t.start()
+    while t.is_alive():
+        count += 1
+    t.join()
+    return count
+
+
 def cli(*args: str, check: bool = True) -> subprocess.CompletedProcess:
     r = subprocess.run([str(cli_path()), *map(str, args)], capture_output=True, text=True, cwd=ROOT)
     if check and r.returncode != 0:

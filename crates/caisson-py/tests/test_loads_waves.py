@@ -5,10 +5,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pandas as pd
 import pytest
 
 import caisson
-from conftest import EXAMPLES, cli_json
+from conftest import EXAMPLES, cli_json, turns_while
 
 LOAD_EXAMPLES = ["pari_breaking_loads.toml", "pari_nonbreaking_loads.toml", "design_breakwater.toml", "fragility.toml"]
 
@@ -58,8 +59,8 @@ def test_evaluate_is_the_report_of_each_height():
 
 
 def test_every_column_of_every_row_is_the_report_of_its_height():
-    """The columns (built from the first row's layout, widened when a later row has a value where
-    the first had null) hold every key of each height's `caisson loads --json`, exactly."""
+    """The columns hold every key of each height's `caisson loads --json`, exactly, in the JSON's
+    order, including the keys that are null for some heights and numbers for others."""
     sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
     # The first wave (2 m: breaking, no rise-time distribution, no heel pressure) has nulls where
     # later waves have numbers; both regimes.
@@ -82,6 +83,47 @@ def test_every_column_of_every_row_is_the_report_of_its_height():
             checked += 1
     assert checked == len(heights) * len(frame.columns)
     assert widened > 0  # some column was null in the first row and has values later
+    order = [k for k in first if k not in ("caisson_version", "results_version")]
+    assert list(frame.columns) == order  # the struct order of the JSON
+    kinds = {str(frame[k].dtype) for k in frame.columns}
+    assert kinds == {"float64", "bool", "category"}, kinds
+    texts = [k for k in frame.columns if str(frame[k].dtype) == "category"]
+    assert texts == ["wave.kind", "regime.regime", "regime.breaker_criterion", "rise_time.model", "time_history.load_shape"]
+
+
+def test_evaluate_is_the_same_on_any_number_of_threads():
+    """Blocks of rows on a local pool: the table (numbers, flags, and the text columns' codes and
+    categories, in order of first appearance) is the one of one thread; an error is the first
+    row's."""
+    sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
+    # 12 000 waves in blocks of 2048 rows: the first blocks break, the last ones do not, so the
+    # codes of the later blocks are renumbered.
+    heights = np.concatenate([np.linspace(0.6, 0.4, 6000), np.linspace(0.3, 0.05, 6000)])
+    one = caisson.loads.evaluate(sc, heights)
+    assert list(one["regime.regime"].cat.categories) == ["breaking", "non-breaking"]
+    assert one["regime.regime"].iloc[0] == "breaking" and one["regime.regime"].iloc[-1] == "non-breaking"
+    for threads in (2, 3, 0):
+        many = caisson.loads.evaluate(sc, heights, threads=threads)
+        pd.testing.assert_frame_equal(many, one, check_exact=True)
+        assert many.attrs == one.attrs
+    # A wave that cannot be non-breaking (H ≥ H_br) at rows 7000 and 11 000: the error of row 7000.
+    forced = sc.replace(waves={"regime": "non-breaking", "height_m": 0.1})
+    h = np.full(12_000, 0.1)
+    h[7000], h[11_000] = 0.5, 0.55
+    messages = set()
+    for threads in (1, 2, 3):
+        with pytest.raises(caisson.ScenarioError) as e:
+            caisson.loads.evaluate(forced, h, threads=threads)
+        messages.add(str(e.value))
+    assert len(messages) == 1 and "0.5" in messages.pop()
+
+
+def test_evaluate_releases_the_gil():
+    sc = caisson.Scenario.from_toml(EXAMPLES / "pari_breaking_loads.toml")
+    heights = np.linspace(0.05, 0.5, 400_000)
+    count = turns_while(caisson.loads.evaluate, sc, heights)
+    # With the GIL held while the waves are evaluated, this loop could not have turned.
+    assert count > 1000, count
 
 
 def test_evaluate_broadcasts_heights_and_periods():

@@ -4,14 +4,13 @@ series from numpy; wave trains; threads, progress and the GIL."""
 from __future__ import annotations
 
 import json
-import threading
 
 import numpy as np
 import pandas as pd
 import pytest
 
 import caisson
-from conftest import EXAMPLES, cli, cli_json, read_csv_exact
+from conftest import EXAMPLES, cli, cli_json, read_csv_exact, turns_while
 
 
 @pytest.mark.parametrize("name", ["table5_triangle.toml", "table5_series.toml", "fifteen_waves.toml"])
@@ -82,12 +81,7 @@ def test_wave_trains_match_the_cli_and_do_not_depend_on_threads():
 def test_runs_release_the_gil():
     sc = caisson.Scenario.from_toml(EXAMPLES / "design_breakwater.toml")
     d = caisson.Design(sc, lives=60)
-    t = threading.Thread(target=d.simulate_lives)
-    count = 0
-    t.start()
-    while t.is_alive():
-        count += 1
-    t.join()
+    count = turns_while(d.simulate_lives)
     # With the GIL held by the run, this loop could not have turned while the lives ran.
     assert count > 1000, count
 

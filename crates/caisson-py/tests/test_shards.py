@@ -11,53 +11,17 @@ import pandas as pd
 import pytest
 
 import caisson
-from conftest import assert_same_json, cli, read_csv_exact
+from conftest import ROOT, assert_same_json, cli, read_csv_exact
 
 LIVES = 12
 # Out of order and of unequal sizes: 0..5, 5..9, 9..12.
 RANGES = [(5, 9), (0, 5), (9, 12)]
 
-# The small design of crates/caisson-cli/tests/cli_design.rs (12 lives of 5 years, about 0.1 s),
-# with a failure limit of 2 mm so that most lives fail: the merged design.json has warnings.
-DESIGN = f"""
-[caisson]
-width_m = 20.0
-length_m = 1.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 4500.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-damping_mode = "elastic"
-vertical_damping = "springs"
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[design]
-life_years = 5
-lives = {LIVES}
-seed = 3
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.2
-tidal_range_m = 2.0
-failure_sliding_m = 0.002
-"""
+# The small design of the CLI's design tests (crates/caisson-cli/tests/data/small_design.toml: 12
+# lives of 5 years, about 0.1 s), with a failure limit of 2 mm so that most lives fail: the merged
+# design.json has warnings.
+DESIGN = (ROOT / "crates/caisson-cli/tests/data/small_design.toml").read_text() + "failure_sliding_m = 0.002\n"
+assert f"\nlives = {LIVES}\n" in DESIGN and DESIGN.rstrip().endswith("failure_sliding_m = 0.002")
 
 
 @pytest.fixture

@@ -1,4 +1,5 @@
-//! Helpers shared by the hardening tests (limits, safe writes, errors and interrupts).
+//! Helpers shared by the CLI tests: the binary with a time limit, files, refusals, and the small
+//! design of the design, checkpoint and shard tests.
 #![allow(dead_code)]
 
 use assert_cmd::Command;
@@ -15,9 +16,34 @@ pub fn example(name: &str) -> String {
 
 /// The binary with a time limit: a refused option must be refused at once, not after a hang.
 pub fn caisson() -> Command {
+    caisson_within(60)
+}
+
+/// The binary with a time limit of `secs` seconds (runs of many lives on a loaded machine).
+pub fn caisson_within(secs: u64) -> Command {
     let mut c = Command::cargo_bin("caisson").expect("the caisson binary is built");
-    c.timeout(Duration::from_secs(60));
+    c.timeout(Duration::from_secs(secs));
     c
+}
+
+/// A path as a command-line argument.
+pub fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// The small design of `tests/data/small_design.toml` (also read by the Python shard tests; a
+/// life takes milliseconds) with `lives` lives, `seed`, and the lines `extra` added to its
+/// `[design]` table.
+pub fn design_text(lives: usize, seed: u64, extra: &str) -> String {
+    const TEXT: &str = include_str!("../data/small_design.toml");
+    let (lives_line, seed_line) = ("\nlives = 12\n", "\nseed = 3\n");
+    assert!(TEXT.contains(lives_line) && TEXT.contains(seed_line) && TEXT.ends_with('\n'));
+    let text = TEXT.replacen(lives_line, &format!("\nlives = {lives}\n"), 1).replacen(
+        seed_line,
+        &format!("\nseed = {seed}\n"),
+        1,
+    );
+    format!("{text}{extra}\n")
 }
 
 pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {

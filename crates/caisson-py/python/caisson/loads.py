@@ -18,15 +18,18 @@ def report(scenario) -> dict:
     return json.loads(_core.loads_report(scenario._core))
 
 
-def evaluate(scenario, heights_m: Any, period_s: Any = None) -> pd.DataFrame:
+def evaluate(scenario, heights_m: Any, period_s: Any = None, *, threads: int = 1) -> pd.DataFrame:
     """The loads of ``caisson loads --json`` for many waves at the scenario's site and caisson.
 
     ``heights_m`` (incident wave heights, m) and ``period_s`` (default: the scenario's
     ``[waves] period_s``) broadcast against each other; one row per wave, in C order. Columns are
     the JSON keys joined by ``.``: ``wave.incident_height_m``, ``regime.regime``,
     ``goda.horizontal_force_kn_per_m``, ``impact.horizontal_force_kn_per_m``, ``safety.sliding``,
-    ... (per metre of breakwater; kN, kPa, m). A key that is ``null`` in the JSON is NaN (None for
-    text). ``caisson_version`` and ``results_version`` are in ``.attrs``.
+    ... (per metre of breakwater; kN, kPa, m): numbers as float64 (a ``null`` of the JSON is NaN),
+    flags as bool, text (``wave.kind``, ``regime.regime``, ...) as pandas Categoricals.
+    ``caisson_version`` and ``results_version`` are in ``.attrs``. ``threads``: 1 (default) this
+    thread, 0 one per core, n a local pool of n (the same table on any number); the GIL is
+    released while the waves are evaluated.
     """
     h = np.asarray(heights_m, dtype=np.float64)
     if period_s is None:
@@ -34,26 +37,19 @@ def evaluate(scenario, heights_m: Any, period_s: Any = None) -> pd.DataFrame:
     h, t = np.broadcast_arrays(h, np.asarray(period_s, dtype=np.float64))
     h = np.ascontiguousarray(h).ravel()
     t = np.ascontiguousarray(t).ravel()
-    names, cols = _core.loads_columns(scenario._core, h, t)
-    return _frame(names, cols, len(h))
+    names, cols = _core.loads_columns(scenario._core, h, t, threads)
+    return _frame(names, cols)
 
 
-def _frame(names, cols, rows: int) -> pd.DataFrame:
-    """A DataFrame of the columns of ``_core`` (numbers: numpy arrays, used without a copy;
-    text: (codes, distinct values), code 2^32 − 1 null, as pandas' default text dtype)."""
+def _frame(names, cols) -> pd.DataFrame:
+    """A DataFrame of the columns of ``_core.loads_columns`` (numbers and flags: numpy arrays,
+    used without a copy; text: (int32 codes, distinct values), made a Categorical)."""
     data = {}
     for name, col in zip(names, cols):
         if isinstance(col, tuple):
             codes, values = col
-            # The distinct values as pandas makes text by default (None: missing), then one
-            # vectorised take: the column pandas would make of the strings, faster.
-            lookup = pd.Series(list(values) + [None]).array
-            col = lookup.take(np.minimum(codes, len(values)).astype(np.intp))
+            col = pd.Categorical.from_codes(codes, categories=pd.Index(values, dtype=object))
         data[name] = col
-    attrs = {}
-    for k in ("caisson_version", "results_version"):
-        v = data.pop(k)[0] if rows else None
-        attrs[k] = v.item() if isinstance(v, np.generic) else v
     frame = pd.DataFrame(data, copy=False)
-    frame.attrs.update(attrs)
+    frame.attrs.update(caisson_version=_core.VERSION, results_version=_core.RESULTS_VERSION)
     return frame

@@ -1,4 +1,8 @@
 //! `caisson loads`: `loads.json` (keys in docs/waves.md). Per metre of breakwater; kN, kPa, m.
+//!
+//! [`LoadsReport::columns`] hands the same values, without serde, to a [`ColumnSink`]: the table
+//! of many waves of the Python package's `caisson.loads.evaluate` (tests/loads_columns.rs keeps
+//! it in step with the JSON: every key, in order, every value bit for bit).
 
 use super::{kn, Provenance};
 use crate::analysis::checks::Warning;
@@ -267,5 +271,103 @@ impl LoadsReport {
             history: None,
             warnings: Vec::new(),
         }
+    }
+}
+
+/// Where [`LoadsReport::columns`] puts a report's values, in the order of the JSON (struct order)
+/// and named by the keys joined by "." (`goda.horizontal_force_kn_per_m`). Left out: the
+/// provenance (`caisson_version`, `results_version`: the same for every row), `history` and
+/// `warnings` (not columns). The names are constants: a sink that only writes values ignores
+/// them at no cost.
+pub trait ColumnSink {
+    /// A number; `None` where the JSON has `null`.
+    fn number(&mut self, name: &'static str, x: Option<f64>);
+    /// A boolean.
+    fn flag(&mut self, name: &'static str, b: bool);
+    /// A text value (one of a few names per column).
+    fn text(&mut self, name: &'static str, s: &'static str);
+}
+
+/// A value of a report that is one column.
+trait Column {
+    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S);
+}
+
+/// `impl Column for T` calling `sink.method(name, value)`, for each `T => method(value)`.
+macro_rules! columns_of {
+    ($($t:ty => $method:ident(|$v:ident| $value:expr)),* $(,)?) => {
+        $(impl Column for $t {
+            #[inline(always)]
+            fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
+                let $v = self;
+                sink.$method(name, $value)
+            }
+        })*
+    };
+}
+
+columns_of!(
+    f64 => number(|x| Some(x)),
+    Option<f64> => number(|x| x),
+    bool => flag(|b| b),
+    &'static str => text(|s| s),
+    Regime => text(|r| r.name()),
+);
+
+impl Column for RiseTimeModel {
+    #[inline(always)]
+    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
+        // serde's lowercase names of the variants (checked against the JSON by the test).
+        let text = match self {
+            RiseTimeModel::Median => "median",
+            RiseTimeModel::Literal => "literal",
+        };
+        sink.text(name, text)
+    }
+}
+
+/// `sink` gets `report.group.field` named `"group.field"`, for each group and its fields.
+macro_rules! put_columns {
+    ($report:expr, $sink:expr; $($group:ident { $($field:ident),* $(,)? })*) => {
+        $($(
+            Column::put($report.$group.$field, concat!(stringify!($group), ".", stringify!($field)), $sink);
+        )*)*
+    };
+}
+
+impl LoadsReport {
+    /// Every value of the report's JSON but the provenance, `history` and `warnings`, in the
+    /// order of the JSON, to `sink` (see [`ColumnSink`]).
+    #[inline]
+    pub fn columns<S: ColumnSink>(&self, sink: &mut S) {
+        put_columns!(self, sink;
+            wave {
+                kind, incident_height_m, height_at_toe_m, limited_at_toe, toe_breaker_height_m, period_s,
+                angle_deg, toe_wavelength_m, deep_water_wavelength_m,
+            }
+            site {
+                water_density_kg_per_m3, depth_at_toe_m, depth_at_wall_m, base_depth_m, crest_freeboard_m,
+                width_m, length_m, seabed_slope, berm_width_m, depth_5h_seaward_m,
+            }
+            regime { regime, forced, breaker_criterion, breaker_height_at_wall_m }
+            goda {
+                alpha1, alpha2, alpha3, alpha_i, alpha_star, eta_star_m, p1_kpa, p2_kpa, p3_kpa, p4_kpa,
+                pu_kpa, horizontal_force_kn_per_m, horizontal_moment_base_kn_m_per_m, horizontal_lever_m,
+                uplift_force_kn_per_m, uplift_moment_heel_kn_m_per_m, uplift_from_heel_m,
+            }
+            sainflou {
+                depth_m, h0_m, pb_kpa, crest_force_kn_per_m, crest_moment_base_kn_m_per_m,
+                trough_base_pressure_kpa, trough_force_kn_per_m, trough_moment_base_kn_m_per_m,
+                trough_lever_m, suction_uplift_kn_per_m, suction_moment_heel_kn_m_per_m,
+            }
+            impact {
+                applied, breaking_depth_m, breaker_height_m, reduction, alpha_max, a_imp,
+                horizontal_force_kn_per_m, p1_kpa, horizontal_moment_base_kn_m_per_m, horizontal_lever_m,
+                uplift_force_kn_per_m, uplift_moment_heel_kn_m_per_m, uplift_from_heel_m,
+            }
+            rise_time { model, f_star, impulsive, median_s, log_std, max_s }
+            time_history { load_shape, alpha_qs, duration_ratio }
+            safety { mu, weight_in_water_kn_per_m, sliding, overturning, heel_pressure_kpa, resultant_from_heel_m }
+        );
     }
 }
