@@ -41,6 +41,9 @@ pub(super) struct FastPath {
     valid: bool,
     /// A spring of the committed state was slipping (its limit is e_d, not e_s).
     any_sliding: bool,
+    /// Every spring has the same slip position, the positions x_i ascend and there is a spring:
+    /// with equal limits, the stick test of the two outermost springs decides for all.
+    same_slips: bool,
     n: f64,
     sum_x: f64,
     sum_x2: f64,
@@ -112,13 +115,26 @@ impl Simulation {
         // Indexed over slices of one length, so that the compiler vectorizes the test.
         let n = fs.slip_m.len();
         let (x_m, slip_m, limit_m) = (&self.model.x_m[..n], &fs.slip_m[..n], &fs.limit_m[..n]);
-        let mut fails = 0u32;
-        for i in 0..n {
-            let (x, s) = (x_m[i], slip_m[i]);
-            fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, ux_n - s, cd_over_h));
-        }
-        if fails > 0 {
-            return None;
+        // Shared slip position and limit: κ N_i is monotonic in x_i (each rounded operation of
+        // N_i = −k_y (u_y − θ x_i) is), so the outermost springs have its extremes, and their
+        // test with a margin decides for every spring ([`SpringLaw::sticks_with_margin`]).
+        // Otherwise, or within the margin, every spring's own test.
+        //
+        // [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
+        let outer_stick = fs.same_slips && !fs.any_sliding && {
+            let (s, limit) = (slip_m[0], limit_m[0]);
+            let sticks = |x: f64| law.sticks_with_margin(s, limit, u[0], u[1] - u[2] * x, ux_n - s, cd_over_h);
+            sticks(x_m[0]) & sticks(x_m[n - 1])
+        };
+        if !outer_stick {
+            let mut fails = 0u32;
+            for i in 0..n {
+                let (x, s) = (x_m[i], slip_m[i]);
+                fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, ux_n - s, cd_over_h));
+            }
+            if fails > 0 {
+                return None;
+            }
         }
         let (a, b) = (-law.ky_n_per_m * u[1], law.ky_n_per_m * u[2]);
         let e_ref = u[0] - fs.s_ref_m;
@@ -197,6 +213,9 @@ impl Simulation {
             *limit = law.limit_m(*c);
             fs.any_sliding |= c.sliding;
         }
+        fs.same_slips = !self.state.springs.is_empty()
+            && self.state.springs.iter().all(|c| c.slip_m == s_ref_m)
+            && self.model.x_m.windows(2).all(|w| w[0] <= w[1]);
         fs.valid = true;
     }
 
@@ -390,6 +409,66 @@ mod tests {
         }
         assert_eq!(runs, 8);
         assert!(slid >= 2 && lifted >= 2, "{slid} runs slid, {lifted} lifted");
+    }
+
+    proptest::proptest! {
+        /// The outermost springs' test with the margin never says "all stick" when a spring
+        /// between would not stick by its own test: springs sharing the slip position and the
+        /// limit, trials about the friction cap (|e| from 0.5 to 1.5 e_s, either sign), the
+        /// normal forces from uniform to nearly lifted at either edge, dashpot terms from none to
+        /// larger than the cap, either sign. Also counts that the shortcut is taken at all.
+        #[test]
+        fn outermost_springs_decide_for_all(
+            e_rel in -1.5f64..1.5, theta_rel in -0.99f64..0.99, dashpot_rel in -1.5f64..1.5, slip in -1e-2f64..1e-2,
+        ) {
+            let (w, b, n) = (8240.0, 0.78, 10);
+            let law = crate::foundation::SpringLaw::new(1.5e8, 1.4e8, w, n, 0.6, 0.6);
+            let x: Vec<f64> = (0..n).map(|i| -0.5 * b + (i as f64 + 0.5) * b / n as f64).collect();
+            let uy = -w / 1.4e8;
+            let theta = theta_rel * uy.abs() / (0.5 * b);
+            let ux = slip + e_rel * law.stick_limit_m;
+            // c_d/h (e − e_n) = dashpot_rel × the cap of a spring at the mean normal force.
+            let c_over_h = 6e8;
+            let e_prev = (ux - slip) - dashpot_rel * law.kappa_per_m * (w / n as f64) * law.stick_limit_m / c_over_h;
+            let limit = law.stick_limit_m;
+            let each = |xi: f64| law.sticks(slip, limit, ux, uy - theta * xi, e_prev, c_over_h);
+            let outer = |xi: f64| law.sticks_with_margin(slip, limit, ux, uy - theta * xi, e_prev, c_over_h);
+            if outer(x[0]) && outer(x[n - 1]) {
+                for &xi in &x {
+                    proptest::prop_assert!(each(xi), "x = {xi}: the outermost springs stick, this one does not");
+                }
+            }
+        }
+    }
+
+    /// The margin of [`SpringLaw::sticks_with_margin`] is only a margin: away from the friction
+    /// cap (by more than 1e-9 of it) it decides as [`SpringLaw::sticks`], with and without a
+    /// dashpot term, on either side of the cap.
+    ///
+    /// [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
+    /// [`SpringLaw::sticks`]: crate::foundation::SpringLaw::sticks
+    #[test]
+    fn the_margin_declines_only_at_the_cap() {
+        let law = crate::foundation::SpringLaw::new(1.5e8, 1.4e8, 8240.0, 10, 0.6, 0.6);
+        let (uy, limit) = (-8240.0 / 1.4e8, law.stick_limit_m);
+        let (mut checked, mut sticking) = (0, 0);
+        for (c_over_h, de) in [(0.0, 0.0), (6e8, 1e-3 * limit), (6e8, -1e-3 * limit)] {
+            for k in -200..=200 {
+                // e from −1.5 to 1.5 e_s; the trial force is κ N e + c_d/h de.
+                let e = limit * 0.0075 * k as f64;
+                let f = law.kappa_per_m * (-law.ky_n_per_m * uy) * e + c_over_h * de;
+                let cap = law.kappa_per_m * (-law.ky_n_per_m * uy) * limit;
+                if (f.abs() - cap).abs() <= 1e-9 * cap {
+                    continue;
+                }
+                let each = law.sticks(0.0, limit, e, uy, e - de, c_over_h);
+                let outer = law.sticks_with_margin(0.0, limit, e, uy, e - de, c_over_h);
+                assert_eq!(each, outer, "e = {e}, dashpot term {}", c_over_h * de);
+                checked += 1;
+                sticking += usize::from(each);
+            }
+        }
+        assert!(checked > 1100 && sticking > 500 && sticking < checked - 200, "{sticking} of {checked} sticking");
     }
 
     fn sim_scale(springs: &[(f64, f64)]) -> f64 {

@@ -146,6 +146,28 @@ impl SpringLaw {
         (uy < 0.0) & (n > 0.0) & sticks
     }
 
+    /// [`Self::sticks`] with a margin: the trial force is within the friction cap by more than
+    /// 1e-12 of κ N_i (|e| + `limit_m`) + |c_d (e − e_n)/h|, far more than the rounding of the
+    /// trial (a few units in the last place of these terms). For springs that share the slip
+    /// position and the limit, and so e and the dashpot term, the test of the two with the
+    /// smallest and the largest κ N_i then implies [`Self::sticks`] of every spring between: in
+    /// exact arithmetic |κN e + C| − κN L plus the margin is convex in κN (a ≤ 0 at both ends is
+    /// ≤ 0 between), and the margin covers the rounding of each spring's own test.
+    #[inline(always)]
+    pub fn sticks_with_margin(
+        &self,
+        slip_m: f64,
+        limit_m: f64,
+        ux: f64,
+        uy: f64,
+        e_prev_m: f64,
+        c_over_h: f64,
+    ) -> bool {
+        let (n, kn, e, f_trial, _) = self.elastic_trial(slip_m, limit_m, ux, uy, e_prev_m, c_over_h);
+        let margin = 1e-12 * (kn * (e.abs() + limit_m) + (c_over_h * (e - e_prev_m)).abs());
+        (uy < 0.0) & (n > 0.0) & (f_trial.abs() + margin <= kn * limit_m)
+    }
+
     /// The response of a spring in state `c` known to stick at the trial (`ux`, `uy`) with
     /// N_i > 0 ([`Self::sticks`]): the `sticking` branch of [`Self::trial_with_dashpot`], the
     /// same numbers to the last bit.
