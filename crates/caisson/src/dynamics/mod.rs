@@ -190,6 +190,8 @@ pub struct StepView<'a> {
     pub state: &'a State,
     pub load: WaveForce,
     pub reaction: Reaction,
+    /// The springs' responses; empty on an all-sticking step for an observer that does not read
+    /// them ([`Observer::reads_springs`]).
     pub springs: &'a [SpringResponse],
     pub iterations: usize,
 }
@@ -202,6 +204,12 @@ pub trait Observer {
     /// the [`StepView`] (the base reaction) of every step.
     #[inline]
     fn observes(&self) -> bool {
+        true
+    }
+    /// Whether [`Self::observe`] reads [`StepView::springs`]; `false` spares the engine building
+    /// the springs' responses of an all-sticking step (the slice is then empty).
+    #[inline]
+    fn reads_springs(&self) -> bool {
         true
     }
 }
@@ -509,13 +517,15 @@ impl Simulation {
                 let it = c.iterations;
                 self.commit(h, c);
                 if obs.observes() {
-                    self.fill_sticking_responses();
+                    if obs.reads_springs() {
+                        self.fill_sticking_responses();
+                    }
                     obs.observe(&StepView {
                         t_s: self.state.t_s,
                         state: &self.state,
                         load: w,
                         reaction: self.reaction(),
-                        springs: &self.trial,
+                        springs: self.step_springs(),
                         iterations: it,
                     });
                 }
@@ -609,13 +619,15 @@ impl Simulation {
                     self.commit(h, c);
                     self.state.t_s = t1;
                     if obs.observes() {
-                        self.fill_sticking_responses();
+                        if obs.reads_springs() {
+                            self.fill_sticking_responses();
+                        }
                         obs.observe(&StepView {
                             t_s: t1,
                             state: &self.state,
                             load: w,
                             reaction: self.reaction(),
-                            springs: &self.trial,
+                            springs: self.step_springs(),
                             iterations: it,
                         });
                     }

@@ -25,8 +25,9 @@
 //! is taken exactly when the general one would find every spring in contact and sticking; the
 //! sums are then the same quantities added in another order (results equal to rounding,
 //! `crates/caisson/tests/sticking.rs`). The per-spring responses of an all-sticking step
-//! ([`Simulation::springs`]) are built only when asked for: for an observer that looks at the
-//! step, and at the end of a run; its base reaction ([`Simulation::reaction`]) is the closed form.
+//! ([`Simulation::springs`]) are built only when asked for: for an observer that reads them
+//! ([`super::Observer::reads_springs`]), and at the end of a run; its base reaction
+//! ([`Simulation::reaction`]) is the closed form.
 //!
 //! [`SpringLaw::sticks`]: crate::foundation::SpringLaw::sticks
 
@@ -234,6 +235,17 @@ impl Simulation {
         }
         fs.committed = fs.iterate;
         fs.pending = Some(PendingResponses { h, ux_prev_m });
+    }
+
+    /// The springs' responses of the committed step for an observer: empty if they are not
+    /// built (an observer that does not read them, [`super::Observer::reads_springs`]).
+    #[inline]
+    pub(super) fn step_springs(&self) -> &[super::SpringResponse] {
+        if self.fast.pending.is_some() {
+            &[]
+        } else {
+            &self.trial
+        }
     }
 
     /// Build the springs' responses (`self.trial`) of the committed all-sticking step, if they
@@ -469,6 +481,52 @@ mod tests {
             }
         }
         assert!(checked > 1100 && sticking > 500 && sticking < checked - 200, "{sticking} of {checked} sticking");
+    }
+
+    /// An observer that does not read the springs' responses.
+    #[derive(Default)]
+    struct Blind {
+        steps: usize,
+        without_springs: usize,
+    }
+    impl Observer for Blind {
+        fn observe(&mut self, s: &StepView<'_>) {
+            self.steps += 1;
+            if s.springs.is_empty() {
+                // Only an all-sticking step goes without them; its reaction is still there.
+                self.without_springs += 1;
+                assert!(s.reaction.contact_springs == 10 && s.reaction.sliding_springs == 0);
+                assert!(s.reaction.normal_n > 0.0);
+            } else {
+                assert_eq!(s.springs.len(), 10);
+            }
+        }
+        fn reads_springs(&self) -> bool {
+            false
+        }
+    }
+
+    /// `Observer::reads_springs() == false`: the all-sticking steps come without the springs'
+    /// responses (and only they), the others with them, the run's results and its final
+    /// responses are those of an observer that reads them, to the last bit.
+    #[test]
+    fn observers_may_go_without_the_springs() {
+        let load =
+            TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
+        let mut blind_sim = simulation(DampingMode::Elastic, VerticalDamping::Springs);
+        let mut blind = Blind::default();
+        blind_sim.run_until(0.2, &load, &mut blind).unwrap();
+        let mut sim = simulation(DampingMode::Elastic, VerticalDamping::Springs);
+        let mut rec = Record::default();
+        sim.run_until(0.2, &load, &mut rec).unwrap();
+        assert!(
+            blind.without_springs > 100 && blind.without_springs < blind.steps,
+            "{} of {}",
+            blind.without_springs,
+            blind.steps
+        );
+        assert_eq!(blind.steps, rec.0.len());
+        assert_eq!((blind_sim.state(), blind_sim.springs()), (sim.state(), sim.springs()));
     }
 
     fn sim_scale(springs: &[(f64, f64)]) -> f64 {
