@@ -49,6 +49,7 @@
 
 mod params;
 mod solve3;
+mod sticking;
 
 pub use params::{AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
 
@@ -214,6 +215,8 @@ pub struct StepView<'a> {
     pub state: &'a State,
     pub load: WaveForce,
     pub reaction: Reaction,
+    /// The springs' responses; empty on an all-sticking step for an observer that does not read
+    /// them ([`Observer::reads_springs`]).
     pub springs: &'a [SpringResponse],
     pub iterations: usize,
 }
@@ -226,6 +229,12 @@ pub trait Observer {
     /// the [`StepView`] (the base reaction) of every step.
     #[inline]
     fn observes(&self) -> bool {
+        true
+    }
+    /// Whether [`Self::observe`] reads [`StepView::springs`]; `false` spares the engine building
+    /// the springs' responses of an all-sticking step (the slice is then empty).
+    #[inline]
+    fn reads_springs(&self) -> bool {
         true
     }
 }
@@ -258,6 +267,10 @@ pub struct SolverStats {
     /// Shortest and longest accepted steps, s.
     pub min_step_s: f64,
     pub max_step_s: f64,
+    /// Newton iterates whose resisting force took the all-sticking fast path (`sticking`); not
+    /// reported (a measure of the engine's work, not a result).
+    #[serde(skip)]
+    pub sticking_iterates: u64,
 }
 
 /// A running simulation: model, solver controls, committed state and scratch.
@@ -271,6 +284,8 @@ pub struct Simulation {
     gravity: Vector3<f64>,
     /// Adaptive stepping: the next step to try, s.
     h_next: f64,
+    /// The all-sticking fast path's sums and scratch (`sticking`).
+    fast: sticking::FastPath,
 }
 
 struct Converged {
@@ -302,6 +317,7 @@ impl Simulation {
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
             h_next: solver.dt_s,
+            fast: sticking::FastPath::new(n),
         };
         sim.reset(load);
         sim
@@ -317,8 +333,10 @@ impl Simulation {
         self.state.a = [0.0; 3];
         self.state.springs.iter_mut().for_each(|s| *s = SpringState::default());
         self.h_next = self.solver.dt_s;
+        self.fast.invalidate();
         let p0 = self.load_vector(load.at(0.0));
-        let f = self.resisting_force(self.state.u, [0.0; 3], self.solver.dt_s);
+        // The general path: it leaves the springs' responses of the static equilibrium.
+        let f = self.general_force(self.state.u, [0.0; 3], self.solver.dt_s);
         let rhs = p0 - f;
         let a0 = self.model.mass.lu().solve(&rhs).unwrap_or_else(Vector3::zeros);
         self.state.a = [a0[0], a0[1], a0[2]];
@@ -333,6 +351,9 @@ impl Simulation {
     /// The base reaction of the committed step (of the static equilibrium after [`Self::new`]
     /// and [`Self::reset`]), from the springs' responses and the committed velocity.
     pub fn reaction(&self) -> Reaction {
+        if let Some(r) = self.sticking_reaction() {
+            return r;
+        }
         let v = self.state.v;
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let mut reaction = Reaction::default();
@@ -364,10 +385,23 @@ impl Simulation {
     }
 
     /// Resisting force f_S (springs, and their dashpots) at trial displacement `u` and velocity
-    /// `v`, from the committed spring states. Fills `self.trial` (what [`Self::tangent`] and
-    /// [`Self::reaction`] are summed from).
+    /// `v`, from the committed spring states: in closed form while every spring is in contact
+    /// and sticks (`sticking`, when [`SolverParams::sticking_fast_path`]), else spring by spring.
     #[inline]
     fn resisting_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
+        if self.solver.sticking_fast_path {
+            if let Some(f) = self.sticking_force(u, v, h) {
+                return f;
+            }
+        }
+        self.general_force(u, v, h)
+    }
+
+    /// [`Self::resisting_force`] spring by spring. Fills `self.trial` (what [`Self::tangent`]
+    /// and [`Self::reaction`] are summed from).
+    #[inline]
+    fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
+        self.fast.iterate = None;
         let cd_over_h = self.model.spring_dashpot_ns_per_m / h;
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let law = self.model.law;
@@ -391,11 +425,15 @@ impl Simulation {
         Vector3::new(f0, f1, f2)
     }
 
-    /// The tangent ∂f_S/∂q of the trial responses in `self.trial` (left by
-    /// [`Self::resisting_force`] for a step of length `h`): the springs' terms and, through
-    /// v = q̇_n + γ/(β h) δ + ..., their vertical dashpots.
+    /// The tangent ∂f_S/∂q at the last iterate of [`Self::resisting_force`] for a step of length
+    /// `h`: the springs' terms and, through v = q̇_n + γ/(β h) δ + ..., their vertical dashpots;
+    /// summed from the trial responses in `self.trial`, or in closed form after an all-sticking
+    /// iterate.
     #[inline]
     fn tangent(&self, h: f64) -> Matrix3<f64> {
+        if let Some(it) = self.fast.iterate {
+            return self.sticking_tangent(it, h);
+        }
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let kd = cdy * (self.solver.gamma / (self.solver.beta * h));
         let (mut k00, mut k01, mut k02) = (0.0, 0.0, 0.0);
@@ -470,13 +508,18 @@ impl Simulation {
     }
 
     fn commit(&mut self, h: f64, c: Converged) {
+        if self.fast.iterate.is_some() {
+            self.commit_sticking(h, self.state.u[0]);
+        } else {
+            for (s, r) in self.state.springs.iter_mut().zip(&self.trial) {
+                *s = r.state;
+            }
+            self.fast.invalidate();
+        }
         self.state.t_s += h;
         self.state.u = c.u;
         self.state.v = c.v;
         self.state.a = c.a;
-        for (s, r) in self.state.springs.iter_mut().zip(&self.trial) {
-            *s = r.state;
-        }
         self.stats.steps += 1;
         self.stats.min_step_s = self.stats.min_step_s.min(h);
         self.stats.max_step_s = self.stats.max_step_s.max(h);
@@ -498,14 +541,16 @@ impl Simulation {
             Ok(c) => {
                 let it = c.iterations;
                 self.commit(h, c);
-                // `resisting_force` left the trial of the converged iterate in `self.trial`.
                 if obs.observes() {
+                    if obs.reads_springs() {
+                        self.fill_sticking_responses();
+                    }
                     obs.observe(&StepView {
                         t_s: self.state.t_s,
                         state: &self.state,
                         load: w,
                         reaction: self.reaction(),
-                        springs: &self.trial,
+                        springs: self.step_springs(),
                         iterations: it,
                     });
                 }
@@ -530,7 +575,9 @@ impl Simulation {
         load: &L,
         obs: &mut O,
     ) -> Result<(), SolveError> {
-        self.advance(self.solver.dt_s, 0, load, obs)
+        let r = self.advance(self.solver.dt_s, 0, load, obs);
+        self.fill_sticking_responses();
+        r
     }
 
     /// Run until `t_end_s` (the last step is shortened to land on it), with the stepping of
@@ -541,10 +588,13 @@ impl Simulation {
         load: &L,
         obs: &mut O,
     ) -> Result<(), SolveError> {
-        match self.solver.stepping {
+        let r = match self.solver.stepping {
             Stepping::Fixed => self.run_fixed(t_end_s, load, obs),
             Stepping::Adaptive(p) => self.run_adaptive(t_end_s, p, load, obs),
-        }
+        };
+        // What `reaction` and `springs` read after the run.
+        self.fill_sticking_responses();
+        r
     }
 
     /// Adaptive stepping to `t_end_s` (module docs).
@@ -594,12 +644,15 @@ impl Simulation {
                     self.commit(h, c);
                     self.state.t_s = t1;
                     if obs.observes() {
+                        if obs.reads_springs() {
+                            self.fill_sticking_responses();
+                        }
                         obs.observe(&StepView {
                             t_s: t1,
                             state: &self.state,
                             load: w,
                             reaction: self.reaction(),
-                            springs: &self.trial,
+                            springs: self.step_springs(),
                             iterations: it,
                         });
                     }
@@ -653,7 +706,7 @@ mod tests {
     use crate::structure::{CaissonSpec, MassMatrix, MassSpec};
 
     /// The seed's Table 5 caisson on its Table 6 foundation with the given dashpot placements.
-    fn simulation(mode: DampingMode, vertical: VerticalDamping) -> Simulation {
+    pub(super) fn simulation(mode: DampingMode, vertical: VerticalDamping) -> Simulation {
         let caisson = CaissonSpec {
             width_m: 0.78,
             length_m: 1.0,

@@ -65,6 +65,12 @@ pub struct SolverParams {
     pub beta: f64,
     /// The first Newton iterate of a step.
     pub predictor: Predictor,
+    /// Sum the resisting force and its tangent in closed form while every spring is in contact
+    /// and sticks (docs/model.md §9.1; default on). Off, every iterate goes spring by spring:
+    /// the same model, results equal to rounding (`crates/caisson/tests/sticking.rs`); the
+    /// switch exists for that comparison. Not a result, so not reported.
+    #[serde(skip)]
+    pub sticking_fast_path: bool,
     /// Newton iterations allowed per (sub)step before the step is sub-stepped.
     pub max_iterations: usize,
     /// Times a failing step may be halved (2^levels sub-steps at most) before the run fails.
@@ -83,6 +89,7 @@ impl Default for SolverParams {
             gamma: 0.5,
             beta: 0.25,
             predictor: Predictor::ConstantAcceleration,
+            sticking_fast_path: true,
             max_iterations: 30,
             max_substep_levels: 8,
             tolerance: 1e-9,

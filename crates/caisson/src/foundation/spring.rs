@@ -105,22 +105,10 @@ impl SpringLaw {
                 ..SpringResponse::default()
             };
         }
-        let n = -self.ky_n_per_m * uy;
+        let (n, kn, e, f_trial, sticks) = self.elastic_trial(c.slip_m, self.limit_m(c), ux, uy, e_prev_m, c_over_h);
         let dn = -self.ky_n_per_m;
-        let kn = self.kappa_per_m * n;
-        let e = ux - c.slip_m;
-        let limit = if c.sliding { self.slip_offset_m } else { self.stick_limit_m };
-        let f_trial = kn * e + c_over_h * (e - e_prev_m);
-        if f_trial.abs() <= kn * limit {
-            SpringResponse {
-                normal_n: n,
-                shear_n: f_trial,
-                dshear_dux: kn + c_over_h,
-                dshear_duy: self.kappa_per_m * e * dn,
-                dnormal_duy: dn,
-                dslip_dux: 0.0,
-                state: SpringState { slip_m: c.slip_m, sliding: false },
-            }
+        if sticks {
+            self.stick_response(c, n, kn, e, f_trial, c_over_h)
         } else {
             let g = self.slip_offset_m.copysign(f_trial);
             // Elastic part after the slip: g itself without a dashpot.
@@ -135,6 +123,93 @@ impl SpringLaw {
                 state: SpringState { slip_m: ux - e_slip, sliding: true },
             }
         }
+    }
+
+    /// The elastic displacement a spring in state `c` may reach and still stick: e_d if it was
+    /// slipping, else e_s (module docs).
+    #[inline(always)]
+    pub fn limit_m(&self, c: SpringState) -> f64 {
+        if c.sliding {
+            self.slip_offset_m
+        } else {
+            self.stick_limit_m
+        }
+    }
+
+    /// Whether a spring with slip position `slip_m` and limit `limit_m` ([`Self::limit_m`] of its
+    /// committed state) is in contact with a positive normal force and sticks at the trial
+    /// (`ux`, `uy`): the `sticking` branch of [`Self::trial_with_dashpot`], decided by the same
+    /// operations, so exactly when that branch would be taken with N_i > 0. Branch-free.
+    #[inline(always)]
+    pub fn sticks(&self, slip_m: f64, limit_m: f64, ux: f64, uy: f64, e_prev_m: f64, c_over_h: f64) -> bool {
+        let (n, _, _, _, sticks) = self.elastic_trial(slip_m, limit_m, ux, uy, e_prev_m, c_over_h);
+        (uy < 0.0) & (n > 0.0) & sticks
+    }
+
+    /// [`Self::sticks`] with a margin: the trial force is within the friction cap by more than
+    /// 1e-12 of κ N_i (|e| + `limit_m`) + |c_d (e − e_n)/h|, far more than the rounding of the
+    /// trial (a few units in the last place of these terms). For springs that share the slip
+    /// position and the limit, and so e and the dashpot term, the test of the two with the
+    /// smallest and the largest κ N_i then implies [`Self::sticks`] of every spring between: in
+    /// exact arithmetic |κN e + C| − κN L plus the margin is convex in κN (a ≤ 0 at both ends is
+    /// ≤ 0 between), and the margin covers the rounding of each spring's own test.
+    #[inline(always)]
+    pub fn sticks_with_margin(
+        &self,
+        slip_m: f64,
+        limit_m: f64,
+        ux: f64,
+        uy: f64,
+        e_prev_m: f64,
+        c_over_h: f64,
+    ) -> bool {
+        let (n, kn, e, f_trial, _) = self.elastic_trial(slip_m, limit_m, ux, uy, e_prev_m, c_over_h);
+        let margin = 1e-12 * (kn * (e.abs() + limit_m) + (c_over_h * (e - e_prev_m)).abs());
+        (uy < 0.0) & (n > 0.0) & (f_trial.abs() + margin <= kn * limit_m)
+    }
+
+    /// The response of a spring in state `c` known to stick at the trial (`ux`, `uy`) with
+    /// N_i > 0 ([`Self::sticks`]): the `sticking` branch of [`Self::trial_with_dashpot`], the
+    /// same numbers to the last bit.
+    #[inline(always)]
+    pub fn sticking_response(&self, c: SpringState, ux: f64, uy: f64, e_prev_m: f64, c_over_h: f64) -> SpringResponse {
+        let (n, kn, e, f_trial, _) = self.elastic_trial(c.slip_m, self.limit_m(c), ux, uy, e_prev_m, c_over_h);
+        self.stick_response(c, n, kn, e, f_trial, c_over_h)
+    }
+
+    /// The `sticking` branch's response from the elastic trial.
+    #[inline(always)]
+    fn stick_response(&self, c: SpringState, n: f64, kn: f64, e: f64, f_trial: f64, c_over_h: f64) -> SpringResponse {
+        let dn = -self.ky_n_per_m;
+        SpringResponse {
+            normal_n: n,
+            shear_n: f_trial,
+            dshear_dux: kn + c_over_h,
+            dshear_duy: self.kappa_per_m * e * dn,
+            dnormal_duy: dn,
+            dslip_dux: 0.0,
+            state: SpringState { slip_m: c.slip_m, sliding: false },
+        }
+    }
+
+    /// The elastic trial of a spring with `uy` < 0 (module docs): N_i, κ N_i, e = u_x − s_i, the
+    /// trial force κ N_i e + c_d (e − e_n)/h and whether it is within the friction cap
+    /// κ N_i `limit_m`.
+    #[inline(always)]
+    fn elastic_trial(
+        &self,
+        slip_m: f64,
+        limit_m: f64,
+        ux: f64,
+        uy: f64,
+        e_prev_m: f64,
+        c_over_h: f64,
+    ) -> (f64, f64, f64, f64, bool) {
+        let n = -self.ky_n_per_m * uy;
+        let kn = self.kappa_per_m * n;
+        let e = ux - slip_m;
+        let f_trial = kn * e + c_over_h * (e - e_prev_m);
+        (n, kn, e, f_trial, f_trial.abs() <= kn * limit_m)
     }
 }
 

@@ -1,0 +1,535 @@
+//! The all-sticking fast path of the resisting force (docs/model.md §9.1): while every spring is
+//! in contact and sticks, the sums over the springs are closed forms in the displacements.
+//!
+//! With N_i = −k_y (u_y − θ x_i) = a + b x_i (a = −k_y u_y, b = k_y θ), e_i = u_x − s_i and, in
+//! the `elastic` damping mode, the dashpot rate (e_i − e_n,i)/h = (u_x − u_x,n)/h the same for
+//! every sticking spring ([`crate::foundation::spring`]):
+//!
+//! ```text
+//! Σ N_i     = n a + b Σx_i                      Σ x_i N_i = a Σx_i + b Σx_i²
+//! Σ e_i     = n E − Σd_i                        Σ x_i e_i = E Σx_i − Σx_i d_i
+//! Σ F_i     = κ (a Σe_i + b Σx_i e_i) + n (c_d/h) (u_x − u_x,n)
+//! E = u_x − s_1,  d_i = s_i − s_1               (slips relative to the first spring's)
+//! ```
+//!
+//! and the vertical dashpots of the `springs` form add c_y (n v_y − θ̇ Σx_i) to the vertical force
+//! and −c_y (v_y Σx_i − θ̇ Σx_i²) to the moment. The tangent's entries are the same sums:
+//! ∂ΣF/∂u_x = κ ΣN_i + n c_d/h, ∂ΣF/∂u_y = −κ k_y Σe_i, ∂ΣF/∂θ = κ k_y Σx_i e_i, and the
+//! vertical block (k_y + γ c_y/(β h)) (n, −Σx_i; −Σx_i, Σx_i²).
+//!
+//! n, Σx_i, Σx_i², Σd_i and Σx_i d_i change only when a spring's slip position does, i.e. after a
+//! step committed by the general path; they are recomputed before the next iterate.
+//!
+//! Whether every spring sticks is decided spring by spring by the spring law's own test
+//! ([`SpringLaw::sticks`], the same operations as its `sticking` branch), so the path
+//! is taken exactly when the general one would find every spring in contact and sticking; the
+//! sums are then the same quantities added in another order (results equal to rounding,
+//! `crates/caisson/tests/sticking.rs`). The per-spring responses of an all-sticking step
+//! ([`Simulation::springs`]) are built only when asked for: for an observer that reads them
+//! ([`super::Observer::reads_springs`]), and at the end of a run; its base reaction
+//! ([`Simulation::reaction`]) is the closed form.
+//!
+//! [`SpringLaw::sticks`]: crate::foundation::SpringLaw::sticks
+
+use super::{Reaction, Simulation};
+use nalgebra::{Matrix3, Vector3};
+
+/// The fast path's scratch, sized when the simulation is built.
+#[derive(Debug, Clone, Default)]
+pub(super) struct FastPath {
+    /// The sums of the committed slip positions are up to date, and so are `slip_m` and
+    /// `limit_m`.
+    valid: bool,
+    /// A spring of the committed state was slipping (its limit is e_d, not e_s).
+    any_sliding: bool,
+    /// Every spring has the same slip position, the positions x_i ascend and there is a spring:
+    /// with equal limits, the stick test of the two outermost springs decides for all.
+    same_slips: bool,
+    n: f64,
+    sum_x: f64,
+    sum_x2: f64,
+    /// s_1, the first spring's slip position, m.
+    s_ref_m: f64,
+    /// Σ d_i and Σ x_i d_i, d_i = s_i − s_1.
+    sum_d: f64,
+    sum_xd: f64,
+    /// The committed slip positions and stick limits ([`SpringLaw::limit_m`]), spring by
+    /// spring, for a stick test over plain slices.
+    ///
+    /// [`SpringLaw::limit_m`]: crate::foundation::SpringLaw::limit_m
+    slip_m: Vec<f64>,
+    limit_m: Vec<f64>,
+    /// The last iterate, if it took the fast path.
+    pub iterate: Option<StickIterate>,
+    /// The committed step, if all-sticking (its base reaction in closed form).
+    committed: Option<StickIterate>,
+    /// The committed all-sticking step's per-spring responses are not built yet.
+    pending: Option<PendingResponses>,
+}
+
+/// The sums of an all-sticking iterate that the tangent and the base reaction need.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct StickIterate {
+    sum_n: f64,
+    sum_xn: f64,
+    sum_e: f64,
+    sum_xe: f64,
+    shear_n: f64,
+    cd_over_h: f64,
+}
+
+/// An all-sticking step committed without its per-spring responses: its length and the
+/// horizontal displacement it started from (e_n,i = u_x,n − s_i).
+#[derive(Debug, Clone, Copy)]
+struct PendingResponses {
+    h: f64,
+    ux_prev_m: f64,
+}
+
+impl FastPath {
+    pub fn new(springs: usize) -> Self {
+        FastPath { slip_m: vec![0.0; springs], limit_m: vec![0.0; springs], ..FastPath::default() }
+    }
+
+    /// Forget everything derived from the committed spring states (they changed).
+    #[inline]
+    pub fn invalidate(&mut self) {
+        self.valid = false;
+        self.committed = None;
+        self.pending = None;
+    }
+}
+
+impl Simulation {
+    /// f_S at the trial (`u`, `v`) of a step of length `h` if every spring is in contact and
+    /// sticks there (module docs), recording the sums [`Self::sticking_tangent`] needs; `None`
+    /// otherwise.
+    #[inline]
+    pub(super) fn sticking_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Option<Vector3<f64>> {
+        if !self.fast.valid {
+            self.refresh_fast_path();
+        }
+        let law = self.model.law;
+        let cd_over_h = self.model.spring_dashpot_ns_per_m / h;
+        let ux_n = self.state.u[0];
+        let fs = &self.fast;
+        // Indexed over slices of one length, so that the compiler vectorizes the test.
+        let n = fs.slip_m.len();
+        let (x_m, slip_m, limit_m) = (&self.model.x_m[..n], &fs.slip_m[..n], &fs.limit_m[..n]);
+        // Shared slip position and limit: κ N_i is monotonic in x_i (each rounded operation of
+        // N_i = −k_y (u_y − θ x_i) is), so the outermost springs have its extremes, and their
+        // test with a margin decides for every spring ([`SpringLaw::sticks_with_margin`]).
+        // Otherwise, or within the margin, every spring's own test.
+        //
+        // [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
+        let outer_stick = fs.same_slips && !fs.any_sliding && {
+            let (s, limit) = (slip_m[0], limit_m[0]);
+            let sticks = |x: f64| law.sticks_with_margin(s, limit, u[0], u[1] - u[2] * x, ux_n - s, cd_over_h);
+            sticks(x_m[0]) & sticks(x_m[n - 1])
+        };
+        if !outer_stick {
+            let mut fails = 0u32;
+            for i in 0..n {
+                let (x, s) = (x_m[i], slip_m[i]);
+                fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, ux_n - s, cd_over_h));
+            }
+            if fails > 0 {
+                return None;
+            }
+        }
+        let (a, b) = (-law.ky_n_per_m * u[1], law.ky_n_per_m * u[2]);
+        let e_ref = u[0] - fs.s_ref_m;
+        let sum_e = fs.n * e_ref - fs.sum_d;
+        let sum_xe = e_ref * fs.sum_x - fs.sum_xd;
+        let sum_n = fs.n * a + b * fs.sum_x;
+        let sum_xn = a * fs.sum_x + b * fs.sum_x2;
+        let shear_n = law.kappa_per_m * (a * sum_e + b * sum_xe) + fs.n * cd_over_h * (u[0] - ux_n);
+        let (mut f1, mut f2) = (-sum_n, sum_xn);
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        if cdy > 0.0 {
+            f1 += cdy * (fs.n * v[1] - v[2] * fs.sum_x);
+            f2 -= cdy * (v[1] * fs.sum_x - v[2] * fs.sum_x2);
+        }
+        self.fast.iterate = Some(StickIterate { sum_n, sum_xn, sum_e, sum_xe, shear_n, cd_over_h });
+        self.stats.sticking_iterates += 1;
+        Some(Vector3::new(shear_n, f1, f2))
+    }
+
+    /// The tangent ∂f_S/∂q of an all-sticking iterate (module docs).
+    #[inline]
+    pub(super) fn sticking_tangent(&self, it: StickIterate, h: f64) -> Matrix3<f64> {
+        let fs = &self.fast;
+        let law = self.model.law;
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        let kd = if cdy > 0.0 { cdy * (self.solver.gamma / (self.solver.beta * h)) } else { 0.0 };
+        let kk = law.ky_n_per_m + kd;
+        let kxy = law.kappa_per_m * law.ky_n_per_m;
+        let k00 = law.kappa_per_m * it.sum_n + fs.n * it.cd_over_h;
+        let (k01, k02) = (-kxy * it.sum_e, kxy * it.sum_xe);
+        let (k11, k12, k22) = (fs.n * kk, -kk * fs.sum_x, kk * fs.sum_x2);
+        Matrix3::new(k00, k01, k02, 0.0, k11, k12, 0.0, k12, k22)
+    }
+
+    /// The base reaction of a committed all-sticking step, in closed form (module docs); `None`
+    /// if the committed step was not all-sticking.
+    pub(super) fn sticking_reaction(&self) -> Option<Reaction> {
+        let it = self.fast.committed?;
+        let v = self.state.v;
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        let fs = &self.fast;
+        let springs = self.model.x_m.len();
+        let mut dashpot_moment_nm = 0.0;
+        if cdy > 0.0 {
+            dashpot_moment_nm = -cdy * (v[1] * fs.sum_x - v[2] * fs.sum_x2);
+        }
+        let dashpot_horizontal_n = self.model.damping[(0, 0)] * v[0];
+        Some(Reaction {
+            horizontal_n: it.shear_n + dashpot_horizontal_n,
+            normal_n: it.sum_n,
+            moment_nm: it.sum_xn,
+            sliding_springs: 0,
+            contact_springs: springs,
+            dashpot_horizontal_n,
+            dashpot_moment_nm: dashpot_moment_nm + self.model.damping[(2, 2)] * v[2],
+        })
+    }
+
+    /// Recompute the sums and slices of the committed slip positions.
+    fn refresh_fast_path(&mut self) {
+        let law = self.model.law;
+        let fs = &mut self.fast;
+        let s_ref_m = self.state.springs.first().map_or(0.0, |c| c.slip_m);
+        (fs.n, fs.sum_x, fs.sum_x2, fs.sum_d, fs.sum_xd) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        fs.s_ref_m = s_ref_m;
+        fs.any_sliding = false;
+        let slices = fs.slip_m.iter_mut().zip(fs.limit_m.iter_mut());
+        for ((&x, c), (slip, limit)) in self.model.x_m.iter().zip(&self.state.springs).zip(slices) {
+            let d = c.slip_m - s_ref_m;
+            fs.n += 1.0;
+            fs.sum_x += x;
+            fs.sum_x2 += x * x;
+            fs.sum_d += d;
+            fs.sum_xd += x * d;
+            *slip = c.slip_m;
+            *limit = law.limit_m(*c);
+            fs.any_sliding |= c.sliding;
+        }
+        fs.same_slips = !self.state.springs.is_empty()
+            && self.state.springs.iter().all(|c| c.slip_m == s_ref_m)
+            && self.model.x_m.windows(2).all(|w| w[0] <= w[1]);
+        fs.valid = true;
+    }
+
+    /// Commit the spring states of an all-sticking step of length `h` that started at
+    /// u_x,n = `ux_prev_m`: every spring keeps its slip position and sticks. Its per-spring
+    /// responses are built later, when asked for ([`Self::fill_sticking_responses`]).
+    #[inline]
+    pub(super) fn commit_sticking(&mut self, h: f64, ux_prev_m: f64) {
+        let fs = &mut self.fast;
+        if fs.any_sliding {
+            for (s, limit) in self.state.springs.iter_mut().zip(fs.limit_m.iter_mut()) {
+                s.sliding = false;
+                *limit = self.model.law.stick_limit_m;
+            }
+            fs.any_sliding = false;
+        }
+        fs.committed = fs.iterate;
+        fs.pending = Some(PendingResponses { h, ux_prev_m });
+    }
+
+    /// The springs' responses of the committed step for an observer: empty if they are not
+    /// built (an observer that does not read them, [`super::Observer::reads_springs`]).
+    #[inline]
+    pub(super) fn step_springs(&self) -> &[super::SpringResponse] {
+        if self.fast.pending.is_some() {
+            &[]
+        } else {
+            &self.trial
+        }
+    }
+
+    /// Build the springs' responses (`self.trial`) of the committed all-sticking step, if they
+    /// are not built yet: the spring law's `sticking` branch at the committed displacements, the
+    /// numbers the general path would have left.
+    pub(super) fn fill_sticking_responses(&mut self) {
+        let Some(p) = self.fast.pending.take() else { return };
+        let law = self.model.law;
+        let cd_over_h = self.model.spring_dashpot_ns_per_m / p.h;
+        let u = self.state.u;
+        for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
+            *out = law.sticking_response(*c, u[0], u[1] - u[2] * x, p.ux_prev_m - c.slip_m, cd_over_h);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::simulation;
+    use super::super::{Observer, StepView};
+    use super::*;
+    use crate::foundation::{DampingMode, SpringState, VerticalDamping};
+    use crate::loads::pulse::TrianglePulse;
+    use crate::loads::WaveForce;
+
+    const MODES: [(DampingMode, VerticalDamping); 4] = [
+        (DampingMode::Total, VerticalDamping::Seed),
+        (DampingMode::Total, VerticalDamping::Springs),
+        (DampingMode::Elastic, VerticalDamping::Seed),
+        (DampingMode::Elastic, VerticalDamping::Springs),
+    ];
+
+    /// A committed state with the springs at assorted slip positions (every third one slipping
+    /// at the last step, i.e. with the limit e_d) and a trial where every spring stays in contact
+    /// (the caisson rotated) and sticks, unless `e_first` moves the first spring's elastic
+    /// displacement (in units of e_s) or `lift` lifts the seaward edge.
+    fn sticking_trial(sim: &mut Simulation, e_first: f64, lift: bool) -> ([f64; 3], [f64; 3], f64) {
+        let law = sim.model.law;
+        let settle = sim.model.static_settlement_m();
+        sim.state.u = [2e-4, -settle, 0.0];
+        for (i, s) in sim.state.springs.iter_mut().enumerate() {
+            let e = law.stick_limit_m * [e_first, -0.4, 0.5, -0.2, 0.1, 0.6, -0.3, 0.45, -0.5, 0.2][i];
+            *s = SpringState { slip_m: sim.state.u[0] - e, sliding: i % 3 == 0 };
+        }
+        sim.fast.invalidate();
+        let theta = settle / (0.5 * sim.model.width_m) * if lift { 1.2 } else { 0.3 };
+        ([2e-4 + 1e-3 * law.stick_limit_m, -settle - 1e-7, theta], [0.01, -0.002, 0.03], 1e-4)
+    }
+
+    /// The closed forms against the sums spring by spring: force and tangent to rounding, for
+    /// both horizontal and both vertical dashpot placements. The oracle is the general path.
+    #[test]
+    fn closed_forms_equal_the_sums_over_the_springs() {
+        let mut checked = 0;
+        for (mode, vertical) in MODES {
+            let mut sim = simulation(mode, vertical);
+            let (u, v, h) = sticking_trial(&mut sim, 0.3, false);
+            let fast = sim.sticking_force(u, v, h).expect("every spring sticks");
+            let k_fast = sim.tangent(h);
+            let general = sim.general_force(u, v, h);
+            let k_general = sim.tangent(h);
+            let sticking = sim.trial.iter().filter(|r| r.normal_n > 0.0 && !r.state.sliding).count();
+            assert_eq!(sticking, 10, "{mode:?}/{vertical:?}: the general path finds every spring sticking");
+            // Rounding of sums of ten terms of the size of W' (8240 N) and of the stiffness.
+            let w = sim.model.weight_n;
+            let b = sim.model.width_m;
+            for (r, tol) in [(0, 1e-12 * w), (1, 1e-12 * w), (2, 1e-12 * w * b)] {
+                assert!(
+                    (fast[r] - general[r]).abs() <= tol,
+                    "{mode:?}/{vertical:?} f_{r}: {} against {}",
+                    fast[r],
+                    general[r]
+                );
+                checked += 1;
+            }
+            let scale = k_general.abs().max();
+            for r in 0..3 {
+                for c in 0..3 {
+                    let (a, g) = (k_fast[(r, c)], k_general[(r, c)]);
+                    assert!((a - g).abs() <= 1e-12 * scale, "{mode:?}/{vertical:?} K_{r}{c}: {a} against {g}");
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 4 * 12);
+    }
+
+    /// One spring beyond its friction cap, or springs lifted: the fast path declines.
+    #[test]
+    fn fast_path_declines_a_slip_or_a_lift_off() {
+        for (mode, vertical) in MODES {
+            let mut sim = simulation(mode, vertical);
+            // The first spring beyond the limit e_d (= e_s: μ_d = μ_s in the default profile).
+            let (u, v, h) = sticking_trial(&mut sim, 1.01, false);
+            assert!(sim.sticking_force(u, v, h).is_none(), "{mode:?}/{vertical:?}: a slip");
+            assert!(sim.general_force(u, v, h) != Vector3::zeros() && sim.trial[0].state.sliding);
+            let (u, v, h) = sticking_trial(&mut sim, 0.9, false);
+            assert!(sim.sticking_force(u, v, h).is_some(), "{mode:?}/{vertical:?}: sticks");
+            let (u, v, h) = sticking_trial(&mut sim, 0.3, true);
+            assert!(sim.sticking_force(u, v, h).is_none(), "{mode:?}/{vertical:?}: a lift-off");
+            sim.general_force(u, v, h);
+            assert!(sim.trial[0].normal_n == 0.0, "the seaward spring is lifted");
+        }
+    }
+
+    /// Records what an observer sees of every step.
+    #[derive(Default)]
+    struct Record(Vec<[f64; 9]>, usize);
+    impl Observer for Record {
+        fn observe(&mut self, s: &StepView<'_>) {
+            let r = s.reaction;
+            let (n, f): (f64, f64) =
+                (s.springs.iter().map(|x| x.normal_n).sum(), s.springs.iter().map(|x| x.shear_n).sum());
+            let springs = [s.springs[0].normal_n, s.springs[9].shear_n, n, f];
+            let reaction = [r.horizontal_n, r.normal_n, r.moment_nm, r.dashpot_moment_nm, r.contact_springs as f64];
+            let mut row = [0.0; 9];
+            row[..5].copy_from_slice(&reaction);
+            row[5..].copy_from_slice(&springs);
+            self.0.push(row);
+            self.1 += r.sliding_springs;
+        }
+    }
+
+    /// What observers see (the base reaction, in closed form on an all-sticking step, and the
+    /// springs' responses, built for the observer) and what `reaction` and `springs` give after
+    /// the run: the same with the fast path on and off, to rounding, through a pulse that makes
+    /// the caisson slide and its seaward springs lift off and one that does neither.
+    #[test]
+    fn observers_see_the_same_steps() {
+        let (mut runs, mut slid, mut lifted) = (0, 0, 0);
+        for (mode, vertical) in MODES {
+            for peak_n in [2e3, 15e3] {
+                let load = TrianglePulse {
+                    peak: WaveForce::from_levers(peak_n, 0.8, 3e3, 0.52, 0.78),
+                    rise_s: 0.05,
+                    start_s: 0.0,
+                };
+                let record = |on: bool| {
+                    let mut sim = simulation(mode, vertical);
+                    sim.solver.sticking_fast_path = on;
+                    let mut rec = Record::default();
+                    sim.run_until(0.2, &load, &mut rec).unwrap();
+                    let last =
+                        (sim.reaction(), sim.springs().iter().map(|r| (r.normal_n, r.shear_n)).collect::<Vec<_>>());
+                    (rec, last, sim.stats.sticking_iterates)
+                };
+                let ((old, old_last, old_fast), (new, new_last, new_fast)) = (record(false), record(true));
+                assert_eq!((old.0.len(), old.1), (new.0.len(), new.1), "steps and sliding springs");
+                assert!(old_fast == 0 && new_fast > 100, "{new_fast} all-sticking iterates");
+                for j in 0..9 {
+                    let scale = old.0.iter().fold(0.0f64, |m, r| m.max(r[j].abs()));
+                    for (o, n) in old.0.iter().zip(&new.0) {
+                        assert!(
+                            (o[j] - n[j]).abs() <= 1e-9 * scale,
+                            "{mode:?}/{vertical:?} {peak_n} N, column {j}: {} against {}",
+                            n[j],
+                            o[j]
+                        );
+                    }
+                }
+                let scale = sim_scale(&old_last.1);
+                assert!((old_last.0.horizontal_n - new_last.0.horizontal_n).abs() <= 1e-9 * scale);
+                for (o, n) in old_last.1.iter().zip(&new_last.1) {
+                    assert!(
+                        (o.0 - n.0).abs() <= 1e-9 * scale && (o.1 - n.1).abs() <= 1e-9 * scale,
+                        "{o:?} against {n:?}"
+                    );
+                }
+                slid += usize::from(old.1 > 0);
+                lifted += usize::from(old.0.iter().any(|r| r[4] < 10.0));
+                runs += 1;
+            }
+        }
+        assert_eq!(runs, 8);
+        assert!(slid >= 2 && lifted >= 2, "{slid} runs slid, {lifted} lifted");
+    }
+
+    proptest::proptest! {
+        /// The outermost springs' test with the margin never says "all stick" when a spring
+        /// between would not stick by its own test: springs sharing the slip position and the
+        /// limit, trials about the friction cap (|e| from 0.5 to 1.5 e_s, either sign), the
+        /// normal forces from uniform to nearly lifted at either edge, dashpot terms from none to
+        /// larger than the cap, either sign. Also counts that the shortcut is taken at all.
+        #[test]
+        fn outermost_springs_decide_for_all(
+            e_rel in -1.5f64..1.5, theta_rel in -0.99f64..0.99, dashpot_rel in -1.5f64..1.5, slip in -1e-2f64..1e-2,
+        ) {
+            let (w, b, n) = (8240.0, 0.78, 10);
+            let law = crate::foundation::SpringLaw::new(1.5e8, 1.4e8, w, n, 0.6, 0.6);
+            let x: Vec<f64> = (0..n).map(|i| -0.5 * b + (i as f64 + 0.5) * b / n as f64).collect();
+            let uy = -w / 1.4e8;
+            let theta = theta_rel * uy.abs() / (0.5 * b);
+            let ux = slip + e_rel * law.stick_limit_m;
+            // c_d/h (e − e_n) = dashpot_rel × the cap of a spring at the mean normal force.
+            let c_over_h = 6e8;
+            let e_prev = (ux - slip) - dashpot_rel * law.kappa_per_m * (w / n as f64) * law.stick_limit_m / c_over_h;
+            let limit = law.stick_limit_m;
+            let each = |xi: f64| law.sticks(slip, limit, ux, uy - theta * xi, e_prev, c_over_h);
+            let outer = |xi: f64| law.sticks_with_margin(slip, limit, ux, uy - theta * xi, e_prev, c_over_h);
+            if outer(x[0]) && outer(x[n - 1]) {
+                for &xi in &x {
+                    proptest::prop_assert!(each(xi), "x = {xi}: the outermost springs stick, this one does not");
+                }
+            }
+        }
+    }
+
+    /// The margin of [`SpringLaw::sticks_with_margin`] is only a margin: away from the friction
+    /// cap (by more than 1e-9 of it) it decides as [`SpringLaw::sticks`], with and without a
+    /// dashpot term, on either side of the cap.
+    ///
+    /// [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
+    /// [`SpringLaw::sticks`]: crate::foundation::SpringLaw::sticks
+    #[test]
+    fn the_margin_declines_only_at_the_cap() {
+        let law = crate::foundation::SpringLaw::new(1.5e8, 1.4e8, 8240.0, 10, 0.6, 0.6);
+        let (uy, limit) = (-8240.0 / 1.4e8, law.stick_limit_m);
+        let (mut checked, mut sticking) = (0, 0);
+        for (c_over_h, de) in [(0.0, 0.0), (6e8, 1e-3 * limit), (6e8, -1e-3 * limit)] {
+            for k in -200..=200 {
+                // e from −1.5 to 1.5 e_s; the trial force is κ N e + c_d/h de.
+                let e = limit * 0.0075 * k as f64;
+                let f = law.kappa_per_m * (-law.ky_n_per_m * uy) * e + c_over_h * de;
+                let cap = law.kappa_per_m * (-law.ky_n_per_m * uy) * limit;
+                if (f.abs() - cap).abs() <= 1e-9 * cap {
+                    continue;
+                }
+                let each = law.sticks(0.0, limit, e, uy, e - de, c_over_h);
+                let outer = law.sticks_with_margin(0.0, limit, e, uy, e - de, c_over_h);
+                assert_eq!(each, outer, "e = {e}, dashpot term {}", c_over_h * de);
+                checked += 1;
+                sticking += usize::from(each);
+            }
+        }
+        assert!(checked > 1100 && sticking > 500 && sticking < checked - 200, "{sticking} of {checked} sticking");
+    }
+
+    /// An observer that does not read the springs' responses.
+    #[derive(Default)]
+    struct Blind {
+        steps: usize,
+        without_springs: usize,
+    }
+    impl Observer for Blind {
+        fn observe(&mut self, s: &StepView<'_>) {
+            self.steps += 1;
+            if s.springs.is_empty() {
+                // Only an all-sticking step goes without them; its reaction is still there.
+                self.without_springs += 1;
+                assert!(s.reaction.contact_springs == 10 && s.reaction.sliding_springs == 0);
+                assert!(s.reaction.normal_n > 0.0);
+            } else {
+                assert_eq!(s.springs.len(), 10);
+            }
+        }
+        fn reads_springs(&self) -> bool {
+            false
+        }
+    }
+
+    /// `Observer::reads_springs() == false`: the all-sticking steps come without the springs'
+    /// responses (and only they), the others with them, the run's results and its final
+    /// responses are those of an observer that reads them, to the last bit.
+    #[test]
+    fn observers_may_go_without_the_springs() {
+        let load =
+            TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.05, start_s: 0.0 };
+        let mut blind_sim = simulation(DampingMode::Elastic, VerticalDamping::Springs);
+        let mut blind = Blind::default();
+        blind_sim.run_until(0.2, &load, &mut blind).unwrap();
+        let mut sim = simulation(DampingMode::Elastic, VerticalDamping::Springs);
+        let mut rec = Record::default();
+        sim.run_until(0.2, &load, &mut rec).unwrap();
+        assert!(
+            blind.without_springs > 100 && blind.without_springs < blind.steps,
+            "{} of {}",
+            blind.without_springs,
+            blind.steps
+        );
+        assert_eq!(blind.steps, rec.0.len());
+        assert_eq!((blind_sim.state(), blind_sim.springs()), (sim.state(), sim.springs()));
+    }
+
+    fn sim_scale(springs: &[(f64, f64)]) -> f64 {
+        springs.iter().fold(0.0f64, |m, r| m.max(r.0.abs()).max(r.1.abs()))
+    }
+}

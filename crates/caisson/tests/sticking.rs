@@ -1,0 +1,198 @@
+//! The all-sticking fast path (`SolverParams::sticking_fast_path`, docs/model.md §9.1) is the
+//! same model: with it on and off, every bundled example and the waves of the design example give
+//! the same results to rounding, in the same steps and Newton iterations.
+//!
+//! Why they are not identical to the last bit: the path decides which springs stick by the spring
+//! law's own operations, but sums the forces and the tangent in closed form (n Σ, Σx_i, Σx_i² ...
+//! times the displacements) instead of spring by spring: the same quantities added in another
+//! order, a few units in the last place apart (1e-16 relative). A Newton iterate that lands a few
+//! ulps away from the other moves the next one as little, since each step is a contraction onto
+//! the converged state; the adaptive stepper's step lengths depend smoothly on the accelerations.
+//! Only a decision that falls within rounding of its threshold (a residual at the tolerance, an
+//! error estimate at its limit, a spring at its friction cap) could take another branch; none
+//! does on these cases (identical step and iteration counts, asserted).
+//! Measured: at most 6e-12 of the largest value of a quantity (`cargo test --release --test
+//! sticking -- --nocapture` prints it). Tolerance: 1e-9 of the largest value of each quantity
+//! plus 1e-12 (m, N) for quantities near zero, a hundred times the measured difference and
+//! five orders below the adaptive stepper's own accuracy (0.15 % on the design example,
+//! BENCHMARKS.md).
+
+mod support;
+
+use caisson::analysis::fragility::run_fragility;
+use caisson::analysis::lifetime::run_lives;
+use caisson::analysis::run::run;
+use caisson::dynamics::{Simulation, SolverParams};
+use caisson::loads::history::WaveTrain;
+use caisson::loads::regime::RegimeChoice;
+use caisson::scenario::Scenario;
+use std::collections::BTreeMap;
+use std::ops::ControlFlow;
+use std::path::Path;
+
+type Results = BTreeMap<String, Vec<f64>>;
+
+/// Steps, Newton iterations and all-sticking iterates, where the driver reports them.
+type Work = Option<(u64, u64, u64)>;
+
+fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
+    sc.clone().with_solver(SolverParams { sticking_fast_path: on, ..sc.solver() }).unwrap()
+}
+
+/// What an example computes (as in `predictor.rs`): a `[load]` run, realization 0 of the wave
+/// trains, the first 3 lives of a design, 2 storms of a fragility run.
+fn results(sc: &Scenario) -> (Results, Work) {
+    let mut out = Results::new();
+    let mut work = None;
+    if let Some(load) = &sc.load {
+        let r = run(sc.structure(), load, sc.duration_s, false).unwrap().summary;
+        for (key, v) in [
+            ("permanent_sliding_m", r.permanent_sliding_m),
+            ("max_horizontal_displacement_m", r.max_horizontal_displacement_m),
+            ("max_rotation_rad", r.max_rotation_rad),
+            ("max_horizontal_reaction_n", r.max_horizontal_reaction_n),
+            ("max_spring_normal_n", r.max_spring_normal_n),
+            ("min_spring_normal_n", r.min_spring_normal_n),
+            ("max_spring_shear_n", r.max_spring_shear_n),
+            ("final_displacement_m", r.final_displacement_m),
+            ("final_rotation_rad", r.final_rotation_rad),
+            ("max_dashpot_moment_nm", r.max_dashpot_moment_nm),
+            ("slip_events", r.slip_events as f64),
+        ] {
+            out.insert(key.into(), vec![v]);
+        }
+        work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
+    } else if let Some(design) = &sc.design {
+        let case = sc.storm_case(design.screen).unwrap();
+        let lives = run_lives(&case, &design.life, design.seed, &[0, 1, 2], &|_, _| ControlFlow::Continue(())).unwrap();
+        out.insert("life_sliding_m".into(), lives.iter().map(|(_, o)| o.sliding_m).collect());
+        out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|(_, o)| o.max_storm_sliding_m).collect());
+        out.insert("life_simulated_waves".into(), lives.iter().map(|(_, o)| o.simulated_waves as f64).collect());
+    } else if let Some(params) = &sc.fragility {
+        let case = sc.storm_case(true).unwrap();
+        let mut p = params.clone();
+        p.heights_m = vec![params.heights_m[0], *params.heights_m.last().unwrap()];
+        p.storms = 2;
+        let r = run_fragility(&case, &p, &|| {}).unwrap();
+        out.insert("storm_sliding_m".into(), r.levels.iter().flat_map(|l| &l.storms).map(|o| o.sliding_m).collect());
+    } else {
+        let r = sc.train_case().unwrap().run(0, None).unwrap();
+        out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
+        out.insert(
+            "wave_max_horizontal_reaction_n".into(),
+            r.waves.iter().map(|w| w.max_horizontal_reaction_n).collect(),
+        );
+        out.insert("sliding_m".into(), vec![r.sliding_m]);
+        work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
+    }
+    (out, work)
+}
+
+/// The largest difference of `new` from `old` relative to the largest |value| of each quantity,
+/// asserted within the tolerance of the module docs; returns it and the number of values.
+fn compare(name: &str, old: &Results, new: &Results, largest: &mut (f64, String)) -> usize {
+    let mut compared = 0;
+    assert_eq!(old.len(), new.len(), "{name}");
+    for (key, o) in old {
+        let n = &new[key];
+        assert_eq!(o.len(), n.len(), "{name} {key}");
+        let scale = o.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (i, (a, b)) in o.iter().zip(n).enumerate() {
+            let d = (a - b).abs();
+            assert!(d <= 1e-9 * scale + 1e-12, "{name} {key}[{i}]: {b} with the fast path, {a} without");
+            if scale > 0.0 && d / scale > largest.0 {
+                *largest = (d / scale, format!("{name} {key}[{i}]"));
+            }
+            compared += 1;
+        }
+    }
+    compared
+}
+
+#[test]
+fn the_fast_path_moves_no_example_beyond_rounding() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut examples: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    examples.sort();
+    let (mut compared, mut largest) = (0, (0.0f64, String::new()));
+    let (mut iterations, mut sticking) = (0, 0);
+    for path in &examples {
+        let name = path.file_stem().unwrap().to_string_lossy().to_string();
+        let sc = caisson::scenario::load(path).unwrap();
+        let (old, old_work) = results(&with_fast_path(&sc, false));
+        let (new, new_work) = results(&with_fast_path(&sc, true));
+        compared += compare(&name, &old, &new, &mut largest);
+        if let (Some(o), Some(n)) = (old_work, new_work) {
+            assert_eq!((o.0, o.1), (n.0, n.1), "{name}: steps and Newton iterations without and with the fast path");
+            assert_eq!(o.2, 0, "{name}: the switch turns the fast path off");
+            iterations += n.1 + n.0;
+            sticking += n.2;
+        }
+    }
+    println!(
+        "{compared} values of {} examples; largest relative difference {:.2e} ({}); {sticking} of {iterations} resisting forces all-sticking",
+        examples.len(),
+        largest.0,
+        largest.1
+    );
+    assert_eq!(examples.len(), 12, "{examples:?}");
+    assert!(compared > 100, "{compared} values compared");
+    assert!(sticking > 0, "the fast path was taken");
+}
+
+/// The waves of the design example that reach the dynamic model (heights about its sliding
+/// threshold, from sticking throughout to sliding and rocking), each from rest as the lifetime run
+/// takes them: the permanent sliding, the peak displacement, rotation, base reaction and spring
+/// shear, and the smallest spring normal force to rounding; the same steps and Newton
+/// iterations; and most resisting forces all-sticking.
+#[test]
+fn the_design_waves_are_the_same_with_the_fast_path() {
+    let sc = support::example("design_breakwater.toml");
+    let site = &sc.waves.as_ref().unwrap().model;
+    let period_s = 12.8;
+    let waves = |on: bool| {
+        let solver = SolverParams { sticking_fast_path: on, ..sc.solver() };
+        let mut out = Vec::new();
+        for h in [6.0, 8.0, 9.0, 10.0, 11.0, 11.5, 12.0, 12.5, 12.7, 12.79] {
+            let loads = site.evaluate_with(h, period_s, RegimeChoice::Auto).unwrap();
+            let train = WaveTrain::new(vec![site.event(&loads, None, 0.0)]).unwrap();
+            let mut sim = Simulation::new(sc.structure().model(), solver, &train);
+            let mut peaks = caisson::analysis::run::Peaks::default();
+            sim.run_until(period_s, &train, &mut peaks).unwrap();
+            let sliding = caisson::analysis::run::permanent_sliding_m(&sim);
+            out.push(([sliding, peaks.max_ux, peaks.max_theta, peaks.max_rx, peaks.max_shear, peaks.min_n], sim.stats));
+        }
+        out
+    };
+    let (old, new) = (waves(false), waves(true));
+    let (mut steps, mut resisting, mut sticking, mut sliding_waves) = (0, 0, 0, 0);
+    let mut largest = 0.0f64;
+    for (i, ((o, os), (n, ns))) in old.iter().zip(&new).enumerate() {
+        for (a, b) in o.iter().zip(n) {
+            let d = (a - b).abs();
+            assert!(d <= 1e-9 * a.abs() + 1e-12, "wave {i}: {b} with the fast path, {a} without");
+            if a.abs() > 0.0 {
+                largest = largest.max(d / a.abs());
+            }
+        }
+        assert_eq!(
+            (os.steps, os.newton_iterations, os.rejected_steps),
+            (ns.steps, ns.newton_iterations, ns.rejected_steps),
+            "wave {i}: steps, iterations and rejected steps"
+        );
+        assert_eq!(os.sticking_iterates, 0);
+        steps += ns.steps;
+        // One resisting force per Newton iteration and one per (accepted or rejected) attempt.
+        resisting += ns.newton_iterations + ns.steps + ns.rejected_steps;
+        sticking += ns.sticking_iterates;
+        sliding_waves += usize::from(o[0].abs() > 1e-3);
+    }
+    println!("largest relative difference {largest:.2e}; {sticking} of {resisting} resisting forces all-sticking, {steps} steps");
+    assert!(steps > 1000, "{steps} steps");
+    assert!(sliding_waves >= 3 && sliding_waves < old.len(), "{sliding_waves} waves slid more than 1 mm");
+    assert!(sticking as f64 > 0.5 * resisting as f64, "{sticking} of {resisting} all-sticking");
+}
