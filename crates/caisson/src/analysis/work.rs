@@ -39,8 +39,8 @@
 //!
 //! Memory per item (measured with `/usr/bin/time -f %M` on the examples scaled up, rounded up):
 //! a history row of n springs held whole, 8 (12 + 3n) + 4 bytes of samples plus 75 n bytes for
-//! their copies (1.1 kB at n = 10; Python's DataFrame and Dataset of a 10⁵-row history measured
-//! 0.5 kB a row); a wave of a train about 2 kB (its result and its entry of the JSON summary); a
+//! their copies (1.1 kB at n = 10; Python's `run`, the Rust history and its DataFrame and
+//! Dataset, measured 0.71 kB a row at its peak on a 2·10⁵-row history); a wave of a train about 2 kB (its result and its entry of the JSON summary); a
 //! campaign wave 200 B (2 kB in `campaign.json`); a life or a storm 256 B. Disk per history row
 //! streamed: [`CSV_BYTES_PER_NUMBER`] bytes for each number of `history.csv` (time and 12
 //! columns) and `springs.csv` (time and 3 n columns): 25 (14 + 3n), 1.1 kB at n = 10 (measured
