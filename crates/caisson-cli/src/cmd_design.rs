@@ -732,7 +732,7 @@ pub(crate) fn report_lives(
     let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
-    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, failure_m));
+    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, failure_m, case.structure.caisson.width_m));
     if let Some(ws) = waves {
         report.warnings.extend(caisson::analysis::checks::wave_load_warnings(case.structure, ws));
     }

@@ -868,7 +868,7 @@ fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDic
     let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
     report.warnings = structure_warnings(case.structure);
-    report.warnings.extend(life_warnings(&lives, failure_m));
+    report.warnings.extend(life_warnings(&lives, failure_m, case.structure.caisson.width_m));
     if let Some(ws) = &sc.sc.waves {
         report.warnings.extend(wave_load_warnings(case.structure, ws));
     }
