@@ -617,7 +617,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let case = sc.storm_case(design.screen).map_err(input_err)?;
     let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
     // The lives this run computes: a shard's range, not the scenario's whole count.
-    let estimate = caisson::analysis::work::design(&case, &DesignParams { lives: range.len(), ..design.clone() }, waves);
+    let estimate =
+        caisson::analysis::work::design(&case, &DesignParams { lives: range.len(), ..design.clone() }, waves);
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = design_fingerprint(&case, &design);
     // Taken before the checkpoint is read or written: a second run on it refuses up front.

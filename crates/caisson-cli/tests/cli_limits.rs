@@ -312,7 +312,10 @@ fn run_out_of_five_million_history_rows_starts_and_counts_them_as_disk() {
     std::io::Read::read_to_string(&mut stderr, &mut rest).unwrap();
     let status = child.wait().unwrap();
     assert!(first.starts_with("Estimated work: about 1.0e8 time steps"), "{first}{rest}");
-    assert!(first.contains("0.0 MiB held, 5.1 GiB written") && first.contains("5000001 history rows written"), "{first}");
+    assert!(
+        first.contains("0.0 MiB held, 5.1 GiB written") && first.contains("5000001 history rows written"),
+        "{first}"
+    );
     assert_eq!(status.code(), Some(130), "{first}{rest}");
     assert!(!out.join("history.csv").exists() && temporaries(&out).is_empty(), "nothing kept");
 }

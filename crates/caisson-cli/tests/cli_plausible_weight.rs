@@ -22,7 +22,8 @@ fn variant(dir: &std::path::Path, name: &str, edits: &[(&str, &str)]) -> std::pa
 #[test]
 fn a_500_kn_caisson_is_refused_instead_of_sliding_53_km() {
     let dir = tempfile::tempdir().unwrap();
-    let f = variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 500.0")]);
+    let f =
+        variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 500.0")]);
     let out = dir.path().join("out");
     for cmd in ["design", "loads", "run"] {
         let mut args = vec![cmd, f.to_str().unwrap()];
@@ -42,10 +43,12 @@ fn a_500_kn_caisson_is_refused_instead_of_sliding_53_km() {
     }
     assert!(!out.exists(), "nothing written");
     // The same caisson given in tonnes (560.7 t for 5500 kN) is the slip the rule names.
-    let t = variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 560.7")]);
+    let t =
+        variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 560.7")]);
     refused(&["loads", t.to_str().unwrap()], &["weight_in_water_kn` = 560.7", "this is 0.159 of it"]);
     // At 0.2 of the displaced water (707.3 kN) it is accepted; the example's 5500 kN is 1.56.
-    let at = variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 707.4")]);
+    let at =
+        variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 707.4")]);
     caisson().args(["loads", at.to_str().unwrap()]).assert().success();
 }
 
@@ -54,7 +57,10 @@ fn a_caisson_given_by_a_mass_barely_above_its_displaced_water_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     // 360 487 kg of water displaced per metre: 370 000 kg gives W' = 0.03 of its weight.
     let f = variant(dir.path(), "design_breakwater.toml", &[("weight_in_water_kn = 5500.0", "mass_kg = 370000.0")]);
-    refused(&["loads", f.to_str().unwrap()], &["`[caisson] mass_kg` = 370000", "1.2 times the", "kg of water the caisson displaces"]);
+    refused(
+        &["loads", f.to_str().unwrap()],
+        &["`[caisson] mass_kg` = 370000", "1.2 times the", "kg of water the caisson displaces"],
+    );
 }
 
 /// The codes of the `warnings` of a JSON output.

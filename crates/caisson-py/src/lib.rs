@@ -334,7 +334,8 @@ fn series_from(py: Python<'_>, t_s: &[f64], fx_kn: &[f64], fy_kn: &[f64], moment
 const RUN_LOAD: Advice = Advice {
     steps: "shorten the run (`duration_s=`, `[load] duration_s`) or raise `[solver] dt_s`",
     waves: "",
-    memory: "pass history=False, shorten the run or raise `[solver] output_interval_s` (the histories are returned whole)",
+    memory:
+        "pass history=False, shorten the run or raise `[solver] output_interval_s` (the histories are returned whole)",
     disk: "",
 };
 const RUN_WAVES: Advice = Advice {
@@ -369,7 +370,9 @@ fn check_work(py: Python<'_>, command: &str, e: &WorkEstimate, advice: &Advice) 
     match (e.refusal(&b, command, advice), e.excess(&b)) {
         (Some(message), Some((resource, estimate, limit))) => {
             let (value, allowed) = match resource {
-                work::Resource::Steps => (format!("{estimate:.2e} time steps"), format!("at most {limit:.0e} time steps")),
+                work::Resource::Steps => {
+                    (format!("{estimate:.2e} time steps"), format!("at most {limit:.0e} time steps"))
+                }
                 work::Resource::Waves => (format!("{estimate:.2e} waves"), format!("at most {limit:.0e} waves")),
                 work::Resource::Memory => (
                     format!("{} held", work::describe_bytes(estimate)),

@@ -165,7 +165,10 @@ fn design_caisson_100_m_long_that_floats_at_high_tide_is_refused() {
     // 750 kN/m (0.21 of the displaced water) loses 808 kN at a tide of 4 m: it floats.
     let e = error_of(&edited(
         DESIGN,
-        &[("weight_in_water_kn = 5500.0", "weight_in_water_kn = 750.0"), ("tidal_range_m = 2.0", "tidal_range_m = 4.0")],
+        &[
+            ("weight_in_water_kn = 5500.0", "weight_in_water_kn = 750.0"),
+            ("tidal_range_m = 2.0", "tidal_range_m = 4.0"),
+        ],
     ));
     assert_eq!(e.key(), Some("[caisson] weight_in_water_kn"), "{e}");
     assert!(e.to_string().contains("tidal_range_m = 4 m") && e.to_string().contains("floats"), "{e}");

@@ -292,9 +292,11 @@ impl WorkEstimate {
                 format!("{:.0e} time steps", budget.steps),
                 advice.steps,
             ),
-            Resource::Waves => {
-                (format!("about {estimate:.2e} waves ({})", self.basis), format!("{:.0e} waves", budget.waves), advice.waves)
-            }
+            Resource::Waves => (
+                format!("about {estimate:.2e} waves ({})", self.basis),
+                format!("{:.0e} waves", budget.waves),
+                advice.waves,
+            ),
             Resource::Memory => (
                 format!("about {} of results held in memory ({})", describe_bytes(estimate), self.basis),
                 describe_bytes(budget.memory_bytes),
