@@ -229,7 +229,9 @@ fn rocking_without_slip_and_beyond_failure_are_flagged() {
 
 /// Issue 12, "a 500 kN caisson gives 53 km of expected sliding": sliding beyond the base width B
 /// is `sliding-beyond-width` (with `beyond-failure`), for a run, for a design's lives (their mean
-/// |S| or one storm of a life beyond B) and for a fragility's storms; just below B it is not.
+/// |S| beyond B: one storm beyond it is a failed life, which sound designs have, e.g. one storm
+/// of 105 m in the 5000 lives of the design example) and for a fragility's storms; just below B
+/// it is not.
 #[test]
 fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
     use caisson::analysis::checks::{life_warnings, storm_warnings};
@@ -247,10 +249,10 @@ fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
         ..StormOutcome::default()
     };
     let beyond = |lives: &[StormOutcome]| codes(&life_warnings(lives, 5.0, b)).contains(&"sliding-beyond-width");
-    // The mean |S| (52 km, the finding) or a single storm beyond B; within B, not.
+    // The mean |S| (52 km, the finding) beyond B; within B, not, even with a storm beyond it.
     assert!(beyond(&[life(52_288.0, 3_000.0)]));
     assert!(beyond(&[life(0.0, 0.0), life(-41.0, 10.0)]), "a mean |S| of 20.5 m");
-    assert!(beyond(&[life(10.0, 20.5), life(0.0, 0.0)]), "one storm of 20.5 m");
+    assert!(!beyond(&[life(40.0, 105.0), life(0.0, 0.0)]), "a mean |S| of 20 m");
     assert!(!beyond(&[life(19.9, 19.9), life(-19.9, 19.9)]));
     let w = life_warnings(&[life(52_288.0, 3_000.0)], 5.0, b);
     let m = &w.iter().find(|w| w.code == "sliding-beyond-width").unwrap().message;
