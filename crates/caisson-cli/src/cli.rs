@@ -8,7 +8,7 @@ use std::path::PathBuf;
 /// Most worker threads `--threads` accepts (0: one per core).
 pub const MAX_THREADS: usize = 256;
 /// Most lives `--lives` accepts: the cap of `[design] lives`.
-pub const MAX_LIVES: usize = 10_000_000;
+pub const MAX_LIVES: usize = caisson::scenario::design::MAX_LIVES;
 
 /// A whole number from `lo` to `hi`, or a message that gives the range.
 fn whole_in(s: &str, lo: usize, hi: usize) -> Result<usize, String> {

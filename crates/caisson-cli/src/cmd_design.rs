@@ -616,7 +616,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let case = sc.storm_case(design.screen).map_err(input_err)?;
     let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
-    let estimate = caisson::analysis::work::design(&case, &design, waves);
+    // The lives this run computes: a shard's range, not the scenario's whole count.
+    let estimate =
+        caisson::analysis::work::design(&case, &DesignParams { lives: range.len(), ..design.clone() }, waves);
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = design_fingerprint(&case, &design);
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
@@ -731,7 +733,7 @@ pub(crate) fn report_lives(
     let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
-    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, failure_m));
+    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, failure_m, case.structure.caisson.width_m));
     if let Some(ws) = waves {
         report.warnings.extend(caisson::analysis::checks::wave_load_warnings(case.structure, ws));
     }

@@ -244,11 +244,16 @@ fn bad_design_keys_are_named() {
         ("storm_distribution = \"weibull\"", "storm_distribution = \"gumbel\"", "[design] storm_shape"),
         ("seed = 3", "seed = 3\nfailure_sliding_m = 0.0", "[design] failure_sliding_m"),
         ("seed = 3", "seed = 3\nfailure_sliding_m = -2.0", "[design] failure_sliding_m"),
-        // 350 kN/m floats at 2 m of tide (ρ_w g B l R = 404 kN).
-        ("weight_in_water_kn = 4500.0", "weight_in_water_kn = 350.0", "[design] tidal_range_m"),
+        // 350 kN/m is below 0.2 of the 3536.5 kN/m of water the caisson displaces.
+        ("weight_in_water_kn = 4500.0", "weight_in_water_kn = 350.0", "[caisson] weight_in_water_kn"),
+        // 750 kN/m (0.21 of it) floats at 4 m of tide (ρ_w g B l R = 808 kN).
+        ("tidal_range_m = 2.0", "tidal_range_m = 4.0", "[design] tidal_range_m"),
     ];
     for (from, to, key) in cases {
-        let text = design_text(4, "").replace(from, to);
+        let mut text = design_text(4, "").replace(from, to);
+        if to == "tidal_range_m = 4.0" {
+            text = text.replace("weight_in_water_kn = 4500.0", "weight_in_water_kn = 750.0");
+        }
         let f = write(dir.path(), "bad.toml", &text);
         let out = dir.path().join("never");
         let o = caisson()

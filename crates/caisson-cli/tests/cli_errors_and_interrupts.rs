@@ -106,3 +106,31 @@ fn ctrl_c_on_design_keeps_the_checkpoint_and_exits_130() {
         .assert()
         .code(1);
 }
+
+/// Every long command stops on Ctrl-C with exit 130 and says so, not only `run`, `campaign`,
+/// `fragility` and `design`: `spectrum` (a sweep of 300 rise times up to 1000 T0), `size` (the
+/// sizing example) and `validation` (every check of the seed).
+#[cfg(unix)]
+#[test]
+fn ctrl_c_on_spectrum_size_and_validation_exits_130_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let table5 = example("table5_triangle.toml");
+    let size = example("size_breakwater.toml");
+    let cases: [(&str, Vec<&str>); 3] = [
+        ("spectrum", vec!["spectrum", &table5, "--tr-over-t0", "0.001:1000:300", "--out", out.to_str().unwrap()]),
+        ("size", vec!["size", &size, "--threads", "1"]),
+        ("validation", vec!["validation", "--out", out.to_str().unwrap()]),
+    ];
+    // Each takes far longer than the 0.3 s before Ctrl-C (the sweep 4 s of CPU, the sizing
+    // minutes, the validation a minute on the project's machine).
+    let mut stopped = 0;
+    for (cmd, args) in &cases {
+        let (code, err) = interrupt(args, Duration::from_millis(300));
+        assert_eq!(code, Some(130), "{cmd}: {err}");
+        assert!(err.contains("Error: interrupted (Ctrl-C)"), "{cmd}: {err}");
+        assert!(temporaries(&out).is_empty(), "{cmd}: no temporary file left");
+        stopped += 1;
+    }
+    assert_eq!(stopped, 3);
+}

@@ -290,13 +290,13 @@ enum Plan {
 
 /// The plan of `caisson cmd` on `text` (module docs), and the estimate in words.
 fn plan(name: &str, cmd: &str, text: &str) -> (Plan, String) {
-    use caisson::analysis::work::{self, Budget};
+    use caisson::analysis::work::{self, Budget, Histories};
     let Ok(sc) = caisson::scenario::Scenario::from_toml(text, &examples_dir().join(name), &examples_dir()) else {
         return (Plan::Run, "refused by validation".into());
     };
     let estimate = match cmd {
-        "run" if sc.load.is_some() => Some(work::run(sc.structure(), sc.duration_s, false)),
-        "run" => sc.train_case().ok().map(|c| work::train(&c, false)),
+        "run" if sc.load.is_some() => Some(work::run(sc.structure(), sc.duration_s, Histories::None)),
+        "run" => sc.train_case().ok().map(|c| work::train(&c, Histories::None)),
         "campaign" => sc.campaign().ok().map(|c| work::campaign(&c.setups, false)),
         "design" => sc.design.clone().and_then(|mut d| {
             d.lives = 2;

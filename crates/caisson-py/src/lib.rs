@@ -18,10 +18,11 @@ use caisson::analysis::checks::{
     life_warnings, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
 };
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
-use caisson::analysis::lifetime::{run_lives, LifeColumn, StormOutcome, LIFE_COLUMNS};
+use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, History};
 use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
+use caisson::analysis::work::{self, Advice, Budget, Histories, WorkEstimate};
 use caisson::foundation::DampingMode;
 use caisson::loads::series::ForceSeries;
 use caisson::loads::{LoadSpec, WaveForce};
@@ -32,6 +33,7 @@ use caisson::report::loads::LoadsReport;
 use caisson::report::run::RunReport;
 use caisson::report::spectrum::SpectrumReport;
 use caisson::report::train::TrainRunReport;
+use caisson::scenario::design::MAX_LIVES;
 use caisson::scenario::{Scenario, ScenarioError as LibError};
 use caisson::waves::{breaking, dispersion, surf_zone};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
@@ -328,6 +330,147 @@ fn series_from(py: Python<'_>, t_s: &[f64], fx_kn: &[f64], fy_kn: &[f64], moment
     Ok(ForceSeries::from_samples(t_s.to_vec(), f))
 }
 
+/// What to change to lower each kind of work, in the words of the Python API (the CLI's
+/// [`Advice`] names its options).
+const RUN_LOAD: Advice = Advice {
+    steps: "shorten the run (`duration_s=`, `[load] duration_s`) or raise `[solver] dt_s`",
+    waves: "",
+    memory:
+        "pass history=False, shorten the run or raise `[solver] output_interval_s` (the histories are returned whole)",
+    disk: "",
+};
+const RUN_WAVES: Advice = Advice {
+    steps: "lower `[waves] waves` or `[waves] realizations`, or raise `[solver] dt_max_s` or `error_tolerance_m`",
+    waves: "lower `[waves] waves` or `[waves] realizations`",
+    memory: "lower `[waves] waves` or `[waves] realizations` (every wave is kept for the summary)",
+    disk: "",
+};
+const CAMPAIGN: Advice = Advice {
+    steps: "lower `[waves] waves` or `[waves] realizations` or the number of `[campaign]` conditions, or raise `[solver] dt_max_s` or `error_tolerance_m`",
+    waves: "lower `[waves] waves` or `[waves] realizations` or the number of `[campaign]` conditions",
+    memory: "lower `[waves] waves` or `[waves] realizations` or the number of `[campaign]` conditions (every wave is kept in the report)",
+    disk: "",
+};
+const DESIGN: Advice = Advice {
+    steps: "simulate fewer lives at a time (`indices=`: shard them over tasks, docs/python.md), lower `[design] life_years` or `storm_duration_h`, or raise `[solver] dt_max_s`",
+    waves: "simulate fewer lives at a time (`indices=`: shard them over tasks, docs/python.md), or lower `[design] life_years` or `storm_duration_h`",
+    memory: "simulate fewer lives at a time (`indices=`)",
+    disk: "",
+};
+const FRAGILITY: Advice = Advice {
+    steps: "lower `[fragility] storms`, the number of `[fragility] significant_heights_m` or `[fragility] storm_duration_h`, or raise `[solver] dt_max_s`",
+    waves: "lower `[fragility] storms`, the number of `[fragility] significant_heights_m` or `[fragility] storm_duration_h`",
+    memory: "lower `[fragility] storms` or the number of `[fragility] significant_heights_m`",
+    disk: "",
+};
+
+/// Refuse `e` over [`Budget::DEFAULT`] as the CLI does (docs/cli.md, Limits), with its words and
+/// `command` named: a `ScenarioError` whose `.value` is the estimate and `.allowed` the limit.
+fn check_work(py: Python<'_>, command: &str, e: &WorkEstimate, advice: &Advice) -> PyResult<()> {
+    let b = Budget::DEFAULT;
+    match (e.refusal(&b, command, advice), e.excess(&b)) {
+        (Some(message), Some((resource, estimate, limit))) => {
+            let (value, allowed) = match resource {
+                work::Resource::Steps => {
+                    (format!("{estimate:.2e} time steps"), format!("at most {limit:.0e} time steps"))
+                }
+                work::Resource::Waves => (format!("{estimate:.2e} waves"), format!("at most {limit:.0e} waves")),
+                work::Resource::Memory => (
+                    format!("{} held", work::describe_bytes(estimate)),
+                    format!("at most {} held", work::describe_bytes(limit)),
+                ),
+                work::Resource::Disk => (
+                    format!("{} written", work::describe_bytes(estimate)),
+                    format!("at most {} written", work::describe_bytes(limit)),
+                ),
+            };
+            Err(scenario_error(py, message, None, Some(value), Some(allowed)))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The estimate of `what` ("run", "campaign", "design", "fragility") on `sc` as the Python entry
+/// point makes it: `lives` for a design (default `[design] lives`), `history` and `duration_s`
+/// for a `[load]` run. Returns the estimate, the advice and the entry point's name.
+fn estimate_of(
+    py: Python<'_>,
+    sc: &Scenario,
+    what: &str,
+    lives: Option<usize>,
+    history: bool,
+    duration_s: Option<f64>,
+) -> PyResult<(WorkEstimate, &'static Advice, &'static str)> {
+    let lib = |e| lib_error(py, e, None);
+    match what {
+        "run" if sc.load.is_some() || duration_s.is_some() || sc.waves.is_none() => {
+            let d = duration_s.unwrap_or(sc.duration_s);
+            let h = if history { Histories::Held } else { Histories::None };
+            Ok((py.detach(|| work::run(sc.structure(), d, h)), &RUN_LOAD, "caisson.run"))
+        }
+        "run" => {
+            let case = sc.train_case().map_err(lib)?;
+            Ok((py.detach(|| work::train(&case, Histories::None)), &RUN_WAVES, "caisson.run"))
+        }
+        "campaign" => {
+            let c = sc.campaign().map_err(lib)?;
+            Ok((py.detach(|| work::campaign(&c.setups, true)), &CAMPAIGN, "caisson.campaign"))
+        }
+        "design" => {
+            let design = sc.design_for("Design").map_err(lib)?;
+            let case = sc.storm_case(design.screen).map_err(lib)?;
+            let waves = sc.waves_for("Design").map_err(lib)?;
+            let p = DesignParams { lives: lives.unwrap_or(design.lives), ..design.clone() };
+            Ok((py.detach(|| work::design(&case, &p, waves)), &DESIGN, "Design.simulate_lives"))
+        }
+        "fragility" => {
+            let p = sc.fragility_for("Fragility").map_err(lib)?;
+            let case = sc.storm_case(true).map_err(lib)?;
+            Ok((py.detach(|| work::fragility(&case, p)), &FRAGILITY, "Fragility.run"))
+        }
+        other => Err(scenario_error(
+            py,
+            format!("`what` = {other:?}: must be \"run\", \"campaign\", \"design\" or \"fragility\""),
+            Some("what".into()),
+            Some(other.into()),
+            Some("\"run\", \"campaign\", \"design\" or \"fragility\"".into()),
+        )),
+    }
+}
+
+/// The budget of the long entry points, JSON text (`caisson.BUDGET`).
+#[pyfunction]
+fn budget_json() -> PyResult<String> {
+    serde_json::to_string(&Budget::DEFAULT).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+}
+
+/// The work estimate of `what` on `sc` (`caisson.estimate`): JSON text of the estimate's fields,
+/// `weighted_steps`, the `budget`, and `over_budget` (the first resource over it, or null) with
+/// the `refusal` the entry point would raise (or null).
+#[pyfunction]
+#[pyo3(signature = (sc, what, lives=None, history=true, duration_s=None))]
+fn estimate(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    what: &str,
+    lives: Option<usize>,
+    history: bool,
+    duration_s: Option<f64>,
+) -> PyResult<String> {
+    let (e, advice, command) = estimate_of(py, &sc.sc, what, lives, history, duration_s)?;
+    let b = Budget::DEFAULT;
+    let mut v = serde_json::to_value(&e).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    let m = v.as_object_mut().expect("an estimate is an object");
+    m.insert("weighted_steps".into(), e.weighted_steps().into());
+    m.insert("budget".into(), serde_json::to_value(b).map_err(|e| PyRuntimeError::new_err(e.to_string()))?);
+    m.insert(
+        "over_budget".into(),
+        serde_json::to_value(e.excess(&b).map(|x| x.0)).map_err(|e| PyRuntimeError::new_err(e.to_string()))?,
+    );
+    m.insert("refusal".into(), e.refusal(&b, command, advice).into());
+    Ok(v.to_string())
+}
+
 type Series<'py> =
     (PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>);
 
@@ -385,6 +528,8 @@ fn run_load<'py>(
             Some(allowed),
         )
     })?;
+    let h = if history { Histories::Held } else { Histories::None };
+    check_work(py, "caisson.run", &py.detach(|| work::run(sc.structure(), duration, h)), &RUN_LOAD)?;
     let result = py.detach(|| run_engine(sc.structure(), load, duration, history)).map_err(run_error)?;
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
     let s = sc.structure();
@@ -485,6 +630,7 @@ fn spectrum(
 #[pyo3(signature = (sc, threads=1, progress=None))]
 fn run_trains(py: Python<'_>, sc: &CoreScenario, threads: usize, progress: Option<Py<PyAny>>) -> PyResult<String> {
     let case = sc.sc.train_case().map_err(|e| lib_error(py, e, None))?;
+    check_work(py, "caisson.run", &py.detach(|| work::train(&case, Histories::None)), &RUN_WAVES)?;
     let total = case.waves.train.realizations;
     let summary = drive(py, threads, total, progress, |tick| run_realizations(&case, tick))?.map_err(run_error)?;
     report_json(&TrainRunReport::new(case.structure, case.waves, &summary), "summary")
@@ -625,6 +771,7 @@ fn campaign(
     if scen.campaign.as_ref().is_some_and(|s| s.title.is_none()) {
         c.title = title.to_string();
     }
+    check_work(py, "caisson.campaign", &py.detach(|| work::campaign(&c.setups, true)), &CAMPAIGN)?;
     let total = c.setups.iter().map(|s| s.waves.train.realizations).sum();
     let results = drive(py, threads, total, progress, |tick| run_campaign(&c.setups, tick))?.map_err(run_error)?;
     report_json(&CampaignReport::new(&c, &results, true), "campaign")
@@ -644,6 +791,9 @@ fn design_lives<'py>(
     let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
     let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
     let total = indices.len();
+    // The lives asked for, not the scenario's count (a shard costs its own lives).
+    let (e, advice, command) = estimate_of(py, &sc.sc, "design", Some(total), true, None)?;
+    check_work(py, command, &e, advice)?;
     let lives = drive(py, threads, total, progress, |tick| {
         run_lives(&case, &design.life, design.seed, &indices, &|_, _| {
             tick();
@@ -709,7 +859,7 @@ fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDic
     let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
     report.warnings = structure_warnings(case.structure);
-    report.warnings.extend(life_warnings(&lives, failure_m));
+    report.warnings.extend(life_warnings(&lives, failure_m, case.structure.caisson.width_m));
     if let Some(ws) = &sc.sc.waves {
         report.warnings.extend(wave_load_warnings(case.structure, ws));
     }
@@ -737,6 +887,7 @@ fn fragility(
     let p = sc.sc.fragility_for("Fragility").map_err(|e| lib_error(py, e, None))?;
     let case = sc.sc.storm_case(true).map_err(|e| lib_error(py, e, None))?;
     let ws = sc.sc.waves_for("Fragility").map_err(|e| lib_error(py, e, None))?;
+    check_work(py, "Fragility.run", &py.detach(|| work::fragility(&case, p)), &FRAGILITY)?;
     let total = p.heights_m.len() * p.storms;
     let r = drive(py, threads, total, progress, |tick| run_fragility(&case, p, tick))?
         .map_err(|e| run_error(format!("{e}: {}", e.source)))?;
@@ -832,6 +983,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
+    m.add_function(wrap_pyfunction!(estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(budget_json, m)?)?;
+    m.add("MAX_LIVES", MAX_LIVES)?;
     m.add_function(wrap_pyfunction!(_bench_run_s, m)?)?;
     m.add_function(wrap_pyfunction!(_bench_loads_s, m)?)?;
     Ok(())

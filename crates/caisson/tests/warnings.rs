@@ -131,18 +131,33 @@ fn a_load_over_100_times_the_weight_is_flagged() {
 }
 
 /// The PARI breaking caisson with its length in mm (780 instead of 0.78 m, the weight a total):
-/// the wave force over 780 m is hundreds of times the weight.
+/// refused now, its 16.17 kN being 0.003 of the water 1000 m of caisson displace (the weight's
+/// lower bound, 0.2 of it). The wave-load warning stays for what passes that bound: a caisson
+/// 11.3 mm wide (1/100 of its height) at 0.2 of its displaced water (0.018 kN) meets a largest
+/// wave of 431 W'.
 #[test]
-fn a_length_in_mm_is_flagged_by_the_wave_loads() {
+fn a_length_in_mm_is_refused_and_wave_loads_far_above_the_weight_are_flagged() {
     let text = std::fs::read_to_string(
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/pari_breaking_loads.toml"),
     )
     .unwrap();
     assert!(text.contains("length_m = 1.0"));
-    let slip = scenario(&text.replace("length_m = 1.0", "length_m = 1000.0"));
-    let w = wave_load_warnings(slip.structure(), slip.waves.as_ref().unwrap());
+    let slip = Scenario::from_toml(
+        &text.replace("length_m = 1.0", "length_m = 1000.0"),
+        std::path::Path::new("t.toml"),
+        std::path::Path::new("."),
+    )
+    .expect_err("refused");
+    assert_eq!(slip.key(), Some("[caisson] weight_in_water_kn"), "{slip}");
+    assert!(slip.to_string().contains("this is 0.003 of it"), "{slip}");
+    let slender = scenario(
+        &text
+            .replace("width_m = 0.78", "width_m = 0.0113")
+            .replace("weight_in_water_kn = 16.17", "weight_in_water_kn = 0.018"),
+    );
+    let w = wave_load_warnings(slender.structure(), slender.waves.as_ref().unwrap());
     assert_eq!(codes(&w), ["implausible-load"]);
-    assert!(w[0].message.contains("length_m") && w[0].numbers["peak_kn"] > 100.0 * 16.17, "{}", w[0].message);
+    assert!(w[0].message.contains("length_m") && w[0].numbers["peak_kn"] > 100.0 * 0.018, "{}", w[0].message);
 }
 
 /// E100 given in MPa (350 instead of 3.5e5 kPa): 1000 × softer, a static settlement of metres and
@@ -157,10 +172,17 @@ fn a_modulus_in_mpa_is_flagged() {
     assert!(structure_warnings(right.structure()).is_empty());
 }
 
-/// A weight in water given in MN (5.5 instead of 5500 kN) on a 20 m base: 0.275 kPa.
+/// A weight in water given in MN (5.5 instead of 5500 kN) on a 20 m base: 0.275 kPa. In water it
+/// is refused (0.002 of the water the caisson displaces); a caisson whose base is at the still
+/// water level displaces none, and its base pressure is flagged.
 #[test]
-fn a_weight_in_mn_is_flagged() {
-    let light = prototype("weight_in_water_kn = 5.5", "e100_kpa = 3.5e5");
+fn a_weight_in_mn_is_refused_in_water_and_flagged_on_a_base_above_it() {
+    let text = "[caisson]\nwidth_m = 20.0\nheight_m = 24.5\nbase_depth_m = DEPTH\nweight_in_water_kn = 5.5\n[foundation]\ne100_kpa = 3.5e5\n[water]\ndensity_kg_per_m3 = 1030.0\n";
+    let e =
+        Scenario::from_toml(&text.replace("DEPTH", "17.5"), std::path::Path::new("t.toml"), std::path::Path::new("."))
+            .expect_err("refused");
+    assert_eq!(e.key(), Some("[caisson] weight_in_water_kn"), "{e}");
+    let light = scenario(&text.replace("DEPTH", "0.0"));
     let w = structure_warnings(light.structure());
     assert!(codes(&w).contains(&"implausible-base-pressure"), "{:?}", codes(&w));
     assert!(w.iter().any(|w| w.message.contains("weight_in_water_kn")));
@@ -203,4 +225,41 @@ fn rocking_without_slip_and_beyond_failure_are_flagged() {
     assert_eq!(codes(&response_warnings(s, &far)), ["beyond-failure"]);
     let near = Response { sliding_m: 0.99 * limit, slip_events: 40, ..Response::default() };
     assert!(response_warnings(s, &near).is_empty());
+}
+
+/// Issue 12, "a 500 kN caisson gives 53 km of expected sliding": sliding beyond the base width B
+/// is `sliding-beyond-width` (with `beyond-failure`), for a run, for a design's lives (their mean
+/// |S| beyond B: one storm beyond it is a failed life, which sound designs have, e.g. one storm
+/// of 105 m in the 5000 lives of the design example) and for a fragility's storms; just below B
+/// it is not.
+#[test]
+fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
+    use caisson::analysis::checks::{life_warnings, storm_warnings};
+    use caisson::analysis::lifetime::StormOutcome;
+    let sc = example("design_breakwater.toml");
+    let s = sc.structure();
+    let b = 20.0;
+    let off = Response { sliding_m: 1.01 * b, slip_events: 40, ..Response::default() };
+    assert_eq!(codes(&response_warnings(s, &off)), ["beyond-failure", "sliding-beyond-width"]);
+    let on = Response { sliding_m: -0.99 * b, slip_events: 40, ..Response::default() };
+    assert_eq!(codes(&response_warnings(s, &on)), ["beyond-failure"]);
+    let life = |sliding_m: f64, max_storm_sliding_m: f64| StormOutcome {
+        sliding_m,
+        max_storm_sliding_m,
+        ..StormOutcome::default()
+    };
+    let beyond = |lives: &[StormOutcome]| codes(&life_warnings(lives, 5.0, b)).contains(&"sliding-beyond-width");
+    // The mean |S| (52 km, the finding) beyond B; within B, not, even with a storm beyond it.
+    assert!(beyond(&[life(52_288.0, 3_000.0)]));
+    assert!(beyond(&[life(0.0, 0.0), life(-41.0, 10.0)]), "a mean |S| of 20.5 m");
+    assert!(!beyond(&[life(40.0, 105.0), life(0.0, 0.0)]), "a mean |S| of 20 m");
+    assert!(!beyond(&[life(19.9, 19.9), life(-19.9, 19.9)]));
+    let w = life_warnings(&[life(52_288.0, 3_000.0)], 5.0, b);
+    let m = &w.iter().find(|w| w.code == "sliding-beyond-width").unwrap().message;
+    assert!(m.contains("2614.4 times the base width") && m.contains("weight_in_water_kn"), "{m}");
+    let storms = [life(25.0, 25.0), life(1.0, 1.0), life(-0.5, 0.5)];
+    let w = storm_warnings(storms.iter(), b);
+    assert_eq!(codes(&w), ["sliding-beyond-width"]);
+    assert!(w[0].message.starts_with("1 of 3 storms slid the caisson beyond its base width"), "{}", w[0].message);
+    assert!(storm_warnings(storms[1..].iter(), b).is_empty());
 }

@@ -5,7 +5,7 @@ use caisson::analysis::campaign::run_campaign;
 use caisson::analysis::fragility::run_fragility;
 use caisson::analysis::lifetime::{run_lives, simulate_life, LifeParams, StormCase};
 use caisson::analysis::train::run_realizations;
-use caisson::analysis::work::{self, Budget, Resource, StepsFrom, WorkEstimate};
+use caisson::analysis::work::{self, Budget, Histories, Resource, StepsFrom, WorkEstimate};
 use caisson::analysis::Structure;
 use caisson::dynamics::{AdaptiveParams, SolverParams};
 use caisson::scenario::{self, Scenario};
@@ -20,8 +20,8 @@ fn example(name: &str) -> Scenario {
 fn estimate(name: &str, command: &str) -> WorkEstimate {
     let sc = example(name);
     match command {
-        "run" if sc.load.is_some() => work::run(sc.structure(), sc.duration_s, false),
-        "run" => work::train(&sc.train_case().unwrap(), false),
+        "run" if sc.load.is_some() => work::run(sc.structure(), sc.duration_s, Histories::None),
+        "run" => work::train(&sc.train_case().unwrap(), Histories::None),
         "campaign" => work::campaign(&sc.campaign().unwrap().setups, false),
         "design" => {
             let d = sc.design.clone().unwrap();
@@ -46,7 +46,7 @@ fn train_and_campaign_steps_are_within_15_percent_of_the_real_steps() {
     for name in ["pari_breaking_loads.toml", "pari_nonbreaking_loads.toml"] {
         let sc = example(name);
         let case = sc.train_case().unwrap();
-        let e = work::train(&case, false);
+        let e = work::train(&case, Histories::None);
         assert!(matches!(e.steps_from, StepsFrom::Pilot { .. }), "{name}: adaptive steps are piloted");
         let real: u64 = run_realizations(&case, &|| {}).unwrap().realizations.iter().map(|r| r.solver.steps).sum();
         assert!(off(e.steps, real as f64) < 0.15, "{name}: estimated {} steps, ran {real}", e.steps);
@@ -69,14 +69,34 @@ fn train_and_campaign_steps_are_within_15_percent_of_the_real_steps() {
 #[test]
 fn fixed_steps_are_the_simulated_time_over_dt() {
     let sc = example("table5_triangle.toml");
-    let e = work::run(sc.structure(), sc.duration_s, false);
+    let e = work::run(sc.structure(), sc.duration_s, Histories::None);
     assert_eq!(e.steps_from, StepsFrom::FixedSteps { dt_s: 1e-4 });
     let real = caisson::analysis::run::run(sc.structure(), sc.load.as_ref().unwrap(), sc.duration_s, false).unwrap();
     assert!(off(e.steps, real.summary.solver.steps as f64) < 1e-3, "{} against {}", e.steps, real.summary.solver.steps);
-    // The time histories of --out: one row per output interval.
-    let with = work::run(sc.structure(), sc.duration_s, true);
+    // Time histories: one row per output interval, held (Python) or written (--out).
     let rows = (sc.duration_s / sc.solver().output_interval_s).ceil() + 1.0;
-    assert_eq!(with.memory_bytes, rows * work::bytes_per_history_row(10));
+    let held = work::run(sc.structure(), sc.duration_s, Histories::Held);
+    assert_eq!((held.memory_bytes, held.disk_bytes), (rows * work::bytes_per_history_row(10), 0.0));
+    let streamed = work::run(sc.structure(), sc.duration_s, Histories::Streamed);
+    assert_eq!((streamed.memory_bytes, streamed.disk_bytes), (0.0, rows * work::csv_bytes_per_history_row(10)));
+}
+
+/// A billion history rows of ten springs is over a terabyte: over the disk budget, and not over
+/// the memory budget (the histories are not held).
+#[test]
+fn a_billion_streamed_history_rows_are_over_the_disk_budget_only() {
+    let sc = example("table5_triangle.toml");
+    let solver = sc.solver().with_output_interval_s(sc.solver().dt_s);
+    let s = Structure { solver, ..sc.structure().clone() };
+    let e = work::run(&s, 1e5, Histories::Streamed);
+    assert_eq!(e.excess(&Budget::DEFAULT).map(|x| x.0), Some(Resource::Disk), "{e:?}");
+    assert!(e.disk_bytes > 1e12 && e.memory_bytes == 0.0, "{e:?}");
+    let msg = e.refusal(&Budget::DEFAULT, "caisson run", &work::Advice { steps: "", waves: "", memory: "", disk: "D" });
+    let msg = msg.expect("refused");
+    assert!(msg.contains("1.0 TiB of time histories written to disk") && msg.contains("10.0 GiB written"), "{msg}");
+    // Held whole instead, the same rows are over the memory budget.
+    let held = work::run(&s, 1e5, Histories::Held);
+    assert_eq!(held.excess(&Budget::DEFAULT).map(|x| x.0), Some(Resource::Memory));
 }
 
 /// The design example: the waves drawn against the first 100 lives, and the screen pilot's share
@@ -166,8 +186,22 @@ fn every_bundled_example_is_far_below_the_budget() {
         ("fragility.toml", "fragility"),
     ];
     for (name, command) in cases {
-        let e = estimate(name, command);
-        let tighter = Budget { steps: b.steps / 90.0, waves: b.waves / 90.0, memory_bytes: b.memory_bytes / 90.0 };
+        let mut e = estimate(name, command);
+        if command == "run" {
+            // With --out: the time histories written.
+            let sc = example(name);
+            e = match sc.load {
+                Some(_) => work::run(sc.structure(), sc.duration_s, Histories::Streamed),
+                None => work::train(&sc.train_case().unwrap(), Histories::Streamed),
+            };
+            assert!(e.disk_bytes > 0.0, "{name}");
+        }
+        let tighter = Budget {
+            steps: b.steps / 90.0,
+            waves: b.waves / 90.0,
+            memory_bytes: b.memory_bytes / 90.0,
+            disk_bytes: b.disk_bytes / 90.0,
+        };
         assert_eq!(e.excess(&tighter), None, "{name}: {e:?}");
         assert!(e.steps > 0.0 && e.memory_bytes >= 0.0, "{name}: {e:?}");
     }
@@ -180,6 +214,7 @@ fn the_first_resource_over_the_budget_is_named() {
         step_cost: 1.0,
         waves: 1e3,
         memory_bytes: 1e12,
+        disk_bytes: 0.0,
         simulated_s: 1.0,
         steps_from: StepsFrom::FixedSteps { dt_s: 1e-4 },
         simulated_share: 1.0,
@@ -201,6 +236,6 @@ fn a_step_on_n_springs_counts_as_n_plus_10_over_20_steps_on_10() {
         assert!(off(work::step_cost(n), measured) < 0.2, "{n} springs: {} against {measured}", work::step_cost(n));
     }
     let sc = example("table5_triangle.toml");
-    let e = work::run(sc.structure(), sc.duration_s, false);
+    let e = work::run(sc.structure(), sc.duration_s, Histories::None);
     assert_eq!((e.step_cost, e.weighted_steps()), (1.0, e.steps), "the seed's 10 springs count 1");
 }

@@ -5,6 +5,10 @@ command); this package only assembles its results into dicts, pandas DataFrames 
 Datasets. Units are in every key and column name (``sliding_m``, ``fx_kn``); summaries are dicts
 with exactly the keys of the CLI's JSON (docs/cli.md, docs/design.md, docs/fragility.md).
 
+Runs that could take long (``run``, ``campaign``, ``Design.simulate_lives``, ``Fragility.run``)
+estimate their work first and raise :class:`ScenarioError` beyond the CLI's budget
+(:func:`estimate`, docs/cli.md "Limits").
+
 Objects are validated when built, immutable and picklable. Every run releases the GIL; parallel
 drivers run on a local pool of ``threads`` worker threads (default 1, 0 = one per core), never on
 a global pool, so Dask and Ray workers can each run one task per core. ``progress(done, total)``
@@ -44,6 +48,8 @@ __all__ = [
     "Fragility",
     "FragilityResult",
     "fit_lognormal",
+    "estimate",
+    "BUDGET",
     "loads",
     "waves",
     "__version__",
@@ -395,6 +401,35 @@ def spectrum(scenario: Scenario, tr_over_t0: Any, *, threads: int = 1, progress:
     return frame
 
 
+def estimate(
+    scenario: Scenario,
+    what: str = "run",
+    *,
+    lives: Optional[int] = None,
+    history: bool = True,
+    duration_s: Optional[float] = None,
+) -> dict:
+    """The work that ``what`` (``"run"``, ``"campaign"``, ``"design"``, ``"fragility"``) would do on
+    the scenario, estimated before it starts as the CLI does (docs/cli.md "Limits"): ``lives``
+    for a design (default ``[design] lives``), ``history`` and ``duration_s`` as :func:`run`.
+
+    A dict: ``steps`` (time steps of the dynamic model), ``step_cost`` (a step on n springs in
+    steps on 10), ``weighted_steps`` (what the budget counts), ``waves`` (drawn), ``memory_bytes``
+    (held until the end), ``disk_bytes`` (0: Python writes no file), ``simulated_s``,
+    ``simulated_share``, ``steps_from`` (how the steps were counted), ``basis`` (the count in
+    words), ``budget`` (``steps``, ``waves``, ``memory_bytes``, ``disk_bytes``), ``over_budget``
+    (``"steps"``, ``"waves"``, ``"memory"`` or None) and ``refusal`` (the message of the
+    :class:`ScenarioError` the entry point raises, or None). A pilot run of about 15 ms measures
+    adaptive steps; the estimate is deterministic.
+    """
+    return json.loads(_core.estimate(scenario._core, what, lives, history, duration_s))
+
+
+#: The work budget of the long entry points (and of the CLI): time steps, waves, bytes held and
+#: bytes written (docs/cli.md "Limits").
+BUDGET: dict = dict(json.loads(_core.budget_json()))
+
+
 _LIFE_COLUMNS = tuple(_core.life_columns())
 
 
@@ -414,8 +449,8 @@ class Design:
         if not scenario.has_design:
             _core.design_fingerprint_of(scenario._core)  # raises the library's ScenarioError
         n = scenario._core.design_lives if lives is None else int(lives)
-        if n < 1:
-            raise ScenarioError(f"`lives` = {n}: must be at least 1")
+        if not 1 <= n <= _core.MAX_LIVES:
+            raise ScenarioError(f"`lives` = {n}: must be a whole number from 1 to {_core.MAX_LIVES}, as `[design] lives`")
         object.__setattr__(self, "_scenario", scenario)
         object.__setattr__(self, "_lives", n)
 
@@ -433,12 +468,20 @@ class Design:
         """What every life depends on (the checkpoint fingerprint of ``caisson design``)."""
         return _core.design_fingerprint_of(self._scenario._core)
 
+    def estimate(self, indices: Optional[Iterable[int]] = None) -> dict:
+        """The work of :meth:`simulate_lives` on ``indices`` (default: all lives), as
+        :func:`estimate`: counted on the number of lives asked for."""
+        n = self._lives if indices is None else len(list(indices))
+        return estimate(self._scenario, "design", lives=max(n, 1))
+
     def simulate_lives(self, indices: Optional[Iterable[int]] = None, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
         """Simulate lives ``indices`` (default: all, 0 .. lives − 1), in any order: one row per
         life, sorted by ``life``, with the columns of ``lives.csv`` (docs/design.md): ``sliding_m``
         (net, shoreward +), ``shoreward_sliding_m``, ``seaward_sliding_m``, ``max_excursion_m``,
         ``rigid_block_sliding_m``, ``max_storm_sliding_m`` in m; ``waves``, ``simulated_waves``,
-        ``screened_waves``, ``rocking_waves``, ``large_rotation_waves``."""
+        ``screened_waves``, ``rocking_waves``, ``large_rotation_waves``. Raises
+        :class:`ScenarioError` if the lives asked for are over the work budget (:meth:`estimate`):
+        ask for fewer at a time."""
         idx = list(range(self._lives)) if indices is None else [int(i) for i in indices]
         if any(i < 0 for i in idx):
             raise ScenarioError("life indices must be ≥ 0")

@@ -16,6 +16,7 @@
 //! | `rocking-without-slip` | a displacement above 1 µm with no slip event | it comes from rocking: lifted springs re-contact at a displaced base |
 //! | `rocking` | rotation above 0.01 rad | the seaward heel lifts by θB/2; beyond small rotations the model's kinematics and foundation do not hold, and the landing can slide the caisson seaward (docs/design.md) |
 //! | `beyond-failure` | \|sliding\| above 0.25 B | a quarter of the base has left the bedding the model describes |
+//! | `sliding-beyond-width` | \|sliding\| above B (a run, a realization; a design's expected sliding E\|S\|; a fragility storm) | a caisson cannot slide beyond its mound: the model is far outside its validity and the number is no prediction (the design example at W' = 500 kN slid 52 km in a life); usually an input error (the weight, the loads) |
 //! | `failed-lives` | a design life moved beyond `failure_sliding_m` | its sliding after failure lies outside the model's validity: read P(failure) and the surviving lives' statistics |
 //! | `large-rotation-lives` | a wave of a design life rotated the caisson beyond 0.01 rad | as `rocking`: the model does not follow overturning |
 //! | `seaward-lives` | a design life ends more than 1 cm seaward of its place | rocking landings, not the wave's push, moved it (docs/design.md) |
@@ -70,6 +71,11 @@ const NOMINAL_HMAX_RATIO: f64 = 1.8;
 pub const ROCKING_LIMIT_RAD: f64 = 0.01;
 /// Sliding beyond which the caisson has failed, as a fraction of the base width.
 pub const FAILURE_FRACTION_OF_WIDTH: f64 = 0.25;
+/// Sliding beyond this multiple of the base width is absurd (`sliding-beyond-width`).
+pub const ABSURD_SLIDING_OVER_WIDTH: f64 = 1.0;
+
+/// What every `sliding-beyond-width` message ends with.
+const BEYOND_WIDTH: &str = "a caisson cannot slide beyond its mound, so the model (a caisson sliding on its bedding) is far outside its validity and this number is no prediction: check the input, above all `[caisson] weight_in_water_kn` (in kN, the total over `length_m`) and the loads (`caisson loads` gives the design wave's and Goda's sliding safety factor)";
 
 /// Checks of the structure itself (before any run).
 pub fn structure_warnings(s: &Structure) -> Vec<Warning> {
@@ -310,16 +316,45 @@ pub fn response_warnings(s: &Structure, r: &Response) -> Vec<Warning> {
             &[("sliding_m", r.sliding_m), ("limit_m", limit)],
         ));
     }
+    if r.sliding_m.abs() > ABSURD_SLIDING_OVER_WIDTH * b {
+        out.push(Warning::new(
+            "sliding-beyond-width",
+            format!(
+                "the caisson slid {:.4} m, {:.1} times its base width B = {b} m: {BEYOND_WIDTH}",
+                r.sliding_m,
+                r.sliding_m.abs() / b
+            ),
+            &[("sliding_m", r.sliding_m), ("width_m", b)],
+        ));
+    }
     out
 }
 
 /// Seaward end positions below this are reported (`seaward-lives`), m.
 pub const SEAWARD_REPORT_M: f64 = 0.01;
 
-/// Checks of a design run's lives with the failure limit `failure_limit_m`.
-pub fn life_warnings(lives: &[StormOutcome], failure_limit_m: f64) -> Vec<Warning> {
+/// Checks of a design run's lives with the failure limit `failure_limit_m`, of a caisson of base
+/// width `width_m`.
+pub fn life_warnings(lives: &[StormOutcome], failure_limit_m: f64, width_m: f64) -> Vec<Warning> {
     let mut out = Vec::new();
     let n = lives.len() as f64;
+    let mean = lives.iter().map(|l| l.sliding_m.abs()).sum::<f64>() / n.max(1.0);
+    let storm = lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max);
+    let b = width_m;
+    // The statistics themselves beyond the width (a life or a storm alone beyond it is a failed
+    // life, `failed-lives`: rare extreme storms do that to sound designs, e.g. one storm of 105 m
+    // in the 5000 lives of the design example).
+    if mean > ABSURD_SLIDING_OVER_WIDTH * b {
+        out.push(Warning::new(
+            "sliding-beyond-width",
+            format!(
+                "the lives slid {mean:.4} m on average (E|S|, {:.1} times the base width B = {b} m) and a single storm slid the caisson up to {storm:.4} m ({:.1} B): {BEYOND_WIDTH}",
+                mean / b,
+                storm / b
+            ),
+            &[("expected_sliding_m", mean), ("max_storm_sliding_m", storm), ("width_m", b)],
+        ));
+    }
     let failed = lives.iter().filter(|l| l.failed(failure_limit_m)).count();
     if failed > 0 {
         out.push(Warning::new(
@@ -362,4 +397,28 @@ pub fn life_warnings(lives: &[StormOutcome], failure_limit_m: f64) -> Vec<Warnin
         ));
     }
     out
+}
+
+/// Checks of a fragility run's storms on a caisson of base width `width_m`: storms that slid it
+/// beyond its width (`sliding-beyond-width`; the exceedance counts of limits below it stand).
+pub fn storm_warnings<'a>(storms: impl Iterator<Item = &'a StormOutcome>, width_m: f64) -> Vec<Warning> {
+    let (mut n, mut beyond, mut worst) = (0usize, 0usize, 0.0f64);
+    for s in storms {
+        n += 1;
+        let slid = s.sliding_m.abs().max(s.max_storm_sliding_m);
+        if slid > ABSURD_SLIDING_OVER_WIDTH * width_m {
+            beyond += 1;
+        }
+        worst = worst.max(slid);
+    }
+    if beyond == 0 {
+        return Vec::new();
+    }
+    vec![Warning::new(
+        "sliding-beyond-width",
+        format!(
+            "{beyond} of {n} storms slid the caisson beyond its base width B = {width_m} m (up to {worst:.4} m): they count as exceeding every limit, but their sliding is no prediction: {BEYOND_WIDTH}"
+        ),
+        &[("storms_beyond_width", beyond as f64), ("storms", n as f64), ("max_storm_sliding_m", worst), ("width_m", width_m)],
+    )]
 }

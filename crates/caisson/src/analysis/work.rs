@@ -15,11 +15,16 @@
 //! * **waves** drawn: every wave of every train, storm and life. A design or fragility run draws
 //!   each wave's height and screens it even when it does not simulate it (about 0.1 µs each).
 //! * **memory** held until the end of the run, bytes: the results kept for the outputs (every
-//!   wave of a train in the JSON summary, a life, a storm) and the time histories of `--out`,
-//!   from the sizes measured on the examples (below); the solver's own state is small and fixed.
+//!   wave of a train in the JSON summary, a life, a storm) and time histories returned whole
+//!   ([`Histories::Held`]: Python's `run`), from the sizes measured on the examples (below); the
+//!   solver's own state is small and fixed.
+//! * **disk** written while the run goes, bytes: time histories streamed to files row by row
+//!   ([`Histories::Streamed`]: `caisson run --out`), which cost no memory (the CLI keeps a bounded
+//!   envelope of them for its plots, about 10 MB) but fill a disk: a history is refused before it
+//!   starts, not after hours when the disk is full.
 //!
 //! Which waves of a design or fragility run reach the dynamic model depends on the screen
-//! ([`super::lifetime`]); the share is estimated by a **screen pilot**: the first lives (or the
+//! ([`super::lifetime`]); the share is estimated by a **screen pilot**: the first 16 lives (or the
 //! storms of up to 16 heights) with few waves per storm, through the real screen, with a coarse
 //! adaptive solver (the screen does not depend on the solver, and the coarse one keeps the pilot
 //! short). The simulated time is that share of the waves' time (a storm of N waves of period T
@@ -33,10 +38,13 @@
 //! fragility example's share within 10 % (measured 1.3 %). A pilot takes about 15 ms.
 //!
 //! Memory per item (measured with `/usr/bin/time -f %M` on the examples scaled up, rounded up):
-//! a history row of n springs holds 8 (12 + 3n) + 4 bytes of samples plus about 25 bytes per
-//! spring column of `springs.csv` text (1.1 kB at n = 10); a wave of a train about 2 kB (its
-//! result and its entry of the JSON summary); a campaign wave 200 B (2 kB in `campaign.json`);
-//! a life or a storm 256 B.
+//! a history row of n springs held whole, 8 (12 + 3n) + 4 bytes of samples plus 75 n bytes for
+//! their copies (1.1 kB at n = 10; Python's `run`, the Rust history and its DataFrame and
+//! Dataset, measured 0.71 kB a row at its peak on a 2·10⁵-row history); a wave of a train about 2 kB (its result and its entry of the JSON summary); a
+//! campaign wave 200 B (2 kB in `campaign.json`); a life or a storm 256 B. Disk per history row
+//! streamed: [`CSV_BYTES_PER_NUMBER`] bytes for each number of `history.csv` (time and 12
+//! columns) and `springs.csv` (time and 3 n columns): 25 (14 + 3n), 1.1 kB at n = 10 (measured
+//! 0.90 kB on `table5_triangle.toml`, 0.84 kB on `fifteen_waves.toml`).
 
 use super::campaign::ConditionSetup;
 use super::fragility::FragilityParams;
@@ -59,10 +67,65 @@ pub const BYTES_PER_CAMPAIGN_WAVE: f64 = 200.0;
 /// Bytes of a life (design) or a storm (fragility) held until the end.
 pub const BYTES_PER_LIFE: f64 = 256.0;
 
-/// Bytes of one row of the time histories (`--out`) with `springs` springs (module docs).
+/// Bytes written for each number of a streamed history row, its separator included (the
+/// shortest text that reads back to the same float: measured 19-21 on the examples).
+pub const CSV_BYTES_PER_NUMBER: f64 = 25.0;
+
+/// Bytes held in memory for one row of time histories kept whole, on `springs` springs (module
+/// docs).
 pub fn bytes_per_history_row(springs: usize) -> f64 {
     let n = springs as f64;
     8.0 * (12.0 + 3.0 * n) + 4.0 + 25.0 * 3.0 * n
+}
+
+/// Bytes written to `history.csv` and `springs.csv` for one row streamed on `springs` springs:
+/// [`CSV_BYTES_PER_NUMBER`] × (14 + 3n) (module docs).
+pub fn csv_bytes_per_history_row(springs: usize) -> f64 {
+    CSV_BYTES_PER_NUMBER * (14.0 + 3.0 * springs as f64)
+}
+
+/// What becomes of the time histories of a run (a `[load]` run, or realization 0 of wave
+/// trains).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Histories {
+    /// None are kept (only the summary).
+    None,
+    /// Returned whole at the end, held in memory (Python's `run`).
+    Held,
+    /// Written to files row by row as the run goes (`caisson run --out`): disk, not memory.
+    Streamed,
+}
+
+impl Histories {
+    /// (memory, disk) bytes of `rows` rows on `springs` springs.
+    fn cost(self, rows: f64, springs: usize) -> (f64, f64) {
+        match self {
+            Histories::None => (0.0, 0.0),
+            Histories::Held => (rows * bytes_per_history_row(springs), 0.0),
+            Histories::Streamed => (0.0, rows * csv_bytes_per_history_row(springs)),
+        }
+    }
+
+    /// Rows of a history of `duration_s` sampled every `interval_s` in about `steps` steps (0
+    /// without histories): a row is the first step at or after each interval, so adaptive steps
+    /// longer than the interval give one row a step.
+    fn rows(self, duration_s: f64, interval_s: f64, steps: f64) -> f64 {
+        if self == Histories::None {
+            0.0
+        } else {
+            (duration_s / interval_s).ceil().min(steps.ceil()) + 1.0
+        }
+    }
+
+    /// The rows in words for an estimate's basis.
+    fn describe(self, rows: f64) -> String {
+        match self {
+            Histories::None => String::new(),
+            Histories::Held => format!(", {rows} history rows held"),
+            Histories::Streamed => format!(", {rows} history rows written"),
+        }
+    }
 }
 
 /// The cost of a time step on `springs` springs in steps on the seed's 10: (n + 10)/20 (module
@@ -116,6 +179,8 @@ pub struct WorkEstimate {
     pub waves: f64,
     /// Bytes held in memory until the end of the run.
     pub memory_bytes: f64,
+    /// Bytes written to files while the run goes (streamed time histories).
+    pub disk_bytes: f64,
     /// Seconds of loading run through the dynamic model.
     pub simulated_s: f64,
     pub steps_from: StepsFrom,
@@ -131,14 +196,20 @@ pub struct Budget {
     pub steps: f64,
     pub waves: f64,
     pub memory_bytes: f64,
+    pub disk_bytes: f64,
 }
 
+const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
+
 impl Budget {
-    /// The CLI's budget (docs/cli.md "Limits"): 2·10¹⁰ time steps (about two hours of one core at
-    /// 0.3-0.4 µs a step), 2·10¹⁰ waves drawn (about an hour), 4 GiB held. The bundled examples
-    /// stay 90 times or more below each (the design example, the largest, at 1.9·10⁸ steps and
-    /// 1.9·10⁸ waves).
-    pub const DEFAULT: Budget = Budget { steps: 2e10, waves: 2e10, memory_bytes: 4.0 * 1024.0 * 1024.0 * 1024.0 };
+    /// The budget of the CLI and of Python (docs/cli.md "Limits"): 2·10¹⁰ time steps (about two
+    /// hours of one core at 0.3-0.4 µs a step), 2·10¹⁰ waves drawn (about an hour), 4 GiB held,
+    /// 10 GiB of time histories written (about 10⁷ rows on 10 springs, 2.7 hours of loading at
+    /// the default interval of 1 ms: more than a spreadsheet or a plotting tool reads whole, and
+    /// a disk that fills mid-run fails the run after its hours of computing). The bundled
+    /// examples stay 90 times or more below each (the design example, the largest, at 1.9·10⁸
+    /// steps and 1.9·10⁸ waves; `fifteen_waves.toml --out` writes 38 MB).
+    pub const DEFAULT: Budget = Budget { steps: 2e10, waves: 2e10, memory_bytes: 4.0 * GIB, disk_bytes: 10.0 * GIB };
 }
 
 /// What an estimate exceeds first.
@@ -148,7 +219,34 @@ pub enum Resource {
     Steps,
     Waves,
     Memory,
+    Disk,
 }
+
+/// What to change to lower each kind of work, in the words of the caller's keys and options
+/// (the CLI's and Python's differ).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Advice {
+    pub steps: &'static str,
+    pub waves: &'static str,
+    pub memory: &'static str,
+    pub disk: &'static str,
+}
+
+/// `b` bytes in words (MiB, GiB, TiB: powers of 1024).
+pub fn describe_bytes(b: f64) -> String {
+    const MIB: f64 = 1024.0 * 1024.0;
+    if b >= 1024.0 * GIB {
+        format!("{:.1} TiB", b / (1024.0 * GIB))
+    } else if b >= GIB {
+        format!("{:.1} GiB", b / GIB)
+    } else {
+        format!("{:.1} MiB", b / MIB)
+    }
+}
+
+/// Estimates at this many steps or waves or more are long (about half a minute): a caller says
+/// them as the run starts ([`WorkEstimate::note`]).
+pub const LONG: f64 = 1e8;
 
 impl WorkEstimate {
     /// The steps in steps on 10 springs, [`Self::steps`] × [`Self::step_cost`]: what the budget
@@ -157,15 +255,79 @@ impl WorkEstimate {
         self.steps * self.step_cost
     }
 
-    /// The first of weighted steps, waves and memory over `budget`: (which, estimate, limit).
+    /// The first of waves, weighted steps, memory and disk over `budget`: (which, estimate,
+    /// limit).
     pub fn excess(&self, budget: &Budget) -> Option<(Resource, f64, f64)> {
         [
             (Resource::Waves, self.waves, budget.waves),
             (Resource::Steps, self.weighted_steps(), budget.steps),
             (Resource::Memory, self.memory_bytes, budget.memory_bytes),
+            (Resource::Disk, self.disk_bytes, budget.disk_bytes),
         ]
         .into_iter()
         .find(|&(_, est, limit)| est.is_nan() || est > limit)
+    }
+
+    /// The refusal of a run over `budget`, `None` within it: "`{command}` would take {the
+    /// estimate and how it was made}; the budget is {the limit} (docs/cli.md, Limits): {what to
+    /// change, from `advice`}".
+    pub fn refusal(&self, budget: &Budget, command: &str, advice: &Advice) -> Option<String> {
+        let (resource, estimate, _) = self.excess(budget)?;
+        let (what, limit, change) = match resource {
+            Resource::Steps => (
+                format!(
+                    "about {estimate:.2e} time steps of the dynamic model ({}; {:.3e} s of loading at {}{})",
+                    self.basis,
+                    self.simulated_s,
+                    self.steps_from.describe(),
+                    if self.step_cost == 1.0 {
+                        String::new()
+                    } else {
+                        format!(
+                            "; {:.2e} steps, each of {:.3} steps on 10 springs, the budget's unit",
+                            self.steps, self.step_cost
+                        )
+                    }
+                ),
+                format!("{:.0e} time steps", budget.steps),
+                advice.steps,
+            ),
+            Resource::Waves => (
+                format!("about {estimate:.2e} waves ({})", self.basis),
+                format!("{:.0e} waves", budget.waves),
+                advice.waves,
+            ),
+            Resource::Memory => (
+                format!("about {} of results held in memory ({})", describe_bytes(estimate), self.basis),
+                describe_bytes(budget.memory_bytes),
+                advice.memory,
+            ),
+            Resource::Disk => (
+                format!("about {} of time histories written to disk ({})", describe_bytes(estimate), self.basis),
+                format!("{} written", describe_bytes(budget.disk_bytes)),
+                advice.disk,
+            ),
+        };
+        Some(format!("`{command}` would take {what}; the budget is {limit} (docs/cli.md, Limits): {change}"))
+    }
+
+    /// The estimate in words, to say as a long run starts ([`LONG`] steps or waves or more);
+    /// `None` for a shorter run.
+    pub fn note(&self, budget: &Budget) -> Option<String> {
+        (self.weighted_steps() >= LONG || self.waves >= LONG).then(|| {
+            format!(
+                "Estimated work: about {:.1e} time steps and {:.1e} waves, {} held, {} written ({}); the budget is {:.0e} steps, {:.0e} waves, {} held, {} written",
+                self.weighted_steps(),
+                self.waves,
+                describe_bytes(self.memory_bytes),
+                describe_bytes(self.disk_bytes),
+                self.basis,
+                budget.steps,
+                budget.waves,
+                describe_bytes(budget.memory_bytes),
+                describe_bytes(budget.disk_bytes)
+            )
+        })
     }
 }
 
@@ -197,28 +359,27 @@ fn steps_from(structure: &Structure, pilot: impl FnOnce() -> Option<f64>) -> Ste
     }
 }
 
-/// A `[load]` run of `duration_s` (`analysis::run::run`); `history`: with its time histories.
+/// A `[load]` run of `duration_s` (`analysis::run::run`) with its time `histories`.
 /// Adaptive steps are counted as steps of the first step `dt_s` (the run's own limit,
 /// [`SolverParams::check_run`]).
-pub fn run(structure: &Structure, duration_s: f64, history: bool) -> WorkEstimate {
+pub fn run(structure: &Structure, duration_s: f64, histories: Histories) -> WorkEstimate {
     let s = &structure.solver;
     let steps_from = match s.stepping {
         Stepping::Fixed => StepsFrom::FixedSteps { dt_s: s.dt_s },
         Stepping::Adaptive(_) => StepsFrom::FirstStep { dt_s: s.dt_s },
     };
-    let rows = if history { (duration_s / s.output_interval_s).ceil() + 1.0 } else { 0.0 };
+    let rows = histories.rows(duration_s, s.output_interval_s, duration_s * steps_from.steps_per_s());
+    let (memory_bytes, disk_bytes) = histories.cost(rows, structure.foundation.springs);
     WorkEstimate {
         steps: duration_s * steps_from.steps_per_s(),
         step_cost: step_cost(structure.foundation.springs),
         waves: 0.0,
-        memory_bytes: rows * bytes_per_history_row(structure.foundation.springs),
+        memory_bytes,
+        disk_bytes,
         simulated_s: duration_s,
         steps_from,
         simulated_share: 1.0,
-        basis: format!(
-            "{duration_s} s of loading{}",
-            if history { format!(", {rows} history rows") } else { String::new() }
-        ),
+        basis: format!("{duration_s} s of loading{}", histories.describe(rows)),
     }
 }
 
@@ -230,23 +391,32 @@ fn train_pilot(structure: &Structure, waves: &WaveSetup) -> Option<f64> {
     pilot_rate(structure, &train, train.duration_s())
 }
 
-/// Wave-train realizations (`train::run_realizations`); `history`: with the time histories of
-/// realization 0 (`caisson run --out`).
-pub fn train(case: &TrainCase<'_>, history: bool) -> WorkEstimate {
+/// Wave-train realizations (`train::run_realizations`) with the time `histories` of
+/// realization 0 (`caisson run --out` streams them).
+pub fn train(case: &TrainCase<'_>, histories: Histories) -> WorkEstimate {
     let t = &case.waves.train;
     let (n, r) = (t.waves as f64, t.realizations as f64);
     let duration_s = n * t.period_s;
     let steps_from = steps_from(case.structure, || train_pilot(case.structure, case.waves));
-    let rows = if history { (duration_s / case.structure.solver.output_interval_s).ceil() + 1.0 } else { 0.0 };
+    let rows =
+        histories.rows(duration_s, case.structure.solver.output_interval_s, duration_s * steps_from.steps_per_s());
+    let (history_memory, disk_bytes) = histories.cost(rows, case.structure.foundation.springs);
     WorkEstimate {
         steps: r * duration_s * steps_from.steps_per_s(),
         step_cost: step_cost(case.structure.foundation.springs),
         waves: r * n,
-        memory_bytes: r * n * BYTES_PER_TRAIN_WAVE + rows * bytes_per_history_row(case.structure.foundation.springs),
+        memory_bytes: r * n * BYTES_PER_TRAIN_WAVE + history_memory,
+        disk_bytes,
         simulated_s: r * duration_s,
         steps_from,
         simulated_share: 1.0,
-        basis: format!("{} realizations × {} waves of {} s", t.realizations, t.waves, t.period_s),
+        basis: format!(
+            "{} realizations × {} waves of {} s{}",
+            t.realizations,
+            t.waves,
+            t.period_s,
+            histories.describe(rows)
+        ),
     }
 }
 
@@ -277,6 +447,7 @@ pub fn campaign(setups: &[ConditionSetup], every_wave: bool) -> WorkEstimate {
         step_cost: first.map_or(1.0, |s| step_cost(s.foundation.springs)),
         waves,
         memory_bytes: waves * per_wave,
+        disk_bytes: 0.0,
         simulated_s,
         steps_from,
         simulated_share: 1.0,
@@ -321,8 +492,10 @@ const PILOT_LIVES: usize = 16;
 const PILOT_STORMS: usize = 8;
 const PILOT_WAVES_PER_STORM: f64 = 16.0;
 
-/// A design run (`lifetime::run_lives`) of `p.lives` lives; `waves` is the scenario's `[waves]`
-/// (the representative wave of the step pilot: [`design_wave`]).
+/// A design run (`lifetime::run_lives`) of `p.lives` lives (for a shard, its own count: the
+/// lives of a shard cost as much as any others); `waves` is the scenario's `[waves]` (the
+/// representative wave of the step pilot: [`design_wave`]). The screen pilot runs lives 0 to 15
+/// whatever the count, so that every shard of a run is estimated at the same work per life.
 pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> WorkEstimate {
     let life = &p.life;
     // Mean waves per storm over the storm distribution (its 64 quantiles), T = a H0^b.
@@ -340,6 +513,7 @@ pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> Work
         step_cost: step_cost(case.structure.foundation.springs),
         waves: waves_drawn,
         memory_bytes: p.lives as f64 * BYTES_PER_LIFE,
+        disk_bytes: 0.0,
         simulated_s,
         steps_from,
         simulated_share: share,
@@ -366,7 +540,7 @@ fn design_screen_share(case: &StormCase<'_>, p: &DesignParams) -> f64 {
         ..*life
     };
     let (mut waves, mut simulated) = (0u64, 0u64);
-    for i in 0..p.lives.min(PILOT_LIVES) {
+    for i in 0..PILOT_LIVES {
         match simulate_life(&pilot_case, &pilot, p.seed, i) {
             Ok(o) => {
                 waves += o.waves;
@@ -405,6 +579,7 @@ pub fn fragility(case: &StormCase<'_>, p: &FragilityParams) -> WorkEstimate {
         step_cost: step_cost(case.structure.foundation.springs),
         waves: waves_drawn,
         memory_bytes: (levels * p.storms) as f64 * BYTES_PER_LIFE,
+        disk_bytes: 0.0,
         simulated_s,
         steps_from,
         simulated_share: share,

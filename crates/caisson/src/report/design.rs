@@ -252,9 +252,9 @@ mod tests {
         // The rigid block fails by its slide alone: 7 m.
         assert_eq!((r.rigid_block.failure.lives, r.rigid_block.surviving.lives), (1, 4));
         assert!((r.rigid_block.surviving.expected_sliding_m - (0.25 + 1.0) / 4.0).abs() < 1e-12);
-        let codes: Vec<&str> = life_warnings(&lives, 5.0).iter().map(|w| w.code).collect();
+        let codes: Vec<&str> = life_warnings(&lives, 5.0, 20.0).iter().map(|w| w.code).collect();
         assert_eq!(codes, vec!["failed-lives", "large-rotation-lives", "seaward-lives"]);
         let calm = [life(0.2, 0.2, 0.0, 0.2, 0.25), life(-0.005, 0.0, 0.005, 0.005, 0.0)];
-        assert!(life_warnings(&calm, 5.0).is_empty(), "5 mm seaward is below the 1 cm reported");
+        assert!(life_warnings(&calm, 5.0, 20.0).is_empty(), "5 mm seaward is below the 1 cm reported");
     }
 }

@@ -1,7 +1,7 @@
 //! `caisson fragility`: `fragility.json` (keys in docs/fragility.md).
 
 use super::Provenance;
-use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
 use crate::analysis::train::WaveSetup;
 use crate::analysis::Structure;
@@ -175,6 +175,7 @@ impl FragilityReport {
             warnings: {
                 let mut w = structure_warnings(structure);
                 w.extend(wave_load_warnings(structure, waves));
+                w.extend(storm_warnings(r.levels.iter().flat_map(|l| &l.storms), structure.caisson.width_m));
                 w
             },
         }

@@ -110,3 +110,26 @@ pub(super) fn check_floating(caisson: &Caisson, rho_w: f64, design: &DesignParam
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::Scenario;
+    use std::path::Path;
+
+    /// The largest-wave check stands behind the weight's lower bound (0.2 of the displaced water,
+    /// `structure::MIN_WEIGHT_OVER_DISPLACED`), which now refuses the fuzz finding's weight of
+    /// 1.617e-5 kN under the PARI breaking wave first: given that caisson anyway, the wave (about
+    /// 10⁶ W') is refused naming the weight; the example's 16.17 kN passes.
+    #[test]
+    fn the_largest_wave_is_held_against_the_weight_behind_its_lower_bound() {
+        let text = include_str!("../../../../examples/pari_breaking_loads.toml");
+        let sc = Scenario::from_toml(text, Path::new("t.toml"), Path::new(".")).unwrap();
+        let waves = sc.waves.as_ref().unwrap();
+        assert!(check_waves(sc.caisson(), waves).is_ok());
+        let light = Caisson { weight_in_water_n: 1.617e-2, ..*sc.caisson() };
+        let e = check_waves(&light, waves).unwrap_err();
+        assert_eq!(e.key(), Some("[caisson] weight_in_water_kn"), "{e}");
+        assert!(e.to_string().contains("largest wave") && e.to_string().contains("at most 1e3 W'"), "{e}");
+    }
+}

@@ -8,6 +8,9 @@ use super::{ScenarioError, ScenarioFile};
 use crate::analysis::lifetime::{DesignParams, ErrorModel, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
 
+/// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
+pub const MAX_LIVES: usize = 10_000_000;
+
 type R<T> = Result<T, ScenarioError>;
 
 /// `[design]` as written.
@@ -184,7 +187,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             tidal_range_m: num("tidal_range_m", t.tidal_range_m, 0.0, 0.0, 20.0, false, "m")?,
             errors,
         },
-        lives: count("lives", t.lives, 5000, 10_000_000)?,
+        lives: count("lives", t.lives, 5000, MAX_LIVES as i64)?,
         seed,
         thresholds_m,
         screen: t.screen.unwrap_or(true),

@@ -82,6 +82,31 @@ pub struct CaissonSpec {
 pub const MIN_DIMENSION_M: f64 = 1e-3;
 /// The largest height over base width of a caisson.
 pub const MAX_SLENDERNESS: f64 = 100.0;
+/// The lightest weight in water W' of a caisson, as a fraction of the weight of the water it
+/// displaces, ρ_w g B l min(h', h). A concrete caisson filled with sand or stone weighs 0.8 to 2
+/// times that in water (the design example 1.56, the construction example 1.88, the flume models
+/// of PARI 1.2 to 2.6); an unfilled shell with its cells flooded and air above still water 0.29
+/// (walls 0.3 m, slab 0.5 m) to 0.44 (the construction example's walls): no caisson that stands
+/// on its bed is lighter than about a quarter. Lighter is a unit slip (tonnes for kN gives 9.81
+/// times less: 0.16 for the design example; a weight per metre over a caisson 20 m long, 20
+/// times less), and its results are absurd (the design example at W' = 500 kN, 0.14, slid 52 km
+/// in a life).
+pub const MIN_WEIGHT_OVER_DISPLACED: f64 = 0.2;
+
+/// The rule a weight in water `w_n` (N) breaks against the water displaced, `displaced_kg`, of a
+/// caisson `width_m` × `length_m` with `submerged_m` under still water, if it does.
+fn too_light(w_n: f64, displaced_kg: f64, width_m: f64, length_m: f64, submerged_m: f64) -> Option<String> {
+    let buoyancy_n = displaced_kg * G_M_PER_S2;
+    let least_n = MIN_WEIGHT_OVER_DISPLACED * buoyancy_n;
+    (w_n < least_n).then(|| {
+        format!(
+            "must be at least {:.1} kN, {MIN_WEIGHT_OVER_DISPLACED} of the {:.1} kN of water the caisson displaces (ρ_w g B l h' with B = {width_m} m, l = {length_m} m, h' = {submerged_m} m under still water; this is {:.3} of it): a caisson filled with sand or stone weighs 0.8 to 2 times that in water, even an unfilled concrete shell about 0.3 to 0.5, and a lighter one is a unit slip: tonnes instead of kN (9.81 times less), or a weight per metre for a caisson longer than 1 m (give the total over `length_m`)",
+            least_n / 1e3,
+            buoyancy_n / 1e3,
+            w_n / buoyancy_n
+        )
+    })
+}
 
 impl CaissonSpec {
     /// The caisson in water of density `rho_w` (kg/m³), every quantity checked, with the
@@ -119,6 +144,9 @@ impl CaissonSpec {
         let (mass_kg, weight_in_water_n) = match self.mass {
             MassSpec::WeightInWater { weight_in_water_n } => {
                 let w = positive_up_to("weight_in_water_n", weight_in_water_n, 1e11)?;
+                if let Some(r) = too_light(w, displaced, width_m, length_m, base_depth_m.min(height_m)) {
+                    return Err(rule("weight_in_water_n", w, r));
+                }
                 (Caisson::mass_from_weight_in_water(w, displaced), w)
             }
             MassSpec::Construction(c) => {
@@ -135,10 +163,26 @@ impl CaissonSpec {
                         format!("must exceed the {displaced:.1} kg of water the caisson displaces, or it floats"),
                     ));
                 }
-                (m, (m - displaced) * G_M_PER_S2)
+                let w = (m - displaced) * G_M_PER_S2;
+                if too_light(w, displaced, width_m, length_m, base_depth_m.min(height_m)).is_some() {
+                    return Err(rule(
+                        "mass_kg",
+                        m,
+                        format!(
+                            "must be at least {:.1} kg, {} times the {displaced:.1} kg of water the caisson displaces: lighter, its weight in water is below {MIN_WEIGHT_OVER_DISPLACED} of the water's, less than an unfilled concrete shell weighs (a unit slip: tonnes for kg?)",
+                            (1.0 + MIN_WEIGHT_OVER_DISPLACED) * displaced,
+                            1.0 + MIN_WEIGHT_OVER_DISPLACED
+                        ),
+                    ));
+                }
+                (m, w)
             }
             MassSpec::Both { mass_kg, weight_in_water_n } => {
-                (positive("mass_kg", mass_kg)?, positive("weight_in_water_n", weight_in_water_n)?)
+                let (m, w) = (positive("mass_kg", mass_kg)?, positive("weight_in_water_n", weight_in_water_n)?);
+                if let Some(r) = too_light(w, displaced, width_m, length_m, base_depth_m.min(height_m)) {
+                    return Err(rule("weight_in_water_n", w, r));
+                }
+                (m, w)
             }
         };
         let given = |quantity: &'static str, v: f64| {
