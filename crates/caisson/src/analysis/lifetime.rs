@@ -56,8 +56,8 @@ use super::train::RigidBlock;
 use super::Structure;
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
 use crate::loads::generator::realization_rng;
-use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
-use crate::loads::model::{WaveLoadModel, WaveLoads};
+use crate::loads::history::{TrainError, WaveTrain};
+use crate::loads::model::{PeakComponents, WaveLoadModel, WaveLoads};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
 use crate::waves::statistics::sample_rayleigh_m;
@@ -303,7 +303,7 @@ struct ScreenBound {
 }
 
 /// Effective peak forces of one wave's event for the screen, and the friction and lift-off tests.
-fn may_slide(e: &WaveEvent, b: &ScreenBound) -> bool {
+fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
     let p = (PSI_IMPULSE * e.impact.x.fx_n).max(b.psi_q * e.quasi.x.fx_n);
     let u = (PSI_IMPULSE * e.impact.y.fy_n).max(b.psi_q * e.quasi.y.fy_n).max(0.0);
     let m = (PSI_IMPULSE * e.impact.total().m_nm).max(b.psi_m * e.quasi.total().m_nm).max(0.0);
@@ -312,9 +312,15 @@ fn may_slide(e: &WaveEvent, b: &ScreenBound) -> bool {
     p > b.mu * (b.weight_n - u) || 6.0 * m / b.width_m * b.lift_factor >= b.weight_n - u
 }
 
+/// What the storms of one life reuse: the one-wave train of the simulated waves.
+#[derive(Debug, Default)]
+struct StormScratch {
+    train: WaveTrain,
+}
+
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, 0.0)
+    storm_from(st, s, rng, 0.0, &mut StormScratch::default())
 }
 
 /// A storm that cannot be simulated.
@@ -330,7 +336,13 @@ pub enum StormError {
 
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
 /// (for the life's largest excursion).
-fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f64) -> Result<StormOutcome, StormError> {
+fn storm_from(
+    st: &StormCase<'_>,
+    s: &StormInput,
+    rng: &mut LoadRng,
+    start_m: f64,
+    scratch: &mut StormScratch,
+) -> Result<StormOutcome, StormError> {
     // The site and the caisson at this water level.
     let mut model = *st.model;
     model.site.depth_at_toe_m += s.tide_m;
@@ -356,23 +368,22 @@ fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f6
         lift_factor: dyn_model.lift_off_factor(),
     };
     let event_of = |loads: &WaveLoads, rise: Option<f64>| model.event(loads, rise, 0.0).scaled(s.force_factor);
+    // The loads at this storm's period: the dispersion solves and breaker heights once.
+    let loads_at = model.at_period(s.period_s);
+    let node_may_slide =
+        |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&p.scaled(s.force_factor), &bound));
     // Screen grid over [0, H_max] (+ the breaker height at the wall as an extra node).
     let hmax = s.hmax_m.max(1e-6);
     let dh = hmax / SCREEN_CELLS as f64;
     let mut node = [false; SCREEN_CELLS + 1];
     if st.screen {
         for (i, flag) in node.iter_mut().enumerate() {
-            let h = (i as f64 * dh).max(1e-3 * hmax);
-            *flag = model
-                .evaluate_with(h, s.period_s, RegimeChoice::Auto)
-                .map_or(true, |l| may_slide(&event_of(&l, None), &bound));
+            *flag = node_may_slide((i as f64 * dh).max(1e-3 * hmax));
         }
-        let hbr = model.breaker_height_at_wall_m(s.period_s);
+        let hbr = loads_at.breaker_height_at_wall_m();
         if hbr < hmax {
             let j = (hbr / dh) as usize;
-            let flag = model
-                .evaluate_with(hbr, s.period_s, RegimeChoice::Auto)
-                .map_or(true, |l| may_slide(&event_of(&l, None), &bound));
+            let flag = node_may_slide(hbr);
             node[j] |= flag;
             node[(j + 1).min(SCREEN_CELLS)] |= flag;
         }
@@ -380,6 +391,7 @@ fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f6
     // Cell c = [c dh, (c + 1) dh] may slide if a node within one cell of it may.
     let cell_may_slide = |c: usize| node[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f);
     let mut sim: Option<Simulation> = None;
+    let train = &mut scratch.train;
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
     for _ in 0..s.waves {
         let h = sample_rayleigh_m(s.h13_m, rng).clamp(1e-3 * s.h13_m.max(1e-6), hmax);
@@ -389,34 +401,28 @@ fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f6
             continue;
         }
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
-        let loads = match model.evaluate_with(h, s.period_s, model.options.regime) {
+        let loads = match loads_at.evaluate_with(h, model.options.regime) {
             Ok(l) => l,
-            Err(_) => {
-                model.evaluate_with(h, s.period_s, RegimeChoice::Auto).expect("the automatic regime always applies")
-            }
+            Err(_) => loads_at.evaluate_with(h, RegimeChoice::Auto).expect("the automatic regime always applies"),
         };
         let event = event_of(&loads, loads.rise_time.map(|d| d.at_deviate(z)));
         // The grid's neighbours are a margin for the heights between its nodes; the wave's own
         // loads decide.
-        if st.screen && !may_slide(&event, &bound) {
+        if st.screen && !may_slide(&PeakComponents { quasi: event.quasi, impact: event.impact }, &bound) {
             out.screened_waves += 1;
             continue;
         }
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);
-        let train = WaveTrain::new(vec![event]).map_err(|source| StormError::Wave {
-            height_m: h,
-            period_s: s.period_s,
-            source,
-        })?;
+        train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s: s.period_s, source })?;
         let sim = match sim.as_mut() {
             Some(x) => {
-                x.reset(&train);
+                x.reset(train);
                 x
             }
-            None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, &train)),
+            None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, train)),
         };
         let mut watch = WaveWatch::default();
-        sim.run_until(s.period_s, &train, &mut watch)?;
+        sim.run_until(s.period_s, train, &mut watch)?;
         let slide = permanent_sliding_m(sim);
         out.sliding_m += slide;
         if slide >= 0.0 {
@@ -437,6 +443,7 @@ fn storm_from(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng, start_m: f6
 pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, StormError> {
     let mut rng = realization_rng(seed, index);
     let mut life = StormOutcome::default();
+    let mut scratch = StormScratch::default();
     let site = &st.model.site;
     for _ in 0..p.life_years {
         let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
@@ -461,7 +468,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             force_factor: e_f,
             friction_factor: e_mu,
         };
-        let o = storm_from(st, &storm, &mut rng, life.sliding_m)?;
+        let o = storm_from(st, &storm, &mut rng, life.sliding_m, &mut scratch)?;
         life.add(&o);
     }
     Ok(life)

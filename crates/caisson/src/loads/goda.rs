@@ -101,66 +101,119 @@ pub struct GodaResult {
 
 /// Takahashi's impulsive pressure coefficient α_I (docs/model.md §1.4).
 pub fn takahashi_alpha_i(height_m: f64, wavelength_m: f64, depth_m: f64, wall_depth_m: f64, berm_width_m: f64) -> f64 {
+    takahashi_alpha_i0(height_m, wall_depth_m) * takahashi_alpha_i1(wavelength_m, depth_m, wall_depth_m, berm_width_m)
+}
+
+/// α_I0 = H/d (H ≤ 2d) or 2.
+#[inline]
+fn takahashi_alpha_i0(height_m: f64, wall_depth_m: f64) -> f64 {
+    if height_m <= 2.0 * wall_depth_m {
+        height_m / wall_depth_m
+    } else {
+        2.0
+    }
+}
+
+/// α_I1, the part of α_I that does not depend on the height.
+fn takahashi_alpha_i1(wavelength_m: f64, depth_m: f64, wall_depth_m: f64, berm_width_m: f64) -> f64 {
     let bl = berm_width_m / wavelength_m - 0.12;
     let dh = 0.4 - wall_depth_m / depth_m;
     let d11 = 0.93 * bl + 0.36 * dh;
     let d22 = -0.36 * bl + 0.93 * dh;
     let d1 = if d11 <= 0.0 { 20.0 * d11 } else { 15.0 * d11 };
     let d2 = if d22 <= 0.0 { 4.9 * d22 } else { 3.0 * d22 };
-    let a1 = if d22 <= 0.0 { d2.cos() / d1.cosh() } else { 1.0 / (d1.cosh() * d2.cosh().sqrt()) };
-    let a0 = if height_m <= 2.0 * wall_depth_m { height_m / wall_depth_m } else { 2.0 };
-    a0 * a1
+    if d22 <= 0.0 {
+        d2.cos() / d1.cosh()
+    } else {
+        1.0 / (d1.cosh() * d2.cosh().sqrt())
+    }
 }
 
 /// Goda's formula (module docs).
 pub fn goda(i: &GodaInput) -> GodaResult {
-    let (h, hd, d) = (i.depth_m, i.height_m, i.wall_depth_m);
-    let kh = 2.0 * PI * h / i.wavelength_m;
-    let beta = (i.angle_rad.abs() - 15f64.to_radians()).max(0.0);
-    let (cb, [l1, l2, l3]) = (beta.cos(), i.lambda);
-    let x = 2.0 * kh;
-    let alpha1 = 0.6 + 0.5 * if x > 700.0 { 0.0 } else { (x / x.sinh()).powi(2) };
-    let hb = i.depth_5h_seaward_m;
-    let alpha2 = ((hb - d) / (3.0 * hb) * (hd / d).powi(2)).min(2.0 * d / hd);
-    let cosh_kh = kh.cosh();
-    let alpha3 = 1.0 - i.base_depth_m / h * (1.0 - 1.0 / cosh_kh);
-    let alpha_i = i.berm_width_m.map(|bm| takahashi_alpha_i(hd, i.wavelength_m, h, d, bm));
-    let alpha_star = alpha_i.map_or(alpha2, |ai| alpha2.max(ai));
-    let gamma_w = i.rho_w * G_M_PER_S2;
-    let eta_star_m = 0.75 * (1.0 + cb) * l1 * hd;
-    let p1 = 0.5 * (1.0 + cb) * (l1 * alpha1 + l2 * alpha_star * cb * cb) * gamma_w * hd;
-    let p2 = p1 / cosh_kh;
-    let p3 = alpha3 * p1;
-    let hc = i.crest_freeboard_m;
-    let p4 = if eta_star_m > hc { p1 * (1.0 - hc / eta_star_m) } else { 0.0 };
-    let pu = 0.5 * (1.0 + cb) * l3 * alpha1 * alpha3 * gamma_w * hd;
-    let hcs = eta_star_m.min(hc);
-    let hp = i.base_depth_m;
-    let force = 0.5 * (p1 + p3) * hp + 0.5 * (p1 + p4) * hcs;
-    let moment = (2.0 * p1 + p3) * hp * hp / 6.0 + 0.5 * (p1 + p4) * hp * hcs + (p1 + 2.0 * p4) * hcs * hcs / 6.0;
-    let uplift = 0.5 * pu * i.width_m;
-    let x_u = 2.0 * i.width_m / 3.0;
-    GodaResult {
-        alpha1,
-        alpha2,
-        alpha3,
-        alpha_i,
-        alpha_star,
-        angle_used_rad: beta,
-        eta_star_m,
-        hc_star_m: hcs,
-        p1_pa: p1,
-        p2_pa: p2,
-        p3_pa: p3,
-        p4_pa: p4,
-        pu_pa: pu,
-        horizontal_force_n_per_m: force,
-        horizontal_moment_base_nm_per_m: moment,
-        horizontal_lever_m: if force > 0.0 { moment / force } else { 0.0 },
-        uplift_force_n_per_m: uplift,
-        uplift_moment_heel_nm_per_m: x_u * uplift,
-        uplift_from_heel_m: x_u,
-        base_depth_m: hp,
+    GodaPeriod::new(i).at(i.height_m, i.depth_5h_seaward_m)
+}
+
+/// The part of Goda's formula that does not depend on the wave height: the site, the angle and
+/// the wavelength (α1, α3, cosh kh, Takahashi's α_I1). [`GodaPeriod::at`] finishes it for one
+/// height with the same floating-point operations as [`goda`], so a storm's waves (one period,
+/// many heights) share it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GodaPeriod {
+    input: GodaInput,
+    beta: f64,
+    cb: f64,
+    alpha1: f64,
+    cosh_kh: f64,
+    alpha3: f64,
+    /// α_I1 of Takahashi's α_I = α_I0 α_I1, when a berm width was given.
+    alpha_i1: Option<f64>,
+    gamma_w: f64,
+}
+
+impl GodaPeriod {
+    /// Everything of `i` but its height and h_b (`height_m` and `depth_5h_seaward_m` are ignored).
+    pub fn new(i: &GodaInput) -> Self {
+        let (h, d) = (i.depth_m, i.wall_depth_m);
+        let kh = 2.0 * PI * h / i.wavelength_m;
+        let beta = (i.angle_rad.abs() - 15f64.to_radians()).max(0.0);
+        let cb = beta.cos();
+        let x = 2.0 * kh;
+        let alpha1 = 0.6 + 0.5 * if x > 700.0 { 0.0 } else { (x / x.sinh()).powi(2) };
+        let cosh_kh = kh.cosh();
+        let alpha3 = 1.0 - i.base_depth_m / h * (1.0 - 1.0 / cosh_kh);
+        let alpha_i1 = i.berm_width_m.map(|bm| takahashi_alpha_i1(i.wavelength_m, h, d, bm));
+        GodaPeriod { input: *i, beta, cb, alpha1, cosh_kh, alpha3, alpha_i1, gamma_w: i.rho_w * G_M_PER_S2 }
+    }
+
+    /// Goda's formula for the design height `height_m` (H_D) with h_b = `depth_5h_seaward_m`.
+    #[inline(always)]
+    pub fn at(&self, height_m: f64, depth_5h_seaward_m: f64) -> GodaResult {
+        let i = &self.input;
+        let (hd, d) = (height_m, i.wall_depth_m);
+        let (cb, [l1, l2, l3]) = (self.cb, i.lambda);
+        let alpha1 = self.alpha1;
+        let hb = depth_5h_seaward_m;
+        let alpha2 = ((hb - d) / (3.0 * hb) * (hd / d).powi(2)).min(2.0 * d / hd);
+        let alpha3 = self.alpha3;
+        let alpha_i = self.alpha_i1.map(|a1| takahashi_alpha_i0(hd, d) * a1);
+        let alpha_star = alpha_i.map_or(alpha2, |ai| alpha2.max(ai));
+        let gamma_w = self.gamma_w;
+        let eta_star_m = 0.75 * (1.0 + cb) * l1 * hd;
+        let p1 = 0.5 * (1.0 + cb) * (l1 * alpha1 + l2 * alpha_star * cb * cb) * gamma_w * hd;
+        let p2 = p1 / self.cosh_kh;
+        let p3 = alpha3 * p1;
+        let hc = i.crest_freeboard_m;
+        let p4 = if eta_star_m > hc { p1 * (1.0 - hc / eta_star_m) } else { 0.0 };
+        let pu = 0.5 * (1.0 + cb) * l3 * alpha1 * alpha3 * gamma_w * hd;
+        let hcs = eta_star_m.min(hc);
+        let hp = i.base_depth_m;
+        let force = 0.5 * (p1 + p3) * hp + 0.5 * (p1 + p4) * hcs;
+        let moment = (2.0 * p1 + p3) * hp * hp / 6.0 + 0.5 * (p1 + p4) * hp * hcs + (p1 + 2.0 * p4) * hcs * hcs / 6.0;
+        let uplift = 0.5 * pu * i.width_m;
+        let x_u = 2.0 * i.width_m / 3.0;
+        GodaResult {
+            alpha1,
+            alpha2,
+            alpha3,
+            alpha_i,
+            alpha_star,
+            angle_used_rad: self.beta,
+            eta_star_m,
+            hc_star_m: hcs,
+            p1_pa: p1,
+            p2_pa: p2,
+            p3_pa: p3,
+            p4_pa: p4,
+            pu_pa: pu,
+            horizontal_force_n_per_m: force,
+            horizontal_moment_base_nm_per_m: moment,
+            horizontal_lever_m: if force > 0.0 { moment / force } else { 0.0 },
+            uplift_force_n_per_m: uplift,
+            uplift_moment_heel_nm_per_m: x_u * uplift,
+            uplift_from_heel_m: x_u,
+            base_depth_m: hp,
+        }
     }
 }
 

@@ -46,7 +46,8 @@ impl LoadComponent {
         self.x + self.y
     }
 
-    fn scaled(&self, k: f64) -> LoadComponent {
+    /// Both parts multiplied by `k`.
+    pub fn scaled(&self, k: f64) -> LoadComponent {
         LoadComponent { x: self.x.scaled(k), y: self.y.scaled(k) }
     }
 }
@@ -139,7 +140,7 @@ pub enum TrainError {
 }
 
 /// A train of waves ordered in time: the [`LoadHistory`] of the wave-load models.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct WaveTrain {
     events: Vec<WaveEvent>,
 }
@@ -150,38 +151,22 @@ impl WaveTrain {
     pub fn new(events: Vec<WaveEvent>) -> Result<Self, TrainError> {
         let mut prev_end = f64::NEG_INFINITY;
         for (index, e) in events.iter().enumerate() {
-            if !e.start_s.is_finite() {
-                return Err(TrainError::BadNumber { index, what: "start_s", value: e.start_s, need: "" });
-            }
-            if !(e.period_s > 0.0 && e.period_s.is_finite()) {
-                return Err(TrainError::BadNumber { index, what: "period_s", value: e.period_s, need: " > 0" });
-            }
-            for (what, v) in [
-                ("impact fx", e.impact.x.fx_n),
-                ("impact fy", e.impact.y.fy_n),
-                ("quasi-static fx", e.quasi.x.fx_n),
-                ("quasi-static fy", e.quasi.y.fy_n),
-                ("trough fx", e.trough.x.fx_n),
-                ("trough fy", e.trough.y.fy_n),
-                ("impact moment", e.impact.total().m_nm),
-                ("quasi-static moment", e.quasi.total().m_nm),
-                ("trough moment", e.trough.total().m_nm),
-            ] {
-                if !v.is_finite() {
-                    return Err(TrainError::BadNumber { index, what, value: v, need: "" });
-                }
-            }
-            if let Some(i) = e.impulse {
-                if !(i.rise_s > 0.0 && i.rise_s.is_finite()) {
-                    return Err(TrainError::BadNumber { index, what: "rise time", value: i.rise_s, need: " > 0" });
-                }
-            }
+            check_event(index, e)?;
             if e.start_s < prev_end - 1e-12 * prev_end.abs().max(1.0) {
                 return Err(TrainError::Overlap { index, start_s: e.start_s, previous_end_s: prev_end });
             }
             prev_end = e.end_s();
         }
         Ok(WaveTrain { events })
+    }
+
+    /// Make this the train of the one wave `event` (checked as by [`Self::new`]), reusing the
+    /// train's storage: no allocation once it has held a wave. On error the train is unchanged.
+    pub fn set_single(&mut self, event: WaveEvent) -> Result<(), TrainError> {
+        check_event(0, &event)?;
+        self.events.clear();
+        self.events.push(event);
+        Ok(())
     }
 
     pub fn events(&self) -> &[WaveEvent] {
@@ -192,6 +177,37 @@ impl WaveTrain {
     pub fn duration_s(&self) -> f64 {
         self.events.last().map_or(0.0, |e| e.end_s())
     }
+}
+
+/// The checks of one event of a train (finite numbers, positive period and rise time).
+fn check_event(index: usize, e: &WaveEvent) -> Result<(), TrainError> {
+    if !e.start_s.is_finite() {
+        return Err(TrainError::BadNumber { index, what: "start_s", value: e.start_s, need: "" });
+    }
+    if !(e.period_s > 0.0 && e.period_s.is_finite()) {
+        return Err(TrainError::BadNumber { index, what: "period_s", value: e.period_s, need: " > 0" });
+    }
+    for (what, v) in [
+        ("impact fx", e.impact.x.fx_n),
+        ("impact fy", e.impact.y.fy_n),
+        ("quasi-static fx", e.quasi.x.fx_n),
+        ("quasi-static fy", e.quasi.y.fy_n),
+        ("trough fx", e.trough.x.fx_n),
+        ("trough fy", e.trough.y.fy_n),
+        ("impact moment", e.impact.total().m_nm),
+        ("quasi-static moment", e.quasi.total().m_nm),
+        ("trough moment", e.trough.total().m_nm),
+    ] {
+        if !v.is_finite() {
+            return Err(TrainError::BadNumber { index, what, value: v, need: "" });
+        }
+    }
+    if let Some(i) = e.impulse {
+        if !(i.rise_s > 0.0 && i.rise_s.is_finite()) {
+            return Err(TrainError::BadNumber { index, what: "rise time", value: i.rise_s, need: " > 0" });
+        }
+    }
+    Ok(())
 }
 
 impl LoadHistory for WaveTrain {

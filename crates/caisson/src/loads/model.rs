@@ -19,13 +19,13 @@
 //! drawn from the seeded generator, one standard-normal draw per wave (so wave j always uses the
 //! j-th draw whatever the regime of the others).
 
-use super::goda::{goda, GodaInput, GodaResult};
+use super::goda::{GodaInput, GodaPeriod, GodaResult};
 use super::history::{LoadComponent, TrainError, WaveEvent, WaveTrain};
-use super::impact::{impact_with_breaking, ImpactInput, ImpactResult};
+use super::impact::{ImpactInput, ImpactPeriod, ImpactResult};
 use super::regime::{decide_with_limit, Regime, RegimeChoice, RegimeDecision, RegimeError};
 use super::risetime::{LoadRng, RiseTimeDistribution, RiseTimeParams};
 use super::safety::{safety_factors, SafetyFactors, SafetyInput};
-use super::sainflou::{sainflou, SainflouInput, SainflouResult};
+use super::sainflou::{SainflouInput, SainflouPeriod, SainflouResult};
 use super::shapes::{Impulse, LoadShape};
 use crate::waves::breaking::{miche_breaker_height_from_wavenumber_m, miche_breaker_height_m, BreakerCriterion};
 use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m, wavenumber};
@@ -195,21 +195,25 @@ impl WaveLoadModel {
 
     /// As [`Self::evaluate`] with an explicit regime choice.
     pub fn evaluate_with(&self, height_m: f64, period_s: f64, choice: RegimeChoice) -> Result<WaveLoads, RegimeError> {
+        self.at_period(period_s).evaluate_with(height_m, choice)
+    }
+
+    /// The model at one period: what does not depend on the height (the dispersion solves, the
+    /// breaker heights, the height-free parts of Goda, Sainflou and the impact) computed once,
+    /// for many heights of one period (the waves of a storm).
+    pub fn at_period(&self, period_s: f64) -> PeriodLoads<'_> {
         let s = &self.site;
         let o = &self.options;
         // Two dispersion solves: at the toe (L, Miche limit) and at the wall (Miche H_br).
         let k_toe = wavenumber(period_s, s.depth_at_toe_m);
         let l_toe = 2.0 * PI / k_toe;
         let hb_toe = miche_breaker_height_from_wavenumber_m(k_toe, period_s);
-        let h = height_m.min(hb_toe);
         let hbr = self.breaker_height_at_wall_m(period_s);
-        let regime = decide_with_limit(choice, h, hbr, s.depth_at_wall_m, o.criterion)?;
-        let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
-        let goda = goda(&GodaInput {
-            height_m: h,
+        let goda = GodaPeriod::new(&GodaInput {
+            height_m: f64::NAN,
             wavelength_m: l_toe,
             depth_m: s.depth_at_toe_m,
-            depth_5h_seaward_m: depth_5h,
+            depth_5h_seaward_m: f64::NAN,
             wall_depth_m: s.depth_at_wall_m,
             base_depth_m: s.base_depth_m,
             crest_freeboard_m: s.crest_freeboard_m,
@@ -223,8 +227,8 @@ impl WaveLoadModel {
             SainflouDepth::Toe => (s.depth_at_toe_m, l_toe),
             SainflouDepth::Wall => (s.depth_at_wall_m, wavelength_m(period_s, s.depth_at_wall_m)),
         };
-        let sainflou = sainflou(&SainflouInput {
-            height_m: h,
+        let sainflou = SainflouPeriod::new(&SainflouInput {
+            height_m: f64::NAN,
             wavelength_m: sf_l,
             depth_m: sf_depth,
             base_depth_m: s.base_depth_m,
@@ -232,9 +236,9 @@ impl WaveLoadModel {
             width_m: s.width_m,
             rho_w: s.rho_w,
         });
-        let impact = impact_with_breaking(
+        let impact = ImpactPeriod::new(
             &ImpactInput {
-                height_m: h,
+                height_m: f64::NAN,
                 period_s,
                 toe_wavelength_m: l_toe,
                 wall_depth_m: s.depth_at_wall_m,
@@ -248,28 +252,18 @@ impl WaveLoadModel {
             },
             hbr,
         );
-        let f_star = if goda.horizontal_force_n_per_m > 0.0 {
-            impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m
-        } else {
-            0.0
-        };
-        Ok(WaveLoads {
-            height_incident_m: height_m,
-            height_m: h,
-            toe_breaker_height_m: hb_toe,
-            limited_at_toe: height_m > hb_toe,
+        PeriodLoads {
+            model: self,
             period_s,
-            toe_wavelength_m: l_toe,
-            deep_water_wavelength_m: deep_water_wavelength_m(period_s),
-            depth_5h_seaward_m: depth_5h,
-            sainflou_depth_m: sf_depth,
-            regime,
+            l_toe,
+            hb_toe,
+            hbr,
+            l0: deep_water_wavelength_m(period_s),
+            sf_depth,
             goda,
             sainflou,
             impact,
-            f_star,
-            rise_time: o.rise_time.distribution(f_star, period_s),
-        })
+        }
     }
 
     /// Goda's static checks for the loads of one wave (per metre). `weight_in_water_n` is the
@@ -294,28 +288,13 @@ impl WaveLoadModel {
     pub fn event(&self, loads: &WaveLoads, rise_time_s: Option<f64>, start_s: f64) -> WaveEvent {
         let s = &self.site;
         let (l, b) = (s.length_m, s.width_m);
-        let g = &loads.goda;
         let sf = &loads.sainflou;
-        let im = &loads.impact;
-        let quasi = LoadComponent::from_levers(
-            g.horizontal_force_n_per_m * l,
-            g.horizontal_lever_m,
-            g.uplift_force_n_per_m * l,
-            g.uplift_from_heel_m,
-            b,
-        );
+        let (quasi, impact) = (self.quasi_component(&loads.goda), self.impact_component(&loads.impact));
         let trough = LoadComponent::from_levers(
             -sf.trough_force_n_per_m * l,
             sf.trough_lever_m,
             -sf.suction_uplift_n_per_m * l,
             sf.suction_from_heel_m,
-            b,
-        );
-        let impact = LoadComponent::from_levers(
-            im.horizontal_force_n_per_m * l,
-            im.horizontal_lever_m,
-            im.uplift_force_n_per_m * l,
-            im.uplift_from_heel_m,
             b,
         );
         let breaking = loads.regime.regime == Regime::Breaking;
@@ -332,6 +311,32 @@ impl WaveLoadModel {
         };
         let alpha_qs = if breaking { self.options.alpha_qs_breaking } else { self.options.alpha_qs_nonbreaking };
         WaveEvent::new(start_s, loads.period_s, quasi, alpha_qs, trough, impact, impulse)
+    }
+
+    /// The pulsating component F_qs+ (unscaled) of a wave's event (totals).
+    #[inline]
+    fn quasi_component(&self, g: &GodaResult) -> LoadComponent {
+        let (l, b) = (self.site.length_m, self.site.width_m);
+        LoadComponent::from_levers(
+            g.horizontal_force_n_per_m * l,
+            g.horizontal_lever_m,
+            g.uplift_force_n_per_m * l,
+            g.uplift_from_heel_m,
+            b,
+        )
+    }
+
+    /// The impact component of a wave's event (totals).
+    #[inline]
+    fn impact_component(&self, im: &ImpactResult) -> LoadComponent {
+        let (l, b) = (self.site.length_m, self.site.width_m);
+        LoadComponent::from_levers(
+            im.horizontal_force_n_per_m * l,
+            im.horizontal_lever_m,
+            im.uplift_force_n_per_m * l,
+            im.uplift_from_heel_m,
+            b,
+        )
     }
 
     /// A train of waves from per-wave records, one after the other from t = 0.
@@ -372,5 +377,133 @@ impl WaveLoadModel {
                 }
             })
             .collect()
+    }
+}
+
+/// A [`WaveLoadModel`] at one period ([`WaveLoadModel::at_period`]): the loads of any height by
+/// the same floating-point operations as [`WaveLoadModel::evaluate_with`], without repeating
+/// the work that depends on the period only.
+#[derive(Debug, Clone, Copy)]
+pub struct PeriodLoads<'a> {
+    model: &'a WaveLoadModel,
+    period_s: f64,
+    /// L at the toe depth, m.
+    l_toe: f64,
+    /// Miche breaker height at the toe depth, m.
+    hb_toe: f64,
+    /// H_br, the breaker height at the wall, m.
+    hbr: f64,
+    /// L0, m.
+    l0: f64,
+    /// Depth used for Sainflou, m.
+    sf_depth: f64,
+    goda: GodaPeriod,
+    sainflou: SainflouPeriod,
+    impact: ImpactPeriod,
+}
+
+/// The peak load components of one wave that decide whether it can slide or lift the caisson
+/// ([`PeriodLoads::peaks`]): the same numbers as the `quasi` and `impact` components of
+/// [`WaveLoadModel::event`] (totals), without the trough and the rise time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PeakComponents {
+    /// α_qs F_qs+.
+    pub quasi: LoadComponent,
+    /// F_x,max and F_y,max (zero unless the wave is breaking and impulsive, F* > 1).
+    pub impact: LoadComponent,
+}
+
+impl PeakComponents {
+    /// Both components multiplied by `k` (as [`WaveEvent::scaled`]).
+    pub fn scaled(&self, k: f64) -> PeakComponents {
+        PeakComponents { quasi: self.quasi.scaled(k), impact: self.impact.scaled(k) }
+    }
+}
+
+impl PeriodLoads<'_> {
+    /// The wave period, s.
+    pub fn period_s(&self) -> f64 {
+        self.period_s
+    }
+
+    /// H_br, the breaker height at the wall depth (as [`WaveLoadModel::breaker_height_at_wall_m`]), m.
+    pub fn breaker_height_at_wall_m(&self) -> f64 {
+        self.hbr
+    }
+
+    /// The Miche-limited height at the toe, the regime and Goda's result: the steps every load
+    /// of a wave starts from.
+    #[inline]
+    fn goda_of(
+        &self,
+        height_m: f64,
+        choice: RegimeChoice,
+    ) -> Result<(f64, RegimeDecision, f64, GodaResult), RegimeError> {
+        let s = &self.model.site;
+        let h = height_m.min(self.hb_toe);
+        let regime = decide_with_limit(choice, h, self.hbr, s.depth_at_wall_m, self.model.options.criterion)?;
+        let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
+        Ok((h, regime, depth_5h, self.goda.at(h, depth_5h)))
+    }
+
+    /// All loads of a wave of incident height `height_m` at this period (as
+    /// [`WaveLoadModel::evaluate_with`]).
+    pub fn evaluate_with(&self, height_m: f64, choice: RegimeChoice) -> Result<WaveLoads, RegimeError> {
+        let (h, regime, depth_5h, goda) = self.goda_of(height_m, choice)?;
+        let sainflou = self.sainflou.at(h);
+        let impact = self.impact.at(h);
+        let f_star = f_star(&goda, &impact);
+        Ok(WaveLoads {
+            height_incident_m: height_m,
+            height_m: h,
+            toe_breaker_height_m: self.hb_toe,
+            limited_at_toe: height_m > self.hb_toe,
+            period_s: self.period_s,
+            toe_wavelength_m: self.l_toe,
+            deep_water_wavelength_m: self.l0,
+            depth_5h_seaward_m: depth_5h,
+            sainflou_depth_m: self.sf_depth,
+            regime,
+            goda,
+            sainflou,
+            impact,
+            f_star,
+            rise_time: self.model.options.rise_time.distribution(f_star, self.period_s),
+        })
+    }
+
+    /// The peak components of the event of a wave of incident height `height_m` (totals; as the
+    /// `quasi` and `impact` of [`WaveLoadModel::event`] of [`Self::evaluate_with`], bit for bit):
+    /// what a screen of the waves that can slide the caisson needs, without the trough pressures
+    /// and the rise-time distribution.
+    #[inline]
+    pub fn peaks(&self, height_m: f64, choice: RegimeChoice) -> Result<PeakComponents, RegimeError> {
+        let (h, regime, _, goda) = self.goda_of(height_m, choice)?;
+        let o = &self.model.options;
+        let breaking = regime.regime == Regime::Breaking;
+        let alpha_qs = if breaking { o.alpha_qs_breaking } else { o.alpha_qs_nonbreaking };
+        let quasi = self.model.quasi_component(&goda).scaled(alpha_qs);
+        // WaveLoadModel::event keeps the impact of a breaking wave with a rise-time distribution,
+        // which exists exactly when F* > 1 and finite (RiseTimeParams::distribution): the impact
+        // of a non-breaking wave is not even computed.
+        let mut impact = LoadComponent::default();
+        if breaking {
+            let im = self.impact.at(h);
+            let fs = f_star(&goda, &im);
+            if fs > 1.0 && fs.is_finite() {
+                impact = self.model.impact_component(&im);
+            }
+        }
+        Ok(PeakComponents { quasi, impact })
+    }
+}
+
+/// F* = F_x,max / P (0 without a positive P).
+#[inline]
+fn f_star(goda: &GodaResult, impact: &ImpactResult) -> f64 {
+    if goda.horizontal_force_n_per_m > 0.0 {
+        impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m
+    } else {
+        0.0
     }
 }

@@ -99,44 +99,70 @@ pub fn clapotis_quantities(height_m: f64, wavelength_m: f64, depth_m: f64, rho_w
 
 /// Sainflou on the composite caisson (module docs).
 pub fn sainflou(i: &SainflouInput) -> SainflouResult {
-    let (hw, h, hp) = (i.height_m, i.depth_m, i.base_depth_m);
-    let gw = i.rho_w * G_M_PER_S2;
-    let (h0, pb) = clapotis_quantities(hw, i.wavelength_m, h, i.rho_w);
-    // Crest.
-    let top = hw + h0;
-    let p1c = (gw * h + pb) * top / (h + top);
-    let crest_full = Profile::new(&[(-top, 0.0), (0.0, p1c), (h, pb)]);
-    let crest = crest_full.clipped(-top.min(i.crest_freeboard_m), hp);
-    // Trough.
-    let zt = hw - h0;
-    let trough_full = if zt >= 0.0 {
-        Profile::new(&[(0.0, 0.0), (zt, -gw * zt), (h, -pb)])
-    } else {
-        let p0 = (gw * h - pb) * (-zt) / (h - zt);
-        Profile::new(&[(zt, 0.0), (0.0, p0), (h, -pb)])
-    };
-    let trough_top = if zt >= 0.0 { 0.0 } else { zt.max(-i.crest_freeboard_m) };
-    let trough = trough_full.clipped(trough_top, hp);
-    let pt_base = trough_full.at(hp);
-    let tf = trough.force();
-    let tm = trough.moment_about(hp);
-    let suction = 0.5 * pt_base * i.width_m;
-    let xs = 2.0 * i.width_m / 3.0;
-    SainflouResult {
-        h0_m: h0,
-        pb_pa: pb,
-        crest_swl_pressure_pa: p1c,
-        crest_force_n_per_m: crest.force(),
-        crest_moment_base_nm_per_m: crest.moment_about(hp),
-        trough_base_pressure_pa: pt_base,
-        trough_force_n_per_m: tf,
-        trough_moment_base_nm_per_m: tm,
-        trough_lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
-        suction_uplift_n_per_m: suction,
-        suction_moment_heel_nm_per_m: xs * suction,
-        suction_from_heel_m: xs,
-        crest,
-        trough,
+    SainflouPeriod::new(i).at(i.height_m)
+}
+
+/// The part of Sainflou's pressures that does not depend on the height (tanh kh and cosh kh of
+/// the depth and wavelength); [`SainflouPeriod::at`] finishes it for one height with the same
+/// floating-point operations as [`sainflou`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SainflouPeriod {
+    input: SainflouInput,
+    tanh_kh: f64,
+    cosh_kh: f64,
+}
+
+impl SainflouPeriod {
+    /// Everything of `i` but its height (`height_m` is ignored).
+    pub fn new(i: &SainflouInput) -> Self {
+        let kh = 2.0 * PI * i.depth_m / i.wavelength_m;
+        SainflouPeriod { input: *i, tanh_kh: kh.tanh(), cosh_kh: kh.cosh() }
+    }
+
+    /// Sainflou for the incident height `height_m`.
+    pub fn at(&self, height_m: f64) -> SainflouResult {
+        let i = &self.input;
+        let (hw, h, hp) = (height_m, i.depth_m, i.base_depth_m);
+        let gw = i.rho_w * G_M_PER_S2;
+        // clapotis_quantities with the height-independent tanh and cosh.
+        let h0 = PI * hw * hw / i.wavelength_m / self.tanh_kh;
+        let pb = i.rho_w * G_M_PER_S2 * hw / self.cosh_kh;
+        // Crest.
+        let top = hw + h0;
+        let p1c = (gw * h + pb) * top / (h + top);
+        let crest_full = Profile::new(&[(-top, 0.0), (0.0, p1c), (h, pb)]);
+        let crest = crest_full.clipped(-top.min(i.crest_freeboard_m), hp);
+        // Trough.
+        let zt = hw - h0;
+        let trough_full = if zt >= 0.0 {
+            Profile::new(&[(0.0, 0.0), (zt, -gw * zt), (h, -pb)])
+        } else {
+            let p0 = (gw * h - pb) * (-zt) / (h - zt);
+            Profile::new(&[(zt, 0.0), (0.0, p0), (h, -pb)])
+        };
+        let trough_top = if zt >= 0.0 { 0.0 } else { zt.max(-i.crest_freeboard_m) };
+        let trough = trough_full.clipped(trough_top, hp);
+        let pt_base = trough_full.at(hp);
+        let tf = trough.force();
+        let tm = trough.moment_about(hp);
+        let suction = 0.5 * pt_base * i.width_m;
+        let xs = 2.0 * i.width_m / 3.0;
+        SainflouResult {
+            h0_m: h0,
+            pb_pa: pb,
+            crest_swl_pressure_pa: p1c,
+            crest_force_n_per_m: crest.force(),
+            crest_moment_base_nm_per_m: crest.moment_about(hp),
+            trough_base_pressure_pa: pt_base,
+            trough_force_n_per_m: tf,
+            trough_moment_base_nm_per_m: tm,
+            trough_lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
+            suction_uplift_n_per_m: suction,
+            suction_moment_heel_nm_per_m: xs * suction,
+            suction_from_heel_m: xs,
+            crest,
+            trough,
+        }
     }
 }
 

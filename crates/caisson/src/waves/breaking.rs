@@ -71,6 +71,84 @@ impl BreakerCriterion {
     }
 }
 
+impl BreakerCriterion {
+    /// The criterion at one period, for the breaking depths of many heights
+    /// ([`BreakingAtPeriod::breaking_depth_m`]: the same numbers as
+    /// [`Self::breaking_depth_m`], with what depends only on the period computed once).
+    pub fn at_period(&self, period_s: f64) -> BreakingAtPeriod {
+        let kind = match *self {
+            BreakerCriterion::Miche => {
+                let k0 = deep_water_wavenumber(period_s);
+                PeriodKind::Miche { k0, numerator: MICHE_STEEPNESS * 2.0 * PI * k0 }
+            }
+            BreakerCriterion::Goda { a, slope } => {
+                let l0 = deep_water_wavelength_m(period_s);
+                PeriodKind::Goda {
+                    valid: a > 0.0 && slope >= 0.0,
+                    l0,
+                    a_l0: a * l0,
+                    denominator: 1.5 * PI * goda_slope_factor(slope),
+                }
+            }
+            BreakerCriterion::McCowan { gamma } => PeriodKind::McCowan { gamma },
+        };
+        BreakingAtPeriod { period_s, kind }
+    }
+}
+
+/// A breaking criterion at one period ([`BreakerCriterion::at_period`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BreakingAtPeriod {
+    period_s: f64,
+    kind: PeriodKind,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum PeriodKind {
+    /// k0 and 0.142 · 2π k0.
+    Miche {
+        k0: f64,
+        numerator: f64,
+    },
+    /// L0, a L0 and 1.5π (1 + 15 tan^{4/3} θ).
+    Goda {
+        valid: bool,
+        l0: f64,
+        a_l0: f64,
+        denominator: f64,
+    },
+    McCowan {
+        gamma: f64,
+    },
+}
+
+impl BreakingAtPeriod {
+    /// Breaking depth d_b (m) of a wave of height `height_m`, as
+    /// [`BreakerCriterion::breaking_depth_m`] at this period.
+    #[inline]
+    pub fn breaking_depth_m(&self, height_m: f64) -> Option<f64> {
+        let period_s = self.period_s;
+        match self.kind {
+            PeriodKind::Miche { k0, numerator } => {
+                if !(height_m > 0.0 && period_s > 0.0 && height_m.is_finite() && period_s.is_finite()) {
+                    return None;
+                }
+                let kb = (numerator / height_m).sqrt();
+                let r = k0 / kb;
+                (r < 1.0).then(|| r.atanh() / kb)
+            }
+            PeriodKind::Goda { valid, l0, a_l0, denominator } => {
+                if !(height_m > 0.0 && period_s > 0.0 && valid) {
+                    return None;
+                }
+                let r = height_m / a_l0;
+                (r < 1.0).then(|| -l0 * (1.0 - r).ln() / denominator)
+            }
+            PeriodKind::McCowan { gamma } => (height_m > 0.0 && gamma > 0.0).then(|| height_m / gamma),
+        }
+    }
+}
+
 /// Miche breaker height H_b = 0.142 L tanh(2π h/L) (m) at depth `depth_m` (docs/model.md §3.1).
 #[inline]
 pub fn miche_breaker_height_m(depth_m: f64, period_s: f64) -> f64 {
