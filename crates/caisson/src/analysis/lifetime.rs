@@ -276,7 +276,13 @@ impl Observer for WaveWatch {
     #[inline]
     fn observe(&mut self, s: &StepView<'_>) {
         self.max_rotation_rad = self.max_rotation_rad.max(s.state.u[2].abs());
-        self.lifted |= s.reaction.contact_springs < s.springs.len();
+        self.lifted |= s.reaction.contact_springs < s.state.springs.len();
+    }
+    /// Only the reaction's count of springs in contact: an all-sticking step need not build the
+    /// springs' responses (every spring is then in contact).
+    #[inline]
+    fn reads_springs(&self) -> bool {
+        false
     }
 }
 
