@@ -98,13 +98,15 @@ fn the_answer_does_not_depend_on_the_thread_count() {
 }
 
 /// The required width grows as the allowed sliding falls (common random numbers: the same lives
-/// at every width and for every criterion), for both models.
+/// at every width and for every criterion), for both models. (S_a from 0.02 m: with results
+/// version 9's draws these 12 lives need a rigid block wider than the 30 m of the range for
+/// 0.01 m.)
 #[test]
 fn the_required_width_is_monotone_in_the_allowed_sliding() {
     let dir = tempfile::tempdir().unwrap();
     let mut last = (f64::INFINITY, f64::INFINITY);
     let mut checked = 0;
-    for s_a in [0.01, 0.05, 0.3, 1.0] {
+    for s_a in [0.02, 0.05, 0.3, 1.0] {
         let (_, j) = sized(dir.path(), &format!("expected_sliding_m = {s_a}"), "2");
         let (d, r) = (width(&j, "dynamic"), width(&j, "rigid_block"));
         assert!(d <= last.0 && r <= last.1, "S_a {s_a}: {d}, {r} after {last:?}");

@@ -103,7 +103,7 @@ fn a_billion_streamed_history_rows_are_over_the_disk_budget_only() {
 /// of simulated waves against theirs. The waves per storm come from the storm distribution's
 /// quantiles (3 % allowed; measured 0.5 %); the share from a pilot of 128 short storms, where the
 /// rare large storms that pass most waves may or may not fall (a factor of 3 allowed; measured
-/// 1.7).
+/// 1.15).
 #[test]
 fn design_waves_and_screened_share_match_the_first_lives() {
     let sc = example("design_breakwater.toml");

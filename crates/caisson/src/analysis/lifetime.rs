@@ -44,12 +44,37 @@
 //! computed, and is simulated if they pass the test (a fifth of the waves near the threshold do
 //! not: they are screened too). The friction used is the smaller of μ_s and the rigid block's μ, so
 //! a screened wave slides neither model. The share of waves screened is reported; `screen = false`
-//! runs every wave (and gives the same result, `tests/lifetime.rs`).
+//! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
+//! totals to 1 µm per life, `tests/lifetime.rs`).
+//!
+//! **Drawing** ([`WaveDraws`]). A screened wave contributes nothing, so a storm draws only the
+//! waves that can pass the screen ([`WaveDraws::AboveThreshold`], the default). With h_t the
+//! lower edge of the lowest grid cell that may slide and q = P(H > h_t) = exp[−2 (h_t/H1/3)²]
+//! (the Rayleigh exceedance of [`crate::waves::statistics`]), the number of the storm's N waves
+//! above h_t is K ~ Binomial(N, q), and those K heights are independent Rayleigh heights truncated
+//! below at h_t, H = √(h_t² − ½ H1/3² ln U) by the inverse CDF. They are drawn as the descending
+//! order statistics of the N heights ([`DescendingRayleigh`]): the largest first, each from one
+//! uniform, until the first one below h_t — which gives K and the truncated heights together, and
+//! the same k-th largest wave whatever h_t is. Each drawn wave takes a rise-time deviate and a
+//! uniform place in the storm; the waves run in the order of their places (the order of an
+//! i.i.d. sequence), each limited to H_max and tested as before, against its cell (the flags
+//! need not be monotone in the height) and then by its own loads. The screened count stays
+//! N − simulated. Every per-life output has the distribution it had when all N waves were drawn
+//! and tested ([`WaveDraws::EveryWave`]); the numbers differ within sampling noise (`tests/lifetime.rs`
+//! holds the design example's statistics of both drawings within a few standard errors).
 //!
 //! **Random numbers**: one ChaCha8 stream per life (seed, stream = life index); per storm in
-//! order: U for H0, four truncated normals for the errors, U for the tide phase; per wave: U
-//! for the height, one standard normal for the rise time. Lives are independent, so results
-//! do not depend on the thread count, and a life can be recomputed alone (checkpoint/resume).
+//! order: U for H0, four truncated normals for the errors, U for the tide phase. The waves of
+//! storm y (counting from 0) come from the same stream at word (y + 1) · 2^40
+//! ([`STORM_WAVE_WORDS_LOG2`]; at most 6 words per wave, so a storm of up to 1.8e11 waves stays
+//! in its part): per drawn wave, U for its exceedance probability, one standard normal for the
+//! rise time, U for its place ([`WaveDraws::EveryWave`] and the screen off: per wave, U for the
+//! height and one standard normal for the rise time). So how many waves a storm draws (which
+//! depends on the caisson) never moves the numbers of the next storm: a life sees the same
+//! storms and the same largest waves on every caisson (common random numbers of `caisson size`,
+//! docs/size.md), and the same storms with either drawing.
+//! Lives are independent, so results do not depend on the thread count, and a life can be
+//! recomputed alone (checkpoint/resume).
 
 use super::run::permanent_sliding_m;
 use super::train::RigidBlock;
@@ -60,7 +85,7 @@ use crate::loads::history::{TrainError, WaveTrain};
 use crate::loads::model::{PeakComponents, WaveLoadModel, WaveLoads};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
-use crate::waves::statistics::sample_rayleigh_m;
+use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
 use crate::waves::surf_zone::goda_surf_zone;
 use crate::G_M_PER_S2;
 use rand::Rng;
@@ -161,7 +186,28 @@ pub struct StormCase<'a> {
     pub rigid_block_mu: f64,
     /// Skip the waves that cannot slide the caisson (module docs).
     pub screen: bool,
+    /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
+    /// wave is drawn and simulated.
+    pub draws: WaveDraws,
 }
+
+/// How a screened storm draws its waves (module docs, "Drawing").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum WaveDraws {
+    /// Only the waves that can pass the screen: the largest first, down to the lowest height the
+    /// screen lets through (the default).
+    #[default]
+    AboveThreshold,
+    /// Every wave drawn and tested against the screen (as up to results version 8): the tests'
+    /// reference. It draws the same waves as a run with the screen off, so the two compare wave
+    /// for wave; the default must agree with it in distribution.
+    EveryWave,
+}
+
+/// log2 of the 32-bit words of the life's stream each storm's waves own (module docs, "Random
+/// numbers"): storm y of a life draws its waves from word (y + 1) · 2^40.
+pub const STORM_WAVE_WORDS_LOG2: u32 = 40;
 
 /// One storm at the structure.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -318,10 +364,21 @@ fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
     p > b.mu * (b.weight_n - u) || 6.0 * m / b.width_m * b.lift_factor >= b.weight_n - u
 }
 
-/// What the storms of one life reuse: the one-wave train of the simulated waves.
+/// What the storms of one life reuse: the one-wave train of the simulated waves and the waves
+/// drawn above the screen's threshold.
 #[derive(Debug, Default)]
 struct StormScratch {
     train: WaveTrain,
+    waves: Vec<DrawnWave>,
+}
+
+/// A wave drawn above the screen's threshold: its place in the storm (a uniform on [0, 1): the
+/// drawn waves run in this order), its height (clamped) and its rise-time deviate.
+#[derive(Debug, Clone, Copy)]
+struct DrawnWave {
+    place: f64,
+    height_m: f64,
+    deviate: f64,
 }
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
@@ -396,16 +453,13 @@ fn storm_from(
     }
     // Cell c = [c dh, (c + 1) dh] may slide if a node within one cell of it may.
     let cell_may_slide = |c: usize| node[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f);
-    let mut sim: Option<Simulation> = None;
-    let train = &mut scratch.train;
+    let cell_of = |h: f64| ((h / dh) as usize).min(SCREEN_CELLS - 1);
+    let low_m = 1e-3 * s.h13_m.max(1e-6);
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
-    for _ in 0..s.waves {
-        let h = sample_rayleigh_m(s.h13_m, rng).clamp(1e-3 * s.h13_m.max(1e-6), hmax);
-        let z: f64 = rng.sample(StandardNormal);
-        if st.screen && !cell_may_slide(((h / dh) as usize).min(SCREEN_CELLS - 1)) {
-            out.screened_waves += 1;
-            continue;
-        }
+    let mut sim: Option<Simulation> = None;
+    let StormScratch { train, waves } = scratch;
+    // One wave of height h (clamped) and rise-time deviate z through both models.
+    let mut run_wave = |h: f64, z: f64, out: &mut StormOutcome| -> Result<(), StormError> {
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
         let loads = match loads_at.evaluate_with(h, model.options.regime) {
             Ok(l) => l,
@@ -416,19 +470,19 @@ fn storm_from(
         // loads decide.
         if st.screen && !may_slide(&PeakComponents { quasi: event.quasi, impact: event.impact }, &bound) {
             out.screened_waves += 1;
-            continue;
+            return Ok(());
         }
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);
         train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s: s.period_s, source })?;
         let sim = match sim.as_mut() {
             Some(x) => {
-                x.reset(train);
+                x.reset(&*train);
                 x
             }
-            None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, train)),
+            None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, &*train)),
         };
         let mut watch = WaveWatch::default();
-        sim.run_until(s.period_s, train, &mut watch)?;
+        sim.run_until(s.period_s, &*train, &mut watch)?;
         let slide = permanent_sliding_m(sim);
         out.sliding_m += slide;
         if slide >= 0.0 {
@@ -440,6 +494,53 @@ fn storm_from(
         out.simulated_waves += 1;
         out.rocking_waves += u64::from(watch.lifted);
         out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
+        Ok(())
+    };
+    if st.screen && st.draws == WaveDraws::AboveThreshold {
+        // Only the waves at or above the lowest cell that may slide (module docs, "Drawing").
+        let Some(lowest) = (0..SCREEN_CELLS).find(|&c| cell_may_slide(c)) else {
+            out.screened_waves = out.waves;
+            out.max_storm_sliding_m = 0.0;
+            return Ok(out);
+        };
+        // A shade below the cell's lower edge, so that rounding in `cell_of` cannot put a wave
+        // below the threshold into the cell; with the clamp at low_m above it, every wave.
+        let threshold_m = lowest as f64 * dh * (1.0 - 1e-9);
+        let all = threshold_m <= low_m;
+        let q = rayleigh_exceedance(threshold_m, s.h13_m);
+        let mut sample = DescendingRayleigh::new(out.waves);
+        waves.clear();
+        while let Some(e) = sample.next_exceedance(rng) {
+            if !all && e >= q {
+                break;
+            }
+            // E = 0 (a uniform of exactly 0): an unbounded height, limited to H_max.
+            let h = if e > 0.0 { rayleigh_quantile_m(e, s.h13_m) } else { hmax };
+            let z: f64 = rng.sample(StandardNormal);
+            let place: f64 = rng.gen();
+            waves.push(DrawnWave { place, height_m: h.clamp(low_m, hmax), deviate: z });
+        }
+        // The drawn waves in the order they arrive in the storm.
+        waves.sort_unstable_by(|a, b| a.place.total_cmp(&b.place));
+        out.screened_waves = out.waves - waves.len() as u64;
+        for w in waves.iter() {
+            if cell_may_slide(cell_of(w.height_m)) {
+                run_wave(w.height_m, w.deviate, &mut out)?;
+            } else {
+                out.screened_waves += 1;
+            }
+        }
+    } else {
+        // Every wave (the screen tested wave by wave, or off).
+        for _ in 0..s.waves {
+            let h = sample_rayleigh_m(s.h13_m, rng).clamp(low_m, hmax);
+            let z: f64 = rng.sample(StandardNormal);
+            if st.screen && !cell_may_slide(cell_of(h)) {
+                out.screened_waves += 1;
+                continue;
+            }
+            run_wave(h, z, &mut out)?;
+        }
     }
     out.max_storm_sliding_m = out.sliding_m;
     Ok(out)
@@ -451,7 +552,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     let mut life = StormOutcome::default();
     let mut scratch = StormScratch::default();
     let site = &st.model.site;
-    for _ in 0..p.life_years {
+    for year in 0..p.life_years {
         let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
         let e = &p.errors;
         let (e_h0, e_tr, e_f, e_mu) = (
@@ -474,7 +575,11 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             force_factor: e_f,
             friction_factor: e_mu,
         };
-        let o = storm_from(st, &storm, &mut rng, life.sliding_m, &mut scratch)?;
+        // The storm's waves from their own part of the stream: how many it draws does not move
+        // the next storm's numbers (common random numbers across caissons, docs/size.md).
+        let mut waves_rng = rng.clone();
+        waves_rng.set_word_pos(((year as u128) + 1) << STORM_WAVE_WORDS_LOG2);
+        let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, &mut scratch)?;
         life.add(&o);
     }
     Ok(life)

@@ -2,7 +2,9 @@
 
 use super::{fingerprint, Provenance};
 use crate::analysis::checks::Warning;
-use crate::analysis::lifetime::{life_statistics, DesignParams, LifeParams, LifeStatistics, StormCase, StormOutcome};
+use crate::analysis::lifetime::{
+    life_statistics, DesignParams, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
+};
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
 use serde::Serialize;
@@ -14,6 +16,7 @@ struct LifeInputs<'a> {
     waves: &'a WaveLoadModel,
     rigid_block_mu: f64,
     screen: bool,
+    draws: WaveDraws,
     life: &'a LifeParams,
     seed: u64,
 }
@@ -27,6 +30,7 @@ pub fn design_fingerprint(case: &StormCase<'_>, p: &DesignParams) -> String {
         waves: case.model,
         rigid_block_mu: case.rigid_block_mu,
         screen: case.screen,
+        draws: case.draws,
         life: &p.life,
         seed: p.seed,
     })

@@ -23,7 +23,7 @@ pub mod waves;
 
 use crate::analysis::campaign::Campaign;
 use crate::analysis::fragility::FragilityParams;
-use crate::analysis::lifetime::{DesignParams, StormCase};
+use crate::analysis::lifetime::{DesignParams, StormCase, WaveDraws};
 use crate::analysis::sizing::SizeParams;
 use crate::analysis::train::{TrainCase, WaveSetup};
 use crate::analysis::Structure;
@@ -630,6 +630,7 @@ impl Scenario {
             model: &w.model,
             rigid_block_mu: w.rigid_block_mu(&self.structure.foundation),
             screen,
+            draws: WaveDraws::AboveThreshold,
         })
     }
 
