@@ -42,8 +42,12 @@
 //! or slid). The test is made per storm on a grid of 64 heights from 0 to H_max plus the breaker
 //! height at the wall; a wave whose grid cell or a neighbouring cell can slide has its own loads
 //! computed, and is simulated if they pass the test (a fifth of the waves near the threshold do
-//! not: they are screened too). The friction used is the smaller of μ_s and the rigid block's μ, so
-//! a screened wave slides neither model. The share of waves screened is reported; `screen = false`
+//! not: they are screened too). The grid is skipped (every node false) in a storm where upper
+//! bounds of the loads over all heights up to H_max pass neither test
+//! ([`crate::loads::model::PeriodLoads::peak_bound`]: Goda's loads grow with the height, the
+//! impact is at most its value at Eq. 30's reduction 1, and none below the breaker height at the
+//! wall). The friction used is the smaller of μ_s and the rigid block's μ, so a screened wave
+//! slides neither model. The share of waves screened is reported; `screen = false`
 //! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
 //! totals to 1 µm per life, `tests/lifetime.rs`).
 //!
@@ -439,7 +443,10 @@ fn storm_from(
     let hmax = s.hmax_m.max(1e-6);
     let dh = hmax / SCREEN_CELLS as f64;
     let mut node = [false; SCREEN_CELLS + 1];
-    if st.screen {
+    // A storm in which even the bounds of the loads over all heights cannot slide or lift the
+    // caisson has every node false: the grid is not needed.
+    let calm = || loads_at.peak_bound(hmax).is_some_and(|b| !may_slide(&b.scaled(s.force_factor), &bound));
+    if st.screen && !calm() {
         for (i, flag) in node.iter_mut().enumerate() {
             *flag = node_may_slide((i as f64 * dh).max(1e-3 * hmax));
         }

@@ -166,6 +166,33 @@ impl GodaPeriod {
         GodaPeriod { input: *i, beta, cb, alpha1, cosh_kh, alpha3, alpha_i1, gamma_w: i.rho_w * G_M_PER_S2 }
     }
 
+    /// Upper bounds [P, M_P, U] (per metre, each ≥ 0) of Goda's force, its moment about the base
+    /// and the uplift over every design height 0 < H_D ≤ `max_height_m` whose h_b ≤
+    /// `max_depth_5h_m`, or `None` unless λ ≥ 0, h' ≥ 0, h_c ≥ 0 and d > 0 (what the bounds
+    /// assume). Term by term (module docs' formulas): α1 H_D and η* grow with H_D;
+    /// α2 H_D ≤ min{2d, (h_b − d)/(3 h_b) · H_D³/d²}, whose factor grows with h_b;
+    /// α_I H_D = α_I0 α_I1 H_D ≤ 2 |α_I1| H_D (α_I0 ≤ 2); so p1 ≤ p̄1 at the largest H_D and h_b;
+    /// p3 = α3 p1 ≤ max(α3, 0) p̄1; p4 = p1 (1 − h_c/η*) ≤ p1; h_c* ≤ min(η̄*, h_c);
+    /// pu ≤ its value at the largest H_D with max(α3, 0).
+    pub fn upper_bounds(&self, max_height_m: f64, max_depth_5h_m: f64) -> Option<[f64; 3]> {
+        let i = &self.input;
+        let (d, hc, hp) = (i.wall_depth_m, i.crest_freeboard_m, i.base_depth_m);
+        if !(i.lambda.iter().all(|&l| l >= 0.0) && hp >= 0.0 && hc >= 0.0 && d > 0.0 && max_depth_5h_m > 0.0) {
+            return None;
+        }
+        let (cb, [l1, l2, l3], h) = (self.cb, i.lambda, max_height_m.max(0.0));
+        let a2h = (((max_depth_5h_m - d) / (3.0 * max_depth_5h_m)).max(0.0) * h.powi(3) / (d * d)).min(2.0 * d);
+        let aih = self.alpha_i1.map_or(0.0, |a1| 2.0 * a1.abs() * h);
+        let p1 = 0.5 * (1.0 + cb) * (l1 * self.alpha1 * h + l2 * a2h.max(aih) * cb * cb) * self.gamma_w;
+        let alpha3 = self.alpha3.max(0.0);
+        let p3 = alpha3 * p1;
+        let hcs = (0.75 * (1.0 + cb) * l1 * h).min(hc);
+        let force = 0.5 * (p1 + p3) * hp + p1 * hcs;
+        let moment = (2.0 * p1 + p3) * hp * hp / 6.0 + p1 * hp * hcs + 0.5 * p1 * hcs * hcs;
+        let uplift = 0.25 * (1.0 + cb) * l3 * self.alpha1 * alpha3 * self.gamma_w * h * i.width_m;
+        Some([force, moment, uplift.max(0.0)])
+    }
+
     /// Goda's formula for the design height `height_m` (H_D) with h_b = `depth_5h_seaward_m`.
     #[inline(always)]
     pub fn at(&self, height_m: f64, depth_5h_seaward_m: f64) -> GodaResult {

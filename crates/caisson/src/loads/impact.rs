@@ -125,6 +125,20 @@ impl ImpactPeriod {
         }
     }
 
+    /// Upper bounds [F_x,max, its moment about the base, F_y,max] (per metre, each ≥ 0) over
+    /// every height up to `max_height_m` at the toe: the reduction of Eq. 30 is at most 1, F_y,max
+    /// and the moment follow F_x,max with their height-free factors. `None` unless a_imp α_max ≥ 0,
+    /// B > 0 and the distribution's denominator 0.4 H_br + 0.7 h' > 0 (what the bounds assume).
+    pub fn upper_bounds(&self, max_height_m: f64) -> Option<[f64; 3]> {
+        let i = &self.input;
+        if !(self.force_coefficient >= 0.0 && i.toe_wavelength_m > 0.0 && self.denom > 0.0 && i.width_m > 0.0) {
+            return None;
+        }
+        let fx = self.force_coefficient * max_height_m.max(0.0) * i.toe_wavelength_m;
+        let fy = 0.45 * (fx / self.denom) * i.width_m / 2.0;
+        Some([fx, fx * self.lever.max(0.0), fy])
+    }
+
     /// The impact of a wave of height `height_m` at the toe.
     #[inline(always)]
     pub fn at(&self, height_m: f64) -> ImpactResult {

@@ -27,6 +27,7 @@ use super::risetime::{LoadRng, RiseTimeDistribution, RiseTimeParams};
 use super::safety::{safety_factors, SafetyFactors, SafetyInput};
 use super::sainflou::{SainflouInput, SainflouPeriod, SainflouResult};
 use super::shapes::{Impulse, LoadShape};
+use super::WaveForce;
 use crate::waves::breaking::{miche_breaker_height_from_wavenumber_m, miche_breaker_height_m, BreakerCriterion};
 use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m, wavenumber};
 use rand::Rng;
@@ -469,6 +470,40 @@ impl PeriodLoads<'_> {
             impact,
             f_star,
             rise_time: self.model.options.rise_time.distribution(f_star, self.period_s),
+        })
+    }
+
+    /// Upper bounds of the components [`Self::peaks`] gives with the automatic regime, for every
+    /// incident height up to `max_height_m`, each ≥ 0 and with a relative margin of 1e-9 for
+    /// rounding: the pulsating component from [`GodaPeriod::upper_bounds`] at the largest height
+    /// at the toe (min(H, H_b,toe)) and its h_b, times the larger α_qs; the impact from
+    /// [`ImpactPeriod::upper_bounds`] if that height reaches the breaker height at the wall (a
+    /// lower wave is non-breaking: no impact), else zero. The moments use the levers of
+    /// [`WaveLoadModel::event`] (uplift B/6 shoreward of the base centre). `None` where the
+    /// bounds' assumptions do not hold (negative λ, α_qs, a_imp α_max, seabed slope, depths or
+    /// widths): then only the heights themselves tell.
+    pub fn peak_bound(&self, max_height_m: f64) -> Option<PeakComponents> {
+        let s = &self.model.site;
+        let o = &self.model.options;
+        const MARGIN: f64 = 1.0 + 1e-9;
+        let positive = o.alpha_qs_breaking >= 0.0 && o.alpha_qs_nonbreaking >= 0.0 && s.seabed_slope >= 0.0;
+        if !(positive && s.length_m > 0.0 && s.width_m > 0.0) {
+            return None;
+        }
+        let h = (max_height_m * MARGIN).min(self.hb_toe * MARGIN);
+        let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
+        let [p, m, u] = self.goda.upper_bounds(h, depth_5h * MARGIN)?;
+        let may_break = h >= self.hbr;
+        let alpha_qs = if may_break { o.alpha_qs_breaking.max(o.alpha_qs_nonbreaking) } else { o.alpha_qs_nonbreaking };
+        let [ix, im, iy] = if may_break { self.impact.upper_bounds(h)? } else { [0.0; 3] };
+        let (l, k) = (s.length_m, MARGIN * MARGIN);
+        let component = |fx: f64, m: f64, fy: f64| LoadComponent {
+            x: WaveForce { fx_n: k * fx * l, fy_n: 0.0, m_nm: k * (m + fy * s.width_m / 6.0) * l },
+            y: WaveForce { fx_n: 0.0, fy_n: k * fy * l, m_nm: 0.0 },
+        };
+        Some(PeakComponents {
+            quasi: component(alpha_qs * p, alpha_qs * m, alpha_qs * u),
+            impact: component(ix, im, iy),
         })
     }
 
