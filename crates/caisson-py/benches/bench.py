@@ -50,7 +50,7 @@ def main() -> None:
     a = argparse.ArgumentParser()
     a.add_argument("--dask", action="store_true")
     a.add_argument("--loads", action="store_true", help="only caisson.loads.evaluate (e.g. to compare two builds)")
-    a.add_argument("--sweep-args", default="--lives 96 --years 50 --shard 8 --widths 18 20 22")
+    a.add_argument("--sweep-args", default="--lives 480 --years 50 --shard 8 --widths 18 20 22")
     args = a.parse_args()
 
     if not args.loads:
