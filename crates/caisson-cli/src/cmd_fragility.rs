@@ -29,7 +29,7 @@ struct Setup<'a> {
     params: &'a FragilityParams,
 }
 
-/// Goda's static sliding safety factor (μ_s) under the wave H_max = 1.8 H1/3, if defined.
+/// Goda's static sliding safety factor (μ_s) under the design wave H_max of H1/3, if defined.
 fn goda_sliding_safety(s: &Setup<'_>, h13_m: f64, period_s: f64) -> Option<f64> {
     caisson::report::fragility::goda_sliding_safety(s.structure, s.waves, h13_m, period_s)
 }
@@ -63,11 +63,14 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
     let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to H_max = {HMAX_RATIO} H1/3, no tide or estimation errors; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
     let sf = goda_sliding_safety(s, s.waves.height_m(), s.waves.period_s()).map_or("-".into(), |v| format!("{v:.3}"));
+    let dw =
+        caisson::analysis::conventional::DesignWave::irregular(&s.waves.model, s.waves.height_m(), s.waves.period_s());
     let _ = writeln!(
         t,
-        "Design wave H1/3 = {} m: Goda static sliding safety factor {sf} at H_max = {:.2} m",
+        "Design wave H1/3 = {} m: Goda static sliding safety factor {sf} at H_max = {:.2} m ({})",
         s.waves.height_m(),
-        HMAX_RATIO * s.waves.height_m()
+        dw.design_height_m,
+        dw.rule.describe()
     );
     let _ = writeln!(t);
     let mut head = String::from("H1/3 (m)  SF(H_max)  storms");

@@ -11,12 +11,12 @@ use crate::input_err;
 use crate::output::{check_finite_fields, check_out_dir, ensure_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
+use caisson::analysis::conventional::{static_check, DesignWaveRule, StaticCheck};
 use caisson::analysis::train::WaveSetup;
 use caisson::loads::history::{LoadComponent, WaveEvent, WaveTrain};
 use caisson::loads::model::{WaveLoads, WaveRecord};
 use caisson::loads::regime::Regime;
 use caisson::loads::risetime::{load_rng, RiseTimeModel};
-use caisson::loads::safety::SafetyFactors;
 use caisson::loads::shapes::LoadShape;
 use caisson::loads::LoadHistory;
 use caisson::report::loads::{HistoryInfo, LoadsReport};
@@ -47,9 +47,10 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     check_out_dir(args.out.as_deref())?;
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     let ws = sc.waves_for("`caisson loads`").map_err(input_err)?;
-    let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).map_err(input_err)?;
+    // Goda's design wave (regular: H; irregular: H_max, docs/model.md §1.3) and its checks.
+    let check = static_check(sc.structure(), ws).map_err(input_err)?;
+    let loads = check.loads;
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    let safety = ws.model.safety(&loads, w, mu);
 
     let history = if args.history {
         let records = ws.model.regular_records(&loads, args.waves, &mut load_rng(args.seed));
@@ -58,7 +59,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     } else {
         None
     };
-    let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
+    let mut report = LoadsReport::new(ws, &check, w, mu);
     report.warnings = caisson::analysis::checks::structure_warnings(sc.structure());
     report.warnings.extend(caisson::analysis::checks::wave_load_warnings(sc.structure(), ws));
     if let Some((records, _)) = &history {
@@ -82,7 +83,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     if args.json {
         crate::sayln!("{}", pretty(&doc)?);
     } else {
-        crate::say!("{}", loads_text(&sc, ws, &loads, &safety));
+        crate::say!("{}", loads_text(&sc, ws, &check));
     }
     if let Some(out) = &args.out {
         ensure_dir(out)?;
@@ -108,13 +109,34 @@ fn opt(v: Option<f64>, digits: usize) -> String {
 }
 
 /// The human-readable report.
-pub fn loads_text(sc: &Scenario, ws: &WaveSetup, l: &WaveLoads, sf: &SafetyFactors) -> String {
+pub fn loads_text(sc: &Scenario, ws: &WaveSetup, c: &StaticCheck) -> String {
+    let (l, sf, dw) = (&c.loads, &c.safety, &c.design_wave);
     let site = &ws.model.site;
     let o = &ws.model.options;
     let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
     let mut t = String::new();
     let _ = writeln!(t, "Site     h_s = {:.3} m at the toe, d = {:.3} m at the wall, base h' = {:.3} m, crest h_c = {:.3} m, B = {:.3} m, l = {:.3} m",
         site.depth_at_toe_m, site.depth_at_wall_m, site.base_depth_m, site.crest_freeboard_m, site.width_m, site.length_m);
+    match (dw.rule, dw.significant_height_m) {
+        (DesignWaveRule::RegularHeight, _) | (_, None) => {
+            let _ = writeln!(t, "Design   regular waves: Goda's design wave H_D = H");
+        }
+        (rule, Some(h13)) => {
+            let limited = match (dw.equivalent_deep_water_height_m, dw.breaking_limited_hmax_m) {
+                (Some(h0), Some(hm)) => format!("Goda's breaking-limited H_max {hm:.3} m from H0' = {h0:.3} m"),
+                _ => "no breaking-limited H_max".to_string(),
+            };
+            let _ = writeln!(
+                t,
+                "Design   irregular sea, H1/3 = {h13:.3} m at the toe, T1/3 = {:.3} s: H_D = H_max = {:.3} m, {}\n         (1.8 H1/3 = {:.3} m; {limited}, at h_b = h_s + 5 H1/3 tan θ = {:.3} m)",
+                dw.period_s,
+                dw.design_height_m,
+                rule.describe(),
+                dw.hmax_from_significant_m.unwrap_or(f64::NAN),
+                dw.depth_5h_seaward_m
+            );
+        }
+    }
     let _ = writeln!(
         t,
         "Wave     H = {:.3} m (at the toe {:.3} m{}), T = {:.3} s, β = {:.1}°, L(h_s) = {:.4} m, L0 = {:.4} m",
@@ -207,7 +229,7 @@ pub fn loads_text(sc: &Scenario, ws: &WaveSetup, l: &WaveLoads, sf: &SafetyFacto
     let _ = writeln!(t);
     let _ = writeln!(
         t,
-        "Safety (Goda loads, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa",
+        "Safety (Goda loads under H_D, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa\n  (Goda 2000: both safety factors ≥ 1.2; heel pressure ≤ about 500 kPa on a rubble mound)",
         sc.foundation().mu_static,
         sc.caisson().weight_in_water_n / 1e3 / site.length_m,
         opt(sf.sliding, 3),

@@ -9,10 +9,10 @@ use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, w
 use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::checks::structure_warnings;
+use caisson::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave, Governs};
 use caisson::analysis::lifetime::{run_lives, StormOutcome};
-use caisson::analysis::sizing::{
-    bisection_steps, candidate, curve_widths, size, smallest_width_reaching, Candidate, Reached, Required,
-};
+use caisson::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, Reached, Required};
+use caisson::loads::safety::SafetyFactors;
 use caisson::report::design::design_fingerprint;
 use caisson::report::size::{GodaWidth, SizeReport};
 use caisson::scenario::{self, Scenario};
@@ -21,8 +21,6 @@ use std::io::Write as _;
 use std::ops::ControlFlow;
 use std::path::Path;
 
-/// The static sliding safety factor of Goda's deterministic design.
-pub const GODA_SAFETY_FACTOR: f64 = 1.2;
 /// Width tolerance of the deterministic (Goda) width, m.
 const GODA_TOLERANCE_M: f64 = 1e-3;
 
@@ -33,11 +31,9 @@ fn at_width(sc: &Scenario, width_m: f64) -> Result<Scenario> {
         .map_err(|e| input_err(format!("at the width {width_m} m of the search: {e}")))
 }
 
-/// Goda's static sliding safety factor of the scenario's design wave on `sc`'s caisson.
-fn goda_safety(sc: &Scenario) -> Option<f64> {
-    let ws = sc.waves.as_ref()?;
-    let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).ok()?;
-    ws.model.safety(&loads, sc.caisson().weight_in_water_n, sc.foundation().mu_static).sliding
+/// Goda's static checks of the scenario's design wave on `sc`'s caisson.
+fn goda_checks(sc: &Scenario) -> Option<SafetyFactors> {
+    static_check(sc.structure(), sc.waves.as_ref()?).ok().map(|c| c.safety)
 }
 
 /// The checkpoint of a sizing run in `--out`: a header line, then one line per finished
@@ -224,18 +220,21 @@ pub fn run(args: SizeArgs) -> Result<()> {
     let sizing = size(&p, &mut evaluate)?;
     pb.finish_and_clear();
     // The deterministic width is cheap: it is searched from a quarter of the range's smallest
-    // width, so it shows even where it lies far below the widths the dynamic model needs.
-    let goda_range = (p.range_m.0 / 4.0, p.range_m.1);
-    let goda_width = smallest_width_reaching(goda_range, GODA_SAFETY_FACTOR, GODA_TOLERANCE_M, &mut |w| {
-        at_width(&sc, w).ok().and_then(|s| goda_safety(&s))
-    });
-    let goda = GodaWidth { safety_factor: GODA_SAFETY_FACTOR, reached: goda_width };
+    // width to twice its largest, so it shows even where it lies far from the widths the dynamic
+    // model needs.
+    let goda_range = (p.range_m.0 / 4.0, 2.0 * p.range_m.1);
+    let mut checks = |w: f64| at_width(&sc, w).ok().and_then(|s| goda_checks(&s));
+    let width = conventional_width(goda_range, GODA_TOLERANCE_M, &p.conventional, &mut checks);
+    let design_wave = DesignWave::of(sc.waves.as_ref().expect("a sizing scenario has [waves]"));
+    let goda = GodaWidth::new(design_wave, &p.conventional, width);
     let extra = |c: &Candidate| {
-        (design.failure_limit_m(c.width_m), at_width(&sc, c.width_m).ok().and_then(|s| goda_safety(&s)))
+        let checks = at_width(&sc, c.width_m).ok().and_then(|s| goda_checks(&s));
+        (design.failure_limit_m(c.width_m), checks.map(|sf| ChecksAtWidth::new(c.width_m, &sf)))
     };
     let mut report = SizeReport::new(&p, design.life.life_years, design.seed, &sizing, goda, &extra);
     report.warnings = structure_warnings(sc.structure());
     report.warnings.extend(range_warnings(&report));
+    report.warnings.extend(goda_warnings(&report));
     // Absent values (a width beyond the range, an undefined safety factor) are `null`: check
     // the report's numbers themselves.
     crate::output::check_finite_fields(&report, "size").map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
@@ -288,6 +287,101 @@ fn range_warnings(r: &SizeReport) -> Vec<caisson::analysis::checks::Warning> {
     out
 }
 
+/// Warnings of Goda's conventional design: its width outside the search, a heel pressure above the
+/// allowable value there, candidates that would overturn under the design wave.
+fn goda_warnings(r: &SizeReport) -> Vec<caisson::analysis::checks::Warning> {
+    use caisson::analysis::checks::Warning;
+    let g = &r.goda;
+    let mut out = Vec::new();
+    if let Reached::NotInRange { largest_m } = g.width.reached {
+        out.push(Warning {
+            code: "goda-width-not-in-range",
+            message: format!("no width up to {largest_m} m meets Goda's static checks under the design wave (H_D = {:.2} m): the site's design wave is beyond what this caisson's construction can hold; check `[waves]` and `[caisson]`", g.design_wave.design_height_m),
+            numbers: [("largest_width_m", largest_m), ("design_height_m", g.design_wave.design_height_m)].into_iter().collect(),
+        });
+    }
+    if let (true, Some(a)) = (g.width.heel_pressure_above_allowable, g.width.at_width) {
+        let p = a.heel_pressure_kpa;
+        out.push(Warning {
+            code: "heel-pressure-above-allowable",
+            message: format!(
+                "at Goda's width {:.2} m the heel pressure under the design wave is {}, above the allowable {} kPa (`[size] allowable_heel_pressure_kpa`): the mound needs a bearing-capacity check (or a footing); `[size] heel_pressure_governs = true` makes it a criterion of the width",
+                a.width_m,
+                p.map_or("undefined (the resultant leaves the base)".to_string(), |p| format!("{p:.0} kPa")),
+                g.allowable_heel_pressure_kpa
+            ),
+            numbers: [("width_m", a.width_m), ("heel_pressure_kpa", p.unwrap_or(f64::INFINITY)), ("allowable_kpa", g.allowable_heel_pressure_kpa)]
+                .into_iter()
+                .filter(|(_, v)| v.is_finite())
+                .collect(),
+        });
+    }
+    let tipping: Vec<&caisson::report::size::CandidateReport> =
+        r.candidates.iter().filter(|k| k.goda_overturning_safety_factor.is_some_and(|f| f < 1.0)).collect();
+    if let (Some(first), Some(last)) = (tipping.first(), tipping.last()) {
+        out.push(Warning {
+            code: "overturning-under-design-wave",
+            message: format!(
+                "{} candidate widths ({:.2} to {:.2} m) have Goda's overturning safety factor below 1 under the design wave (H_D = {:.2} m): they would tip about the heel, which the dynamic model does not follow; read their lives' rotation failures, and Goda's width",
+                tipping.len(),
+                first.width_m,
+                last.width_m,
+                g.design_wave.design_height_m
+            ),
+            numbers: [("candidates", tipping.len() as f64), ("largest_width_m", last.width_m)].into_iter().collect(),
+        });
+    }
+    out
+}
+
+fn reached_text(r: &Reached) -> String {
+    match r {
+        Reached::Found { width_m } => format!("{width_m:.2} m"),
+        Reached::AtLowerBound { width_m } => format!("≤ {width_m:.2} m"),
+        Reached::NotInRange { largest_m } => format!("> {largest_m:.2} m"),
+    }
+}
+
+/// The lines of Goda's conventional width.
+fn goda_text(g: &GodaWidth) -> String {
+    let w = &g.width;
+    let dw = &g.design_wave;
+    let governs = match w.governs {
+        Some(Governs::Sliding) => "sliding governs",
+        Some(Governs::Overturning) => "overturning governs",
+        Some(Governs::HeelPressure) => "the heel pressure governs",
+        None => "not reached",
+    };
+    let mut t = format!(
+        "Goda's conventional width       {} ({governs}; sliding SF ≥ {} alone: {}, overturning SF ≥ {} alone: {}{})\n",
+        reached_text(&w.reached),
+        g.sliding_safety_factor,
+        reached_text(&w.sliding_only),
+        g.overturning_safety_factor,
+        reached_text(&w.overturning_only),
+        w.heel_pressure_only.map_or(String::new(), |h| format!(
+            ", heel pressure ≤ {} kPa alone: {}",
+            g.allowable_heel_pressure_kpa,
+            reached_text(&h)
+        ))
+    );
+    let _ = writeln!(t, "  under the design wave H_D = {:.2} m: {}", dw.design_height_m, dw.rule.describe());
+    if let Some(a) = w.at_width {
+        let f = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.3}"));
+        let _ = writeln!(
+            t,
+            "  at {:.2} m: sliding SF {}, overturning SF {}, heel pressure {} (allowable {} kPa{})",
+            a.width_m,
+            f(a.sliding_safety_factor),
+            f(a.overturning_safety_factor),
+            a.heel_pressure_kpa.map_or("undefined".to_string(), |p| format!("{p:.0} kPa")),
+            g.allowable_heel_pressure_kpa,
+            if w.heel_pressure_above_allowable { ": above it" } else { "" }
+        );
+    }
+    t
+}
+
 fn required_text(req: &Required) -> String {
     match req {
         Required::Found { width_m, bracket_m, interval_m, confidence } => {
@@ -331,21 +425,12 @@ fn size_text(r: &SizeReport) -> String {
     let _ = writeln!(t);
     let _ = writeln!(t, "required width, dynamic model   {}", required_text(&r.dynamic));
     let _ = writeln!(t, "required width, rigid block     {}", required_text(&r.rigid_block));
-    let goda = match r.goda.reached {
-        Reached::Found { width_m } => format!("{width_m:.2} m"),
-        Reached::AtLowerBound { width_m } => format!("≤ {width_m:.2} m (the smallest width of the range reaches it)"),
-        Reached::NotInRange { largest_m } => format!("> {largest_m:.2} m (no width of the range reaches it)"),
-    };
-    let _ = writeln!(
-        t,
-        "Goda's deterministic width      {goda} (static sliding safety factor {} under the design wave)",
-        r.goda.safety_factor
-    );
+    t.push_str(&goda_text(&r.goda));
     let _ = writeln!(t);
     let exceed = r.criteria.exceedance.map(|e| e.sliding_m);
     let _ = writeln!(
         t,
-        "  B (m)  W' (kN/m)  Goda SF  E|S| dynamic ± SE (m)  E|S| rigid (m)  {}  P(fail) dyn  P(fail) rigid  meets the criterion",
+        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  E|S| rigid (m)  {}  P(fail) dyn  P(fail) rigid  meets the criterion",
         exceed.map_or("                  ".to_string(), |s| format!("P(|S| > {s:<4} m) dyn"))
     );
     for k in &r.candidates {
@@ -356,10 +441,11 @@ fn size_text(r: &SizeReport) -> String {
             .collect();
         let _ = writeln!(
             t,
-            "{:7.2} {:10.0} {:8} {:10.4} ± {:<8.4}  {:14.4}  {:>18}  {:>11.4}  {:>13.4}  {}",
+            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:14.4}  {:>18}  {:>11.4}  {:>13.4}  {}",
             k.width_m,
             k.weight_in_water_kn,
-            k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.3}")),
+            k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
+            k.goda_overturning_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
             k.dynamic.expected_sliding_m,
             k.dynamic.expected_sliding_se_m,
             k.rigid_block.expected_sliding_m,
@@ -388,6 +474,8 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
         "weight_in_water_kn".into(),
         "failure_sliding_m".into(),
         "goda_sliding_safety_factor".into(),
+        "goda_overturning_safety_factor".into(),
+        "goda_heel_pressure_kpa".into(),
     ];
     for m in ["dynamic", "rigid_block"] {
         header.extend(model_cols.iter().map(|c| format!("{m}_{c}")));
@@ -400,6 +488,8 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
             format!("{:e}", k.weight_in_water_kn),
             format!("{:e}", k.failure_sliding_m),
             k.goda_sliding_safety_factor.map_or(String::new(), |v| format!("{v:e}")),
+            k.goda_overturning_safety_factor.map_or(String::new(), |v| format!("{v:e}")),
+            k.goda_heel_pressure_kpa.map_or(String::new(), |v| format!("{v:e}")),
         ];
         for p in [&k.dynamic, &k.rigid_block] {
             row.extend(
@@ -421,45 +511,79 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
     Ok(w.into_inner()?)
 }
 
-/// The design curve on a logarithmic sliding axis: E|S| (with its 90 % band) and the 95 % value
-/// against width for the dynamic model, E|S| of the rigid block, the criterion and the widths.
+/// The design curve on logarithmic axes, one panel per criterion given: E|S| (with its 90 % band,
+/// the 95 % value of |S| and the rigid block's E|S|), P(|S| > S_lim) and P(failure) against the
+/// width for both models, each with its limit, the required widths and Goda's width.
 fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
-    // Below 0.1 mm the caisson has not slid to speak of: the axis starts there.
+    use caisson::analysis::sizing::ModelPoint;
+    use caisson::report::size::CandidateReport;
+    // Below 0.1 mm the caisson has not slid to speak of, and a probability below 1e-4 is beyond
+    // what a few thousand lives estimate: the axes start there (a zero is drawn at the floor).
     const FLOOR_M: f64 = 1e-4;
-    let pts = |f: &dyn Fn(&caisson::report::size::CandidateReport) -> f64| -> Vec<(f64, f64)> {
-        r.candidates.iter().map(|k| (k.width_m, f(k).max(FLOOR_M))).collect()
+    const FLOOR_P: f64 = 1e-4;
+    let pts = |floor: f64, f: &dyn Fn(&CandidateReport) -> f64| -> Vec<(f64, f64)> {
+        r.candidates.iter().map(|k| (k.width_m, f(k).max(floor))).collect()
     };
     let z = caisson::analysis::sizing::Z95;
-    let mut series = vec![
-        Series::line("dynamic model: E|S|", pts(&|k| k.dynamic.expected_sliding_m)),
-        Series::dashed(
-            "dynamic model: 90 % band of E|S|",
-            pts(&|k| k.dynamic.expected_sliding_m + z * k.dynamic.expected_sliding_se_m),
-        ),
-        Series::dashed("", pts(&|k| k.dynamic.expected_sliding_m - z * k.dynamic.expected_sliding_se_m)),
-        Series::line("dynamic model: 95 % of |S|", pts(&|k| k.dynamic.p95_m)),
-        Series::line("rigid block: E|S|", pts(&|k| k.rigid_block.expected_sliding_m)),
-    ];
     let (lo, hi) = r.range_m;
-    if let Some(s) = r.criteria.expected_sliding_m {
-        series.push(Series::line(format!("criterion E|S| = {s} m"), vec![(lo, s), (hi, s)]));
-    }
-    let top =
-        r.candidates.iter().map(|k| k.dynamic.p95_m.max(k.rigid_block.expected_sliding_m)).fold(FLOOR_M, f64::max);
-    for (name, w) in [("required, dynamic", r.dynamic.width_m()), ("required, rigid block", r.rigid_block.width_m())] {
-        if let Some(w) = w {
-            series.push(Series::line(format!("{name}: {w:.2} m"), vec![(w, FLOOR_M), (w, top)]));
+    let lo = r.goda.width.reached.width_m().map_or(lo, |g| g.min(lo));
+    let hi = r.goda.width.reached.width_m().map_or(hi, |g| g.max(hi));
+    // The widths, as vertical lines from the floor to the panel's top.
+    let widths = |floor: f64, top: f64| -> Vec<Series> {
+        let mut out = Vec::new();
+        for (name, w) in [
+            ("required, dynamic model", r.dynamic.width_m()),
+            ("required, rigid block", r.rigid_block.width_m()),
+            ("Goda's width (static checks)", r.goda.width.reached.width_m()),
+        ] {
+            if let Some(w) = w {
+                out.push(Series::line(format!("{name}: {w:.2} m"), vec![(w, floor), (w, top)]));
+            }
         }
-    }
-    let goda = match r.goda.reached.width_m() {
-        Some(w) => format!("; Goda's width (safety factor 1.2): {w:.2} m"),
-        None => String::new(),
+        out
     };
+    let top_of =
+        |s: &[Series], floor: f64| s.iter().flat_map(|s| s.points.iter().map(|p| p.1)).fold(floor * 10.0, f64::max);
+    let mut panels = Vec::new();
+    let mut sliding = vec![
+        Series::line("dynamic model: E|S|", pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m)),
+        Series::line("rigid block: E|S|", pts(FLOOR_M, &|k| k.rigid_block.expected_sliding_m)),
+    ];
+    let top = top_of(&sliding, FLOOR_M).max(r.criteria.expected_sliding_m.unwrap_or(0.0));
+    sliding.extend(widths(FLOOR_M, top));
+    sliding.push(Series::line("dynamic model: 95 % of |S|", pts(FLOOR_M, &|k| k.dynamic.p95_m)));
+    sliding.push(Series::dashed(
+        "dynamic model: 90 % band of E|S|",
+        pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m + z * k.dynamic.expected_sliding_se_m),
+    ));
+    sliding.push(Series::dashed(
+        "",
+        pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m - z * k.dynamic.expected_sliding_se_m),
+    ));
+    if let Some(s) = r.criteria.expected_sliding_m {
+        sliding.push(Series::dashed(format!("criterion: E|S| ≤ {s} m"), vec![(lo, s), (hi, s)]));
+    }
+    panels.push(Panel { y_label: "sliding over the life (m)".into(), series: sliding });
+    let mut probability = |label: String, f: fn(&ModelPoint) -> f64, limit: f64| {
+        let mut series = vec![
+            Series::line("dynamic model", pts(FLOOR_P, &|k| f(&k.dynamic))),
+            Series::line("rigid block", pts(FLOOR_P, &|k| f(&k.rigid_block))),
+        ];
+        series.extend(widths(FLOOR_P, 1.0));
+        series.push(Series::dashed(format!("criterion: ≤ {limit}"), vec![(lo, limit), (hi, limit)]));
+        panels.push(Panel { y_label: label, series });
+    };
+    if let Some(e) = r.criteria.exceedance {
+        probability(format!("P(|S| > {} m) (0 at 1e-4)", e.sliding_m), |p| p.exceedance_probability, e.probability);
+    }
+    if let Some(f) = r.criteria.failure_probability {
+        probability("P(failure) (0 at 1e-4)".into(), |p| p.failure_probability, f);
+    }
     crate::plot::panels_scaled(
         &dir.join("design_curve.svg"),
-        &format!("{title}: sliding over the life against the caisson width"),
-        &format!("caisson width B (m){goda}"),
-        &[Panel { y_label: "sliding over the life (m)".into(), series }],
+        &format!("{title}: the life's sliding and the criteria against the caisson width"),
+        "caisson width B (m)",
+        &panels,
         crate::plot::Scales { log_x: false, log_y: true },
     )
 }

@@ -112,12 +112,16 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
     let (tmp, _) = crate::output::TempFile::create(path)?;
     {
         let height = 60 + 220 * panels.len() as u32;
-        let root = SVGBackend::new(&tmp, (900, height)).into_drawing_area();
+        let root = SVGBackend::new(&tmp, (CHART_WIDTH + LEGEND_WIDTH, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow::anyhow!("{e}"))?;
         let root = root.titled(title, ("sans-serif", 20)).map_err(|e| anyhow::anyhow!("{e}"))?;
         let areas = root.split_evenly((panels.len(), 1));
         let buckets = line_buckets(panels);
-        for (panel, area) in panels.iter().zip(areas.iter()) {
+        for (panel, row) in panels.iter().zip(areas.iter()) {
+            // The legend beside the panel, never on its data.
+            let (area, legend_area) = row.split_horizontally(CHART_WIDTH);
+            legend(&legend_area, panel)?;
+            let area = &area;
             let keep = |&(x, y): &(f64, f64)| (!scales.log_x || x > 0.0) && (!scales.log_y || y > 0.0);
             let shown = Panel {
                 y_label: panel.y_label.clone(),
@@ -202,31 +206,7 @@ where
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(|e| anyhow::anyhow!("{e}"))?;
-    // A series without a label continues the one before it (its colour, no legend entry): a
-    // histogram broken at empty bins, the realizations of a wave train.
-    let solid = panel.series.iter().filter(|s| !s.dashed && !s.label.is_empty()).count();
-    let mut k = 0;
-    let mut last = RGBColor(90, 90, 90);
-    for s in &panel.series {
-        // Six named colours, then evenly spread hues: no two labelled solid series of a panel
-        // share a colour (a panel of ten springs).
-        let color = if s.dashed {
-            RGBColor(90, 90, 90)
-        } else if s.label.is_empty() {
-            last
-        } else {
-            k += 1;
-            if solid <= COLORS.len() {
-                COLORS[k - 1]
-            } else {
-                let hsl = HSLColor((k - 1) as f64 / solid as f64, 0.75, 0.42).to_rgba();
-                RGBColor(hsl.0, hsl.1, hsl.2)
-            }
-        };
-        last = color;
-        let style =
-            ShapeStyle { color: color.to_rgba(), filled: s.markers, stroke_width: if s.dashed { 1 } else { 2 } };
-        let label = s.label.clone();
+    for (s, style) in panel.series.iter().zip(styles(panel)) {
         if let Some(r) = &s.ranges {
             chart
                 .draw_series(
@@ -234,36 +214,104 @@ where
                 )
                 .map_err(|e| anyhow::anyhow!("{e}"))?;
         }
-        let anno = if s.markers {
+        if s.markers {
             chart
                 .draw_series(s.points.iter().map(|&(x, y)| Circle::new((x, y), 3, style)))
-                .map_err(|e| anyhow::anyhow!("{e}"))?
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
         } else if s.dashed && dashes(&decimate(&s.points, look.buckets), look.xr, look.yr) <= MAX_DASHES {
             chart
                 .draw_series(DashedLineSeries::new(decimate(&s.points, look.buckets), 6, 4, style))
-                .map_err(|e| anyhow::anyhow!("{e}"))?
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
         } else {
             // A dashed line that zigzags over the panel (a thousand waves) would be tens of
             // thousands of dashes that do not show as dashes: it is drawn solid, thin and grey.
             chart
                 .draw_series(LineSeries::new(decimate(&s.points, look.buckets), style))
-                .map_err(|e| anyhow::anyhow!("{e}"))?
-        };
-        // Only labelled series enter the legend (no empty entries).
-        if !label.is_empty() {
-            anno.label(label).legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
         }
     }
-    if panel.series.iter().any(|s| !s.label.is_empty()) {
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.3))
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(|e| anyhow::anyhow!("{e}"))?;
+    Ok(())
+}
+
+/// Width of the charts and of the legend column beside them, px.
+const CHART_WIDTH: u32 = 880;
+const LEGEND_WIDTH: u32 = 300;
+/// Characters of a legend line before it wraps (12 px sans-serif is about 6.5 px a character).
+const LEGEND_CHARS: usize = 40;
+
+/// The style of each series of `panel`: a series without a label continues the one before it (its
+/// colour, no legend entry: a histogram broken at empty bins, the realizations of a wave train);
+/// dashed lines are grey and thin; six named colours, then evenly spread hues, so that no two
+/// labelled solid series of a panel share a colour (a panel of ten springs).
+fn styles(panel: &Panel) -> Vec<ShapeStyle> {
+    let solid = panel.series.iter().filter(|s| !s.dashed && !s.label.is_empty()).count();
+    let mut k = 0;
+    let mut last = RGBColor(90, 90, 90);
+    panel
+        .series
+        .iter()
+        .map(|s| {
+            let color = if s.dashed {
+                RGBColor(90, 90, 90)
+            } else if s.label.is_empty() {
+                last
+            } else {
+                k += 1;
+                if solid <= COLORS.len() {
+                    COLORS[k - 1]
+                } else {
+                    let hsl = HSLColor((k - 1) as f64 / solid as f64, 0.75, 0.42).to_rgba();
+                    RGBColor(hsl.0, hsl.1, hsl.2)
+                }
+            };
+            last = color;
+            ShapeStyle { color: color.to_rgba(), filled: s.markers, stroke_width: if s.dashed { 1 } else { 2 } }
+        })
+        .collect()
+}
+
+/// The legend of `panel` in `area` (the column beside its chart): each labelled series' line (or
+/// marker) and label, long labels wrapped at word boundaries.
+fn legend(area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>, panel: &Panel) -> Result<()> {
+    let err = |e: plotters::drawing::DrawingAreaErrorKind<_>| anyhow::anyhow!("{e}");
+    let font = ("sans-serif", 12).into_font().color(&BLACK);
+    let mut y = 14;
+    for (s, style) in panel.series.iter().zip(styles(panel)) {
+        if s.label.is_empty() {
+            continue;
+        }
+        let mid = y + 6;
+        if s.markers {
+            area.draw(&Circle::new((17, mid), 3, style)).map_err(err)?;
+        } else if s.dashed {
+            for x in [4, 14, 24] {
+                area.draw(&PathElement::new(vec![(x, mid), (x + 6, mid)], style)).map_err(err)?;
+            }
+        } else {
+            area.draw(&PathElement::new(vec![(4, mid), (30, mid)], style)).map_err(err)?;
+        }
+        for line in wrap(&s.label, LEGEND_CHARS) {
+            area.draw(&Text::new(line, (36, y), font.clone())).map_err(err)?;
+            y += 15;
+        }
+        y += 3;
     }
     Ok(())
+}
+
+/// `text` in lines of at most about `width` characters, broken at spaces.
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= width => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
 }
 
 /// Most points the lines of one figure keep together (about 8 bytes of SVG each), before

@@ -7,6 +7,7 @@ use crate::input_err;
 use crate::output::{pretty, progress, report_json, tidy_out_dir, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
+use caisson::analysis::conventional::{DesignWave, StaticCheck};
 use caisson::analysis::run::{FoundationSummary, HistoryRow, Rows, Sampler};
 use caisson::analysis::train::{run_realizations, TrainCase, TrainSummary};
 use caisson::loads::regime::Regime;
@@ -41,11 +42,12 @@ fn summary_text(case: &TrainCase<'_>, s: &TrainSummary) -> String {
         ws.train.seed,
         ws.regime().name()
     );
-    if let Ok(nominal) = ws.model.evaluate_with(ws.height_m(), ws.period_s(), ws.regime()) {
-        let sf = ws.model.safety(&nominal, c.weight_in_water_n, fd.mu_static);
-        let _ = writeln!(t, "       nominal wave: {} (H_br at the wall {:.3} m), Goda P = {:.3} kN/m, U = {:.3} kN/m, static sliding safety factor {}",
-            nominal.regime.regime.name(), nominal.regime.breaker_height_at_wall_m, nominal.goda.horizontal_force_n_per_m / 1e3,
-            nominal.goda.uplift_force_n_per_m / 1e3, sf.sliding.map_or("-".into(), |v| format!("{v:.3}")));
+    let design = DesignWave::of(ws);
+    if let Ok(check) = StaticCheck::new(ws, design, c.weight_in_water_n, fd.mu_static, ws.regime()) {
+        let (nominal, sf) = (&check.loads, &check.safety);
+        let _ = writeln!(t, "       Goda's design wave H_D = {:.3} m ({}): {} (H_br at the wall {:.3} m), Goda P = {:.3} kN/m, U = {:.3} kN/m, static safety factors: sliding {}, overturning {}",
+            design.design_height_m, design.rule.describe(), nominal.regime.regime.name(), nominal.regime.breaker_height_at_wall_m, nominal.goda.horizontal_force_n_per_m / 1e3,
+            nominal.goda.uplift_force_n_per_m / 1e3, sf.sliding.map_or("-".into(), |v| format!("{v:.3}")), sf.overturning.map_or("-".into(), |v| format!("{v:.3}")));
     }
     let _ = writeln!(t);
     let _ =

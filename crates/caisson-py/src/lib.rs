@@ -17,6 +17,7 @@ use caisson::analysis::campaign::run_campaign;
 use caisson::analysis::checks::{
     life_warnings, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
 };
+use caisson::analysis::conventional::{static_check, DesignWave, StaticCheck};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, History};
@@ -641,10 +642,9 @@ fn run_trains(py: Python<'_>, sc: &CoreScenario, threads: usize, progress: Optio
 fn loads_report(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
     let sc = &sc.sc;
     let ws = sc.waves_for("`caisson loads`").map_err(|e| lib_error(py, e, None))?;
-    let loads = ws.model.evaluate(ws.height_m(), ws.period_s()).map_err(|e| regime_error(py, e))?;
+    let check = static_check(sc.structure(), ws).map_err(|e| regime_error(py, e))?;
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    let safety = ws.model.safety(&loads, w, mu);
-    let mut report = LoadsReport::new(ws, &loads, &safety, w, mu);
+    let mut report = LoadsReport::new(ws, &check, w, mu);
     report.warnings = structure_warnings(sc.structure());
     report.warnings.extend(wave_load_warnings(sc.structure(), ws));
     serde_json::to_string(&report).map_err(|e| PyRuntimeError::new_err(e.to_string()))
@@ -947,12 +947,12 @@ fn _bench_loads_s(py: Python<'_>, sc: &CoreScenario, heights_m: PyReadonlyArray1
     py.detach(|| {
         let t0 = std::time::Instant::now();
         for &h in heights {
-            let loads = ws.model.evaluate(h, t).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
-            let safety = ws.model.safety(&loads, w, mu);
+            let check = StaticCheck::new(ws, DesignWave::with_height(ws, h, t), w, mu, ws.regime())
+                .map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
             if phase == 0 {
-                std::hint::black_box(safety);
+                std::hint::black_box(check.safety);
             } else {
-                std::hint::black_box(LoadsReport::new(ws, &loads, &safety, w, mu));
+                std::hint::black_box(LoadsReport::new(ws, &check, w, mu));
             }
         }
         Ok(t0.elapsed().as_secs_f64())

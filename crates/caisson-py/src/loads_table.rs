@@ -9,6 +9,7 @@
 //! distinct values of the whole table in block order, so the table is the same on any number of
 //! threads.
 
+use caisson::analysis::conventional::{DesignWave, StaticCheck};
 use caisson::analysis::train::WaveSetup;
 use caisson::report::loads::{ColumnSink, LoadsReport};
 use numpy::{PyArray2, PyArrayMethods};
@@ -90,10 +91,10 @@ impl Block<'_> {
         let rows = self.numbers.first().map_or(0, |c| c.len());
         let (h, t) = (&h[self.first_row..][..rows], &t[self.first_row..][..rows]);
         for (row, (&h, &t)) in h.iter().zip(t).enumerate() {
-            let loads = ws.model.evaluate(h, t).map_err(|e| (self.first_row + row, e.to_string()))?;
-            let safety = ws.model.safety(&loads, w, mu);
+            let check = StaticCheck::new(ws, DesignWave::with_height(ws, h, t), w, mu, ws.regime())
+                .map_err(|e| (self.first_row + row, e.to_string()))?;
             (self.row, self.at) = (row, [0; 3]);
-            LoadsReport::new(ws, &loads, &safety, w, mu).columns(self);
+            LoadsReport::new(ws, &check, w, mu).columns(self);
         }
         Ok(())
     }
@@ -135,8 +136,8 @@ pub fn build(
         (Some(&h), Some(&t)) => (h, t),
         _ => (ws.height_m(), ws.period_s()),
     };
-    let first = match ws.model.evaluate(h0, t0) {
-        Ok(l) => LoadsReport::new(ws, &l, &ws.model.safety(&l, w, mu), w, mu),
+    let first = match StaticCheck::new(ws, DesignWave::with_height(ws, h0, t0), w, mu, ws.regime()) {
+        Ok(c) => LoadsReport::new(ws, &c, w, mu),
         Err(e) => return Ok(Err((0, e.to_string()))),
     };
     let mut layout = Layout::default();

@@ -5,6 +5,7 @@
 
 mod support;
 
+use caisson::analysis::conventional::{DesignWave, StaticCheck};
 use caisson::report::loads::{ColumnSink, LoadsReport};
 use caisson::scenario::Scenario;
 use serde_json::Value;
@@ -42,9 +43,9 @@ fn flatten(prefix: &str, v: &Value, out: &mut Vec<(String, Value)>) {
 /// The report of the wave `h_m` of the scenario's `[waves]`.
 fn report(sc: &Scenario, h_m: f64) -> LoadsReport {
     let ws = sc.waves_for("test").unwrap();
-    let loads = ws.model.evaluate(h_m, ws.period_s()).unwrap();
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    LoadsReport::new(ws, &loads, &ws.model.safety(&loads, w, mu), w, mu)
+    let check = StaticCheck::new(ws, DesignWave::with_height(ws, h_m, ws.period_s()), w, mu, ws.regime()).unwrap();
+    LoadsReport::new(ws, &check, w, mu)
 }
 
 #[test]

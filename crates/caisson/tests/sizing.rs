@@ -99,6 +99,7 @@ fn sizing_through_the_engine_returns_the_closed_form_width() {
             lives: 1,
             tolerance_m,
             curve_points: 5,
+            conventional: Default::default(),
         };
         let sizing = size::<String>(&p, &mut |b| {
             let sc = at_width(b);

@@ -9,6 +9,7 @@
 //! (each realization's random numbers depend only on the seed and its index,
 //! [`crate::loads::generator`]). `progress` is called once per finished realization.
 
+use super::conventional::{DesignWave, StaticCheck};
 use super::train::{RealizationResult, TrainCase, TrainRunError, TrainSummary, WaveSetup};
 use super::{Progress, Structure};
 use crate::loads::model::WaveLoads;
@@ -52,7 +53,8 @@ pub struct Campaign {
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ConditionResult {
     pub condition: Condition,
-    /// The loads of the nominal wave (regime, Goda, impact) and Goda's static checks with μ_s.
+    /// The loads of Goda's design wave (regular: the nominal H; irregular: H_max) and Goda's
+    /// static checks with μ_s.
     pub nominal: WaveLoads,
     pub safety: SafetyFactors,
     pub summary: TrainSummary,
@@ -75,9 +77,11 @@ pub fn run_campaign(setups: &[ConditionSetup], progress: Progress<'_>) -> Result
         .iter()
         .map(|s| {
             let rs: Vec<RealizationResult> = results.by_ref().take(s.waves.train.realizations).collect();
-            let nominal = s.waves.model.evaluate_with(s.waves.height_m(), s.waves.period_s(), s.condition.regime)?;
+            // Goda's design wave of the condition (regular: H; irregular: H_max, docs/model.md §1.3).
             let c = &s.structure;
-            let safety = s.waves.model.safety(&nominal, c.caisson.weight_in_water_n, c.foundation.mu_static);
+            let (w, mu) = (c.caisson.weight_in_water_n, c.foundation.mu_static);
+            let check = StaticCheck::new(&s.waves, DesignWave::of(&s.waves), w, mu, s.condition.regime)?;
+            let (nominal, safety) = (check.loads, check.safety);
             Ok(ConditionResult { condition: s.condition, nominal, safety, summary: TrainSummary::new(rs) })
         })
         .collect()

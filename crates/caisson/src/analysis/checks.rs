@@ -229,7 +229,9 @@ pub fn run_load_warnings(s: &Structure, load: &LoadSpec) -> Vec<Warning> {
 
 /// [`load_warnings`] of the largest wave of `waves` ([`nominal_wave_peak`]).
 pub fn wave_load_warnings(s: &Structure, waves: &WaveSetup) -> Vec<Warning> {
-    nominal_wave_peak(waves).map_or_else(Vec::new, |p| load_warnings(s, p, LoadSource::Waves))
+    let mut out = nominal_wave_peak(waves).map_or_else(Vec::new, |p| load_warnings(s, p, LoadSource::Waves));
+    out.extend(super::conventional::design_wave_warnings(s, waves));
+    out
 }
 
 /// What a run (or the worst of several) found, for [`response_warnings`].

@@ -10,6 +10,7 @@
 pub mod campaign;
 pub mod checks;
 pub mod closed_form;
+pub mod conventional;
 pub mod envelope;
 pub mod fragility;
 pub mod lifetime;

@@ -203,6 +203,10 @@ pub struct SizeParams {
     pub tolerance_m: f64,
     /// Widths of the design curve's grid (≥ 2, ends included).
     pub curve_points: usize,
+    /// Goda's conventional design beside the search (it changes no life: left out of the
+    /// checkpoint's fingerprint).
+    #[serde(skip)]
+    pub conventional: super::conventional::ConventionalCriteria,
 }
 
 /// The answer for one model.
@@ -404,6 +408,7 @@ mod tests {
                 lives: 1,
                 tolerance_m: 0.01,
                 curve_points: 6,
+                conventional: Default::default(),
             };
             let mut widths = Vec::new();
             let r = size::<()>(&p, &mut |b| {
@@ -450,6 +455,7 @@ mod tests {
             lives: 1,
             tolerance_m: 0.1,
             curve_points: 3,
+            conventional: Default::default(),
         };
         let eval = |k: f64| {
             move |b: f64| -> Result<Candidate, ()> {

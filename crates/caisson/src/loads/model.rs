@@ -435,22 +435,36 @@ impl PeriodLoads<'_> {
     /// The Miche-limited height at the toe, the regime and Goda's result: the steps every load
     /// of a wave starts from.
     #[inline]
+    /// `depth_5h_m`: Goda's h_b if given (an irregular sea's design wave takes it 5 H1/3 seaward,
+    /// [`crate::analysis::conventional`]); `None`: h_s + 5 H tan θ with the wave's own height.
     fn goda_of(
         &self,
         height_m: f64,
+        depth_5h_m: Option<f64>,
         choice: RegimeChoice,
     ) -> Result<(f64, RegimeDecision, f64, GodaResult), RegimeError> {
         let s = &self.model.site;
         let h = height_m.min(self.hb_toe);
         let regime = decide_with_limit(choice, h, self.hbr, s.depth_at_wall_m, self.model.options.criterion)?;
-        let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
+        let depth_5h = depth_5h_m.unwrap_or(s.depth_at_toe_m + 5.0 * h * s.seabed_slope);
         Ok((h, regime, depth_5h, self.goda.at(h, depth_5h)))
     }
 
     /// All loads of a wave of incident height `height_m` at this period (as
     /// [`WaveLoadModel::evaluate_with`]).
     pub fn evaluate_with(&self, height_m: f64, choice: RegimeChoice) -> Result<WaveLoads, RegimeError> {
-        let (h, regime, depth_5h, goda) = self.goda_of(height_m, choice)?;
+        self.evaluate_at(height_m, None, choice)
+    }
+
+    /// As [`Self::evaluate_with`], with Goda's h_b given (`None`: from the wave's own height): the
+    /// design wave H_max of an irregular sea, whose h_b is taken 5 H1/3 seaward (Goda 2000).
+    pub fn evaluate_at(
+        &self,
+        height_m: f64,
+        depth_5h_m: Option<f64>,
+        choice: RegimeChoice,
+    ) -> Result<WaveLoads, RegimeError> {
+        let (h, regime, depth_5h, goda) = self.goda_of(height_m, depth_5h_m, choice)?;
         let sainflou = self.sainflou.at(h);
         let impact = self.impact.at(h);
         let f_star = f_star(&goda, &impact);
@@ -513,7 +527,7 @@ impl PeriodLoads<'_> {
     /// and the rise-time distribution.
     #[inline]
     pub fn peaks(&self, height_m: f64, choice: RegimeChoice) -> Result<PeakComponents, RegimeError> {
-        let (h, regime, _, goda) = self.goda_of(height_m, choice)?;
+        let (h, regime, _, goda) = self.goda_of(height_m, None, choice)?;
         let o = &self.model.options;
         let breaking = regime.regime == Regime::Breaking;
         let alpha_qs = if breaking { o.alpha_qs_breaking } else { o.alpha_qs_nonbreaking };

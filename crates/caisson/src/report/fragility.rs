@@ -2,16 +2,23 @@
 
 use super::Provenance;
 use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
 use crate::analysis::train::WaveSetup;
 use crate::analysis::Structure;
 use serde::Serialize;
 
-/// Goda's static sliding safety factor (μ_s) under the wave H_max = 1.8 H1/3, if defined.
+/// Goda's static sliding safety factor (μ_s) under the design wave of a sea of significant height
+/// `h13_m` at the toe (H_max, docs/model.md §1.3: 1.8 H1/3, or Goda's breaking-limited H_max
+/// inside the surf zone), if defined.
 pub fn goda_sliding_safety(structure: &Structure, waves: &WaveSetup, h13_m: f64, period_s: f64) -> Option<f64> {
-    let m = &waves.model;
-    let loads = m.evaluate_with(HMAX_RATIO * h13_m, period_s, m.options.regime).ok()?;
-    m.safety(&loads, structure.caisson.weight_in_water_n, structure.foundation.mu_static).sliding
+    goda_design_check(structure, waves, h13_m, period_s).and_then(|c| c.safety.sliding)
+}
+
+/// Goda's static checks under the design wave of a sea of significant height `h13_m` at the toe.
+pub fn goda_design_check(structure: &Structure, waves: &WaveSetup, h13_m: f64, period_s: f64) -> Option<StaticCheck> {
+    let (w, mu) = (structure.caisson.weight_in_water_n, structure.foundation.mu_static);
+    StaticCheck::new(waves, DesignWave::irregular(&waves.model, h13_m, period_s), w, mu, waves.regime()).ok()
 }
 
 /// A lognormal fit, or why there is none.
@@ -102,10 +109,15 @@ impl LevelReport {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DesignWaveReport {
     pub significant_height_m: f64,
+    /// Goda's design wave H_max (docs/model.md §1.3), m.
     pub hmax_m: f64,
+    /// How H_max was found (`1.8-significant-height` or `goda-breaking-limited`).
+    pub rule: DesignWaveRule,
     pub period_s: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub goda_sliding_safety_factor: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub goda_overturning_safety_factor: Option<f64>,
 }
 
 /// The fits of one limit.
@@ -152,11 +164,17 @@ impl FragilityReport {
             seed: p.seed,
             limits_m: p.limits_m.clone(),
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),
-            design_wave: DesignWaveReport {
-                significant_height_m: h,
-                hmax_m: HMAX_RATIO * h,
-                period_s: t,
-                goda_sliding_safety_factor: goda_sliding_safety(structure, waves, h, t),
+            design_wave: {
+                let check = goda_design_check(structure, waves, h, t);
+                let dw = DesignWave::irregular(&waves.model, h, t);
+                DesignWaveReport {
+                    significant_height_m: h,
+                    hmax_m: dw.design_height_m,
+                    rule: dw.rule,
+                    period_s: t,
+                    goda_sliding_safety_factor: check.and_then(|c| c.safety.sliding),
+                    goda_overturning_safety_factor: check.and_then(|c| c.safety.overturning),
+                }
             },
             levels: r
                 .levels

@@ -6,11 +6,10 @@
 
 use super::{kn, Provenance};
 use crate::analysis::checks::Warning;
+use crate::analysis::conventional::{DesignWaveRule, StaticCheck};
 use crate::analysis::train::WaveSetup;
-use crate::loads::model::WaveLoads;
 use crate::loads::regime::Regime;
 use crate::loads::risetime::RiseTimeModel;
-use crate::loads::safety::SafetyFactors;
 use serde::Serialize;
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -24,6 +23,17 @@ pub struct WaveInfo {
     pub angle_deg: f64,
     pub toe_wavelength_m: f64,
     pub deep_water_wavelength_m: f64,
+}
+
+/// How the height of Goda's check was found (docs/model.md §1.3; the keys of
+/// [`crate::analysis::conventional::DesignWave`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DesignWaveInfo {
+    pub rule: DesignWaveRule,
+    pub significant_height_m: Option<f64>,
+    pub hmax_from_significant_m: Option<f64>,
+    pub equivalent_deep_water_height_m: Option<f64>,
+    pub breaking_limited_hmax_m: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -50,6 +60,8 @@ pub struct RegimeInfo {
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct GodaInfo {
+    /// H_D, the height in Goda's formula (regular waves: H; irregular: H_max), m.
+    pub design_height_m: f64,
     pub alpha1: f64,
     pub alpha2: f64,
     pub alpha3: f64,
@@ -144,6 +156,7 @@ pub struct LoadsReport {
     #[serde(flatten)]
     pub provenance: Provenance,
     pub wave: WaveInfo,
+    pub design_wave: DesignWaveInfo,
     pub site: SiteInfo,
     pub regime: RegimeInfo,
     pub goda: GodaInfo,
@@ -161,10 +174,11 @@ pub struct LoadsReport {
 }
 
 impl LoadsReport {
-    /// The report of the loads `l` of the scenario's wave at the site of `waves`, with Goda's
-    /// static checks `sf` for a caisson of weight in water `weight_in_water_n` (total, N) and
-    /// friction `mu`.
-    pub fn new(waves: &WaveSetup, l: &WaveLoads, sf: &SafetyFactors, weight_in_water_n: f64, mu: f64) -> Self {
+    /// The report of Goda's static check `c` (the design wave of the scenario's waves, its loads
+    /// and safety factors) at the site of `waves`, for a caisson of weight in water
+    /// `weight_in_water_n` (total, N) and friction `mu`.
+    pub fn new(waves: &WaveSetup, c: &StaticCheck, weight_in_water_n: f64, mu: f64) -> Self {
+        let (l, sf, dw) = (&c.loads, &c.safety, &c.design_wave);
         let site = &waves.model.site;
         let o = &waves.model.options;
         let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
@@ -172,7 +186,7 @@ impl LoadsReport {
         LoadsReport {
             provenance: Provenance::CURRENT,
             wave: WaveInfo {
-                kind: "regular",
+                kind: dw.kind,
                 incident_height_m: l.height_incident_m,
                 height_at_toe_m: l.height_m,
                 limited_at_toe: l.limited_at_toe,
@@ -181,6 +195,13 @@ impl LoadsReport {
                 angle_deg: o.angle_rad.to_degrees(),
                 toe_wavelength_m: l.toe_wavelength_m,
                 deep_water_wavelength_m: l.deep_water_wavelength_m,
+            },
+            design_wave: DesignWaveInfo {
+                rule: dw.rule,
+                significant_height_m: dw.significant_height_m,
+                hmax_from_significant_m: dw.hmax_from_significant_m,
+                equivalent_deep_water_height_m: dw.equivalent_deep_water_height_m,
+                breaking_limited_hmax_m: dw.breaking_limited_hmax_m,
             },
             site: SiteInfo {
                 water_density_kg_per_m3: site.rho_w,
@@ -201,6 +222,7 @@ impl LoadsReport {
                 breaker_height_at_wall_m: l.regime.breaker_height_at_wall_m,
             },
             goda: GodaInfo {
+                design_height_m: l.height_m,
                 alpha1: g.alpha1,
                 alpha2: g.alpha2,
                 alpha3: g.alpha3,
@@ -314,6 +336,19 @@ columns_of!(
     Regime => text(|r| r.name()),
 );
 
+impl Column for DesignWaveRule {
+    #[inline(always)]
+    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
+        // serde's names of the variants (checked against the JSON by the test).
+        let text = match self {
+            DesignWaveRule::RegularHeight => "regular-height",
+            DesignWaveRule::OutsideSurfZone => "1.8-significant-height",
+            DesignWaveRule::BreakingLimited => "goda-breaking-limited",
+        };
+        sink.text(name, text)
+    }
+}
+
 impl Column for RiseTimeModel {
     #[inline(always)]
     fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
@@ -345,13 +380,17 @@ impl LoadsReport {
                 kind, incident_height_m, height_at_toe_m, limited_at_toe, toe_breaker_height_m, period_s,
                 angle_deg, toe_wavelength_m, deep_water_wavelength_m,
             }
+            design_wave {
+                rule, significant_height_m, hmax_from_significant_m, equivalent_deep_water_height_m,
+                breaking_limited_hmax_m,
+            }
             site {
                 water_density_kg_per_m3, depth_at_toe_m, depth_at_wall_m, base_depth_m, crest_freeboard_m,
                 width_m, length_m, seabed_slope, berm_width_m, depth_5h_seaward_m,
             }
             regime { regime, forced, breaker_criterion, breaker_height_at_wall_m }
             goda {
-                alpha1, alpha2, alpha3, alpha_i, alpha_star, eta_star_m, p1_kpa, p2_kpa, p3_kpa, p4_kpa,
+                design_height_m, alpha1, alpha2, alpha3, alpha_i, alpha_star, eta_star_m, p1_kpa, p2_kpa, p3_kpa, p4_kpa,
                 pu_kpa, horizontal_force_kn_per_m, horizontal_moment_base_kn_m_per_m, horizontal_lever_m,
                 uplift_force_kn_per_m, uplift_moment_heel_kn_m_per_m, uplift_from_heel_m,
             }

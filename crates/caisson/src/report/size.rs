@@ -2,7 +2,8 @@
 
 use super::{kn, Provenance};
 use crate::analysis::checks::Warning;
-use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Reached, Required, SizeParams, Sizing};
+use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
+use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Required, SizeParams, Sizing};
 use serde::Serialize;
 
 /// One evaluated width (weights in kN).
@@ -12,8 +13,10 @@ pub struct CandidateReport {
     pub weight_in_water_kn: f64,
     /// The failure limit at this width, m.
     pub failure_sliding_m: f64,
-    /// Goda's static sliding safety factor under the design wave (`null` where undefined).
+    /// Goda's static checks under the design wave (`null` where undefined).
     pub goda_sliding_safety_factor: Option<f64>,
+    pub goda_overturning_safety_factor: Option<f64>,
+    pub goda_heel_pressure_kpa: Option<f64>,
     pub dynamic: ModelPoint,
     pub rigid_block: ModelPoint,
     /// Whether the criteria hold at the estimate (dynamic model, rigid block).
@@ -21,13 +24,31 @@ pub struct CandidateReport {
     pub rigid_block_meets: bool,
 }
 
-/// The width Goda's deterministic design gives: the smallest with the static sliding safety
-/// factor at the target under the design wave.
+/// The width of Goda's conventional design (docs/size.md, [`crate::analysis::conventional`]):
+/// the smallest with the sliding and overturning safety factors at their targets under the
+/// design wave, with the heel pressure there beside its allowable value.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct GodaWidth {
-    pub safety_factor: f64,
+    pub design_wave: DesignWave,
+    pub sliding_safety_factor: f64,
+    pub overturning_safety_factor: f64,
+    pub allowable_heel_pressure_kpa: f64,
+    pub heel_pressure_governs: bool,
     #[serde(flatten)]
-    pub reached: Reached,
+    pub width: ConventionalWidth,
+}
+
+impl GodaWidth {
+    pub fn new(design_wave: DesignWave, c: &ConventionalCriteria, width: ConventionalWidth) -> Self {
+        GodaWidth {
+            design_wave,
+            sliding_safety_factor: c.sliding_safety_factor,
+            overturning_safety_factor: c.overturning_safety_factor,
+            allowable_heel_pressure_kpa: kn(c.allowable_heel_pressure_pa),
+            heel_pressure_governs: c.heel_pressure_governs,
+            width,
+        }
+    }
 }
 
 /// The results of a sizing run.
@@ -55,7 +76,7 @@ pub struct SizeReport {
 }
 
 impl SizeReport {
-    /// The report of `sizing`; `extra(width)` gives the failure limit (m) and Goda's safety factor
+    /// The report of `sizing`; `extra(width)` gives the failure limit (m) and Goda's static checks
     /// at each candidate's width.
     pub fn new(
         p: &SizeParams,
@@ -63,18 +84,20 @@ impl SizeReport {
         seed: u64,
         sizing: &Sizing,
         goda: GodaWidth,
-        extra: &dyn Fn(&Candidate) -> (f64, Option<f64>),
+        extra: &dyn Fn(&Candidate) -> (f64, Option<ChecksAtWidth>),
     ) -> Self {
         let candidates: Vec<CandidateReport> = sizing
             .candidates
             .iter()
             .map(|c| {
-                let (failure_sliding_m, goda_sliding_safety_factor) = extra(c);
+                let (failure_sliding_m, goda) = extra(c);
                 CandidateReport {
                     width_m: c.width_m,
                     weight_in_water_kn: kn(c.weight_in_water_n),
                     failure_sliding_m,
-                    goda_sliding_safety_factor,
+                    goda_sliding_safety_factor: goda.and_then(|g| g.sliding_safety_factor),
+                    goda_overturning_safety_factor: goda.and_then(|g| g.overturning_safety_factor),
+                    goda_heel_pressure_kpa: goda.and_then(|g| g.heel_pressure_kpa),
                     dynamic: c.dynamic,
                     rigid_block: c.rigid_block,
                     dynamic_meets: p.criteria.met(&c.dynamic, c.lives, 0.0),

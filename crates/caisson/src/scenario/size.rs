@@ -4,6 +4,10 @@
 
 use super::waves::number;
 use super::{ScenarioError, ScenarioFile};
+use crate::analysis::conventional::{
+    ConventionalCriteria, DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA, DEFAULT_OVERTURNING_SAFETY_FACTOR,
+    DEFAULT_SLIDING_SAFETY_FACTOR,
+};
 use crate::analysis::sizing::{Criteria, ExceedanceCriterion, SizeParams};
 use serde::Deserialize;
 
@@ -30,6 +34,14 @@ pub struct SizeTable {
     pub tolerance_m: Option<f64>,
     /// Widths of the design curve's grid (default 8).
     pub curve_points: Option<i64>,
+    /// Goda's conventional width: required sliding safety factor (default 1.2).
+    pub sliding_safety_factor: Option<f64>,
+    /// Goda's conventional width: required overturning safety factor (default 1.2).
+    pub overturning_safety_factor: Option<f64>,
+    /// The allowable heel pressure on the mound, kPa (default 500).
+    pub allowable_heel_pressure_kpa: Option<f64>,
+    /// Whether the heel pressure limits the conventional width (default false: reported, warned).
+    pub heel_pressure_governs: Option<bool>,
 }
 
 /// Default width tolerance, m.
@@ -116,5 +128,21 @@ pub(super) fn validate_size(file: &ScenarioFile, design_lives: usize) -> R<SizeP
             number("[size] tolerance_m", v, (hi - lo) * 1e-6, hi - lo, true, "m, above a millionth of the range")?
         }
     };
-    Ok(SizeParams { range_m: (lo, hi), criteria, lives, tolerance_m, curve_points })
+    let factor = |key: &str, v: Option<f64>, default: f64| {
+        v.map_or(Ok(default), |v| number(&format!("[size] {key}"), v, 1.0, 10.0, false, "a safety factor from 1 to 10"))
+    };
+    let conventional = ConventionalCriteria {
+        sliding_safety_factor: factor("sliding_safety_factor", t.sliding_safety_factor, DEFAULT_SLIDING_SAFETY_FACTOR)?,
+        overturning_safety_factor: factor(
+            "overturning_safety_factor",
+            t.overturning_safety_factor,
+            DEFAULT_OVERTURNING_SAFETY_FACTOR,
+        )?,
+        allowable_heel_pressure_pa: 1e3
+            * t.allowable_heel_pressure_kpa.map_or(Ok(DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA / 1e3), |v| {
+                number("[size] allowable_heel_pressure_kpa", v, 10.0, 1e4, true, "kPa, from 10 to 10000")
+            })?,
+        heel_pressure_governs: t.heel_pressure_governs.unwrap_or(false),
+    };
+    Ok(SizeParams { range_m: (lo, hi), criteria, lives, tolerance_m, curve_points, conventional })
 }

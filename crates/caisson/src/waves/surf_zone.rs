@@ -38,8 +38,14 @@ pub fn kweon_goda_shoaling(depth_m: f64, period_s: f64, h0_prime_m: f64) -> f64 
 /// Goda's H1/3 and H_max at depth `depth_m` for deep-water H0' `h0_prime_m`, period T1/3
 /// `period_s` and seabed slope tan θ `slope` (≥ 0).
 pub fn goda_surf_zone(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) -> SurfZoneHeights {
+    surf_zone_with(h0_prime_m, period_s, depth_m, slope, linear_shoaling_coefficient(period_s, depth_m))
+}
+
+/// [`goda_surf_zone`] with the linear shoaling coefficient K_si at `depth_m` given (it does not
+/// depend on H0': a search over H0' solves the dispersion relation once).
+fn surf_zone_with(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64, ksi: f64) -> SurfZoneHeights {
     let l0 = deep_water_wavelength_m(period_s);
-    let ks = kweon_goda_shoaling(depth_m, period_s, h0_prime_m);
+    let ks = ksi + 0.0015 * (depth_m / l0).powf(-2.87) * (h0_prime_m / l0).powf(1.27);
     let shoaled = ks * h0_prime_m;
     if depth_m / l0 >= 0.2 {
         return SurfZoneHeights { h13_m: shoaled, hmax_m: 1.8 * shoaled, shoaling: ks };
@@ -65,6 +71,44 @@ pub fn design_heights(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) 
     let hb = depth_m + 5.0 * at_site.h13_m * slope.max(0.0);
     let at_hb = goda_surf_zone(h0_prime_m, period_s, hb, slope);
     (at_site.h13_m, at_hb.hmax_m, hb)
+}
+
+/// The equivalent deep-water height H0' whose Goda H1/3 at `depth_m` is `h13_m` (Goda's H1/3 grows
+/// with H0': each term of its minimum does), by bisection to a relative 1e-12; `None` if `h13_m`
+/// or the site is not a positive finite number. What a design from H1/3 at the toe needs to
+/// find Goda's breaking-limited H_max there ([`crate::analysis::conventional`]).
+pub fn equivalent_deep_water_height_m(h13_m: f64, period_s: f64, depth_m: f64, slope: f64) -> Option<f64> {
+    let positive = |x: f64| x.is_finite() && x > 0.0;
+    if !(positive(h13_m) && positive(period_s) && positive(depth_m) && slope.is_finite()) {
+        return None;
+    }
+    let ksi = linear_shoaling_coefficient(period_s, depth_m);
+    let h13 = |h0: f64| surf_zone_with(h0, period_s, depth_m, slope, ksi).h13_m;
+    // A bracket [lo, hi] with H1/3(lo) < h13_m ≤ H1/3(hi): K_s ≥ 0.9 and β_max ≥ 0.92, so
+    // H1/3(H0') ≥ 0.9 H0' away from the β0 term, which grows with H0' too; doubling finds hi.
+    let (mut lo, mut hi) = (0.0_f64, h13_m);
+    for _ in 0..200 {
+        if h13(hi) >= h13_m {
+            break;
+        }
+        lo = hi;
+        hi *= 2.0;
+    }
+    if !(h13(hi) >= h13_m) {
+        return None;
+    }
+    for _ in 0..200 {
+        if hi - lo <= 1e-12 * hi {
+            break;
+        }
+        let mid = 0.5 * (lo + hi);
+        if h13(mid) >= h13_m {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(hi)
 }
 
 #[cfg(test)]
