@@ -189,3 +189,30 @@ fn bad_inputs_give_a_keyed_error_and_exit_code_2() {
     bad(BASE, &["--history"], "--out");
     bad(BASE, &["--waves", "0", "--history", "--out", "x"], "--waves");
 }
+
+/// An irregular sea's static check is Goda's design wave H_max, not H1/3 (docs/model.md §1.3): on
+/// the sizing example (H1/3 = 7.5 m at the toe) the JSON says the true kind, the rule and the
+/// height (13.451 m, tests/goda_design.rs), and the text shows the design-wave line.
+#[test]
+fn an_irregular_sea_is_checked_under_its_hmax() {
+    let j = loads_json("examples/size_breakwater.toml");
+    assert_eq!(j["wave"]["kind"], "irregular");
+    assert_eq!(j["design_wave"]["rule"], "goda-breaking-limited");
+    assert_eq!(j["design_wave"]["significant_height_m"].as_f64(), Some(7.5));
+    assert_eq!(j["design_wave"]["hmax_from_significant_m"].as_f64(), Some(13.5));
+    close(&j, "goda.design_height_m", 13.451, 1e-4, 3);
+    close(&j, "wave.incident_height_m", 13.451, 1e-4, 3);
+    // P at H_max (2583 kN/m), twice what H1/3 gave (1331 kN/m), and the factors under it.
+    close(&j, "goda.horizontal_force_kn_per_m", 2583.2, 1e-4, 1);
+    close(&j, "safety.sliding", 1.274, 1e-3, 3);
+    close(&j, "safety.overturning", 1.640, 1e-3, 3);
+    let out = caisson().args(["loads"]).arg(workspace_root().join("examples/size_breakwater.toml")).output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("H_D = H_max = 13.451 m"), "{text}");
+    // A regular wave is its own design wave.
+    let r = loads_json("examples/pari_breaking_loads.toml");
+    assert_eq!(
+        (r["wave"]["kind"].as_str(), r["design_wave"]["rule"].as_str()),
+        (Some("regular"), Some("regular-height"))
+    );
+}

@@ -92,9 +92,25 @@ fn the_answer_does_not_depend_on_the_thread_count() {
     assert_eq!(at(hi)["dynamic_meets"], true);
     assert_eq!(at(lo)["dynamic_meets"], false);
     assert!(at(hi)["dynamic"]["expected_sliding_m"].as_f64().unwrap() <= 0.05);
-    // Goda's deterministic width: its safety factor reaches 1.2 there (to 1 mm).
-    assert_eq!(j["goda"]["status"], "found");
-    assert!(j["goda"]["width_m"].as_f64().unwrap() > 8.0);
+    // Goda's conventional width under H_max (here Goda's breaking-limited 13.451 m,
+    // tests/goda_design.rs): both factors reach 1.2 there (sliding governs, 18.81 m, to 1 mm), and
+    // the heel pressure there is above the 500 kPa allowed.
+    let g = &j["goda"];
+    assert_eq!(g["status"], "found");
+    assert_eq!(g["governs"], "sliding");
+    assert_eq!(g["design_wave"]["rule"], "goda-breaking-limited");
+    assert!((g["design_wave"]["design_height_m"].as_f64().unwrap() - 13.451).abs() < 1e-3, "{g}");
+    let gw = g["width_m"].as_f64().unwrap();
+    assert!((gw - 18.81).abs() < 0.01, "{gw}");
+    assert_eq!(g["at_width"]["width_m"].as_f64(), Some(gw));
+    assert!(g["at_width"]["sliding_safety_factor"].as_f64().unwrap() >= 1.2);
+    assert!(g["at_width"]["overturning_safety_factor"].as_f64().unwrap() >= 1.2);
+    assert_eq!(g["heel_pressure_above_allowable"], true);
+    let codes: Vec<&str> = j["warnings"].as_array().unwrap().iter().map(|w| w["code"].as_str().unwrap()).collect();
+    assert!(codes.contains(&"heel-pressure-above-allowable"), "{codes:?}");
+    // The 8 m candidate would tip under the design wave: its overturning factor is below 1.
+    assert!(at(8.0)["goda_overturning_safety_factor"].as_f64().unwrap() < 1.0);
+    assert!(codes.contains(&"overturning-under-design-wave"), "{codes:?}");
 }
 
 /// The required width grows as the allowed sliding falls (common random numbers: the same lives
@@ -129,6 +145,14 @@ fn bad_size_input_is_named() {
         ("tolerance_m = 0.5", "tolerance_m = 0.0", "[size] tolerance_m"),
         ("curve_points = 4", "curve_points = 1", "[size] curve_points"),
         ("[size]", "[size]\nvariable = \"height_m\"", "[size] variable"),
+        ("curve_points = 4", "curve_points = 4\nsliding_safety_factor = 0.9", "[size] sliding_safety_factor"),
+        ("curve_points = 4", "curve_points = 4\noverturning_safety_factor = 11.0", "[size] overturning_safety_factor"),
+        (
+            "curve_points = 4",
+            "curve_points = 4\nallowable_heel_pressure_kpa = 5.0",
+            "[size] allowable_heel_pressure_kpa",
+        ),
+        ("curve_points = 4", "curve_points = 4\nheel_pressure_governs = 1", "heel_pressure_governs"),
     ];
     let mut n = 0;
     for (from, to, key) in cases {
@@ -138,7 +162,7 @@ fn bad_size_input_is_named() {
         refused(&["size", f.to_str().unwrap()], &[key]);
         n += 1;
     }
-    assert_eq!(n, 8);
+    assert_eq!(n, 12);
     // A caisson given by its weight cannot be sized by width: its weight would not follow.
     let text = size_text("expected_sliding_m = 0.05").replace("unit_length_m = 20.0\n", "").replace(
         "wall_thickness_m = 0.5\nslab_thickness_m = 0.8\npartition_thickness_m = 0.2\ncells_across = 4\ncells_along = 4\ncap_height_m = 2.0\n",

@@ -32,7 +32,10 @@ def test_report_and_evaluate_match_caisson_loads_json(name):
     want = cli_json("loads", p)
     assert caisson.loads.report(sc) == want
     flat = flatten(want)
-    frame = caisson.loads.evaluate(sc, [want["wave"]["incident_height_m"]])
+    # The scenario's own height: H of a regular wave, H1/3 of an irregular sea (whose design wave
+    # is H_max, docs/model.md §1.3).
+    height = want["design_wave"]["significant_height_m"] or want["wave"]["incident_height_m"]
+    frame = caisson.loads.evaluate(sc, [height])
     assert frame.attrs == {"caisson_version": want["caisson_version"], "results_version": want["results_version"]}
     row = frame.iloc[0].to_dict()
     flat.pop("caisson_version"), flat.pop("results_version")
@@ -173,3 +176,17 @@ def test_surf_zone_heights_are_goda_s_and_broadcast():
     # Deep inside it the depth limits H1/3 (β0 H0' + β1 h < K_s H0').
     a, _ = caisson.waves.surf_zone_heights(8.0, 12.0, 4.0, 0.0)
     assert a < 0.6 * 8.0
+
+
+def test_an_irregular_sea_is_checked_under_its_hmax():
+    """Python's loads, like ``caisson loads``, check an irregular sea under Goda's H_max (13.451 m
+    for the sizing example's H1/3 = 7.5 m, tests/goda_design.rs), not under H1/3."""
+    sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml")
+    r = caisson.loads.report(sc)
+    assert r["wave"]["kind"] == "irregular"
+    assert r["design_wave"]["rule"] == "goda-breaking-limited"
+    assert abs(r["goda"]["design_height_m"] - 13.451) < 1e-3
+    frame = caisson.loads.evaluate(sc, [7.5, 3.0])
+    assert frame["goda.design_height_m"].iloc[0] == r["goda"]["design_height_m"]
+    assert frame["safety.sliding"].iloc[0] == r["safety"]["sliding"]
+    assert frame["goda.design_height_m"].iloc[1] < 1.8 * 3.0 + 1e-9

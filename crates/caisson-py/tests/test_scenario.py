@@ -120,3 +120,27 @@ def test_pickling_round_trips():
         assert (type(e2), str(e2), e2.key, e2.value, e2.allowed) == (type(e), str(e), e.key, e.value, e.allowed)
     else:
         pytest.fail("no error")
+
+
+@pytest.mark.parametrize(
+    "key, value",
+    [
+        ("sliding_safety_factor", 0.9),
+        ("overturning_safety_factor", 11.0),
+        ("allowable_heel_pressure_kpa", 5.0),
+    ],
+)
+def test_bad_conventional_design_keys_are_refused_as_by_the_cli(tmp_path, key, value):
+    """Goda's conventional width keys of ``[size]`` are validated by the library, in Python as in
+    the CLI: the same key, the same words."""
+    sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml")
+    with pytest.raises(caisson.ScenarioError) as err:
+        sc.replace(size={key: value})
+    assert err.value.key == f"[size] {key}"
+    d = sc.to_dict()
+    d["size"] = {**d["size"], key: value}
+    bad = tmp_path / "scenario.toml"
+    bad.write_text(caisson._toml.dumps(d))
+    r = cli("size", bad, check=False)
+    assert r.returncode == 2
+    assert r.stderr.strip() == f"Error: {err.value}"

@@ -74,7 +74,7 @@ fn columns_are_the_json_keys_and_values() {
             r.columns(&mut got);
             let mut got: Vec<(String, Value)> = got.0.into_iter().map(|(k, v)| (k.to_string(), v)).collect();
             got.sort_by(|a, b| a.0.cmp(&b.0));
-            assert_eq!(got.len(), 79, "h = {h}");
+            assert_eq!(got.len(), 85, "h = {h}");
             assert_eq!(got, want, "h = {h}");
             rows += 1;
             values += got.len();
@@ -82,11 +82,17 @@ fn columns_are_the_json_keys_and_values() {
             seen.extend(got.iter().filter_map(|(k, v)| v.as_str().map(|s| format!("{k}={s}"))));
         }
     }
-    assert_eq!((rows, values), (35, 35 * 79));
+    assert_eq!((rows, values), (35, 35 * 85));
     assert!(nulls > 0, "no null value was checked");
-    for text in
-        ["regime.regime=breaking", "regime.regime=non-breaking", "rise_time.model=median", "rise_time.model=literal"]
-    {
+    for text in [
+        "regime.regime=breaking",
+        "regime.regime=non-breaking",
+        "rise_time.model=median",
+        "rise_time.model=literal",
+        "design_wave.rule=regular-height",
+        "design_wave.rule=goda-breaking-limited",
+        "wave.kind=irregular",
+    ] {
         assert!(seen.contains(text), "{text} not checked: {seen:?}");
     }
 }

@@ -7,6 +7,7 @@ use caisson::analysis::checks::{
     newmark_period_ratio, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
     FAILURE_FRACTION_OF_WIDTH,
 };
+use caisson::analysis::conventional::static_check;
 use caisson::analysis::run::run;
 use caisson::scenario::Scenario;
 use caisson::Profile;
@@ -44,6 +45,7 @@ fn every_bundled_example_has_plausible_inputs() {
         "table5_series.toml",
         "table5_triangle.toml",
     ];
+    let mut tipping = 0;
     for name in names {
         let sc = example(name);
         assert_eq!(codes(&structure_warnings(sc.structure())), Vec::<&str>::new(), "{name}");
@@ -57,11 +59,21 @@ fn every_bundled_example_has_plausible_inputs() {
         }
         if let Ok(c) = sc.campaign() {
             for s in &c.setups {
-                loads.extend(wave_load_warnings(&s.structure, &s.waves));
+                let w = wave_load_warnings(&s.structure, &s.waves);
+                // Goda's overturning check is a design judgement, not an input slip: the flume
+                // caissons of the PARI breaking tests tip under Goda's loads of their highest
+                // waves (their sliding factors are below 1 too, docs/validation.md). It fires
+                // exactly where the static check says so.
+                let sf_o = static_check(&s.structure, &s.waves).unwrap().safety.overturning;
+                let tips = sf_o.is_some_and(|f| f < 1.0);
+                assert_eq!(codes(&w).contains(&"overturning-under-design-wave"), tips, "{name}: {sf_o:?}");
+                tipping += usize::from(tips);
+                loads.extend(w.into_iter().filter(|w| w.code != "overturning-under-design-wave"));
             }
         }
         assert_eq!(codes(&loads), Vec::<&str>::new(), "{name}");
     }
+    assert!(tipping > 0, "no campaign condition checked the overturning warning");
 }
 
 const TABLE5: &str = "[caisson]\nwidth_m = 0.78\nheight_m = 1.12\nbase_depth_m = 0.8\nweight_in_water_kn = 8.24\n[foundation]\ne100_kpa = 3.5e5\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = PEAK\nrise_time_s = 0.05\n[solver]\nSOLVER\n";

@@ -21,8 +21,11 @@ def report(scenario) -> dict:
 def evaluate(scenario, heights_m: Any, period_s: Any = None, *, threads: int = 1) -> pd.DataFrame:
     """The loads of ``caisson loads --json`` for many waves at the scenario's site and caisson.
 
-    ``heights_m`` (incident wave heights, m) and ``period_s`` (default: the scenario's
-    ``[waves] period_s``) broadcast against each other; one row per wave, in C order. Columns are
+    ``heights_m`` (m: the scenario's height key, H of regular waves or H1/3 at the toe of an
+    irregular sea) and ``period_s`` (default: the scenario's ``[waves] period_s``) broadcast
+    against each other; one row per height, in C order, each the ``caisson loads --json`` of the
+    scenario with that height: Goda's check under its design wave (H; or H_max of the irregular
+    sea, ``design_wave.rule`` and ``goda.design_height_m``, docs/model.md §1.3). Columns are
     the JSON keys joined by ``.``: ``wave.incident_height_m``, ``regime.regime``,
     ``goda.horizontal_force_kn_per_m``, ``impact.horizontal_force_kn_per_m``, ``safety.sliding``,
     ... (per metre of breakwater; kN, kPa, m): numbers as float64 (a ``null`` of the JSON is NaN),

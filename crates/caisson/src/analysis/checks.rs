@@ -17,6 +17,7 @@
 //! | `rocking` | rotation above 0.01 rad | the seaward heel lifts by θB/2; beyond small rotations the model's kinematics and foundation do not hold, and the landing can slide the caisson seaward (docs/design.md) |
 //! | `beyond-failure` | \|sliding\| above 0.25 B | a quarter of the base has left the bedding the model describes |
 //! | `sliding-beyond-width` | \|sliding\| above B (a run, a realization; a design's expected sliding E\|S\|; a fragility storm) | a caisson cannot slide beyond its mound: the model is far outside its validity and the number is no prediction (the design example at W' = 500 kN slid 52 km in a life); usually an input error (the weight, the loads) |
+//! | `overturning-under-design-wave` | Goda's overturning safety factor under the design wave below 1 ([`super::conventional`]) | the caisson would tip about its heel, which the dynamic model (small rotations, an elastic foundation) does not follow |
 //! | `failed-lives` | a design life moved beyond `failure_sliding_m` | its sliding after failure lies outside the model's validity: read P(failure) and the surviving lives' statistics |
 //! | `large-rotation-lives` | a wave of a design life rotated the caisson beyond 0.01 rad | as `rocking`: the model does not follow overturning |
 //! | `seaward-lives` | a design life ends more than 1 cm seaward of its place | rocking landings, not the wave's push, moved it (docs/design.md) |
