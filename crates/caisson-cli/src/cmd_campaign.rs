@@ -5,7 +5,7 @@
 use crate::cli::CampaignArgs;
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
-use crate::plot::{panels, Panel, Series};
+use crate::plot::{panels, panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::campaign::{run_campaign, Campaign, ConditionResult};
 use caisson::foundation::DampingMode;
@@ -112,45 +112,47 @@ fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
 pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionResult]) -> Result<()> {
     let order: Vec<usize> = (0..results.len()).collect();
     let at = |k: usize| (k + 1) as f64;
+    // Millimetres, or metres where a model slides more than a metre (a rigid block pushed above
+    // its resistance slides metres in a flume).
+    let (dk, du) = unit(results.iter().map(|r| r.summary.sliding_m.max.abs().max(r.summary.sliding_m.min.abs())));
+    let (rk, ru) = unit(
+        results
+            .iter()
+            .map(|r| r.summary.rigid_block_sliding_m.max.abs().max(r.summary.rigid_block_sliding_m.min.abs())),
+    );
     let dyn_pts: Vec<(f64, f64)> =
-        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.sliding_m.mean * 1e3)).collect();
-    let dyn_rng: Vec<(f64, f64)> = order
-        .iter()
-        .map(|&i| (results[i].summary.sliding_m.min * 1e3, results[i].summary.sliding_m.max * 1e3))
-        .collect();
+        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.sliding_m.mean * dk)).collect();
+    let dyn_rng: Vec<(f64, f64)> =
+        order.iter().map(|&i| (results[i].summary.sliding_m.min * dk, results[i].summary.sliding_m.max * dk)).collect();
     let rb_pts: Vec<(f64, f64)> =
-        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.rigid_block_sliding_m.mean * 1e3)).collect();
+        order.iter().enumerate().map(|(k, &i)| (at(k), results[i].summary.rigid_block_sliding_m.mean * rk)).collect();
     let rb_rng: Vec<(f64, f64)> = order
         .iter()
         .map(|&i| {
-            (results[i].summary.rigid_block_sliding_m.min * 1e3, results[i].summary.rigid_block_sliding_m.max * 1e3)
+            (results[i].summary.rigid_block_sliding_m.min * rk, results[i].summary.rigid_block_sliding_m.max * rk)
         })
         .collect();
     let h_pts: Vec<(f64, f64)> =
         order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.height_m)).collect();
     let w_pts: Vec<(f64, f64)> =
         order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.weight_in_water_n / 1e3)).collect();
-    panels(
+    panels_scaled(
         &dir.join(format!("{stem}.svg")),
         &format!("{title}: total sliding per test condition (numbered as in the table)"),
         "test condition",
         &[
             Panel {
-                y_label: "dynamic model (mm)".into(),
+                y_label: format!("dynamic model ({du})"),
                 series: vec![Series::ranges("mean, min-max of the realizations", dyn_pts, dyn_rng)],
             },
             Panel {
-                y_label: "rigid block (mm)".into(),
+                y_label: format!("rigid block ({ru})"),
                 series: vec![Series::ranges("Shimosako model: mean, min-max", rb_pts, rb_rng)],
             },
-            Panel {
-                y_label: "H (m) / W (kN)".into(),
-                series: vec![
-                    Series::markers("H (m)", h_pts),
-                    Series::markers("W / 10 (kN)", w_pts.iter().map(|&(x, w)| (x, w / 10.0)).collect()),
-                ],
-            },
+            Panel { y_label: "wave height H (m)".into(), series: vec![Series::markers("H", h_pts)] },
+            Panel { y_label: "weight in water W' (kN)".into(), series: vec![Series::markers("W'", w_pts)] },
         ],
+        Scales { integer_x: true, ..Scales::default() },
     )?;
     // Sliding against H, one series per weight.
     let mut weights: Vec<f64> = results.iter().map(|r| r.condition.weight_in_water_n).collect();
@@ -164,12 +166,12 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         let label = format!("W = {:.1} kN", w / 1e3);
         dyn_series.push(Series::ranges(
             label.clone(),
-            rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * 1e3)).collect(),
-            rs.iter().map(|r| (r.summary.sliding_m.min * 1e3, r.summary.sliding_m.max * 1e3)).collect(),
+            rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * dk)).collect(),
+            rs.iter().map(|r| (r.summary.sliding_m.min * dk, r.summary.sliding_m.max * dk)).collect(),
         ));
         rb_series.push(Series::line(
             label,
-            rs.iter().map(|r| (r.condition.height_m, r.summary.rigid_block_sliding_m.mean * 1e3)).collect(),
+            rs.iter().map(|r| (r.condition.height_m, r.summary.rigid_block_sliding_m.mean * rk)).collect(),
         ));
     }
     panels(
@@ -177,10 +179,20 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         &format!("{title}: total sliding against the wave height"),
         "H (m)",
         &[
-            Panel { y_label: "dynamic model (mm)".into(), series: dyn_series },
-            Panel { y_label: "rigid block, mean (mm)".into(), series: rb_series },
+            Panel { y_label: format!("dynamic model ({du})"), series: dyn_series },
+            Panel { y_label: format!("rigid block, mean ({ru})"), series: rb_series },
         ],
     )
+}
+
+/// The factor from metres and the unit of a sliding axis whose largest magnitude is the largest
+/// of `magnitudes_m`: millimetres up to a metre, metres beyond.
+fn unit(magnitudes_m: impl Iterator<Item = f64>) -> (f64, &'static str) {
+    if magnitudes_m.fold(0.0, f64::max) > 1.0 {
+        (1.0, "m")
+    } else {
+        (1e3, "mm")
+    }
 }
 
 pub fn run(args: CampaignArgs) -> Result<()> {

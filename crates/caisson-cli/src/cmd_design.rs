@@ -538,7 +538,7 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
             })
             .collect()
     };
-    let log = Scales { log_x: true, log_y: true };
+    let log = Scales { log_x: true, log_y: true, ..Scales::default() };
     let mut series = hist(dynamic, "dynamic model", false);
     series.extend(hist(rigid, "rigid block (Shimosako model)", true));
     panels_scaled(

@@ -292,9 +292,9 @@ fn write_history(
     };
     let shape = ws.model.options.load_shape;
     let label = match (loads.regime.regime, shape) {
-        (Regime::NonBreaking, _) => "seed Eq. 29".to_string(),
-        (Regime::Breaking, LoadShape::Seed) => "seed Eq. 31".to_string(),
-        (Regime::Breaking, s) => format!("{} (seed Table 2)", s.name()),
+        (Regime::NonBreaking, _) => "total wave force (seed Eq. 29)".to_string(),
+        (Regime::Breaking, LoadShape::Seed) => "total wave force (seed Eq. 31)".to_string(),
+        (Regime::Breaking, s) => format!("total wave force, {} shape (seed Table 2)", s.name()),
     };
     let ref_label = "pulsating part (α_qs F_qs+, F_qs−)";
     let title = format!(

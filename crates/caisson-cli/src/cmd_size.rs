@@ -584,6 +584,6 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
         &format!("{title}: the life's sliding and the criteria against the caisson width"),
         "caisson width B (m)",
         &panels,
-        crate::plot::Scales { log_x: false, log_y: true },
+        crate::plot::Scales { log_y: true, ..Default::default() },
     )
 }

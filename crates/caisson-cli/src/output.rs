@@ -534,14 +534,96 @@ pub fn progress(len: u64, what: &str, items: &str) -> indicatif::ProgressBar {
 
 /// Print plausibility warnings on standard error, one `Warning:` line each.
 pub fn print_warnings(warnings: &[caisson::analysis::checks::Warning]) {
-    for w in warnings {
-        eprintln!("Warning: {}", w.message);
+    for line in warning_lines(warnings) {
+        eprintln!("{line}");
     }
+}
+
+/// The number that ranks the instances of a warning code (the worst is shown) and whether a
+/// larger value is worse; codes not listed show their first instance.
+const WORST_BY: [(&str, &str, bool); 5] = [
+    ("dashpot-exceeds-friction", "max_dashpot_over_friction", true),
+    ("rotational-dashpot-moment", "max_dashpot_moment_kn_m", true),
+    ("overturning-under-design-wave", "overturning_safety_factor", false),
+    ("rocking", "max_rotation_rad", true),
+    ("sliding-beyond-width", "sliding_m", true),
+];
+
+/// One `Warning:` line per code, in the order the codes first appear: the message itself when the
+/// code fires once, else the count and the worst instance (every instance stays in the JSON's
+/// `warnings`).
+pub fn warning_lines(warnings: &[caisson::analysis::checks::Warning]) -> Vec<String> {
+    let mut codes: Vec<&str> = Vec::new();
+    for w in warnings {
+        if !codes.contains(&w.code) {
+            codes.push(w.code);
+        }
+    }
+    codes
+        .iter()
+        .map(|&code| {
+            let all: Vec<&caisson::analysis::checks::Warning> = warnings.iter().filter(|w| w.code == code).collect();
+            if all.len() == 1 {
+                return format!("Warning: {}", all[0].message);
+            }
+            let rank = WORST_BY.iter().find(|(c, _, _)| *c == code);
+            let worst = rank
+                .and_then(|&(_, key, larger)| {
+                    all.iter().copied().filter(|w| w.numbers.contains_key(key)).max_by(|a, b| {
+                        let o = a.numbers[key].total_cmp(&b.numbers[key]);
+                        if larger {
+                            o
+                        } else {
+                            o.reverse()
+                        }
+                    })
+                })
+                .unwrap_or(all[0]);
+            format!(
+                "Warning: {} times `{code}` (each in the JSON's `warnings`); the {}: {}",
+                all.len(),
+                if rank.is_some() { "worst" } else { "first" },
+                worst.message
+            )
+        })
+        .collect()
 }
 
 #[cfg(test)]
 mod tests {
     use super::check_finite_fields;
+
+    /// One line per code: a single instance as it is; several as the count and the worst (the
+    /// smallest overturning factor, the largest dashpot ratio) or, unranked, the first.
+    #[test]
+    fn warnings_are_summarised_per_code() {
+        use caisson::analysis::checks::Warning;
+        let w = |code: &'static str, msg: &str, key: &'static str, v: f64| Warning {
+            code,
+            message: msg.into(),
+            numbers: [(key, v)].into_iter().collect(),
+        };
+        let list = [
+            w("overturning-under-design-wave", "SF 0.98", "overturning_safety_factor", 0.98),
+            w("undamped-adaptive", "once", "x", 1.0),
+            w("overturning-under-design-wave", "SF 0.71", "overturning_safety_factor", 0.71),
+            w("overturning-under-design-wave", "SF 0.85", "overturning_safety_factor", 0.85),
+            w("dashpot-exceeds-friction", "ratio 1.6", "max_dashpot_over_friction", 1.6),
+            w("dashpot-exceeds-friction", "ratio 2.3", "max_dashpot_over_friction", 2.3),
+            w("seaward-lives", "first", "lives", 3.0),
+            w("seaward-lives", "second", "lives", 9.0),
+        ];
+        let lines = super::warning_lines(&list);
+        assert_eq!(
+            lines,
+            [
+                "Warning: 3 times `overturning-under-design-wave` (each in the JSON's `warnings`); the worst: SF 0.71",
+                "Warning: once",
+                "Warning: 2 times `dashpot-exceeds-friction` (each in the JSON's `warnings`); the worst: ratio 2.3",
+                "Warning: 2 times `seaward-lives` (each in the JSON's `warnings`); the first: first",
+            ]
+        );
+    }
     use serde::Serialize;
     use std::collections::BTreeMap;
 

@@ -89,6 +89,8 @@ fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {
 pub struct Scales {
     pub log_x: bool,
     pub log_y: bool,
+    /// The x axis counts (waves, conditions): whole-number tick labels only.
+    pub integer_x: bool,
 }
 
 /// Write stacked panels sharing the x axis (`x_label`), one under the other, as an SVG file.
@@ -138,14 +140,15 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                     .collect(),
             };
             let (xr, yr) = bounds(&shown);
-            let look = Look { x_label, buckets, xr, yr };
+            let look = Look { x_label, buckets, xr, yr, integer_x: scales.integer_x };
             let positive = |f: fn(&(f64, f64)) -> f64| {
                 let v = shown.series.iter().flat_map(|s| s.points.iter().map(f));
                 v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)))
             };
             let builder = || {
                 let mut b = ChartBuilder::on(area);
-                b.margin(8).x_label_area_size(35).y_label_area_size(70);
+                // A right margin wide enough for the last x tick label (centred on the frame).
+                b.margin(8).margin_right(28).x_label_area_size(35).y_label_area_size(70);
                 b
             };
             let err = |e: plotters::drawing::DrawingAreaErrorKind<_>| anyhow::anyhow!("{e}");
@@ -186,6 +189,16 @@ struct Look<'a> {
     buckets: usize,
     xr: (f64, f64),
     yr: (f64, f64),
+    integer_x: bool,
+}
+
+/// A tick label of a count: the whole number, or nothing between whole numbers.
+fn whole(x: &f64) -> String {
+    if (x - x.round()).abs() < 1e-9 {
+        format!("{:.0}", x)
+    } else {
+        String::new()
+    }
 }
 
 /// Draw one panel's series, mesh and legend on `chart` (any coordinates of f64 values); lines
@@ -199,13 +212,12 @@ where
     X: Ranged<ValueType = f64> + ValueFormatter<f64>,
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
-    chart
-        .configure_mesh()
-        .x_desc(look.x_label)
-        .y_desc(panel.y_label.as_str())
-        .light_line_style(WHITE.mix(0.0))
-        .draw()
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(look.x_label).y_desc(panel.y_label.as_str()).light_line_style(WHITE.mix(0.0));
+    if look.integer_x {
+        mesh.x_label_formatter(&whole);
+    }
+    mesh.draw().map_err(|e| anyhow::anyhow!("{e}"))?;
     for (s, style) in panel.series.iter().zip(styles(panel)) {
         if let Some(r) = &s.ranges {
             chart

@@ -5,7 +5,7 @@
 use crate::cmd_run::{write_plots, HistoryFiles, OutDir};
 use crate::input_err;
 use crate::output::{pretty, progress, report_json, tidy_out_dir, write_atomic};
-use crate::plot::{panels, Panel, Series};
+use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::conventional::{DesignWave, StaticCheck};
 use caisson::analysis::run::{FoundationSummary, HistoryRow, Rows, Sampler};
@@ -180,7 +180,13 @@ fn cumulative_plot(path: &Path, title: &str, s: &TrainSummary) -> Result<()> {
         mean.push(((j + 1) as f64, acc * 1e3));
     }
     series.push(Series::dashed("rigid block (Shimosako model), mean", mean));
-    panels(path, &format!("{title}: cumulative sliding"), "waves", &[Panel { y_label: "sliding (mm)".into(), series }])
+    crate::plot::panels_scaled(
+        path,
+        &format!("{title}: cumulative sliding"),
+        "waves",
+        &[Panel { y_label: "sliding (mm)".into(), series }],
+        crate::plot::Scales { integer_x: true, ..Default::default() },
+    )
 }
 
 /// `caisson run` on a scenario with `[waves]` and no `[load]` (on the caller's thread pool).
