@@ -542,6 +542,14 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     let log = Scales { log_x: true, log_y: true };
     let mut series = hist(dynamic, "dynamic model", false);
     series.extend(hist(rigid, "rigid block (Shimosako model)", true));
+    // The failed lives make the bar at the limit: the line marks it (and lifts the axis to 1, so
+    // the legend does not cover the bars).
+    let least = 1.0 / dynamic.len().max(1) as f64;
+    let at_limit = dynamic.iter().filter(|&&x| x >= failure_m).count() as f64 * least;
+    series.push(Series::line(
+        format!("failure limit {failure_m:.3} m ({:.2} % of lives at it)", 100.0 * at_limit),
+        vec![(failure_m, least), (failure_m, 1.0)],
+    ));
     panels_scaled(
         &dir.join("histogram.svg"),
         &format!("{title}: sliding |S| over the design life"),

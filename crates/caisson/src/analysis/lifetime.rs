@@ -72,9 +72,10 @@
 //! or a wave rotates it beyond the rotation limit (`[design] failure_rotation_rad`, default
 //! 0.01 rad, beyond which the model's small-rotation kinematics and its foundation under the heel
 //! do not hold). With [`StormCase::failure`] given (the default of a design run) a life ends at
-//! the wave that fails it: the rest of that storm and the later storms are not run, and the
-//! failing storm keeps its count of waves (so simulated + screened can fall short of `waves` in
-//! it). The rigid block reference runs in the same lives, so it stops there too. The headline
+//! the wave that fails it: the dynamic model runs no further wave of that storm or the later
+//! ones (counted as screened: not run through it), and its outputs stay as they were at the
+//! failure. The rigid block reference runs the whole life on (its loads only, no dynamic
+//! model), so its statistics do not depend on where the dynamic model failed. The headline
 //! statistics ([`capped_statistics`]) put a failed life at the sliding limit; the means of the
 //! simulated values (`expected_sliding_uncapped_m`) are those of lives that stop at failure,
 //! unless `[design] continue_after_failure = true` runs every life to its end (as the
@@ -279,7 +280,8 @@ pub struct StormOutcome {
     pub waves: u64,
     /// Waves run through the dynamic model.
     pub simulated_waves: u64,
-    /// Waves skipped by the screen.
+    /// Waves skipped by the screen (and those after the wave that failed a life, which are not
+    /// run either).
     pub screened_waves: u64,
     /// Simulated waves during which part of the base lifted off (a spring out of contact).
     pub rocking_waves: u64,
@@ -430,7 +432,7 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, 0.0, &mut StormScratch::default())
+    storm_from(st, s, rng, 0.0, false, &mut StormScratch::default())
 }
 
 /// A storm that cannot be simulated.
@@ -445,12 +447,14 @@ pub enum StormError {
 }
 
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
-/// (for the life's largest excursion).
+/// (for the life's largest excursion), `failed`: in a life that has failed already (module
+/// docs, "Failure": only the rigid block runs).
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
     rng: &mut LoadRng,
     start_m: f64,
+    failed: bool,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
     // The site and the caisson at this water level.
@@ -508,6 +512,8 @@ fn storm_from(
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
     let mut sim: Option<Simulation> = None;
     let StormScratch { train, waves } = scratch;
+    // Whether the dynamic model's life has ended at failure (module docs, "Failure").
+    let mut ended = failed;
     // One wave of height h (clamped) and rise-time deviate z through both models.
     let mut run_wave = |h: f64, z: f64, out: &mut StormOutcome| -> Result<(), StormError> {
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
@@ -523,6 +529,11 @@ fn storm_from(
             return Ok(());
         }
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);
+        if ended {
+            // The dynamic model's life has ended at failure: the wave is not run through it.
+            out.screened_waves += 1;
+            return Ok(());
+        }
         train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s: s.period_s, source })?;
         let sim = match sim.as_mut() {
             Some(x) => {
@@ -545,11 +556,9 @@ fn storm_from(
         out.rocking_waves += u64::from(watch.lifted);
         out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
         out.max_rotation_rad = out.max_rotation_rad.max(watch.max_rotation_rad);
+        ended = st.failure.is_some_and(|f| out.failed(&f));
         Ok(())
     };
-    // A life ends at the wave that fails it (module docs, "Failure"): the rest of the storm is
-    // not run.
-    let ended = |out: &StormOutcome| st.failure.is_some_and(|f| out.failed(&f));
     if st.screen && st.draws == WaveDraws::AboveThreshold {
         // Only the waves at or above the lowest cell that may slide (module docs, "Drawing").
         let Some(lowest) = (0..SCREEN_CELLS).find(|&c| cell_may_slide(c)) else {
@@ -580,9 +589,6 @@ fn storm_from(
         for w in waves.iter() {
             if cell_may_slide(cell_of(w.height_m)) {
                 run_wave(w.height_m, w.deviate, &mut out)?;
-                if ended(&out) {
-                    break;
-                }
             } else {
                 out.screened_waves += 1;
             }
@@ -597,9 +603,6 @@ fn storm_from(
                 continue;
             }
             run_wave(h, z, &mut out)?;
-            if ended(&out) {
-                break;
-            }
         }
     }
     out.max_storm_sliding_m = out.sliding_m;
@@ -639,11 +642,9 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
         // the next storm's numbers (common random numbers across caissons, docs/size.md).
         let mut waves_rng = rng.clone();
         waves_rng.set_word_pos(((year as u128) + 1) << STORM_WAVE_WORDS_LOG2);
-        let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, &mut scratch)?;
+        let failed = st.failure.is_some_and(|f| life.failed(&f));
+        let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, &mut scratch)?;
         life.add(&o);
-        if st.failure.is_some_and(|f| life.failed(&f)) {
-            break;
-        }
     }
     Ok(life)
 }
