@@ -258,6 +258,12 @@ fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
     let w = life_warnings(&[life(52_288.0, 3_000.0)], &limits, b);
     let m = &w.iter().find(|w| w.code == "sliding-beyond-width").unwrap().message;
     assert!(m.contains("2614.4 times the base width") && m.contains("weight_in_water_kn"), "{m}");
+    // A life that ended at failure after 6 m, whose rigid block ran the whole life on to 900 m
+    // (a flooded shell): the rigid block's mean tells.
+    let ended = StormOutcome { rigid_block_sliding_m: 900.0, ..life(6.0, 6.0) };
+    let w = life_warnings(&[ended, life(0.0, 0.0)], &limits, b);
+    let m = &w.iter().find(|w| w.code == "sliding-beyond-width").expect("the rigid block's 450 m").message;
+    assert!(m.contains("450.0000 m on average (E|S| of the rigid block over the whole lives"), "{m}");
     let storms = [life(25.0, 25.0), life(1.0, 1.0), life(-0.5, 0.5)];
     let w = storm_warnings(storms.iter(), b);
     assert_eq!(codes(&w), ["sliding-beyond-width"]);
