@@ -119,16 +119,21 @@ def test_the_failure_keys_are_refused_out_of_range_as_in_the_cli(tmp_path, line,
         caisson.Design(caisson.Scenario.from_toml(p))
 
 
-def test_a_failed_life_ends_and_counts_at_the_limit(design_file):
-    """The lives of the 2 mm limit: the headline E|S| counts each failed life at the limit, the
-    uncapped mean is that of the lives as simulated, and the failure modes are split."""
-    design = caisson.Design(caisson.Scenario.from_toml(design_file))
+def test_a_failed_life_ends_and_counts_at_the_limit(tmp_path):
+    """The lives of a 3 cm limit (half of them fail): the headline E|S| counts each failed life at
+    the limit, the uncapped mean is that of the lives as simulated, and the failure modes are
+    split."""
+    p = tmp_path / "limit_3cm.toml"
+    p.write_text(DESIGN.replace("failure_sliding_m = 0.002", "failure_sliding_m = 0.03"))
+    design = caisson.Design(caisson.Scenario.from_toml(p))
     lives = design.simulate_lives()
     s = design.statistics(lives)["dynamic"]
-    failed = (lives["max_excursion_m"] > 0.002) | (lives["max_rotation_rad"] > 0.01)
+    failed = (lives["max_excursion_m"] > 0.03) | (lives["max_rotation_rad"] > 0.01)
     assert 0 < failed.sum() < LIVES
-    capped = np.where(failed, 0.002, lives["sliding_m"].abs())
+    capped = np.where(failed, 0.03, lives["sliding_m"].abs())
     assert s["expected_sliding_m"] == pytest.approx(capped.mean(), rel=1e-12)
+    assert s["expected_sliding_m"] <= 0.03 < s["expected_sliding_uncapped_m"]
     assert s["expected_sliding_uncapped_m"] == pytest.approx(lives["sliding_m"].abs().mean(), rel=1e-12)
     assert s["failure"]["lives"] == failed.sum()
-    assert s["failure"]["by_sliding"]["lives"] == (lives["max_excursion_m"] > 0.002).sum()
+    assert s["failure"]["by_sliding"]["lives"] == (lives["max_excursion_m"] > 0.03).sum()
+    assert s["failure"]["by_rotation"]["lives"] == (lives["max_rotation_rad"] > 0.01).sum()
