@@ -511,14 +511,14 @@ class Design:
         cols = {}
         for c in need:
             v = frame[c].to_numpy()
-            metres = c.endswith("_m") or c.endswith("_rad")
-            allowed = f"must be a finite number ({c.rsplit('_', 1)[1]})" if metres else "must be a whole number ≥ 0"
-            if metres or v.dtype.kind not in "iu":
+            real = c.endswith(("_m", "_rad"))  # lengths and rotations; the rest are counts
+            allowed = f"must be a finite number ({c.rsplit('_', 1)[1]})" if real else "must be a whole number ≥ 0"
+            if real or v.dtype.kind not in "iu":
                 try:
                     v = v.astype(np.float64)
                 except (TypeError, ValueError):
                     raise ValueError(f"column {c!r} holds {v.dtype} values: {allowed}") from None
-            if metres:
+            if real:
                 bad = ~np.isfinite(v)
             else:
                 bad = v < 0 if v.dtype.kind in "iu" else ~((v >= 0) & (v == np.floor(v)) & np.isfinite(v))
@@ -530,8 +530,7 @@ class Design:
             dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
             raise ValueError(f"life {dup} appears more than once")
         order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
-        real = lambda c: c.endswith("_m") or c.endswith("_rad")  # noqa: E731
-        cols = {c: (v[order].astype(np.float64) if real(c) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
+        cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
         return json.loads(_core.design_statistics(self._scenario._core, cols))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
