@@ -241,9 +241,10 @@ fn a_storms_draws_do_not_move_the_next_storms_numbers() {
     );
 }
 
-/// The caisson of a 30 m deep site, 34 m tall, at 13.6 m (the width at which Goda's sliding
-/// check alone passes; issue 18), built from its construction as examples/size_breakwater.toml,
-/// with the design example's storms, shortened: 6 lives of 5 years, storm peaks of 1 h.
+/// The caisson of a 30 m deep site, 34 m tall, at 13.6 m (the issue's sliding-only width; issue
+/// 18), built from its construction as examples/size_breakwater.toml (docs/design.md, the
+/// spring-count table), with the design example's storms, shortened: 6 lives of 5 years, storm
+/// peaks of 1 h.
 const TALL: &str = r#"
 [caisson]
 width_m = 13.6
