@@ -488,7 +488,7 @@ fn lives_csv<'a>(lives: impl Iterator<Item = (usize, &'a StormOutcome)>) -> Resu
     w.write_record(std::iter::once("life").chain(LIFE_COLUMNS.iter().map(|(name, _)| *name)))?;
     for (i, l) in lives {
         let cells = LIFE_COLUMNS.iter().map(|(_, c)| match c {
-            LifeColumn::Metres(f) => format!("{:e}", f(l)),
+            LifeColumn::Metres(f) | LifeColumn::Radians(f) => format!("{:e}", f(l)),
             LifeColumn::Count(f) => f(l).to_string(),
         });
         w.write_record(std::iter::once(i.to_string()).chain(cells))?;
@@ -501,8 +501,9 @@ const BINS_PER_DECADE: f64 = 8.0;
 /// The smallest sliding the plots show, m: below 0.1 mm a caisson has not slid to speak of.
 const PLOT_FLOOR_M: f64 = 1e-4;
 
-/// The histogram of the life totals |S| (dynamic and rigid block) on log-spaced bins, and their
-/// exceedance curves P(|S| > s), both on logarithmic axes from 0.1 mm, with the failure limit.
+/// The histogram of the life totals |S| (dynamic and rigid block; a failed life at the failure
+/// limit, as in the statistics) on log-spaced bins, and their exceedance curves P(|S| > s), both
+/// on logarithmic axes from 0.1 mm, with the failure limit.
 fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64) -> Result<()> {
     let max = dynamic.iter().chain(rigid).copied().fold(0.0, f64::max).max(10.0 * PLOT_FLOOR_M);
     let bottom = PLOT_FLOOR_M.log10();
@@ -541,11 +542,19 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     let log = Scales { log_x: true, log_y: true, ..Scales::default() };
     let mut series = hist(dynamic, "dynamic model", false);
     series.extend(hist(rigid, "rigid block (Shimosako model)", true));
+    // The failed lives make the bar at the limit: the line marks it (and lifts the axis to 1, so
+    // the legend does not cover the bars).
+    let least = 1.0 / dynamic.len().max(1) as f64;
+    let at_limit = dynamic.iter().filter(|&&x| x >= failure_m).count() as f64 * least;
+    series.push(Series::line(
+        format!("failure limit {failure_m:.3} m ({:.2} % of lives at it)", 100.0 * at_limit),
+        vec![(failure_m, least), (failure_m, 1.0)],
+    ));
     panels_scaled(
         &dir.join("histogram.svg"),
         &format!("{title}: sliding |S| over the design life"),
         &format!(
-            "|S|, distance from the place at the end of the life (m); not shown: the {:.1} % (dynamic) and {:.1} % (rigid block) of lives below 0.1 mm",
+            "|S|, distance from the place at the end of the life (m; a failed life at the limit); not shown: the {:.1} % (dynamic) and {:.1} % (rigid block) of lives below 0.1 mm",
             100.0 * below(dynamic) as f64 / dynamic.len().max(1) as f64,
             100.0 * below(rigid) as f64 / rigid.len().max(1) as f64
         ),
@@ -565,7 +574,7 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     panels_scaled(
         &dir.join("exceedance.svg"),
         &format!("{title}: probability that the life's sliding |S| exceeds s"),
-        "s (m)",
+        "s (m); a failed life at the failure limit",
         &[Panel {
             y_label: "P(|S| > s)".into(),
             series: vec![
@@ -730,10 +739,11 @@ pub(crate) fn report_lives(
     out: Option<&Path>,
     keep: &[&Path],
 ) -> Result<()> {
-    let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
+    let failure = design.failure_limits(case.structure.caisson.width_m);
+    let failure_m = failure.sliding_m;
     let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, lives);
     report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
-    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, failure_m, case.structure.caisson.width_m));
+    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, &failure, case.structure.caisson.width_m));
     if let Some(ws) = waves {
         report.warnings.extend(caisson::analysis::checks::wave_load_warnings(case.structure, ws));
     }
@@ -749,8 +759,10 @@ pub(crate) fn report_lives(
         write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes())?;
         write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?)?;
         let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
-        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
-        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
+        // The values of the statistics: a failed life at the sliding limit.
+        let dynamic: Vec<f64> =
+            lives.iter().map(|l| if l.failed(&failure) { failure_m } else { l.sliding_m.abs() }).collect();
+        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
         plots(dir, title, &dynamic, &rigid, failure_m)?;
         crate::output::tidy_out_dir(dir, "design", keep);
         if !json {
@@ -778,7 +790,20 @@ fn design_text(r: &DesignReport) -> String {
         100.0 * r.screened_waves as f64 / r.waves.max(1) as f64,
         if r.screen { "" } else { " (screen off)" }
     );
-    let _ = writeln!(t, "sliding S: shoreward +; |S| its magnitude at the end of the life; failure: moved beyond {:.3} m from its place", r.failure_sliding_m);
+    let _ = writeln!(
+        t,
+        "sliding S: shoreward +; |S| its magnitude at the end of the life; failure: moved beyond {:.3} m from its place or rotated beyond {} rad",
+        r.failure_sliding_m, r.failure_rotation_rad
+    );
+    let _ = writeln!(
+        t,
+        "{}",
+        if r.lives_end_at_failure {
+            "a life ends at the wave that fails it, and enters E|S|, the percentiles and P(|S| > s) at the sliding limit"
+        } else {
+            "lives continue after failure (continue_after_failure); E|S|, the percentiles and P(|S| > s) take a failed life at the sliding limit"
+        }
+    );
     let _ = writeln!(t);
     let _ = writeln!(
         t,
@@ -789,6 +814,7 @@ fn design_text(r: &DesignReport) -> String {
         let _ = writeln!(t, "{what:<32} {a:>10.4} m    {b:>10.4} m");
     };
     row(&mut t, "expected sliding E|S|", sd.expected_sliding_m, sr.expected_sliding_m);
+    row(&mut t, "E|S| as simulated (uncapped)", sd.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_m);
     let _ = writeln!(
         t,
         "{:<32} {:>10.5} m    {:>10.5} m",
@@ -811,6 +837,20 @@ fn design_text(r: &DesignReport) -> String {
         t,
         "{:<32} {:>10.4}      {:>10.4}      ({} and {} lives)",
         "P(failure)", sd.failure.probability, sr.failure.probability, sd.failure.lives, sr.failure.lives
+    );
+    let _ = writeln!(
+        t,
+        "{:<32} {:>10.4}      {:>10.4}      ({} and {} lives)",
+        "  by sliding",
+        sd.failure.by_sliding.probability,
+        sr.failure.by_sliding.probability,
+        sd.failure.by_sliding.lives,
+        sr.failure.by_sliding.lives
+    );
+    let _ = writeln!(
+        t,
+        "{:<32} {:>10.4}      {:>10}      ({} lives)",
+        "  by rotation", sd.failure.by_rotation.probability, "-", sd.failure.by_rotation.lives
     );
     let (vd, vr) = (&sd.surviving, &sr.surviving);
     row(&mut t, "E|S| of the surviving lives", vd.expected_sliding_m, vr.expected_sliding_m);

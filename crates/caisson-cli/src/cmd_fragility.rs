@@ -77,12 +77,13 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
     for lim in &p.limits_m {
         let _ = write!(head, "  {:>17}", format!("P(S > {lim} m)"));
     }
-    let _ = writeln!(t, "{head}    mean storm sliding (m)   screened");
+    let _ = writeln!(t, "{head}    mean storm sliding (m)   screened   rotated");
     let mut sub = String::from("                           ");
     for _ in &p.limits_m {
         sub.push_str("    dynamic   rigid");
     }
     let _ = writeln!(t, "{sub}      dynamic      rigid");
+    let _ = writeln!(t, "(rotated: storms that rotated the caisson beyond {} rad; they count as exceeding every limit of the dynamic model)", p.failure_rotation_rad);
     for l in &r.levels {
         let n = l.storms.len() as f64;
         let sf = goda_sliding_safety(s, l.h13_m, p.period_s).map_or("-".into(), |v| format!("{v:.2}"));
@@ -97,10 +98,11 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
         }
         let _ = writeln!(
             t,
-            "    {:>9.4}  {:>9.4}   {:>7.3} %",
+            "    {:>9.4}  {:>9.4}   {:>7.3} %   {:>7}",
             l.mean_sliding_m(),
             l.mean_rigid_block_sliding_m(),
-            100.0 * l.screened_share()
+            100.0 * l.screened_share(),
+            l.rotation_failures
         );
     }
     let _ = writeln!(t);
@@ -135,6 +137,7 @@ fn fragility_csv(s: &Setup<'_>, r: &FragilityResult) -> Result<Vec<u8>> {
         "mean_sliding_m",
         "mean_rigid_block_sliding_m",
         "screened_share",
+        "rotation_failures",
     ])?;
     for l in &r.levels {
         let n = l.storms.len() as f64;
@@ -156,6 +159,7 @@ fn fragility_csv(s: &Setup<'_>, r: &FragilityResult) -> Result<Vec<u8>> {
                 format!("{:e}", l.mean_sliding_m()),
                 format!("{:e}", l.mean_rigid_block_sliding_m()),
                 format!("{}", l.screened_share()),
+                l.rotation_failures.to_string(),
             ])?;
         }
     }

@@ -9,8 +9,9 @@
 //! failure limit, life_years, the structure's warnings and the plots' title (the file's name). The
 //! shards are checked against the file: every shard's fingerprint must be the file's (with
 //! `--brute-force` if the shards were run with it, as their headers say), so the shards' lives
-//! are lives of this scenario; `lives`, `thresholds_m` and `failure_sliding_m` are not in the
-//! fingerprint (they change no life) and come from the file (`--lives` overrides `lives`).
+//! are lives of this scenario; `lives` and `thresholds_m` are not in the fingerprint (they change
+//! no life) and come from the file (`--lives` overrides `lives`); the failure limits are in it
+//! (a life ends at failure), unless `continue_after_failure = true` runs every life to its end.
 //!
 //! **Refused** with an `Error:` naming the shard and its checkpoint (exit 2), before anything is
 //! written: a checkpoint that cannot be read, of another format, results version or fingerprint;

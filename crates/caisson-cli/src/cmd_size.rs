@@ -197,8 +197,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
             })));
         }
         let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
-        let failure_m = design.failure_limit_m(w);
-        let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, failure_m, &p.criteria);
+        let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, &design.failure_limits(w), &p.criteria);
         if let Some((header_line, f)) = writer.borrow_mut().as_mut() {
             let path = checkpoint.as_deref().expect("a checkpoint with a writer");
             f.write_all(candidate_line(header_line, &c)?.as_bytes())

@@ -78,7 +78,15 @@ fn json_has_the_documented_keys_and_is_the_same_on_any_thread_count() {
         let failed = f["lives"].as_u64().unwrap();
         assert_eq!(failed + s["lives"].as_u64().unwrap(), 12, "{model}: every life fails or survives");
         assert!((f["probability"].as_f64().unwrap() - failed as f64 / 12.0).abs() < 1e-15);
+        // The modes cover the failed lives (a life may fail by both); the rigid block never
+        // rotates; the capped E|S| stays within the sliding limit.
+        let (by_s, by_r) = (f["by_sliding"]["lives"].as_u64().unwrap(), f["by_rotation"]["lives"].as_u64().unwrap());
+        assert!(by_s.max(by_r) <= failed && by_s + by_r >= failed, "{model}: {f}");
+        assert!(model == "dynamic" || by_r == 0);
+        assert!(j[model]["expected_sliding_m"].as_f64().unwrap() <= 5.0);
+        assert!(j[model]["expected_sliding_uncapped_m"].as_f64().unwrap() >= 0.0);
     }
+    assert_eq!((j["failure_rotation_rad"].as_f64(), j["lives_end_at_failure"].as_bool()), (Some(0.01), Some(true)));
     let d = &j["dynamic"];
     let net = d["expected_shoreward_sliding_m"].as_f64().unwrap() - d["expected_seaward_sliding_m"].as_f64().unwrap();
     assert!((net - d["expected_net_sliding_m"].as_f64().unwrap()).abs() < 1e-12, "net = shoreward − seaward");
@@ -244,6 +252,10 @@ fn bad_design_keys_are_named() {
         ("storm_distribution = \"weibull\"", "storm_distribution = \"gumbel\"", "[design] storm_shape"),
         ("seed = 3", "seed = 3\nfailure_sliding_m = 0.0", "[design] failure_sliding_m"),
         ("seed = 3", "seed = 3\nfailure_sliding_m = -2.0", "[design] failure_sliding_m"),
+        ("seed = 3", "seed = 3\nfailure_rotation_rad = 0.0", "[design] failure_rotation_rad"),
+        ("seed = 3", "seed = 3\nfailure_rotation_rad = 0.5", "[design] failure_rotation_rad"),
+        ("seed = 3", "seed = 3\nfailure_rotation_rad = inf", "[design] failure_rotation_rad"),
+        ("seed = 3", "seed = 3\ncontinue_after_failure = \"yes\"", "continue_after_failure"),
         // 350 kN/m is below 0.2 of the 3536.5 kN/m of water the caisson displaces.
         ("weight_in_water_kn = 4500.0", "weight_in_water_kn = 350.0", "[caisson] weight_in_water_kn"),
         // 750 kN/m (0.21 of it) floats at 4 m of tide (ρ_w g B l R = 808 kN).

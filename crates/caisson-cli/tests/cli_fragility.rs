@@ -92,6 +92,7 @@ fn json_contract_and_probabilities_rising_with_height() {
     assert_eq!(v["storms"], 8);
     assert_eq!(v["seed"], 1);
     assert_eq!(v["limits_m"], serde_json::json!([0.05, 0.2]));
+    assert_eq!(v["failure_rotation_rad"], 0.01);
     finite(&v["design_wave"]["goda_sliding_safety_factor"], "design_wave.goda_sliding_safety_factor");
     let levels = v["levels"].as_array().unwrap();
     assert_eq!(levels.len(), 5);
@@ -113,6 +114,11 @@ fn json_contract_and_probabilities_rising_with_height() {
         assert_eq!(l["storms"], 8);
         assert_eq!(l["storm_sliding_m"].as_array().unwrap().len(), 8);
         assert_eq!(l["storm_rigid_block_sliding_m"].as_array().unwrap().len(), 8);
+        let rotations: Vec<f64> =
+            l["storm_max_rotation_rad"].as_array().unwrap().iter().map(|r| r.as_f64().unwrap()).collect();
+        assert_eq!(rotations.len(), 8);
+        let rotated = rotations.iter().filter(|&&r| r > 0.01).count() as u64;
+        assert_eq!(l["rotation_failures"].as_u64(), Some(rotated));
         let ex = l["exceedance"].as_array().unwrap();
         assert_eq!(ex.len(), 2);
         for (j, e) in ex.iter().enumerate() {
@@ -122,10 +128,16 @@ fn json_contract_and_probabilities_rising_with_height() {
                 let k = e[format!("{model}_count")].as_u64().unwrap();
                 assert!((0.0..=1.0).contains(&p));
                 assert_eq!(p, k as f64 / 8.0);
-                // The counts agree with the storm slidings.
+                // The counts agree with the storm slidings (and, for the dynamic model, a storm
+                // that rotated beyond the limit exceeds every limit).
                 let key = if m == 0 { "storm_sliding_m" } else { "storm_rigid_block_sliding_m" };
-                let by_hand =
-                    l[key].as_array().unwrap().iter().filter(|s| s.as_f64().unwrap() > [0.05, 0.2][j]).count() as u64;
+                let by_hand = l[key]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .zip(&rotations)
+                    .filter(|(s, &r)| s.as_f64().unwrap().abs() > [0.05, 0.2][j] || (m == 0 && r > 0.01))
+                    .count() as u64;
                 assert_eq!(k, by_hand);
                 assert!(
                     p >= previous[m][j],
@@ -240,6 +252,7 @@ fn bad_inputs_name_their_key_and_write_nothing() {
     bad(&edit(heights, "significant_heights_m = []"), "[fragility] significant_heights_m");
     bad(&edit(heights, ""), "[fragility] significant_heights_m");
     bad(&edit("storms = 8", "storms = 0"), "[fragility] storms");
+    bad(&edit("storms = 8", "storms = 8\nfailure_rotation_rad = 0.0"), "[fragility] failure_rotation_rad");
     bad(&edit("storms = 8", "storms = 2.5"), "storms");
     bad(&edit("limits_m = [0.05, 0.2]", "limits_m = [0.05, -0.2]"), "[fragility] limits_m[1]");
     bad(&edit("limits_m = [0.05, 0.2]", "limits_m = [0.2, 0.05]"), "[fragility] limits_m[1]");

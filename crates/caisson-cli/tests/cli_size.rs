@@ -120,17 +120,22 @@ fn the_answer_does_not_depend_on_the_thread_count() {
 #[test]
 fn the_required_width_is_monotone_in_the_allowed_sliding() {
     let dir = tempfile::tempdir().unwrap();
+    let mut widths = Vec::new();
     let mut last = (f64::INFINITY, f64::INFINITY);
-    let mut checked = 0;
     for s_a in [0.02, 0.05, 0.3, 1.0] {
         let (_, j) = sized(dir.path(), &format!("expected_sliding_m = {s_a}"), "2");
         let (d, r) = (width(&j, "dynamic"), width(&j, "rigid_block"));
         assert!(d <= last.0 && r <= last.1, "S_a {s_a}: {d}, {r} after {last:?}");
         last = (d, r);
-        checked += 1;
+        widths.push(last);
     }
-    assert_eq!(checked, 4);
-    assert!(last.0 < 20.0, "a larger allowed sliding must allow a narrower caisson: {last:?}");
+    assert_eq!(widths.len(), 4);
+    // (Since results version 10 a life that rotates beyond 0.01 rad fails and counts at B/4 in
+    // E|S|: the dynamic width of S_a = 1 m is about 20 m, where the rigid block's is 15 m.)
+    assert!(
+        last.0 < widths[0].0 && last.1 < widths[0].1,
+        "a larger allowed sliding must allow a narrower caisson: {widths:?}"
+    );
 }
 
 #[test]

@@ -805,7 +805,7 @@ fn design_lives<'py>(
     d.set_item("life", PyArray1::from_vec(py, lives.iter().map(|(i, _)| *i as u64).collect::<Vec<u64>>()))?;
     for (name, column) in LIFE_COLUMNS {
         match column {
-            LifeColumn::Metres(f) => {
+            LifeColumn::Metres(f) | LifeColumn::Radians(f) => {
                 d.set_item(name, PyArray1::from_vec(py, lives.iter().map(|(_, o)| f(o)).collect()))?
             }
             LifeColumn::Count(f) => {
@@ -823,7 +823,7 @@ fn life_columns() -> Vec<&'static str> {
 }
 
 /// `design.json` text of the lives given as columns (every name of [`life_columns`], in life
-/// order): metres as floats, counts as whole numbers.
+/// order): metres and radians as floats, counts as whole numbers.
 #[pyfunction]
 fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDict>) -> PyResult<String> {
     let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
@@ -834,7 +834,9 @@ fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDic
             .get_item(name)?
             .ok_or_else(|| PyValueError::new_err(format!("the lives have no column `{name}`")))?;
         let values: Vec<serde_json::Value> = match column {
-            LifeColumn::Metres(_) => item.extract::<Vec<f64>>()?.into_iter().map(serde_json::Value::from).collect(),
+            LifeColumn::Metres(_) | LifeColumn::Radians(_) => {
+                item.extract::<Vec<f64>>()?.into_iter().map(serde_json::Value::from).collect()
+            }
             LifeColumn::Count(_) => item.extract::<Vec<u64>>()?.into_iter().map(serde_json::Value::from).collect(),
         };
         if rows.is_empty() {
@@ -856,10 +858,10 @@ fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDic
         .map(|r| serde_json::from_value(serde_json::Value::Object(r)))
         .collect::<Result<_, _>>()
         .map_err(|e| PyValueError::new_err(format!("a life's columns do not form an outcome: {e}")))?;
-    let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
-    let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
+    let failure = design.failure_limits(case.structure.caisson.width_m);
+    let mut report = DesignReport::new(design, case.rigid_block_mu, failure.sliding_m, &lives);
     report.warnings = structure_warnings(case.structure);
-    report.warnings.extend(life_warnings(&lives, failure_m, case.structure.caisson.width_m));
+    report.warnings.extend(life_warnings(&lives, &failure, case.structure.caisson.width_m));
     if let Some(ws) = &sc.sc.waves {
         report.warnings.extend(wave_load_warnings(case.structure, ws));
     }

@@ -5,6 +5,7 @@ too), and the lives are the merged `lives.csv` row for row. And what `Design.sta
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pandas as pd
@@ -93,7 +94,46 @@ def test_statistics_refuses_repeated_lives_missing_columns_and_bad_values(design
     bad.loc[1, "sliding_m"] = np.nan
     with pytest.raises(ValueError, match=r"^column 'sliding_m' = nan in row 1 \(life 1\): must be a finite number \(m\)$"):
         design.statistics(bad)
+    bad = part.copy()
+    bad.loc[0, "max_rotation_rad"] = np.inf
+    with pytest.raises(ValueError, match=r"^column 'max_rotation_rad' = inf in row 0 \(life 0\): must be a finite number \(rad\)$"):
+        design.statistics(bad)
     with pytest.raises(TypeError, match="DataFrames"):
         design.statistics([part, {"life": [3]}])
     # A whole-number column stored as floats (e.g. after a join) is accepted unchanged.
     assert design.statistics(part.astype({"waves": "float64"})) == ok
+
+
+@pytest.mark.parametrize(
+    "line, key",
+    [
+        ("failure_rotation_rad = 0.0", "[design] failure_rotation_rad"),
+        ("failure_rotation_rad = 0.2", "[design] failure_rotation_rad"),
+        ("continue_after_failure = 1", "continue_after_failure"),
+    ],
+)
+def test_the_failure_keys_are_refused_out_of_range_as_in_the_cli(tmp_path, line, key):
+    p = tmp_path / "bad.toml"
+    p.write_text(DESIGN + line + "\n")
+    with pytest.raises(caisson.ScenarioError, match=re.escape(key)):
+        caisson.Design(caisson.Scenario.from_toml(p))
+
+
+def test_a_failed_life_ends_and_counts_at_the_limit(tmp_path):
+    """The lives of a 3 cm limit (half of them fail): the headline E|S| counts each failed life at
+    the limit, the uncapped mean is that of the lives as simulated, and the failure modes are
+    split."""
+    p = tmp_path / "limit_3cm.toml"
+    p.write_text(DESIGN.replace("failure_sliding_m = 0.002", "failure_sliding_m = 0.03"))
+    design = caisson.Design(caisson.Scenario.from_toml(p))
+    lives = design.simulate_lives()
+    s = design.statistics(lives)["dynamic"]
+    failed = (lives["max_excursion_m"] > 0.03) | (lives["max_rotation_rad"] > 0.01)
+    assert 0 < failed.sum() < LIVES
+    capped = np.where(failed, 0.03, lives["sliding_m"].abs())
+    assert s["expected_sliding_m"] == pytest.approx(capped.mean(), rel=1e-12)
+    assert s["expected_sliding_m"] <= 0.03 < s["expected_sliding_uncapped_m"]
+    assert s["expected_sliding_uncapped_m"] == pytest.approx(lives["sliding_m"].abs().mean(), rel=1e-12)
+    assert s["failure"]["lives"] == failed.sum()
+    assert s["failure"]["by_sliding"]["lives"] == (lives["max_excursion_m"] > 0.03).sum()
+    assert s["failure"]["by_rotation"]["lives"] == (lives["max_rotation_rad"] > 0.01).sum()

@@ -4,7 +4,7 @@
 
 mod support;
 
-use caisson::analysis::lifetime::{run_lives, simulate_life, StormCase, StormOutcome, WaveDraws};
+use caisson::analysis::lifetime::{run_lives, simulate_life, FailureLimits, StormCase, StormOutcome, WaveDraws};
 use std::ops::ControlFlow;
 use support::scenario;
 
@@ -51,10 +51,12 @@ fn lives(screen: bool) -> Vec<StormOutcome> {
     lives_drawn(screen, WaveDraws::EveryWave)
 }
 
+/// The four lives of `DESIGN`, run to their end (`failure: None`: the tests that use them
+/// compare both models, or the screen, over whole lives; one life slides beyond B/4).
 fn lives_drawn(screen: bool, draws: WaveDraws) -> Vec<StormOutcome> {
     let sc = scenario(DESIGN);
     let d = sc.design.clone().unwrap();
-    let st = StormCase { rigid_block_mu: 0.6, draws, ..sc.storm_case(screen).unwrap() };
+    let st = StormCase { rigid_block_mu: 0.6, draws, failure: None, ..sc.storm_case(screen).unwrap() };
     let lives: Vec<StormOutcome> = (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect();
     assert_eq!(lives.len(), 4);
     lives
@@ -121,8 +123,9 @@ fn run_lives_is_ordered_and_stoppable() {
     assert_eq!(stopped.unwrap(), one_by_one[..1].to_vec(), "one thread stops after the first life");
 }
 
-/// The design example's life 4701 ends 0.6 m seaward, the most seaward of its 5000 lives
-/// (docs/design.md): the direction bookkeeping must show it. Sign convention: shoreward +; the
+/// The design example's life 4701, run to its end (lives continuing after failure), ends 0.6 m
+/// seaward, the most seaward of its 5000 lives (docs/design.md): the direction bookkeeping must
+/// show it. Sign convention: shoreward +; the
 /// net sliding is the shoreward sum minus the seaward sum (to rounding of the two sums, 1e-12 m
 /// per metre slid); the largest excursion is at least the final distance; the rigid block slides
 /// shoreward only.
@@ -130,7 +133,7 @@ fn run_lives_is_ordered_and_stoppable() {
 fn a_seaward_life_is_counted_seaward_by_its_magnitude() {
     let sc = support::example("design_breakwater.toml");
     let d = sc.design.clone().unwrap();
-    let st = sc.storm_case(true).unwrap();
+    let st = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
     let l = simulate_life(&st, &d.life, d.seed, 4701).unwrap();
     assert!(l.sliding_m < -0.5, "life 4701 ends {} m (docs/design.md: −0.62 m)", l.sliding_m);
     assert!(l.seaward_sliding_m > 0.5 && l.shoreward_sliding_m >= 0.0, "{l:?}");
@@ -174,7 +177,7 @@ fn a_shoreward_life_has_its_excursion_at_the_end() {
 fn drawing_only_the_waves_above_the_threshold_keeps_the_statistics() {
     let sc = support::example("design_breakwater.toml");
     let d = sc.design.clone().unwrap();
-    let limit_m = d.failure_limit_m(sc.structure().caisson.width_m);
+    let limits = d.failure_limits(sc.structure().caisson.width_m);
     let lives: Vec<usize> = (0..800).collect();
     let run = |draws| {
         let st = StormCase { draws, ..sc.storm_case(true).unwrap() };
@@ -182,23 +185,23 @@ fn drawing_only_the_waves_above_the_threshold_keeps_the_statistics() {
     };
     let (new, old) = (run(WaveDraws::AboveThreshold), run(WaveDraws::EveryWave));
     assert_eq!((new.len(), old.len()), (800, 800));
-    type Statistic = (&'static str, fn(&StormOutcome, f64) -> f64);
+    type Statistic = (&'static str, fn(&StormOutcome, &FailureLimits) -> f64);
     let statistics: [Statistic; 6] = [
         ("|S| dynamic (m)", |o, _| o.sliding_m.abs()),
         ("|S| rigid block (m)", |o, _| o.rigid_block_sliding_m.abs()),
-        ("failure", |o, limit| f64::from(u8::from(o.failed(limit)))),
+        ("failure", |o, limits| f64::from(u8::from(o.failed(limits)))),
         ("rocking waves", |o, _| o.rocking_waves as f64),
         ("large-rotation waves", |o, _| o.large_rotation_waves as f64),
         ("simulated waves", |o, _| o.simulated_waves as f64),
     ];
     for (name, f) in statistics {
-        let diffs: Vec<f64> = new.iter().zip(&old).map(|((_, a), (_, b))| f(a, limit_m) - f(b, limit_m)).collect();
+        let diffs: Vec<f64> = new.iter().zip(&old).map(|((_, a), (_, b))| f(a, &limits) - f(b, &limits)).collect();
         let n = diffs.len() as f64;
         let mean = diffs.iter().sum::<f64>() / n;
         let sd = (diffs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
         let (mean_new, mean_old) = (
-            new.iter().map(|(_, o)| f(o, limit_m)).sum::<f64>() / n,
-            old.iter().map(|(_, o)| f(o, limit_m)).sum::<f64>() / n,
+            new.iter().map(|(_, o)| f(o, &limits)).sum::<f64>() / n,
+            old.iter().map(|(_, o)| f(o, &limits)).sum::<f64>() / n,
         );
         assert!(sd > 0.0 && mean_old > 0.0, "{name}: nothing to compare (old mean {mean_old}, sd {sd})");
         assert!(
@@ -207,7 +210,8 @@ fn drawing_only_the_waves_above_the_threshold_keeps_the_statistics() {
             sd / n.sqrt()
         );
     }
-    // Same storms, same waves counted; the screened count stays N − simulated.
+    // Same storms, same waves counted; the screened count stays N − simulated (a failed life's
+    // waves after its failure are not run through the dynamic model: counted as screened).
     for ((_, a), (_, b)) in new.iter().zip(&old) {
         assert_eq!(a.waves, b.waves);
         assert_eq!(a.screened_waves + a.simulated_waves, a.waves);
@@ -235,4 +239,133 @@ fn a_storms_draws_do_not_move_the_next_storms_numbers() {
         simulated(&heavy),
         simulated(&light)
     );
+}
+
+/// The caisson of a 30 m deep site, 34 m tall, at 13.6 m (the issue's sliding-only width; issue
+/// 18), built from its construction as examples/size_breakwater.toml (docs/design.md, the
+/// spring-count table), with the design example's storms, shortened: 6 lives of 5 years, storm
+/// peaks of 1 h.
+const TALL: &str = r#"
+[caisson]
+width_m = 13.6
+length_m = 1.0
+unit_length_m = 20.0
+height_m = 34.0
+base_depth_m = 27.5
+wall_thickness_m = 0.5
+slab_thickness_m = 0.8
+partition_thickness_m = 0.2
+cells_across = 4
+cells_along = 4
+cap_height_m = 2.0
+[foundation]
+springs = 10
+mu_static = 0.6
+e100_kpa = 3.5e5
+poisson = 0.33
+density_kg_per_m3 = 2000
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 30.0
+depth_at_wall_m = 26.5
+seabed_slope = 0.01
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.8
+[solver]
+dt_s = 1e-3
+dt_max_s = 0.2
+error_tolerance_m = 1e-6
+[design]
+life_years = 5
+lives = 6
+seed = 1
+storm_distribution = "weibull"
+storm_scale_m = 1.2
+storm_shape = 1.4
+storm_location_m = 4.5
+storm_duration_h = 1.0
+tidal_range_m = 2.0
+"#;
+
+/// A caisson that Goda's check says overturns under its design wave (overturning safety factor
+/// below 1 under H_max = 1.8 H1/3 = 13.5 m) fails by rotation in the lifetime run: lives end at
+/// the wave that rotates it beyond 0.01 rad. The same lives run to their end (`failure: None`)
+/// show what ending saves: a life that does not fail is the same to the bit, a failed one
+/// simulates fewer waves than its continued twin (unless it failed at its last simulated wave),
+/// and in all fewer; the rigid block runs the whole life either way (the same slide, to the
+/// bit), and the waves counted are the same.
+#[test]
+fn a_caisson_that_overturns_under_its_design_wave_fails_by_rotation() {
+    let sc = scenario(TALL);
+    let d = sc.design.clone().unwrap();
+    let w = sc.waves.as_ref().unwrap();
+    let c = &sc.structure().caisson;
+    let loads = w.model.evaluate_with(13.5, 12.8, w.model.options.regime).unwrap();
+    let sf = w.model.safety(&loads, c.weight_in_water_n, sc.structure().foundation.mu_static);
+    let overturning = sf.overturning.unwrap();
+    assert!(overturning < 1.0, "the premise: Goda's overturning safety factor under H_max is {overturning}");
+    let limits = d.failure_limits(c.width_m);
+    assert_eq!(limits.rotation_rad, 0.01);
+    let st = sc.storm_case(true).unwrap();
+    assert_eq!(st.failure, Some(limits), "a design run's lives end at failure by default");
+    let all: Vec<usize> = (0..d.lives).collect();
+    let run = |st: &StormCase<'_>| run_lives(st, &d.life, d.seed, &all, &|_, _| ControlFlow::Continue(())).unwrap();
+    let (ended, continued) = (run(&st), run(&StormCase { failure: None, ..st }));
+    let mut by_rotation = 0;
+    for ((_, e), (_, c)) in ended.iter().zip(&continued) {
+        if e.failed(&limits) {
+            by_rotation += usize::from(e.failed_by_rotation(&limits));
+            assert!(e.simulated_waves <= c.simulated_waves, "{e:?} vs {c:?}");
+            assert_eq!((e.waves, e.simulated_waves + e.screened_waves), (c.waves, c.waves), "{e:?} vs {c:?}");
+            assert_eq!(e.rigid_block_sliding_m, c.rigid_block_sliding_m, "the rigid block runs on");
+            assert!(c.failed(&limits), "the continued life failed too: {c:?}");
+        } else {
+            assert_eq!(e, c, "a life that does not fail does not depend on where lives end");
+        }
+    }
+    assert!(by_rotation >= 1, "no life of the overturning caisson failed by rotation: {ended:?}");
+    let simulated = |l: &[(usize, StormOutcome)]| l.iter().map(|(_, o)| o.simulated_waves).sum::<u64>();
+    assert!(simulated(&ended) < simulated(&continued), "ending lives at failure simulates fewer waves");
+}
+
+/// A light caisson whose lives mostly fail (limit 5 cm): the headline E|S| puts each failed life
+/// at the limit, so it never exceeds it, while the uncapped mean of lives run to their end (the
+/// literature's, `continue_after_failure`) does. Both by hand from the lives, to 1e-12 relative.
+#[test]
+fn the_capped_expected_sliding_stays_below_the_failure_limit_where_the_uncapped_one_does_not() {
+    use caisson::report::design::DesignReport;
+    let text = DESIGN
+        .replace("weight_in_water_kn = 4500.0", "weight_in_water_kn = 3000.0")
+        .replace("tidal_range_m = 2.0", "tidal_range_m = 2.0\nfailure_sliding_m = 0.05\ncontinue_after_failure = true");
+    let sc = scenario(&text);
+    let d = sc.design.clone().unwrap();
+    assert!(d.continue_after_failure);
+    let st = sc.storm_case(true).unwrap();
+    assert_eq!(st.failure, None, "continue_after_failure runs every life to its end");
+    let limits = d.failure_limits(sc.structure().caisson.width_m);
+    let all: Vec<usize> = (0..d.lives).collect();
+    let lives: Vec<StormOutcome> = run_lives(&st, &d.life, d.seed, &all, &|_, _| ControlFlow::Continue(()))
+        .unwrap()
+        .into_iter()
+        .map(|(_, o)| o)
+        .collect();
+    let r = DesignReport::new(&d, st.rigid_block_mu, limits.sliding_m, &lives);
+    let s = &r.dynamic.sliding;
+    let n = lives.len() as f64;
+    let capped: f64 =
+        lives.iter().map(|l| if l.failed(&limits) { limits.sliding_m } else { l.sliding_m.abs() }).sum::<f64>() / n;
+    let uncapped: f64 = lives.iter().map(|l| l.sliding_m.abs()).sum::<f64>() / n;
+    assert!(s.failure.lives >= 2, "{} of {n} lives failed", s.failure.lives);
+    assert!((s.expected_sliding_m - capped).abs() <= 1e-12 * capped, "{} vs {capped}", s.expected_sliding_m);
+    assert!((s.expected_sliding_uncapped_m - uncapped).abs() <= 1e-12 * uncapped);
+    assert!(s.expected_sliding_m <= limits.sliding_m, "capped E|S| {} m", s.expected_sliding_m);
+    assert!(s.percentiles_m.p99 <= limits.sliding_m);
+    assert!(
+        s.expected_sliding_uncapped_m > limits.sliding_m,
+        "the uncapped E|S| {} m must exceed the limit for the test to show anything",
+        s.expected_sliding_uncapped_m
+    );
+    assert!(!r.lives_end_at_failure);
 }

@@ -7,6 +7,7 @@
 
 mod support;
 
+use caisson::analysis::checks::LifeCounts;
 use caisson::analysis::closed_form::rigid_block_sliding_m;
 use caisson::analysis::run::run;
 use caisson::analysis::sizing::{size, Candidate, Criteria, ModelPoint, Required, SizeParams};
@@ -75,8 +76,8 @@ fn point(s: f64) -> ModelPoint {
         expected_sliding_se_m: 0.0,
         p50_m: s,
         p95_m: s,
-        exceedance_probability: 0.0,
-        failure_probability: 0.0,
+        expected_sliding_uncapped_m: s,
+        ..ModelPoint::default()
     }
 }
 
@@ -114,6 +115,7 @@ fn sizing_through_the_engine_returns_the_closed_form_width() {
                 lives: 1,
                 dynamic: point(s),
                 rigid_block: point(exact_m(b)),
+                life_counts: LifeCounts::default(),
             })
         })
         .unwrap();

@@ -247,7 +247,8 @@ fn rocking_without_slip_and_beyond_failure_are_flagged() {
 #[test]
 fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
     use caisson::analysis::checks::{life_warnings, storm_warnings};
-    use caisson::analysis::lifetime::StormOutcome;
+    use caisson::analysis::lifetime::{FailureLimits, StormOutcome};
+    let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01 };
     let sc = example("design_breakwater.toml");
     let s = sc.structure();
     let b = 20.0;
@@ -260,15 +261,21 @@ fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
         max_storm_sliding_m,
         ..StormOutcome::default()
     };
-    let beyond = |lives: &[StormOutcome]| codes(&life_warnings(lives, 5.0, b)).contains(&"sliding-beyond-width");
+    let beyond = |lives: &[StormOutcome]| codes(&life_warnings(lives, &limits, b)).contains(&"sliding-beyond-width");
     // The mean |S| (52 km, the finding) beyond B; within B, not, even with a storm beyond it.
     assert!(beyond(&[life(52_288.0, 3_000.0)]));
     assert!(beyond(&[life(0.0, 0.0), life(-41.0, 10.0)]), "a mean |S| of 20.5 m");
     assert!(!beyond(&[life(40.0, 105.0), life(0.0, 0.0)]), "a mean |S| of 20 m");
     assert!(!beyond(&[life(19.9, 19.9), life(-19.9, 19.9)]));
-    let w = life_warnings(&[life(52_288.0, 3_000.0)], 5.0, b);
+    let w = life_warnings(&[life(52_288.0, 3_000.0)], &limits, b);
     let m = &w.iter().find(|w| w.code == "sliding-beyond-width").unwrap().message;
     assert!(m.contains("2614.4 times the base width") && m.contains("weight_in_water_kn"), "{m}");
+    // A life that ended at failure after 6 m, whose rigid block ran the whole life on to 900 m
+    // (a flooded shell): the rigid block's mean tells.
+    let ended = StormOutcome { rigid_block_sliding_m: 900.0, ..life(6.0, 6.0) };
+    let w = life_warnings(&[ended, life(0.0, 0.0)], &limits, b);
+    let m = &w.iter().find(|w| w.code == "sliding-beyond-width").expect("the rigid block's 450 m").message;
+    assert!(m.contains("450.0000 m on average (E|S| of the rigid block over the whole lives"), "{m}");
     let storms = [life(25.0, 25.0), life(1.0, 1.0), life(-0.5, 0.5)];
     let w = storm_warnings(storms.iter(), b);
     assert_eq!(codes(&w), ["sliding-beyond-width"]);

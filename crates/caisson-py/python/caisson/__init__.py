@@ -479,7 +479,8 @@ class Design:
         life, sorted by ``life``, with the columns of ``lives.csv`` (docs/design.md): ``sliding_m``
         (net, shoreward +), ``shoreward_sliding_m``, ``seaward_sliding_m``, ``max_excursion_m``,
         ``rigid_block_sliding_m``, ``max_storm_sliding_m`` in m; ``waves``, ``simulated_waves``,
-        ``screened_waves``, ``rocking_waves``, ``large_rotation_waves``. Raises
+        ``screened_waves``, ``rocking_waves``, ``large_rotation_waves``; ``max_rotation_rad`` in
+        rad. A life ends at the wave that fails it (docs/design.md, "Failure"). Raises
         :class:`ScenarioError` if the lives asked for are over the work budget (:meth:`estimate`):
         ask for fewer at a time."""
         idx = list(range(self._lives)) if indices is None else [int(i) for i in indices]
@@ -510,14 +511,14 @@ class Design:
         cols = {}
         for c in need:
             v = frame[c].to_numpy()
-            metres = c.endswith("_m")
-            allowed = "must be a finite number (m)" if metres else "must be a whole number ≥ 0"
-            if metres or v.dtype.kind not in "iu":
+            real = c.endswith(("_m", "_rad"))  # lengths and rotations; the rest are counts
+            allowed = f"must be a finite number ({c.rsplit('_', 1)[1]})" if real else "must be a whole number ≥ 0"
+            if real or v.dtype.kind not in "iu":
                 try:
                     v = v.astype(np.float64)
                 except (TypeError, ValueError):
                     raise ValueError(f"column {c!r} holds {v.dtype} values: {allowed}") from None
-            if metres:
+            if real:
                 bad = ~np.isfinite(v)
             else:
                 bad = v < 0 if v.dtype.kind in "iu" else ~((v >= 0) & (v == np.floor(v)) & np.isfinite(v))
@@ -529,7 +530,7 @@ class Design:
             dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
             raise ValueError(f"life {dup} appears more than once")
         order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
-        cols = {c: (v[order].astype(np.float64) if c.endswith("_m") else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
+        cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
         return json.loads(_core.design_statistics(self._scenario._core, cols))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
@@ -555,7 +556,8 @@ def _restore_design(scenario: Scenario, lives: int) -> Design:
 class FragilityResult:
     """The results of :meth:`Fragility.run`: ``summary`` (``fragility.json``), ``levels`` (one row
     per height), ``storms`` (one row per storm: ``level``, ``significant_height_m``, ``storm``,
-    ``sliding_m``, ``rigid_block_sliding_m``) and ``fits`` (one row per limit and model)."""
+    ``sliding_m``, ``rigid_block_sliding_m``, ``max_rotation_rad``) and ``fits`` (one row per
+    limit and model)."""
 
     summary: dict
     levels: pd.DataFrame
@@ -584,13 +586,16 @@ class Fragility:
         name = Path(self._scenario.path).name or "fragility"
         s = json.loads(_core.fragility(self._scenario._core, name, threads, progress))
         levels = pd.DataFrame(
-            [{k: v for k, v in lv.items() if k not in ("exceedance", "storm_sliding_m", "storm_rigid_block_sliding_m")} for lv in s["levels"]]
+            [
+                {k: v for k, v in lv.items() if k not in ("exceedance", "storm_sliding_m", "storm_rigid_block_sliding_m", "storm_max_rotation_rad")}
+                for lv in s["levels"]
+            ]
         )
         storms = pd.DataFrame(
             [
-                {"level": i, "significant_height_m": lv["significant_height_m"], "storm": j, "sliding_m": a, "rigid_block_sliding_m": b}
+                {"level": i, "significant_height_m": lv["significant_height_m"], "storm": j, "sliding_m": a, "rigid_block_sliding_m": b, "max_rotation_rad": r}
                 for i, lv in enumerate(s["levels"])
-                for j, (a, b) in enumerate(zip(lv["storm_sliding_m"], lv["storm_rigid_block_sliding_m"]))
+                for j, (a, b, r) in enumerate(zip(lv["storm_sliding_m"], lv["storm_rigid_block_sliding_m"], lv["storm_max_rotation_rad"]))
             ]
         )
         fits = pd.DataFrame(

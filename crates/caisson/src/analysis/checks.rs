@@ -16,14 +16,15 @@
 //! | `rocking-without-slip` | a displacement above 1 µm with no slip event | it comes from rocking: lifted springs re-contact at a displaced base |
 //! | `rocking` | rotation above 0.01 rad | the seaward heel lifts by θB/2; beyond small rotations the model's kinematics and foundation do not hold, and the landing can slide the caisson seaward (docs/design.md) |
 //! | `beyond-failure` | \|sliding\| above 0.25 B | a quarter of the base has left the bedding the model describes |
-//! | `sliding-beyond-width` | \|sliding\| above B (a run, a realization; a design's expected sliding E\|S\|; a fragility storm) | a caisson cannot slide beyond its mound: the model is far outside its validity and the number is no prediction (the design example at W' = 500 kN slid 52 km in a life); usually an input error (the weight, the loads) |
+//! | `sliding-beyond-width` | \|sliding\| above B (a run, a realization; a design's E\|S\| as simulated; a fragility storm) | a caisson cannot slide beyond its mound: the model is far outside its validity and the number is no prediction (the design example at W' = 500 kN slid 52 km in a life); usually an input error (the weight, the loads) |
 //! | `overturning-under-design-wave` | Goda's overturning safety factor under the design wave below 1 ([`super::conventional`]) | the caisson would tip about its heel, which the dynamic model (small rotations, an elastic foundation) does not follow |
-//! | `failed-lives` | a design life moved beyond `failure_sliding_m` | its sliding after failure lies outside the model's validity: read P(failure) and the surviving lives' statistics |
+//! | `failed-lives` | a design life (or a sizing candidate's) moved beyond `failure_sliding_m` or rotated beyond `failure_rotation_rad` | what the model computes after failure lies outside its validity: a failed life enters E\|S\| at the sliding limit; read P(failure) and the surviving lives' statistics |
 //! | `large-rotation-lives` | a wave of a design life rotated the caisson beyond 0.01 rad | as `rocking`: the model does not follow overturning |
 //! | `seaward-lives` | a design life ends more than 1 cm seaward of its place | rocking landings, not the wave's push, moved it (docs/design.md) |
 
-use super::lifetime::StormOutcome;
+use super::lifetime::{FailureLimits, StormOutcome};
 use super::run::RunSummary;
+use super::sizing::Candidate;
 use super::train::WaveSetup;
 use super::Structure;
 use crate::dynamics::Stepping;
@@ -336,67 +337,135 @@ pub fn response_warnings(s: &Structure, r: &Response) -> Vec<Warning> {
 /// Seaward end positions below this are reported (`seaward-lives`), m.
 pub const SEAWARD_REPORT_M: f64 = 0.01;
 
-/// Checks of a design run's lives with the failure limit `failure_limit_m`, of a caisson of base
-/// width `width_m`.
-pub fn life_warnings(lives: &[StormOutcome], failure_limit_m: f64, width_m: f64) -> Vec<Warning> {
+/// What the life warnings need of a model's lives: a design run's lives reduce to it, and a
+/// sizing candidate keeps it ([`super::sizing::Candidate::life_counts`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct LifeCounts {
+    pub lives: usize,
+    /// Lives that failed (either mode), by sliding and by rotation (a life may count in both).
+    pub failed_lives: usize,
+    pub failed_by_sliding_lives: usize,
+    pub failed_by_rotation_lives: usize,
+    /// Lives with a wave that rotated the caisson beyond [`ROCKING_LIMIT_RAD`].
+    pub large_rotation_lives: usize,
+    /// Lives that ended more than [`SEAWARD_REPORT_M`] seaward of their place.
+    pub seaward_lives: usize,
+    /// The largest of those seaward distances, m (0 without such lives).
+    pub largest_seaward_sliding_m: f64,
+    /// E|S| of the lives as simulated (not capped at the failure limit), m.
+    pub expected_sliding_uncapped_m: f64,
+    /// E|S| of the rigid block (over the whole lives: it runs on after the dynamic model's
+    /// failure), m.
+    pub rigid_block_expected_sliding_m: f64,
+    /// The largest net sliding of a single storm, m.
+    pub max_storm_sliding_m: f64,
+}
+
+impl LifeCounts {
+    /// The counts of `lives` with the failure limits `failure`.
+    pub fn of(lives: &[StormOutcome], failure: &FailureLimits) -> Self {
+        let count = |f: &dyn Fn(&StormOutcome) -> bool| lives.iter().filter(|l| f(l)).count();
+        let seaward = |l: &StormOutcome| l.sliding_m < -SEAWARD_REPORT_M;
+        LifeCounts {
+            lives: lives.len(),
+            failed_lives: count(&|l| l.failed(failure)),
+            failed_by_sliding_lives: count(&|l| l.failed_by_sliding(failure)),
+            failed_by_rotation_lives: count(&|l| l.failed_by_rotation(failure)),
+            large_rotation_lives: count(&|l| l.large_rotation_waves > 0),
+            seaward_lives: count(&seaward),
+            largest_seaward_sliding_m: lives.iter().filter(|l| seaward(l)).map(|l| -l.sliding_m).fold(0.0, f64::max),
+            expected_sliding_uncapped_m: lives.iter().map(|l| l.sliding_m.abs()).sum::<f64>()
+                / lives.len().max(1) as f64,
+            rigid_block_expected_sliding_m: lives.iter().map(|l| l.rigid_block_sliding_m.abs()).sum::<f64>()
+                / lives.len().max(1) as f64,
+            max_storm_sliding_m: lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max),
+        }
+    }
+}
+
+/// Checks of a design run's lives with the failure limits `failure`, of a caisson of base width
+/// `width_m`.
+pub fn life_warnings(lives: &[StormOutcome], failure: &FailureLimits, width_m: f64) -> Vec<Warning> {
+    counts_warnings(&LifeCounts::of(lives, failure), failure, width_m)
+}
+
+/// [`life_warnings`] of a sizing candidate (the dynamic model's lives at its width), from the
+/// counts it keeps; `failure`: the limits at its width.
+pub fn candidate_warnings(c: &Candidate, failure: &FailureLimits) -> Vec<Warning> {
+    counts_warnings(&c.life_counts, failure, c.width_m)
+}
+
+/// The life warnings of `c` (module docs).
+pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) -> Vec<Warning> {
     let mut out = Vec::new();
-    let n = lives.len() as f64;
-    let mean = lives.iter().map(|l| l.sliding_m.abs()).sum::<f64>() / n.max(1.0);
-    let storm = lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max);
+    let n = c.lives as f64;
+    let storm = c.max_storm_sliding_m;
     let b = width_m;
     // The statistics themselves beyond the width (a life or a storm alone beyond it is a failed
-    // life, `failed-lives`: rare extreme storms do that to sound designs, e.g. one storm of 105 m
-    // in the 5000 lives of the design example).
+    // life, `failed-lives`: rare extreme storms do that to sound designs). The dynamic model's
+    // lives end at failure, the rigid block's run on: the larger mean tells.
+    let (mean, which) = if c.rigid_block_expected_sliding_m > c.expected_sliding_uncapped_m {
+        (c.rigid_block_expected_sliding_m, "of the rigid block over the whole lives")
+    } else {
+        (c.expected_sliding_uncapped_m, "of the dynamic model as simulated")
+    };
     if mean > ABSURD_SLIDING_OVER_WIDTH * b {
         out.push(Warning::new(
             "sliding-beyond-width",
             format!(
-                "the lives slid {mean:.4} m on average (E|S|, {:.1} times the base width B = {b} m) and a single storm slid the caisson up to {storm:.4} m ({:.1} B): {BEYOND_WIDTH}",
+                "the lives slid {mean:.4} m on average (E|S| {which}, {:.1} times the base width B = {b} m) and a single storm slid the caisson up to {storm:.4} m ({:.1} B): {BEYOND_WIDTH}",
                 mean / b,
                 storm / b
             ),
-            &[("expected_sliding_m", mean), ("max_storm_sliding_m", storm), ("width_m", b)],
-        ));
-    }
-    let failed = lives.iter().filter(|l| l.failed(failure_limit_m)).count();
-    if failed > 0 {
-        out.push(Warning::new(
-            "failed-lives",
-            format!(
-                "{failed} of {} lives failed: they moved the caisson more than {failure_limit_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width); what the model computes after that is outside its validity, so read the failure probability and the statistics of the surviving lives",
-                lives.len()
-            ),
             &[
-                ("failed_lives", failed as f64),
-                ("lives", n),
-                ("failure_probability", failed as f64 / n),
-                ("failure_sliding_m", failure_limit_m),
+                ("expected_sliding_uncapped_m", c.expected_sliding_uncapped_m),
+                ("rigid_block_expected_sliding_m", c.rigid_block_expected_sliding_m),
+                ("max_storm_sliding_m", storm),
+                ("width_m", b),
             ],
         ));
     }
-    let rotated = lives.iter().filter(|l| l.large_rotation_waves > 0).count();
-    if rotated > 0 {
+    let (sliding_m, rotation_rad) = (failure.sliding_m, failure.rotation_rad);
+    if c.failed_lives > 0 {
+        out.push(Warning::new(
+            "failed-lives",
+            format!(
+                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width) and {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad); what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit: read the failure probability and the statistics of the surviving lives",
+                c.failed_lives, c.lives, c.failed_by_sliding_lives, c.failed_by_rotation_lives
+            ),
+            &[
+                ("failed_lives", c.failed_lives as f64),
+                ("failed_by_sliding_lives", c.failed_by_sliding_lives as f64),
+                ("failed_by_rotation_lives", c.failed_by_rotation_lives as f64),
+                ("lives", n),
+                ("failure_probability", c.failed_lives as f64 / n.max(1.0)),
+                ("failure_sliding_m", sliding_m),
+                ("failure_rotation_rad", rotation_rad),
+            ],
+        ));
+    }
+    if c.large_rotation_lives > 0 {
         out.push(Warning::new(
             "large-rotation-lives",
             format!(
-                "in {rotated} of {} lives a wave rotated the caisson beyond {ROCKING_LIMIT_RAD} rad (the seaward heel lifts by θB/2): the model does not follow overturning (large rotations, the bearing capacity of the mound under the heel), so check overturning and the mound for these waves otherwise (docs/design.md)",
-                lives.len()
+                "in {} of {} lives a wave rotated the caisson beyond {ROCKING_LIMIT_RAD} rad (the seaward heel lifts by θB/2): the model does not follow overturning (large rotations, the bearing capacity of the mound under the heel), so check overturning and the mound for these waves otherwise (docs/design.md)",
+                c.large_rotation_lives, c.lives
             ),
-            &[("large_rotation_lives", rotated as f64), ("lives", n), ("rotation_limit_rad", ROCKING_LIMIT_RAD)],
+            &[("large_rotation_lives", c.large_rotation_lives as f64), ("lives", n), ("rotation_limit_rad", ROCKING_LIMIT_RAD)],
         ));
     }
-    let seaward: Vec<f64> = lives.iter().map(|l| l.sliding_m).filter(|&s| s < -SEAWARD_REPORT_M).collect();
-    if !seaward.is_empty() {
-        let worst = seaward.iter().copied().fold(0.0, f64::min);
+    if c.seaward_lives > 0 {
         out.push(Warning::new(
             "seaward-lives",
             format!(
                 "{} of {} lives ended seaward of their place (up to {:.3} m): the wave pushes shoreward, so these displacements come from the caisson rocking and landing (docs/design.md); the statistics use the magnitude |S|",
-                seaward.len(),
-                lives.len(),
-                -worst
+                c.seaward_lives, c.lives, c.largest_seaward_sliding_m
             ),
-            &[("seaward_lives", seaward.len() as f64), ("lives", n), ("largest_seaward_sliding_m", -worst)],
+            &[
+                ("seaward_lives", c.seaward_lives as f64),
+                ("lives", n),
+                ("largest_seaward_sliding_m", c.largest_seaward_sliding_m),
+            ],
         ));
     }
     out

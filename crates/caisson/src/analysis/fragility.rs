@@ -32,7 +32,12 @@
 //! **Counts.** k_i(s) = #{storms at H_i with |S| > s} (strictly greater), S the storm's net
 //! sliding (shoreward +; a rocking caisson can end a storm seaward, docs/design.md), for the
 //! dynamic model and for the rigid block (Shimosako model; S ≥ 0) separately; P̂_i = k_i / n_i.
-//! The mean and largest storm sliding of a level are of |S| too.
+//! The mean and largest storm sliding of a level are of |S| too. A storm in which a wave rotated
+//! the caisson beyond `[fragility] failure_rotation_rad` (default 0.01 rad, as `[design]
+//! failure_rotation_rad`: beyond it the model's kinematics and foundation do not hold,
+//! docs/design.md) counts as exceeding every limit of the dynamic model, whatever its sliding;
+//! their number is reported per height (`rotation_failures`). Storms run whole (a design life
+//! ends at failure; a fragility storm is counted, and the rigid block keeps its full storm).
 //!
 //! **Lognormal fit** (docs/model.md §7 step 4): P(S > s | IM) = Φ((ln IM − ln θ)/β), θ the median
 //! capacity (m of H1/3) and β the log-standard deviation, by maximum likelihood on the binomial
@@ -326,6 +331,9 @@ pub struct FragilityParams {
     /// T1/3 of every wave, s.
     pub period_s: f64,
     pub seed: u64,
+    /// A storm that rotates the caisson beyond this counts as exceeding every limit (module
+    /// docs, "Counts"), rad.
+    pub failure_rotation_rad: f64,
 }
 
 impl FragilityParams {
@@ -361,18 +369,23 @@ pub struct LevelResult {
     pub dynamic_exceedances: Vec<u64>,
     /// Storms with rigid-block sliding > each limit.
     pub rigid_block_exceedances: Vec<u64>,
+    /// Storms that rotated the caisson beyond the rotation limit (counted in every
+    /// `dynamic_exceedances`).
+    pub rotation_failures: u64,
 }
 
 impl LevelResult {
-    fn new(h13_m: f64, storms: Vec<StormOutcome>, limits_m: &[f64]) -> Self {
-        let count = |f: fn(&StormOutcome) -> f64| {
-            limits_m.iter().map(|&s| storms.iter().filter(|o| f(o) > s).count() as u64).collect()
+    fn new(h13_m: f64, storms: Vec<StormOutcome>, limits_m: &[f64], rotation_rad: f64) -> Self {
+        let rotated = |o: &StormOutcome| o.max_rotation_rad > rotation_rad;
+        let count = |exceeds: &dyn Fn(&StormOutcome, f64) -> bool| {
+            limits_m.iter().map(|&s| storms.iter().filter(|o| exceeds(o, s)).count() as u64).collect()
         };
         LevelResult {
             h13_m,
             hmax_m: HMAX_RATIO * h13_m,
-            dynamic_exceedances: count(|o| o.sliding_m.abs()),
-            rigid_block_exceedances: count(|o| o.rigid_block_sliding_m),
+            dynamic_exceedances: count(&|o, s| rotated(o) || o.sliding_m.abs() > s),
+            rigid_block_exceedances: count(&|o, s| o.rigid_block_sliding_m > s),
+            rotation_failures: storms.iter().filter(|o| rotated(o)).count() as u64,
             storms,
         }
     }
@@ -432,6 +445,9 @@ pub fn run_fragility(
     progress: Progress<'_>,
 ) -> Result<FragilityResult, StormFailed> {
     let storms = p.storms;
+    // Storms run whole (a rotation beyond the limit is counted, not stopped at): the rigid
+    // block's counts stay those of the full storm.
+    let st = &StormCase { failure: None, ..*st };
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
         .map(|job| {
@@ -451,7 +467,7 @@ pub fn run_fragility(
         .heights_m
         .iter()
         .zip(outcomes.chunks(storms.max(1)))
-        .map(|(&h, o)| LevelResult::new(h, o.to_vec(), &p.limits_m))
+        .map(|(&h, o)| LevelResult::new(h, o.to_vec(), &p.limits_m, p.failure_rotation_rad))
         .collect();
     Ok(FragilityResult { fits: fit_levels(&levels, &p.limits_m), levels })
 }
@@ -656,6 +672,7 @@ mod tests {
             storm_duration_s: 7200.0,
             period_s: 11.0,
             seed: 1,
+            failure_rotation_rad: 0.01,
         };
         let s = p.storm_input(4.0);
         assert_eq!(
@@ -671,10 +688,20 @@ mod tests {
             screened_waves: 4,
             ..StormOutcome::default()
         });
-        let l = LevelResult::new(2.0, storms.to_vec(), &[0.05, 0.1, 0.3]);
+        let l = LevelResult::new(2.0, storms.to_vec(), &[0.05, 0.1, 0.3], 0.01);
         assert_eq!(l.dynamic_exceedances, vec![2, 1, 0]);
         assert_eq!(l.rigid_block_exceedances, vec![3, 2, 1]);
+        assert_eq!(l.rotation_failures, 0);
         assert!((l.mean_sliding_m() - 0.35 / 3.0).abs() < 1e-15);
         assert!((l.screened_share() - 0.4).abs() < 1e-15);
+        // The first storm rotated 0.02 rad: it exceeds every limit of the dynamic model (not the
+        // rigid block's); at the limit itself it does not count.
+        let mut rotated = storms;
+        rotated[0].max_rotation_rad = 0.02;
+        rotated[1].max_rotation_rad = 0.01;
+        let l = LevelResult::new(2.0, rotated.to_vec(), &[0.05, 0.1, 0.3], 0.01);
+        assert_eq!(l.dynamic_exceedances, vec![3, 2, 1]);
+        assert_eq!(l.rigid_block_exceedances, vec![3, 2, 1]);
+        assert_eq!(l.rotation_failures, 1);
     }
 }

@@ -67,6 +67,20 @@
 //! and tested ([`WaveDraws::EveryWave`]); the numbers differ within sampling noise (`tests/lifetime.rs`
 //! holds the design example's statistics of both drawings within a few standard errors).
 //!
+//! **Failure** ([`FailureLimits`], docs/design.md "Failure"). A life fails when the caisson's
+//! distance from its place exceeds the sliding limit (`[design] failure_sliding_m`, default B/4)
+//! or a wave rotates it beyond the rotation limit (`[design] failure_rotation_rad`, default
+//! 0.01 rad, beyond which the model's small-rotation kinematics and its foundation under the heel
+//! do not hold). With [`StormCase::failure`] given (the default of a design run) a life ends at
+//! the wave that fails it: the dynamic model runs no further wave of that storm or the later
+//! ones (counted as screened: not run through it), and its outputs stay as they were at the
+//! failure. The rigid block reference runs the whole life on (its loads only, no dynamic
+//! model), so its statistics do not depend on where the dynamic model failed. The headline
+//! statistics ([`capped_statistics`]) put a failed life at the sliding limit; the means of the
+//! simulated values (`expected_sliding_uncapped_m`) are those of lives that stop at failure,
+//! unless `[design] continue_after_failure = true` runs every life to its end (as the
+//! expected-sliding literature does: Shimosako & Takahashi 1999; Goda & Takagi 2000).
+//!
 //! **Random numbers**: one ChaCha8 stream per life (seed, stream = life index); per storm in
 //! order: U for H0, four truncated normals for the errors, U for the tide phase. The waves of
 //! storm y (counting from 0) come from the same stream at word (y + 1) · 2^40
@@ -193,6 +207,19 @@ pub struct StormCase<'a> {
     /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
     /// wave is drawn and simulated.
     pub draws: WaveDraws,
+    /// Where a life ends (module docs, "Failure"): after the wave that moves the caisson beyond
+    /// the sliding limit or rotates it beyond the rotation limit; `None`: lives run to their end.
+    pub failure: Option<FailureLimits>,
+}
+
+/// When a life (or a storm) has failed: its distance from its place exceeded `sliding_m` or a
+/// wave rotated the caisson beyond `rotation_rad` (docs/design.md, "Failure").
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct FailureLimits {
+    /// `[design] failure_sliding_m` (default [`FAILURE_FRACTION_OF_WIDTH`] of the base width), m.
+    pub sliding_m: f64,
+    /// `[design] failure_rotation_rad` (default [`ROCKING_LIMIT_RAD`]), rad.
+    pub rotation_rad: f64,
 }
 
 /// How a screened storm draws its waves (module docs, "Drawing").
@@ -253,7 +280,8 @@ pub struct StormOutcome {
     pub waves: u64,
     /// Waves run through the dynamic model.
     pub simulated_waves: u64,
-    /// Waves skipped by the screen.
+    /// Waves skipped by the screen (and those after the wave that failed a life, which are not
+    /// run either).
     pub screened_waves: u64,
     /// Simulated waves during which part of the base lifted off (a spring out of contact).
     pub rocking_waves: u64,
@@ -261,6 +289,9 @@ pub struct StormOutcome {
     /// not follow overturning itself (large rotations, the mound's bearing capacity under the
     /// heel), so a life with such a wave is outside its validity (docs/design.md).
     pub large_rotation_waves: u64,
+    /// The largest rotation |θ| of the caisson during any simulated wave, rad. A life fails when
+    /// it exceeds the rotation limit ([`FailureLimits`]).
+    pub max_rotation_rad: f64,
 }
 
 /// One column of a life's outcome: its value as metres or as a count.
@@ -268,11 +299,12 @@ pub struct StormOutcome {
 pub enum LifeColumn {
     Metres(fn(&StormOutcome) -> f64),
     Count(fn(&StormOutcome) -> u64),
+    Radians(fn(&StormOutcome) -> f64),
 }
 
 /// The columns of a life's outcome (after `life`) in `lives.csv` and the Python `DataFrame`,
 /// named as the [`StormOutcome`] fields.
-pub const LIFE_COLUMNS: [(&str, LifeColumn); 11] = [
+pub const LIFE_COLUMNS: [(&str, LifeColumn); 12] = [
     ("sliding_m", LifeColumn::Metres(|o| o.sliding_m)),
     ("shoreward_sliding_m", LifeColumn::Metres(|o| o.shoreward_sliding_m)),
     ("seaward_sliding_m", LifeColumn::Metres(|o| o.seaward_sliding_m)),
@@ -284,6 +316,7 @@ pub const LIFE_COLUMNS: [(&str, LifeColumn); 11] = [
     ("screened_waves", LifeColumn::Count(|o| o.screened_waves)),
     ("rocking_waves", LifeColumn::Count(|o| o.rocking_waves)),
     ("large_rotation_waves", LifeColumn::Count(|o| o.large_rotation_waves)),
+    ("max_rotation_rad", LifeColumn::Radians(|o| o.max_rotation_rad)),
 ];
 
 impl StormOutcome {
@@ -302,12 +335,24 @@ impl StormOutcome {
         self.screened_waves += o.screened_waves;
         self.rocking_waves += o.rocking_waves;
         self.large_rotation_waves += o.large_rotation_waves;
+        self.max_rotation_rad = self.max_rotation_rad.max(o.max_rotation_rad);
     }
 
-    /// Whether the life (or storm) failed: it moved the caisson beyond `limit_m` from its place
-    /// at some time.
-    pub fn failed(&self, limit_m: f64) -> bool {
-        self.max_excursion_m > limit_m
+    /// Whether the life (or storm) failed by sliding: it moved the caisson beyond the sliding
+    /// limit from its place at some time.
+    pub fn failed_by_sliding(&self, f: &FailureLimits) -> bool {
+        self.max_excursion_m > f.sliding_m
+    }
+
+    /// Whether the life (or storm) failed by rotation: a wave rotated the caisson beyond the
+    /// rotation limit.
+    pub fn failed_by_rotation(&self, f: &FailureLimits) -> bool {
+        self.max_rotation_rad > f.rotation_rad
+    }
+
+    /// Whether the life (or storm) failed, by either mode.
+    pub fn failed(&self, f: &FailureLimits) -> bool {
+        self.failed_by_sliding(f) || self.failed_by_rotation(f)
     }
 }
 
@@ -387,7 +432,7 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, 0.0, &mut StormScratch::default())
+    storm_from(st, s, rng, 0.0, false, &mut StormScratch::default())
 }
 
 /// A storm that cannot be simulated.
@@ -402,12 +447,14 @@ pub enum StormError {
 }
 
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
-/// (for the life's largest excursion).
+/// (for the life's largest excursion), `failed`: in a life that has failed already (module
+/// docs, "Failure": only the rigid block runs).
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
     rng: &mut LoadRng,
     start_m: f64,
+    failed: bool,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
     // The site and the caisson at this water level.
@@ -465,6 +512,8 @@ fn storm_from(
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
     let mut sim: Option<Simulation> = None;
     let StormScratch { train, waves } = scratch;
+    // Whether the dynamic model's life has ended at failure (module docs, "Failure").
+    let mut ended = failed;
     // One wave of height h (clamped) and rise-time deviate z through both models.
     let mut run_wave = |h: f64, z: f64, out: &mut StormOutcome| -> Result<(), StormError> {
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
@@ -480,6 +529,11 @@ fn storm_from(
             return Ok(());
         }
         out.rigid_block_sliding_m += block.wave_sliding_m(&event);
+        if ended {
+            // The dynamic model's life has ended at failure: the wave is not run through it.
+            out.screened_waves += 1;
+            return Ok(());
+        }
         train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s: s.period_s, source })?;
         let sim = match sim.as_mut() {
             Some(x) => {
@@ -501,6 +555,8 @@ fn storm_from(
         out.simulated_waves += 1;
         out.rocking_waves += u64::from(watch.lifted);
         out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
+        out.max_rotation_rad = out.max_rotation_rad.max(watch.max_rotation_rad);
+        ended = st.failure.is_some_and(|f| out.failed(&f));
         Ok(())
     };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
@@ -586,7 +642,8 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
         // the next storm's numbers (common random numbers across caissons, docs/size.md).
         let mut waves_rng = rng.clone();
         waves_rng.set_word_pos(((year as u128) + 1) << STORM_WAVE_WORDS_LOG2);
-        let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, &mut scratch)?;
+        let failed = st.failure.is_some_and(|f| life.failed(&f));
+        let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, &mut scratch)?;
         life.add(&o);
     }
     Ok(life)
@@ -605,6 +662,11 @@ pub struct DesignParams {
     /// The failure limit on the caisson's distance from its place, m; `None`:
     /// [`FAILURE_FRACTION_OF_WIDTH`] of the base width ([`Self::failure_limit_m`]).
     pub failure_sliding_m: Option<f64>,
+    /// The failure limit on the caisson's rotation, rad (default [`ROCKING_LIMIT_RAD`]).
+    pub failure_rotation_rad: f64,
+    /// Lives run to their end after failure (the expected-sliding literature's lives; module
+    /// docs, "Failure"), instead of ending at the wave that fails them.
+    pub continue_after_failure: bool,
 }
 
 /// The default failure limit as a fraction of the base width B: a caisson that has slid a
@@ -619,6 +681,16 @@ impl DesignParams {
     /// The failure limit for a caisson of base width `width_m`, m.
     pub fn failure_limit_m(&self, width_m: f64) -> f64 {
         self.failure_sliding_m.unwrap_or(FAILURE_FRACTION_OF_WIDTH * width_m)
+    }
+
+    /// Both failure limits for a caisson of base width `width_m`.
+    pub fn failure_limits(&self, width_m: f64) -> FailureLimits {
+        FailureLimits { sliding_m: self.failure_limit_m(width_m), rotation_rad: self.failure_rotation_rad }
+    }
+
+    /// Where the lives of a caisson of base width `width_m` end ([`StormCase::failure`]).
+    pub fn life_end(&self, width_m: f64) -> Option<FailureLimits> {
+        (!self.continue_after_failure).then(|| self.failure_limits(width_m))
     }
 }
 
@@ -675,6 +747,21 @@ pub struct LifeStatistics {
     pub exceedance: Vec<(f64, f64)>,
 }
 
+/// The headline statistics of a model's lives (module docs, "Failure"): mean, percentiles and
+/// exceedances of the magnitudes |S| with each failed life at the sliding limit `limit_m` (a
+/// surviving life's |S| never exceeds it, so the mean is bounded by it), and a failed life
+/// counted as exceeding every threshold (at and beyond the limit too: P(|S| > s) ≥ P(failure)).
+pub fn capped_statistics(magnitudes: &[f64], failed: &[bool], limit_m: f64, thresholds_m: &[f64]) -> LifeStatistics {
+    let capped: Vec<f64> = magnitudes.iter().zip(failed).map(|(&m, &f)| if f { limit_m } else { m }).collect();
+    let mut s = life_statistics(&capped, &[]);
+    let n = magnitudes.len().max(1) as f64;
+    s.exceedance = thresholds_m
+        .iter()
+        .map(|&t| (t, magnitudes.iter().zip(failed).filter(|(&m, &f)| f || m > t).count() as f64 / n))
+        .collect();
+    s
+}
+
 /// Mean, percentiles (nearest-rank) and exceedance probabilities of `values`.
 pub fn life_statistics(values: &[f64], thresholds_m: &[f64]) -> LifeStatistics {
     let n = values.len();
@@ -706,6 +793,17 @@ mod tests {
             let h = g.quantile_m(p);
             assert!(((-(-(h - 4.0) / 0.8f64).exp()).exp() - p).abs() < 1e-12);
         }
+    }
+
+    /// Limit 1 m; lives |S| 0.1, 0.5 (failed by rotation), 3 (failed by sliding), 0.2: the
+    /// capped values 0.1, 1, 1, 0.2 (mean 0.575); above 2 m only the failed lives exceed.
+    #[test]
+    fn capped_statistics_of_a_sample_by_hand() {
+        let s = capped_statistics(&[0.1, 0.5, 3.0, 0.2], &[false, true, true, false], 1.0, &[0.15, 0.5, 2.0]);
+        assert!((s.mean_m - 0.575).abs() < 1e-15);
+        assert_eq!(s.percentiles_m[1], (50.0, 0.2));
+        assert_eq!(s.percentiles_m[3], (99.0, 1.0));
+        assert_eq!(s.exceedance, vec![(0.15, 0.75), (0.5, 0.5), (2.0, 0.5)]);
     }
 
     #[test]

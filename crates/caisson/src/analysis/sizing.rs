@@ -2,9 +2,13 @@
 //! criterion, found with the lifetime Monte Carlo of [`super::lifetime`] run at candidate widths.
 //!
 //! **Criteria** (any combination; all must hold), on the life's sliding magnitude |S| and the
-//! failure of [`super::lifetime::StormOutcome::failed`]:
+//! failure (by sliding or rotation) of [`super::lifetime::StormOutcome::failed`], with the
+//! statistics of a design run ([`super::lifetime::capped_statistics`]: a failed life at the
+//! sliding limit, and exceeding every threshold):
 //!
-//! * expected sliding E|S| ≤ S_a (Shimosako & Takahashi 1999: 0.3 m; Goda & Takagi 2000: 0.1 m);
+//! * expected sliding E|S| ≤ S_a (Shimosako & Takahashi 1999: 0.3 m; Goda & Takagi 2000: 0.1 m),
+//!   E|S| with each failed life at the failure limit (the literature's uncapped mean is kept
+//!   beside it, `expected_sliding_uncapped_m`);
 //! * P(|S| > S_lim) ≤ p;
 //! * P(failure) ≤ p_f.
 //!
@@ -31,8 +35,9 @@
 //! Φ(margin / SE) of the tightest criterion, the normal-approximation probability that the
 //! criterion is met.
 
+use super::checks::LifeCounts;
 use super::fragility::normal_cdf;
-use super::lifetime::{life_statistics, StormOutcome};
+use super::lifetime::{capped_statistics, life_statistics, FailureLimits, StormOutcome};
 use serde::Serialize;
 
 /// One-sided 95 % normal quantile.
@@ -60,18 +65,24 @@ pub struct ExceedanceCriterion {
 }
 
 /// What sizing needs of one model at one width: the estimates and their standard errors.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, serde::Deserialize)]
 pub struct ModelPoint {
-    /// E|S|, m.
+    /// E|S| with each failed life at the sliding limit, m.
     pub expected_sliding_m: f64,
     /// Its standard error, m.
     pub expected_sliding_se_m: f64,
-    /// Median and 95 % value of |S| (nearest rank), m.
+    /// E|S| of the lives as simulated (not capped), m.
+    pub expected_sliding_uncapped_m: f64,
+    /// Median and 95 % value of |S| with each failed life at the limit (nearest rank), m.
     pub p50_m: f64,
     pub p95_m: f64,
-    /// P(|S| > the criterion's S_lim) (0 without an exceedance criterion).
+    /// P(|S| > the criterion's S_lim), a failed life exceeding it (0 without an exceedance
+    /// criterion).
     pub exceedance_probability: f64,
     pub failure_probability: f64,
+    /// P(failure by sliding) and P(failure by rotation) (a life may fail by both).
+    pub failure_by_sliding_probability: f64,
+    pub failure_by_rotation_probability: f64,
 }
 
 /// Which model a search is for.
@@ -91,6 +102,9 @@ pub struct Candidate {
     pub lives: usize,
     pub dynamic: ModelPoint,
     pub rigid_block: ModelPoint,
+    /// What the life warnings of the dynamic model's lives need
+    /// ([`super::checks::candidate_warnings`]).
+    pub life_counts: LifeCounts,
 }
 
 impl Candidate {
@@ -102,44 +116,53 @@ impl Candidate {
     }
 }
 
-/// The statistics of one model over `n` lives: magnitudes |S| and failures.
-pub fn model_point(magnitudes: &[f64], failed: &[bool], criteria: &Criteria) -> ModelPoint {
+/// The statistics of one model over `n` lives: magnitudes |S|, whether each life failed by
+/// sliding and by rotation, and the sliding limit `limit_m` (module docs, "Criteria").
+pub fn model_point(magnitudes: &[f64], modes: &[(bool, bool)], limit_m: f64, criteria: &Criteria) -> ModelPoint {
     let n = magnitudes.len().max(1) as f64;
+    let failed: Vec<bool> = modes.iter().map(|&(a, b)| a || b).collect();
     // Mean and nearest-rank percentiles as the design report computes them.
-    let s = life_statistics(magnitudes, &criteria.exceedance.map(|e| vec![e.sliding_m]).unwrap_or_default());
+    let thresholds = criteria.exceedance.map(|e| vec![e.sliding_m]).unwrap_or_default();
+    let s = capped_statistics(magnitudes, &failed, limit_m, &thresholds);
     let pct = |p: f64| s.percentiles_m.iter().find(|(q, _)| *q == p).map_or(0.0, |(_, v)| *v);
     let mean = s.mean_m;
-    let var =
-        if magnitudes.len() > 1 { magnitudes.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
+    let capped = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m });
+    let var = if magnitudes.len() > 1 { capped.map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
+    let share = |f: &dyn Fn(&(bool, bool)) -> bool| modes.iter().filter(|m| f(m)).count() as f64 / n;
     ModelPoint {
         expected_sliding_m: mean,
         expected_sliding_se_m: (var / n).sqrt(),
+        expected_sliding_uncapped_m: life_statistics(magnitudes, &[]).mean_m,
         p50_m: pct(50.0),
         p95_m: pct(95.0),
         exceedance_probability: s.exceedance.first().map_or(0.0, |(_, p)| *p),
-        failure_probability: failed.iter().filter(|&&f| f).count() as f64 / n,
+        failure_probability: share(&|m| m.0 || m.1),
+        failure_by_sliding_probability: share(&|m| m.0),
+        failure_by_rotation_probability: share(&|m| m.1),
     }
 }
 
-/// The candidate of `lives` (their outcomes, in index order) at `width_m` with the failure limit
-/// `failure_m`.
+/// The candidate of `lives` (their outcomes, in index order) at `width_m` with the failure limits
+/// `failure` (at this width).
 pub fn candidate(
     width_m: f64,
     weight_in_water_n: f64,
     lives: &[StormOutcome],
-    failure_m: f64,
+    failure: &FailureLimits,
     criteria: &Criteria,
 ) -> Candidate {
     let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
     let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
-    let failed: Vec<bool> = lives.iter().map(|l| l.failed(failure_m)).collect();
-    let rigid_failed: Vec<bool> = rigid.iter().map(|&s| s > failure_m).collect();
+    let modes: Vec<(bool, bool)> =
+        lives.iter().map(|l| (l.failed_by_sliding(failure), l.failed_by_rotation(failure))).collect();
+    let rigid_modes: Vec<(bool, bool)> = rigid.iter().map(|&s| (s > failure.sliding_m, false)).collect();
     Candidate {
         width_m,
         weight_in_water_n,
         lives: lives.len(),
-        dynamic: model_point(&dynamic, &failed, criteria),
-        rigid_block: model_point(&rigid, &rigid_failed, criteria),
+        dynamic: model_point(&dynamic, &modes, failure.sliding_m, criteria),
+        rigid_block: model_point(&rigid, &rigid_modes, failure.sliding_m, criteria),
+        life_counts: LifeCounts::of(lives, failure),
     }
 }
 
@@ -377,8 +400,8 @@ mod tests {
             expected_sliding_se_m: 0.0,
             p50_m: mean,
             p95_m: mean,
-            exceedance_probability: 0.0,
-            failure_probability: 0.0,
+            expected_sliding_uncapped_m: mean,
+            ..ModelPoint::default()
         }
     }
 
@@ -388,11 +411,17 @@ mod tests {
             exceedance: Some(ExceedanceCriterion { sliding_m: 0.5, probability: 0.1 }),
             ..Criteria::default()
         };
-        let p = model_point(&[0.0, 1.0, 2.0, 0.2], &[false, false, true, false], &c);
+        // Limit 1.5 m: the second life failed by rotation (|S| 0.4 m), the third by sliding
+        // (2 m); capped values 0, 1.5, 1.5, 0.2.
+        let modes = [(false, false), (false, true), (true, false), (false, false)];
+        let p = model_point(&[0.0, 0.4, 2.0, 0.2], &modes, 1.5, &c);
         assert!((p.expected_sliding_m - 0.8).abs() < 1e-15);
-        // s² = (0.64 + 0.04 + 1.44 + 0.36)/3 = 0.8266…, SE = √(s²/4).
-        assert!((p.expected_sliding_se_m - (2.48f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
-        assert_eq!((p.p50_m, p.p95_m, p.exceedance_probability, p.failure_probability), (0.2, 2.0, 0.5, 0.25));
+        assert!((p.expected_sliding_uncapped_m - 0.65).abs() < 1e-15);
+        // s² = (0.64 + 0.49 + 0.49 + 0.36)/3 = 0.66, SE = √(s²/4).
+        assert!((p.expected_sliding_se_m - (1.98f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
+        // Sorted capped values 0, 0.2, 1.5, 1.5; both failed lives exceed 0.5 m.
+        assert_eq!((p.p50_m, p.p95_m, p.exceedance_probability, p.failure_probability), (0.2, 1.5, 0.5, 0.5));
+        assert_eq!((p.failure_by_sliding_probability, p.failure_by_rotation_probability), (0.25, 0.25));
     }
 
     /// A smooth decreasing E|S|(B) = 2/B² m with no noise: the search returns the root
@@ -419,6 +448,7 @@ mod tests {
                     lives: 1,
                     dynamic: point(2.0 / (b * b)),
                     rigid_block: point(3.0 / (b * b)),
+                    life_counts: LifeCounts::default(),
                 })
             })
             .unwrap();
@@ -465,6 +495,7 @@ mod tests {
                     lives: 1,
                     dynamic: point(k / (b * b)),
                     rigid_block: point(k / (b * b)),
+                    life_counts: LifeCounts::default(),
                 })
             }
         };

@@ -3,7 +3,8 @@
 use super::{fingerprint, Provenance};
 use crate::analysis::checks::Warning;
 use crate::analysis::lifetime::{
-    life_statistics, DesignParams, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
+    capped_statistics, life_statistics, DesignParams, FailureLimits, LifeParams, LifeStatistics, StormCase,
+    StormOutcome, WaveDraws,
 };
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
@@ -17,6 +18,7 @@ struct LifeInputs<'a> {
     rigid_block_mu: f64,
     screen: bool,
     draws: WaveDraws,
+    failure: Option<FailureLimits>,
     life: &'a LifeParams,
     seed: u64,
 }
@@ -31,6 +33,7 @@ pub fn design_fingerprint(case: &StormCase<'_>, p: &DesignParams) -> String {
         rigid_block_mu: case.rigid_block_mu,
         screen: case.screen,
         draws: case.draws,
+        failure: case.failure,
         life: &p.life,
         seed: p.seed,
     })
@@ -52,10 +55,23 @@ pub struct Exceedance {
     pub probability: f64,
 }
 
-/// The lives that failed: moved beyond the failure limit from their place at some time.
+/// The lives that failed: moved beyond the sliding limit from their place at some time, or
+/// rotated beyond the rotation limit.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Failure {
     /// The share of lives that failed.
+    pub probability: f64,
+    pub lives: usize,
+    /// The lives that failed by sliding (beyond `failure_sliding_m`).
+    pub by_sliding: FailureMode,
+    /// The lives that failed by rotation (beyond `failure_rotation_rad`; never the rigid
+    /// block's). A life whose failing wave did both counts in both modes.
+    pub by_rotation: FailureMode,
+}
+
+/// The lives that failed by one mode.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FailureMode {
     pub probability: f64,
     pub lives: usize,
 }
@@ -74,11 +90,15 @@ pub struct Surviving {
 /// the direction (docs/design.md).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ModelStatistics {
-    /// E|S|, m.
+    /// E|S| with each failed life at the sliding limit (bounded by it), m.
     pub expected_sliding_m: f64,
     pub expected_sliding_per_year_m: f64,
+    /// E|S| of the lives as simulated (a life that ends at failure with the sliding it had
+    /// then; every life to its end with `continue_after_failure`), m.
+    pub expected_sliding_uncapped_m: f64,
+    /// Of |S| with each failed life at the sliding limit.
     pub percentiles_m: Percentiles,
-    /// P(|S| > threshold).
+    /// P(|S| > threshold), a failed life exceeding every threshold.
     pub exceedance_probability: Vec<Exceedance>,
     pub failure: Failure,
     pub surviving: Surviving,
@@ -90,22 +110,33 @@ fn percentiles(s: &LifeStatistics) -> Percentiles {
 }
 
 impl ModelStatistics {
-    /// `magnitudes`: |S| of every life; `failed`: whether each life failed.
-    fn new(magnitudes: &[f64], failed: &[bool], thresholds_m: &[f64], years: usize) -> Self {
-        let s = life_statistics(magnitudes, thresholds_m);
-        let surviving: Vec<f64> = magnitudes.iter().zip(failed).filter(|(_, &f)| !f).map(|(&m, _)| m).collect();
+    /// `magnitudes`: |S| of every life; `modes`: whether each life failed by sliding and by
+    /// rotation; `limit_m`: the sliding limit.
+    fn new(magnitudes: &[f64], modes: &[(bool, bool)], limit_m: f64, thresholds_m: &[f64], years: usize) -> Self {
+        let failed: Vec<bool> = modes.iter().map(|&(a, b)| a || b).collect();
+        let s = capped_statistics(magnitudes, &failed, limit_m, thresholds_m);
+        let uncapped = life_statistics(magnitudes, &[]).mean_m;
+        let surviving: Vec<f64> = magnitudes.iter().zip(&failed).filter(|(_, &f)| !f).map(|(&m, _)| m).collect();
         let sv = life_statistics(&surviving, &[]);
         let failures = magnitudes.len() - surviving.len();
+        let n = magnitudes.len().max(1) as f64;
+        let mode = |lives: usize| FailureMode { probability: lives as f64 / n, lives };
         ModelStatistics {
             expected_sliding_m: s.mean_m,
             expected_sliding_per_year_m: s.mean_m / years as f64,
+            expected_sliding_uncapped_m: uncapped,
             percentiles_m: percentiles(&s),
             exceedance_probability: s
                 .exceedance
                 .iter()
                 .map(|&(threshold_m, probability)| Exceedance { threshold_m, probability })
                 .collect(),
-            failure: Failure { probability: failures as f64 / magnitudes.len().max(1) as f64, lives: failures },
+            failure: Failure {
+                probability: failures as f64 / n,
+                lives: failures,
+                by_sliding: mode(modes.iter().filter(|m| m.0).count()),
+                by_rotation: mode(modes.iter().filter(|m| m.1).count()),
+            },
             surviving: Surviving { lives: sv.lives, expected_sliding_m: sv.mean_m, percentiles_m: percentiles(&sv) },
         }
     }
@@ -148,6 +179,10 @@ pub struct DesignReport {
     /// The failure limit on the caisson's distance from its place, m (`[design]
     /// failure_sliding_m`, default a quarter of the base width).
     pub failure_sliding_m: f64,
+    /// The failure limit on the caisson's rotation, rad (`[design] failure_rotation_rad`).
+    pub failure_rotation_rad: f64,
+    /// Whether a life ends at the wave that fails it (`[design] continue_after_failure` false).
+    pub lives_end_at_failure: bool,
     pub dynamic: DynamicStatistics,
     pub rigid_block: ModelStatistics,
     pub rigid_block_mu: f64,
@@ -168,8 +203,10 @@ impl DesignReport {
         let mean = |f: fn(&StormOutcome) -> f64| lives.iter().map(f).sum::<f64>() / n;
         let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
-        let failed: Vec<bool> = lives.iter().map(|l| l.failed(failure_sliding_m)).collect();
-        let rigid_failed: Vec<bool> = rigid.iter().map(|&s| s > failure_sliding_m).collect();
+        let limits = FailureLimits { sliding_m: failure_sliding_m, rotation_rad: p.failure_rotation_rad };
+        let modes: Vec<(bool, bool)> =
+            lives.iter().map(|l| (l.failed_by_sliding(&limits), l.failed_by_rotation(&limits))).collect();
+        let rigid_modes: Vec<(bool, bool)> = rigid.iter().map(|&s| (s > failure_sliding_m, false)).collect();
         let waves: u64 = lives.iter().map(|l| l.waves).sum();
         let screened: u64 = lives.iter().map(|l| l.screened_waves).sum();
         DesignReport {
@@ -179,8 +216,10 @@ impl DesignReport {
             seed: p.seed,
             screen: p.screen,
             failure_sliding_m,
+            failure_rotation_rad: p.failure_rotation_rad,
+            lives_end_at_failure: !p.continue_after_failure,
             dynamic: DynamicStatistics {
-                sliding: ModelStatistics::new(&dynamic, &failed, &p.thresholds_m, years),
+                sliding: ModelStatistics::new(&dynamic, &modes, failure_sliding_m, &p.thresholds_m, years),
                 expected_net_sliding_m: mean(|l| l.sliding_m),
                 expected_shoreward_sliding_m: mean(|l| l.shoreward_sliding_m),
                 expected_seaward_sliding_m: mean(|l| l.seaward_sliding_m),
@@ -190,7 +229,7 @@ impl DesignReport {
                 large_rotation_waves: lives.iter().map(|l| l.large_rotation_waves).sum(),
                 large_rotation_lives: lives.iter().filter(|l| l.large_rotation_waves > 0).count(),
             },
-            rigid_block: ModelStatistics::new(&rigid, &rigid_failed, &p.thresholds_m, years),
+            rigid_block: ModelStatistics::new(&rigid, &rigid_modes, failure_sliding_m, &p.thresholds_m, years),
             rigid_block_mu,
             waves,
             simulated_waves: lives.iter().map(|l| l.simulated_waves).sum(),
@@ -204,7 +243,8 @@ impl DesignReport {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::checks::life_warnings;
+    use crate::analysis::checks::{candidate_warnings, life_warnings};
+    use crate::analysis::sizing::{candidate, Criteria};
 
     fn life(sliding_m: f64, shoreward: f64, seaward: f64, excursion_m: f64, rigid_m: f64) -> StormOutcome {
         StormOutcome {
@@ -218,8 +258,10 @@ mod tests {
         }
     }
 
-    /// Five lives, failure limit 5 m: one seaward (−3 m), one beyond the limit at the end (6 m),
-    /// one that went 5.5 m out and came back (fails, |S| = 0). Every number by hand.
+    /// Six lives, failure limits 5 m and 0.01 rad: one seaward (−3 m) that rotated 0.02 rad
+    /// (fails by rotation), one beyond the limit at the end (6 m), one that went 5.5 m out and
+    /// came back (fails by sliding, |S| = 0), one that slid 8 m and rotated (both modes). Every
+    /// number by hand: the capped values are 0.2, 5, 5, 5, 0.001, 5.
     #[test]
     fn failures_surviving_lives_and_direction_are_counted_by_hand() {
         let sc = crate::scenario::load(
@@ -227,38 +269,67 @@ mod tests {
         )
         .unwrap();
         let mut p = sc.design.clone().unwrap();
-        p.thresholds_m = vec![0.1, 1.0];
+        p.thresholds_m = vec![0.1, 1.0, 7.0];
+        assert_eq!(p.failure_rotation_rad, 0.01, "the default rotation limit");
         let mut seaward = life(-3.0, 1.0, 4.0, 3.5, 1.0);
         seaward.large_rotation_waves = 2;
+        seaward.max_rotation_rad = 0.02;
+        let mut both = life(8.0, 8.0, 0.0, 8.0, 0.5);
+        both.max_rotation_rad = 0.011;
+        both.large_rotation_waves = 1;
         let lives = [
             life(0.2, 0.2, 0.0, 0.2, 0.25),
             seaward,
             life(6.0, 6.0, 0.0, 6.0, 7.0),
             life(0.0, 5.5, 5.5, 5.5, 0.0),
             life(1e-3, 1e-3, 0.0, 1e-3, 0.0),
+            both,
         ];
         let r = DesignReport::new(&p, 0.6, 5.0, &lives);
         let d = &r.dynamic;
-        assert_eq!(r.failure_sliding_m, 5.0);
-        assert_eq!((d.sliding.failure.lives, d.sliding.failure.probability), (2, 0.4));
-        assert!((d.sliding.expected_sliding_m - (0.2 + 3.0 + 6.0 + 0.0 + 1e-3) / 5.0).abs() < 1e-12);
-        assert!((d.expected_net_sliding_m - (0.2 - 3.0 + 6.0 + 1e-3) / 5.0).abs() < 1e-12);
-        // |S| > 0.1: 0.2, 3 and 6 m (signed values would give 2 of 5); |S| > 1: 3 and 6 m.
+        let f = &d.sliding.failure;
+        assert_eq!((r.failure_sliding_m, r.failure_rotation_rad, r.lives_end_at_failure), (5.0, 0.01, true));
+        assert_eq!((f.lives, f.probability), (4, 4.0 / 6.0));
+        assert_eq!((f.by_sliding.lives, f.by_sliding.probability), (3, 0.5));
+        assert_eq!((f.by_rotation.lives, f.by_rotation.probability), (2, 2.0 / 6.0));
+        // Capped: the failed lives at 5 m; uncapped: as simulated.
+        assert!((d.sliding.expected_sliding_m - (0.2 + 5.0 + 5.0 + 5.0 + 1e-3 + 5.0) / 6.0).abs() < 1e-12);
+        assert!((d.sliding.expected_sliding_uncapped_m - (0.2 + 3.0 + 6.0 + 0.0 + 1e-3 + 8.0) / 6.0).abs() < 1e-12);
+        assert!((d.sliding.expected_sliding_per_year_m - d.sliding.expected_sliding_m / 50.0).abs() < 1e-15);
+        assert!((d.expected_net_sliding_m - (0.2 - 3.0 + 6.0 + 1e-3 + 8.0) / 6.0).abs() < 1e-12);
+        // Sorted capped values 0.001, 0.2, 5, 5, 5, 5: ranks ⌈0.05·6⌉ = 1, ⌈0.5·6⌉ = 3.
+        let pc = d.sliding.percentiles_m;
+        assert_eq!((pc.p5, pc.p50, pc.p95, pc.p99), (1e-3, 5.0, 5.0, 5.0));
+        // |S| > 0.1: 0.2 and the four failed lives; > 1: the failed ones; > 7 m (beyond the
+        // limit): the failed lives still.
         let e: Vec<f64> = d.sliding.exceedance_probability.iter().map(|e| e.probability).collect();
-        assert_eq!(e, vec![0.6, 0.4]);
-        assert_eq!(d.sliding.surviving.lives, 3);
-        assert!((d.sliding.surviving.expected_sliding_m - (0.2 + 3.0 + 1e-3) / 3.0).abs() < 1e-12);
-        assert_eq!(d.sliding.surviving.percentiles_m.p99, 3.0);
+        assert_eq!(e, vec![5.0 / 6.0, 4.0 / 6.0, 4.0 / 6.0]);
+        assert_eq!(d.sliding.surviving.lives, 2);
+        assert!((d.sliding.surviving.expected_sliding_m - (0.2 + 1e-3) / 2.0).abs() < 1e-12);
+        assert_eq!(d.sliding.surviving.percentiles_m.p99, 0.2);
         assert_eq!(d.seaward_lives, 1);
-        assert!((d.expected_shoreward_sliding_m - (0.2 + 1.0 + 6.0 + 5.5 + 1e-3) / 5.0).abs() < 1e-12);
-        assert!((d.expected_seaward_sliding_m - (4.0 + 5.5) / 5.0).abs() < 1e-12);
-        assert_eq!((d.large_rotation_lives, d.large_rotation_waves), (1, 2));
-        // The rigid block fails by its slide alone: 7 m.
-        assert_eq!((r.rigid_block.failure.lives, r.rigid_block.surviving.lives), (1, 4));
-        assert!((r.rigid_block.surviving.expected_sliding_m - (0.25 + 1.0) / 4.0).abs() < 1e-12);
-        let codes: Vec<&str> = life_warnings(&lives, 5.0, 20.0).iter().map(|w| w.code).collect();
+        assert!((d.expected_shoreward_sliding_m - (0.2 + 1.0 + 6.0 + 5.5 + 1e-3 + 8.0) / 6.0).abs() < 1e-12);
+        assert!((d.expected_seaward_sliding_m - (4.0 + 5.5) / 6.0).abs() < 1e-12);
+        assert_eq!((d.large_rotation_lives, d.large_rotation_waves), (2, 3));
+        // The rigid block fails by its slide alone (7 m), never by rotation; capped at 5 m.
+        let rb = &r.rigid_block;
+        assert_eq!((rb.failure.lives, rb.failure.by_rotation.lives, rb.surviving.lives), (1, 0, 5));
+        assert!((rb.expected_sliding_m - (0.25 + 1.0 + 5.0 + 0.0 + 0.0 + 0.5) / 6.0).abs() < 1e-12);
+        assert!((rb.expected_sliding_uncapped_m - (0.25 + 1.0 + 7.0 + 0.5) / 6.0).abs() < 1e-12);
+        assert!((rb.surviving.expected_sliding_m - (0.25 + 1.0 + 0.5) / 5.0).abs() < 1e-12);
+        let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01 };
+        let warnings = life_warnings(&lives, &limits, 20.0);
+        let codes: Vec<&str> = warnings.iter().map(|w| w.code).collect();
         assert_eq!(codes, vec!["failed-lives", "large-rotation-lives", "seaward-lives"]);
+        let failed = &warnings[0].numbers;
+        assert_eq!(
+            (failed["failed_lives"], failed["failed_by_sliding_lives"], failed["failed_by_rotation_lives"]),
+            (4.0, 3.0, 2.0)
+        );
+        // A sizing candidate of the same lives keeps what gives the same warnings.
+        let c = candidate(20.0, 1.0, &lives, &limits, &Criteria::default());
+        assert_eq!(candidate_warnings(&c, &limits), warnings);
         let calm = [life(0.2, 0.2, 0.0, 0.2, 0.25), life(-0.005, 0.0, 0.005, 0.005, 0.0)];
-        assert!(life_warnings(&calm, 5.0, 20.0).is_empty(), "5 mm seaward is below the 1 cm reported");
+        assert!(life_warnings(&calm, &limits, 20.0).is_empty(), "5 mm seaward is below the 1 cm reported");
     }
 }

@@ -67,9 +67,14 @@ pub struct LevelReport {
     pub max_rigid_block_sliding_m: f64,
     pub screened_share: f64,
     pub simulated_waves: u64,
+    /// Storms that rotated the caisson beyond `failure_rotation_rad`: counted as exceeding
+    /// every limit (dynamic model).
+    pub rotation_failures: u64,
     pub exceedance: Vec<LevelExceedance>,
     pub storm_sliding_m: Vec<f64>,
     pub storm_rigid_block_sliding_m: Vec<f64>,
+    /// The largest rotation of each storm, rad.
+    pub storm_max_rotation_rad: Vec<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub goda_sliding_safety_factor: Option<f64>,
 }
@@ -87,6 +92,7 @@ impl LevelReport {
             max_rigid_block_sliding_m: l.storms.iter().map(|o| o.rigid_block_sliding_m).fold(0.0, f64::max),
             screened_share: l.screened_share(),
             simulated_waves: l.storms.iter().map(|o| o.simulated_waves).sum(),
+            rotation_failures: l.rotation_failures,
             exceedance: limits_m
                 .iter()
                 .enumerate()
@@ -100,6 +106,7 @@ impl LevelReport {
                 .collect(),
             storm_sliding_m: l.storms.iter().map(|o| o.sliding_m).collect(),
             storm_rigid_block_sliding_m: l.storms.iter().map(|o| o.rigid_block_sliding_m).collect(),
+            storm_max_rotation_rad: l.storms.iter().map(|o| o.max_rotation_rad).collect(),
             goda_sliding_safety_factor: goda,
         }
     }
@@ -141,6 +148,8 @@ pub struct FragilityReport {
     pub storms: usize,
     pub seed: u64,
     pub limits_m: Vec<f64>,
+    /// `[fragility] failure_rotation_rad`, rad.
+    pub failure_rotation_rad: f64,
     pub rigid_block_mu: f64,
     pub design_wave: DesignWaveReport,
     pub levels: Vec<LevelReport>,
@@ -163,6 +172,7 @@ impl FragilityReport {
             storms: p.storms,
             seed: p.seed,
             limits_m: p.limits_m.clone(),
+            failure_rotation_rad: p.failure_rotation_rad,
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),
             design_wave: {
                 let check = goda_design_check(structure, waves, h, t);

@@ -43,7 +43,15 @@ pub struct DesignTable {
     pub screen: Option<bool>,
     /// The failure limit on the caisson's distance from its place, m (default B/4).
     pub failure_sliding_m: Option<f64>,
+    /// The failure limit on the caisson's rotation, rad (default 0.01).
+    pub failure_rotation_rad: Option<f64>,
+    /// Run lives to their end after failure (default false: a life ends at failure).
+    pub continue_after_failure: Option<bool>,
 }
+
+/// The largest `[design] failure_rotation_rad` (and `[fragility]`'s), rad: 0.1 rad (5.7°) lifts
+/// the heel of a 20 m wide caisson by 2 m, far beyond the small rotations the model describes.
+pub const MAX_FAILURE_ROTATION_RAD: f64 = 0.1;
 
 /// Takahashi's performance grades (docs/model.md §6.4 step 8), m.
 pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
@@ -195,5 +203,15 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             .failure_sliding_m
             .map(|v| number("[design] failure_sliding_m", v, 0.0, 1000.0, true, "m"))
             .transpose()?,
+        failure_rotation_rad: failure_rotation("[design] failure_rotation_rad", t.failure_rotation_rad)?,
+        continue_after_failure: t.continue_after_failure.unwrap_or(false),
+    })
+}
+
+/// A failure rotation limit (`key`), rad: in (0, [`MAX_FAILURE_ROTATION_RAD`]], default
+/// [`crate::analysis::checks::ROCKING_LIMIT_RAD`].
+pub(super) fn failure_rotation(key: &str, v: Option<f64>) -> R<f64> {
+    v.map_or(Ok(crate::analysis::checks::ROCKING_LIMIT_RAD), |v| {
+        number(key, v, 0.0, MAX_FAILURE_ROTATION_RAD, true, "rad")
     })
 }

@@ -31,6 +31,9 @@ pub struct FragilityTable {
     pub period_s: Option<f64>,
     /// Seed of the storms' generators. Default 1.
     pub seed: Option<i64>,
+    /// A storm that rotates the caisson beyond this counts as exceeding every limit, rad.
+    /// Default 0.01 (as `[design] failure_rotation_rad`).
+    pub failure_rotation_rad: Option<f64>,
 }
 
 /// At most this many heights and limits.
@@ -159,7 +162,17 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
         }
     } * 3600.0;
     let seed = super::waves::seed_of("[fragility] seed", t.seed)?;
-    Ok(FragilityParams { heights_m: heights.clone(), storms, limits_m, storm_duration_s, period_s, seed })
+    let failure_rotation_rad =
+        super::design::failure_rotation("[fragility] failure_rotation_rad", t.failure_rotation_rad)?;
+    Ok(FragilityParams {
+        heights_m: heights.clone(),
+        storms,
+        limits_m,
+        storm_duration_s,
+        period_s,
+        seed,
+        failure_rotation_rad,
+    })
 }
 
 #[cfg(test)]
@@ -209,19 +222,21 @@ significant_heights_m = [4.0, 6.0, 8.0]
                 limits_m: vec![0.1, 0.3],
                 storm_duration_s: 7200.0,
                 period_s: 12.0,
-                seed: 1
+                seed: 1,
+                failure_rotation_rad: 0.01
             }
         );
         assert_eq!(p.waves_per_storm(), 600);
         let text = BASE.replace(
             "[4.0, 6.0, 8.0]",
-            "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9",
+            "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9\nfailure_rotation_rad = 0.02",
         );
         let p = run(&text).unwrap();
         assert_eq!(
             (p.storms, p.limits_m.clone(), p.storm_duration_s, p.period_s, p.seed, p.waves_per_storm()),
             (7, vec![0.05], 5400.0, 10.0, 9, 540)
         );
+        assert_eq!(p.failure_rotation_rad, 0.02);
     }
 
     #[test]
@@ -243,6 +258,9 @@ significant_heights_m = [4.0, 6.0, 8.0]
             (h, "significant_heights_m = [4.0]\nstorm_duration_h = 0", "[fragility] storm_duration_h"),
             (h, "significant_heights_m = [4.0]\nperiod_s = -1", "[fragility] period_s"),
             (h, "significant_heights_m = [4.0]\nseed = -1", "[fragility] seed"),
+            (h, "significant_heights_m = [4.0]\nfailure_rotation_rad = 0.0", "[fragility] failure_rotation_rad"),
+            (h, "significant_heights_m = [4.0]\nfailure_rotation_rad = 0.2", "[fragility] failure_rotation_rad"),
+            (h, "significant_heights_m = [4.0]\nfailure_rotation_rad = nan", "[fragility] failure_rotation_rad"),
             ("kind = \"irregular\"\nsignificant_height_m = 7.5", "kind = \"regular\"\nheight_m = 7.5", "[waves] kind"),
         ];
         for (from, to, key) in cases {

@@ -604,8 +604,9 @@ impl Scenario {
         Ok(TrainCase { structure: &self.structure, waves: self.waves_for("a wave-train run")? })
     }
 
-    /// The storms' case of a design or fragility run: the structure, the site's wave loads and
-    /// the rigid-block μ (`[waves] rigid_block_mu`, default μ_s).
+    /// The storms' case of a design or fragility run: the structure, the site's wave loads,
+    /// the rigid-block μ (`[waves] rigid_block_mu`, default μ_s) and where a life ends (the
+    /// failure limits of `[design]`, if any, for this caisson's width).
     pub fn storm_case(&self, screen: bool) -> Result<StormCase<'_>, ScenarioError> {
         let w = self.waves_for("a design or fragility run")?;
         if let Some(d) = &self.design {
@@ -631,6 +632,7 @@ impl Scenario {
             rigid_block_mu: w.rigid_block_mu(&self.structure.foundation),
             screen,
             draws: WaveDraws::AboveThreshold,
+            failure: self.design.as_ref().and_then(|d| d.life_end(self.structure.caisson.width_m)),
         })
     }
 
