@@ -8,7 +8,7 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
 use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::checks::structure_warnings;
+use caisson::analysis::checks::{candidate_warnings, structure_warnings};
 use caisson::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave, Governs};
 use caisson::analysis::lifetime::{run_lives, StormOutcome};
 use caisson::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, Reached, Required};
@@ -234,6 +234,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
     report.warnings = structure_warnings(sc.structure());
     report.warnings.extend(range_warnings(&report));
     report.warnings.extend(goda_warnings(&report));
+    report.warnings.extend(candidate_life_warnings(&sizing.candidates, &report, &design));
     // Absent values (a width beyond the range, an undefined safety factor) are `null`: check
     // the report's numbers themselves.
     crate::output::check_finite_fields(&report, "size").map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
@@ -284,6 +285,30 @@ fn range_warnings(r: &SizeReport) -> Vec<caisson::analysis::checks::Warning> {
         });
     }
     out
+}
+
+/// The life warnings of every candidate width (failed lives, large rotations, seaward lives: as
+/// `caisson design` gives them for one width), each message prefixed with its width; the required
+/// width's first, so that the text's summary of a code shows it.
+fn candidate_life_warnings(
+    candidates: &[Candidate],
+    r: &SizeReport,
+    design: &caisson::analysis::lifetime::DesignParams,
+) -> Vec<caisson::analysis::checks::Warning> {
+    let required = r.dynamic.width_m();
+    let mut order: Vec<&Candidate> = candidates.iter().collect();
+    order.sort_by_key(|c| Some(c.width_m) != required);
+    order
+        .into_iter()
+        .flat_map(|c| {
+            candidate_warnings(c, &design.failure_limits(c.width_m)).into_iter().map(move |mut w| {
+                let which = if Some(c.width_m) == required { ", the required width" } else { "" };
+                w.message = format!("at B = {:.2} m{which}: {}", c.width_m, w.message);
+                w.numbers.insert("width_m", c.width_m);
+                w
+            })
+        })
+        .collect()
 }
 
 /// Warnings of Goda's conventional design: its width outside the search, a heel pressure above the
@@ -429,7 +454,7 @@ fn size_text(r: &SizeReport) -> String {
     let exceed = r.criteria.exceedance.map(|e| e.sliding_m);
     let _ = writeln!(
         t,
-        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  E|S| rigid (m)  {}  P(fail) dyn  P(fail) rigid  meets the criterion",
+        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  E|S| rigid (m)  {}  P(fail) dyn (rotation)  P(fail) rigid  meets the criterion",
         exceed.map_or("                  ".to_string(), |s| format!("P(|S| > {s:<4} m) dyn"))
     );
     for k in &r.candidates {
@@ -440,7 +465,7 @@ fn size_text(r: &SizeReport) -> String {
             .collect();
         let _ = writeln!(
             t,
-            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:14.4}  {:>18}  {:>11.4}  {:>13.4}  {}",
+            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:14.4}  {:>18}  {:>11.4} ({:.4})  {:>13.4}  {}",
             k.width_m,
             k.weight_in_water_kn,
             k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
@@ -450,11 +475,17 @@ fn size_text(r: &SizeReport) -> String {
             k.rigid_block.expected_sliding_m,
             exceed.map_or(String::new(), |_| format!("{:.4}", k.dynamic.exceedance_probability)),
             k.dynamic.failure_probability,
+            k.dynamic.failure_by_rotation_probability,
             k.rigid_block.failure_probability,
             if meets.is_empty() { "-".to_string() } else { meets.join(", ") }
         );
     }
-    let _ = writeln!(t, "\n{} lives simulated in {} candidates", r.lives_simulated, r.candidates.len());
+    let _ = writeln!(
+        t,
+        "\nE|S| counts a failed life (moved beyond the failure limit, or rotated beyond [design] failure_rotation_rad) at the sliding limit;\nthe lives as simulated are in size.json (expected_sliding_uncapped_m).\n{} lives simulated in {} candidates",
+        r.lives_simulated,
+        r.candidates.len()
+    );
     t
 }
 
@@ -463,10 +494,13 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
     let model_cols = [
         "expected_sliding_m",
         "expected_sliding_se_m",
+        "expected_sliding_uncapped_m",
         "p50_m",
         "p95_m",
         "exceedance_probability",
         "failure_probability",
+        "failure_by_sliding_probability",
+        "failure_by_rotation_probability",
     ];
     let mut header = vec![
         "width_m".to_string(),
@@ -495,10 +529,13 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
                 [
                     p.expected_sliding_m,
                     p.expected_sliding_se_m,
+                    p.expected_sliding_uncapped_m,
                     p.p50_m,
                     p.p95_m,
                     p.exceedance_probability,
                     p.failure_probability,
+                    p.failure_by_sliding_probability,
+                    p.failure_by_rotation_probability,
                 ]
                 .iter()
                 .map(|v| format!("{v:e}")),
