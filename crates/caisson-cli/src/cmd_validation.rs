@@ -604,6 +604,6 @@ fn why_profiles_differ(t: &mut String) -> Result<()> {
             r.rigid_block.failure.probability
         );
     }
-    let _ = writeln!(t, "\nThe example sets no profile-dependent key, so the first row is the seed's literal model on a prototype (its dashpot on the total velocity all but stops sliding) and the second the default, whose expected sliding is close to the rigid block's. Lives in which a wave overturns the caisson statically rock about the heel, and the landing can throw the caisson seaward (docs/design.md): they count by the magnitude |S| of their displacement, and a life fails when the caisson has been more than a quarter of its base width (5 m) from its place.\n");
+    let _ = writeln!(t, "\nThe example sets no profile-dependent key, so the first row is the seed's literal model on a prototype (its dashpot on the total velocity all but stops sliding) and the second the default. Lives in which a wave overturns the caisson statically rock about the heel, and the landing can throw the caisson seaward (docs/design.md): they count by the magnitude |S| of their displacement. A life fails when the caisson has been more than a quarter of its base width (5 m) from its place, or rotated beyond 0.01 rad (`[design] failure_rotation_rad`: beyond it the model's small rotations and elastic foundation do not hold); it ends there and enters E|S| at the 5 m limit (docs/design.md). The rigid block neither rocks nor fails by rotation.\n");
     Ok(())
 }
