@@ -434,6 +434,8 @@ pub fn run_fragility(
     let storms = p.storms;
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
+        // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
+        .panic_fuse()
         .map(|job| {
             let (level, storm) = (job / storms, job % storms);
             let h = p.heights_m[level];
