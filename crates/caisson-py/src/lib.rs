@@ -35,7 +35,7 @@ use caisson::report::run::RunReport;
 use caisson::report::spectrum::SpectrumReport;
 use caisson::report::train::TrainRunReport;
 use caisson::scenario::design::MAX_LIVES;
-use caisson::scenario::{Scenario, ScenarioError as LibError};
+use caisson::scenario::{Scenario, ScenarioError as LibError, MAX_MAGNITUDE};
 use caisson::waves::{breaking, dispersion, surf_zone};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::create_exception;
@@ -145,6 +145,22 @@ impl CoreScenario {
     /// file names (a force series).
     #[new]
     fn new(py: Python<'_>, text: &str, name: &str, base_dir: &str) -> PyResult<Self> {
+        // The CLI's limit on a scenario file, for text too.
+        let max = caisson::scenario::MAX_SCENARIO_BYTES;
+        if text.len() as u64 > max {
+            let message = format!(
+                "the scenario text is {} bytes, larger than {} MiB, the most a scenario file may be",
+                text.len(),
+                max >> 20
+            );
+            return Err(scenario_error(
+                py,
+                message,
+                None,
+                Some(format!("{} bytes", text.len())),
+                Some(format!("at most {} MiB", max >> 20)),
+            ));
+        }
         Scenario::from_toml(text, Path::new(name), Path::new(base_dir))
             .map(|sc| CoreScenario { sc })
             .map_err(|e| lib_error(py, e, Some(text)))
@@ -352,7 +368,7 @@ impl Observer for Watch<'_> {
             h.observe(view);
         }
         self.steps = self.steps.wrapping_add(1);
-        if self.steps % 4096 == 0 {
+        if self.steps.is_multiple_of(4096) {
             self.ctl.check();
         }
     }
@@ -423,8 +439,13 @@ fn series_from(py: Python<'_>, t_s: &[f64], fx_kn: &[f64], fy_kn: &[f64], moment
         if v.len() != n {
             return Err(bad(name, format!("{} values", v.len()), &format!("must have one value per time ({n})")));
         }
-        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-            return Err(bad(name, format!("{x} (sample {i})"), "must be a finite number"));
+        // Beyond 1e300 kN a value overflows once converted to N, as in a scenario file.
+        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !(x.is_finite() && x.abs() <= MAX_MAGNITUDE)) {
+            return Err(bad(
+                name,
+                format!("{x:e} (sample {i})"),
+                &format!("must be a finite number of magnitude at most {MAX_MAGNITUDE:e}"),
+            ));
         }
     }
     if n < 2 {

@@ -98,7 +98,7 @@ impl Block<'_> {
         let rows = self.numbers.first().map_or(0, |c| c.len());
         let (h, t) = (&h[self.first_row..][..rows], &t[self.first_row..][..rows]);
         for (row, (&h, &t)) in h.iter().zip(t).enumerate() {
-            if row % 1024 == 0 {
+            if row.is_multiple_of(1024) {
                 ctl.check();
             }
             let loads = ws.model.evaluate(h, t).map_err(|e| (self.first_row + row, e.to_string()))?;

@@ -82,8 +82,6 @@ pub(crate) fn place_caisson(site: &mut WaveSite, caisson: &Caisson) {
     site.length_m = caisson.length_m;
 }
 
-/// A finite number in (lo, hi] (`lo_open`) or [lo, hi], else a keyed range error.
-
 /// The smallest water depth and wave height accepted, m: a millimetre, below any laboratory
 /// flume's waves; smaller values (5e-324 m) only drive the formulas to NaN or give safety
 /// factors of 1e100.
@@ -92,6 +90,7 @@ pub const MIN_LENGTH_M: f64 = 1e-3;
 /// caisson is).
 pub const MIN_PERIOD_S: f64 = 0.01;
 
+/// A finite number in (lo, hi] (`lo_open`) or [lo, hi], else a keyed range error.
 pub(super) fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
     let above = if lo_open { v > lo } else { v >= lo };
     if v.is_finite() && above && v <= hi {
