@@ -262,3 +262,13 @@ fn a_stray_fragility_table_is_for_fragility_only() {
     caisson().args(["loads", s(&loads)]).assert().success();
     refused(&["fragility", s(&loads)], &["[waves] kind", "irregular"]);
 }
+
+/// A value missing at the end of the file: the parser gives no description; the message says what
+/// is wrong.
+#[test]
+fn a_toml_error_without_a_description_gets_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(dir.path(), "cut.toml", "[caisson]\nwidth_m = ");
+    let err = refused(&["run", s(&f)], &["cut.toml line 2, column 11", "not valid TOML", "`width_m =`"]);
+    assert!(!err.contains(":  ("), "{err}");
+}
