@@ -193,7 +193,7 @@ def _mutate(rng: random.Random, v):
 def test_fuzz_replace_series_and_indices():
     rng = random.Random(SEED)
     bases = [load(n) for n in ("table5_triangle.toml", "design_breakwater.toml", "pari_breaking_loads.toml")]
-    counts = {"ok": 0, "refused": 0}
+    counts = {"ok": 0, "refused": 0, "numpy": 0}
     for _ in range(CASES):
         sc = rng.choice(bases)
         d = sc.to_dict()
@@ -202,8 +202,13 @@ def test_fuzz_replace_series_and_indices():
         if not keys:
             continue
         key = rng.choice(keys)
+        value = _mutate(rng, d[table][key])
+        if type(value).__module__ == "numpy":
+            # A numpy scalar is the number it holds: the same scenario, or the same refusal.
+            assert _outcome(sc, table, key, value) == _outcome(sc, table, key, value.item()), (table, key, value)
+            counts["numpy"] += 1
         try:
-            new = sc.replace(**{table: {key: _mutate(rng, d[table][key])}})
+            new = sc.replace(**{table: {key: value}})
             what = rng.randrange(3)
             if what == 0 and new.has_design:
                 caisson.Design(new, lives=3).simulate_lives(rng.choice([[0], [2, 1], range(3)]))
@@ -220,4 +225,12 @@ def test_fuzz_replace_series_and_indices():
             assert "panick" not in str(e).lower(), str(e)
             counts["refused"] += 1
     assert counts["ok"] + counts["refused"] >= CASES * 0.9, counts
-    assert counts["ok"] > 0 and counts["refused"] > 0, counts
+    assert counts["ok"] > 0 and counts["refused"] > 0 and counts["numpy"] > 0, counts
+
+
+def _outcome(sc, table, key, value):
+    """The scenario `replace` gives (its TOML text), or the message it refuses with."""
+    try:
+        return sc.replace(**{table: {key: value}}).to_toml()
+    except (caisson.ScenarioError, ValueError, TypeError) as e:
+        return f"{type(e).__name__}: {e}"
