@@ -6,7 +6,7 @@ use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
 /// Most worker threads `--threads` accepts (0: one per core).
-pub const MAX_THREADS: usize = 256;
+pub const MAX_THREADS: usize = caisson::MAX_THREADS;
 /// Most lives `--lives` accepts: the cap of `[design] lives`.
 pub const MAX_LIVES: usize = caisson::scenario::design::MAX_LIVES;
 

@@ -4,7 +4,7 @@
 
 use crate::cli::CampaignArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
+use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::campaign::{run_campaign, Campaign, ConditionResult};
@@ -198,6 +198,8 @@ fn unit(magnitudes_m: impl Iterator<Item = f64>) -> (f64, &'static str) {
 pub fn run(args: CampaignArgs) -> Result<()> {
     let campaign = load_campaign(&args.campaign, args.damping_mode.as_deref())?;
     check_out_dir(args.out.as_deref())?;
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "campaign")).transpose()?;
     let estimate = caisson::analysis::work::campaign(&campaign.setups, args.out.is_some());
     crate::work::say(crate::work::check("campaign", &estimate, &crate::work::CAMPAIGN)?);
     let total: usize = campaign.setups.iter().map(|s| s.waves.train.realizations).sum();
@@ -214,12 +216,12 @@ pub fn run(args: CampaignArgs) -> Result<()> {
         crate::say!("{}", table_text(&campaign, &results));
     }
     if let Some(dir) = &args.out {
-        ensure_dir(dir)?;
+        let _set = crate::output::OutSet::open(dir);
         let full = report_json(&CampaignReport::new(&campaign, &results, true), "campaign")?;
         write_atomic(&dir.join("campaign.json"), pretty(&full)?.as_bytes())?;
         write_atomic(&dir.join("campaign.csv"), &campaign_csv(&results)?)?;
         campaign_plots(dir, "campaign", &campaign.title, &results)?;
-        crate::output::tidy_out_dir(dir, "campaign", &[]);
+        crate::output::tidy_out_dir(dir, "campaign", &[])?;
         if !args.json {
             crate::sayln!("\nWrote campaign.json (with every realization and wave), campaign.csv, campaign.svg, campaign_vs_height.svg to {}", dir.display());
         }

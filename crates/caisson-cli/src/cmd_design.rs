@@ -39,7 +39,10 @@
 
 use crate::cli::DesignArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
+use crate::output::{
+    check_out_dir, ensure_dir, pretty, progress, remove_stale_temporaries, report_json, with_threads, write_atomic,
+    Lock,
+};
 use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormCase, StormOutcome, LIFE_COLUMNS};
@@ -48,7 +51,7 @@ use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::io::{BufRead, Write};
+use std::io::{BufRead, Read, Write};
 use std::ops::{ControlFlow, Range};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -167,6 +170,50 @@ impl Reader {
     }
 }
 
+/// The longest line a checkpoint reader keeps (a life line is about 400 bytes; a header less).
+pub(crate) const MAX_LINE_BYTES: usize = 64 * 1024;
+
+/// Open a checkpoint or shard for reading: a regular file (not a device such as /dev/zero, a
+/// FIFO or a directory, which could be read for ever), read no further than its length when
+/// opened.
+pub(crate) fn open_checkpoint(path: &Path, who: &str) -> Result<std::io::BufReader<std::io::Take<std::fs::File>>> {
+    let cannot = |e: String| input_err(format!("{who}: cannot read the checkpoint {}: {e}", path.display()));
+    // Checked before it is opened too: opening a FIFO waits for a writer.
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file()) {
+        return Err(cannot("it is not a regular file (a checkpoint is a file written by `caisson design`)".into()));
+    }
+    let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string()))?;
+    let meta = file.metadata().map_err(|e| cannot(e.to_string()))?;
+    if !meta.is_file() {
+        return Err(cannot("it is not a regular file (a checkpoint is a file written by `caisson design`)".into()));
+    }
+    Ok(std::io::BufReader::new(file.take(meta.len())))
+}
+
+/// Read one line of `r` (through its `\n`) into `buf`, keeping at most `max + 1` bytes of it (a
+/// longer line is counted, not kept): (the line's length in bytes, whether it ends with `\n`).
+pub(crate) fn read_line_limited(r: &mut impl BufRead, buf: &mut Vec<u8>, max: usize) -> std::io::Result<(u64, bool)> {
+    buf.clear();
+    let mut len = 0u64;
+    loop {
+        let chunk = r.fill_buf()?;
+        if chunk.is_empty() {
+            return Ok((len, false));
+        }
+        let (take, done) = match chunk.iter().position(|&b| b == b'\n') {
+            Some(i) => (i + 1, true),
+            None => (chunk.len(), false),
+        };
+        let room = (max + 1).saturating_sub(buf.len()).min(take);
+        buf.extend_from_slice(&chunk[..room]);
+        len += take as u64;
+        r.consume(take);
+        if done {
+            return Ok((len, true));
+        }
+    }
+}
+
 /// Read a checkpoint: a header of this format and results version whose fingerprint is
 /// `fingerprint_for(header)`, then every complete line a life of it, each life once (an input
 /// error naming the line otherwise); a last line without its newline is torn (reported in
@@ -178,16 +225,15 @@ pub(crate) fn read_checkpoint(
     on_life: &dyn Fn(),
 ) -> Result<Checkpoint> {
     let Reader { who, this, again, line_fix } = reader;
-    let file = std::fs::File::open(path)
-        .map_err(|e| input_err(format!("{who}: cannot read the checkpoint {}: {e}", path.display())))?;
-    let mut file = std::io::BufReader::new(file);
+    let mut file = open_checkpoint(path, who)?;
     let mut buf = Vec::new();
-    let mut read_line = |buf: &mut Vec<u8>| -> Result<bool> {
-        buf.clear();
-        file.read_until(b'\n', buf).with_context(|| format!("reading the checkpoint {}", path.display()))?;
-        Ok(buf.last() == Some(&b'\n'))
+    // (bytes of the line, whether it ended with its newline); at most MAX_LINE_BYTES kept in buf.
+    let mut read_line = |buf: &mut Vec<u8>| -> Result<(u64, bool)> {
+        read_line_limited(&mut file, buf, MAX_LINE_BYTES)
+            .with_context(|| format!("reading the checkpoint {}", path.display()))
     };
-    let complete = read_line(&mut buf)?;
+    let (_, complete) = read_line(&mut buf)?;
+    let complete = complete && buf.len() <= MAX_LINE_BYTES;
     let header_line = std::str::from_utf8(&buf).unwrap_or("").trim_end_matches('\n').to_string();
     // A header of another format names its format if it has one.
     let format = serde_json::from_str::<serde_json::Value>(&header_line)
@@ -234,16 +280,21 @@ pub(crate) fn read_checkpoint(
         Checkpoint { header_line, header, lives: BTreeMap::new(), complete_len: buf.len() as u64, torn_bytes: 0 };
     let mut line_of: BTreeMap<usize, usize> = BTreeMap::new();
     for n in 2.. {
-        let complete = read_line(&mut buf)?;
-        if buf.is_empty() {
+        let (len, complete) = read_line(&mut buf)?;
+        if len == 0 {
             break;
         }
         if !complete {
-            // The run stopped while writing this line.
-            cp.torn_bytes = buf.len() as u64;
+            // The run stopped while writing this line (or a crash left a tail of NUL bytes).
+            cp.torn_bytes = len;
             break;
         }
         let refuse = |why: String| input_err(format!("{who}: {} line {n} {why}; {line_fix}", path.display()));
+        if len > MAX_LINE_BYTES as u64 {
+            return Err(refuse(format!(
+                "is {len} bytes long, longer than any life line ({MAX_LINE_BYTES} bytes at most): the file is damaged"
+            )));
+        }
         let text = std::str::from_utf8(&buf[..buf.len() - 1]).map_err(|_| refuse("is not UTF-8 text".into()))?;
         let (life, outcome) = parse_life_line(&cp.header_line, text).map_err(refuse)?;
         if let Some(first) = line_of.insert(life, n) {
@@ -415,70 +466,24 @@ impl CheckpointWriter {
     }
 }
 
-/// The lock of a checkpoint: `CHECKPOINT.lock`, created with `create_new`, holding the process
-/// id; removed on drop (and by the Ctrl-C handler).
+/// The lock of a checkpoint: `CHECKPOINT.lock` ([`Lock`]: the process id and the command;
+/// removed on drop and by the Ctrl-C handler). Taking it also removes a temporary checkpoint
+/// that a run killed while creating it left beside it.
 pub(crate) struct CheckpointLock {
-    path: PathBuf,
+    _lock: Lock,
 }
 
 impl CheckpointLock {
-    pub(crate) fn acquire(checkpoint: &Path) -> Result<Self> {
+    pub(crate) fn acquire(checkpoint: &Path, command: &str) -> Result<Self> {
         let mut name = checkpoint.as_os_str().to_owned();
         name.push(".lock");
-        let path = PathBuf::from(name);
-        for _ in 0..2 {
-            crate::output::register_pending(&path);
-            match std::fs::OpenOptions::new().write(true).create_new(true).open(&path) {
-                Ok(mut f) => {
-                    let _ = writeln!(f, "{}", std::process::id());
-                    return Ok(CheckpointLock { path });
-                }
-                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-                    crate::output::forget_pending(&path);
-                    let holder = std::fs::read_to_string(&path).ok().and_then(|t| t.trim().parse::<u32>().ok());
-                    match holder {
-                        Some(pid) if !process_running(pid) => {
-                            eprintln!(
-                                "Note: removed the stale lock {} of process {pid}, which is no longer running",
-                                path.display()
-                            );
-                            let _ = std::fs::remove_file(&path);
-                        }
-                        _ => {
-                            return Err(input_err(format!(
-                                "the checkpoint {} is in use by another `caisson design` or `caisson merge` run{} (its lock {} exists): wait for that run to end or give another --out; if no such run is going on, remove {}",
-                                checkpoint.display(),
-                                holder.map_or(String::new(), |p| format!(" (process {p})")),
-                                path.display(),
-                                path.display()
-                            )))
-                        }
-                    }
-                }
-                Err(e) => {
-                    crate::output::forget_pending(&path);
-                    return Err(anyhow::Error::new(e).context(format!("creating the lock {}", path.display())));
-                }
-            }
+        let what = format!("the checkpoint {}", checkpoint.display());
+        let lock = Lock::acquire(Path::new(&name), command, &what, "give another --out")?;
+        if let (Some(dir), Some(file)) = (checkpoint.parent(), checkpoint.file_name()) {
+            let dir = if dir.as_os_str().is_empty() { Path::new(".") } else { dir };
+            remove_stale_temporaries(dir, &|stem| file == stem);
         }
-        Err(input_err(format!("cannot take the lock {} (another run took it meanwhile)", path.display())))
-    }
-}
-
-impl Drop for CheckpointLock {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.path);
-        crate::output::forget_pending(&self.path);
-    }
-}
-
-/// Whether process `pid` is running (Linux: `/proc/PID`; elsewhere assumed running, so a stale
-/// lock is reported rather than removed).
-pub(crate) fn process_running(pid: u32) -> bool {
-    if cfg!(target_os = "linux") {
-        pid == std::process::id() || Path::new("/proc").join(pid.to_string()).exists()
-    } else {
-        true
+        Ok(CheckpointLock { _lock: lock })
     }
 }
 
@@ -616,6 +621,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let range = args.life_range.clone().unwrap_or(0..design.lives);
     let shard = args.life_range.is_some();
     check_out_dir(args.out.as_deref())?;
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "design")).transpose()?;
     let checkpoint: Option<PathBuf> =
         args.checkpoint.clone().or_else(|| args.out.as_ref().map(|d| d.join("checkpoint.jsonl")));
     if args.resume && checkpoint.is_none() {
@@ -634,7 +641,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     if let Some(parent) = checkpoint.as_deref().and_then(Path::parent).filter(|p| !p.as_os_str().is_empty()) {
         ensure_dir(parent)?;
     }
-    let _lock = checkpoint.as_deref().map(CheckpointLock::acquire).transpose()?;
+    let _lock = checkpoint.as_deref().map(|c| CheckpointLock::acquire(c, "design")).transpose()?;
     let (mut done, writer) = match &checkpoint {
         Some(path) => {
             if args.resume {
@@ -649,7 +656,10 @@ pub fn run(args: DesignArgs) -> Result<()> {
         None => (BTreeMap::new(), None),
     };
     // A checkpoint resumed for other lives keeps the lives outside them but does not use them.
+    let outside: BTreeMap<usize, StormOutcome> =
+        done.iter().filter(|(i, _)| !range.contains(*i)).map(|(&i, &o)| (i, o)).collect();
     done.retain(|i, _| range.contains(i));
+    let header_line = writer.as_ref().map(|w| w.lock().unwrap_or_else(|e| e.into_inner()).header_line.clone());
     if writer.is_some() {
         // Ctrl-C: finish the lives in progress, keep them in the checkpoint, exit 130.
         crate::interrupt::graceful();
@@ -703,12 +713,24 @@ pub fn run(args: DesignArgs) -> Result<()> {
             kept()
         );
     }
+    // The outputs (and the checkpoint, if it is in --out) are one set.
+    let _set = args.out.as_deref().map(crate::output::OutSet::open);
+    if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
+        // The lives in index order, whatever the order they finished in: the same file for any
+        // --threads and after any resume.
+        let mut text = format!("{header_line}\n");
+        let mut all: Vec<(&usize, &StormOutcome)> = done.iter().chain(outside.iter()).collect();
+        all.sort_by_key(|(i, _)| **i);
+        for (i, o) in all {
+            text.push_str(&life_line(header_line, *i, o));
+        }
+        write_atomic(path, text.as_bytes())?;
+    }
     if shard {
         let dir = args.out.as_deref().expect("--life-range requires --out");
-        ensure_dir(dir)?;
         write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
         let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-        crate::output::tidy_out_dir(dir, "design", &keep);
+        crate::output::tidy_out_dir(dir, "design", &keep)?;
         crate::sayln!(
             "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {}; no statistics (`caisson merge` joins the shards)",
             range.start,
@@ -755,7 +777,8 @@ pub(crate) fn report_lives(
         crate::say!("{}", design_text(&report));
     }
     if let Some(dir) = out {
-        ensure_dir(dir)?;
+        // Merge and design opened the set before writing their checkpoint into it.
+        let _set = (!crate::output::set_open()).then(|| crate::output::OutSet::open(dir));
         write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes())?;
         write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?)?;
         let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
@@ -764,7 +787,7 @@ pub(crate) fn report_lives(
             lives.iter().map(|l| if l.failed(&failure) { failure_m } else { l.sliding_m.abs() }).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
         plots(dir, title, &dynamic, &rigid, failure_m)?;
-        crate::output::tidy_out_dir(dir, "design", keep);
+        crate::output::tidy_out_dir(dir, "design", keep)?;
         if !json {
             crate::sayln!(
                 "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",

@@ -6,7 +6,7 @@
 
 use crate::cli::FragilityArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
+use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::fragility::{
@@ -202,6 +202,8 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     let params = sc.fragility_for("`caisson fragility`").map_err(input_err)?;
     check_out_dir(args.out.as_deref())?;
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "fragility")).transpose()?;
     let case = sc.storm_case(true).map_err(input_err)?;
     let estimate = caisson::analysis::work::fragility(&case, params);
     crate::work::say(crate::work::check("fragility", &estimate, &crate::work::FRAGILITY)?);
@@ -220,11 +222,11 @@ pub fn run(args: FragilityArgs) -> Result<()> {
         crate::say!("{}", table_text(&setup, name, &result, case.rigid_block_mu));
     }
     if let Some(dir) = &args.out {
-        ensure_dir(dir)?;
+        let _set = crate::output::OutSet::open(dir);
         write_atomic(&dir.join("fragility.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("fragility.csv"), &fragility_csv(&setup, &result)?)?;
         fragility_plot(&dir.join("fragility.svg"), name, &result)?;
-        crate::output::tidy_out_dir(dir, "fragility", &[]);
+        crate::output::tidy_out_dir(dir, "fragility", &[])?;
         if !args.json {
             crate::sayln!("\nWrote fragility.json, fragility.csv, fragility.svg to {}", dir.display());
         }

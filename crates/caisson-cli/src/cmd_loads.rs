@@ -8,7 +8,7 @@
 
 use crate::cli::LoadsArgs;
 use crate::input_err;
-use crate::output::{check_finite_fields, check_out_dir, ensure_dir, pretty, write_atomic};
+use crate::output::{check_finite_fields, check_out_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
 use caisson::analysis::conventional::{static_check, DesignWaveRule, StaticCheck};
@@ -45,6 +45,8 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     }
     // Before any computing: a bad --out is refused at once.
     check_out_dir(args.out.as_deref())?;
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "loads")).transpose()?;
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     let ws = sc.waves_for("`caisson loads`").map_err(input_err)?;
     // Goda's design wave (regular: H; irregular: H_max, docs/model.md §1.3) and its checks.
@@ -86,7 +88,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
         crate::say!("{}", loads_text(&sc, ws, &check));
     }
     if let Some(out) = &args.out {
-        ensure_dir(out)?;
+        let _set = crate::output::OutSet::open(out);
         write_atomic(&out.join("loads.json"), pretty(&doc)?.as_bytes())?;
         if let Some((records, train)) = &history {
             write_history(out, ws, &loads, records, train)?;
@@ -99,7 +101,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
                 );
             }
         }
-        crate::output::tidy_out_dir(out, "loads", &[]);
+        crate::output::tidy_out_dir(out, "loads", &[])?;
     }
     Ok(())
 }

@@ -28,14 +28,15 @@
 
 use crate::cli::MergeArgs;
 use crate::cmd_design::{
-    life_line, load_design, process_running, read_checkpoint, report_lives, CheckpointLock, Header, Reader,
+    life_line, load_design, open_checkpoint, read_checkpoint, read_line_limited, report_lives, CheckpointLock, Header,
+    Reader, MAX_LINE_BYTES,
 };
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, progress, TempFile};
+use crate::output::{check_out_dir, ensure_dir, process_running, progress, TempFile};
 use anyhow::{Context, Result};
 use caisson::analysis::lifetime::StormOutcome;
 use caisson::report::design::design_fingerprint;
-use std::io::{BufRead, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// No shard holds the life yet.
@@ -67,9 +68,9 @@ fn text(r: &std::ops::Range<usize>) -> String {
 
 /// `brute_force` of a checkpoint's header, if the header says (read in full later).
 fn brute_force_of(path: &Path) -> Option<bool> {
-    let mut line = String::new();
-    std::io::BufReader::new(std::fs::File::open(path).ok()?).read_line(&mut line).ok()?;
-    serde_json::from_str::<serde_json::Value>(&line).ok()?.get("brute_force")?.as_bool()
+    let mut line = Vec::new();
+    read_line_limited(&mut open_checkpoint(path, "").ok()?, &mut line, MAX_LINE_BYTES).ok()?;
+    serde_json::from_slice::<serde_json::Value>(&line).ok()?.get("brute_force")?.as_bool()
 }
 
 /// Refuse a shard whose checkpoint is being written by a running process (its lock held).
@@ -77,10 +78,13 @@ fn refuse_if_running(shard: &Shard) -> Result<()> {
     let mut lock = shard.checkpoint.as_os_str().to_owned();
     lock.push(".lock");
     let lock = PathBuf::from(lock);
-    let holder = std::fs::read_to_string(&lock).ok().and_then(|t| t.trim().parse::<u32>().ok());
+    let text = crate::output::read_small(&lock).unwrap_or_default();
+    let mut words = text.split_whitespace();
+    let holder = words.next().and_then(|t| t.parse::<u32>().ok());
+    let by = words.next().unwrap_or("design");
     match holder {
         Some(pid) if process_running(pid) => Err(input_err(format!(
-            "{}: its checkpoint {} is being written by a running `caisson design` (process {pid}, lock {}): wait for it to end, then merge",
+            "{}: its checkpoint {} is being written by a running `caisson {by}` (process {pid}, lock {}): wait for it to end, then merge",
             shard.name(),
             shard.checkpoint.display(),
             lock.display()
@@ -91,6 +95,7 @@ fn refuse_if_running(shard: &Shard) -> Result<()> {
 
 pub fn run(args: MergeArgs) -> Result<()> {
     check_out_dir(Some(&args.out))?;
+    let _out_lock = crate::output::OutLock::acquire(&args.out, "merge")?;
     let shards: Vec<Shard> = args.shards.iter().map(|a| Shard::new(a)).collect();
     for (k, s) in shards.iter().enumerate() {
         let same = |a: &Shard| match (a.checkpoint.canonicalize(), s.checkpoint.canonicalize()) {
@@ -203,7 +208,9 @@ pub fn run(args: MergeArgs) -> Result<()> {
     // The merged checkpoint: the header and the lines of one run of lives 0..N.
     ensure_dir(&args.out)?;
     let cp_path = args.out.join("checkpoint.jsonl");
-    let _lock = CheckpointLock::acquire(&cp_path)?;
+    let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
+    // The checkpoint and the outputs of report_lives: one set.
+    let _set = crate::output::OutSet::open(&args.out);
     let header_line = serde_json::to_string(&Header::new(fingerprint, &(0..n), brute_force))?;
     let (tmp, f) = TempFile::create(&cp_path)?;
     let mut w = std::io::BufWriter::new(f);

@@ -2,7 +2,7 @@
 
 use crate::cli::RunArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, report_json, tidy_out_dir, write_atomic, TempFile};
+use crate::output::{check_out_dir, pretty, report_json, tidy_out_dir, write_atomic, TempFile};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response};
@@ -268,45 +268,11 @@ pub fn write_plots(dir: &std::path::Path, h: &HistoryEnvelope, title: &str) -> R
     Ok(())
 }
 
-/// Create `dir` (and its missing parents) for a run's files; the directories this call created
-/// are removed again, if still empty, when the run fails (the guard's drop, unless
-/// [`OutDir::keep`]): a failed run leaves no empty directory behind.
-pub struct OutDir {
-    /// The directories created, innermost first.
-    created: Vec<PathBuf>,
-}
-
-impl OutDir {
-    pub fn create(dir: &Path) -> Result<Self> {
-        let created = dir
-            .ancestors()
-            .filter(|p| !p.as_os_str().is_empty())
-            .take_while(|p| std::fs::symlink_metadata(p).is_err())
-            .map(Path::to_path_buf)
-            .collect();
-        ensure_dir(dir)?;
-        Ok(OutDir { created })
-    }
-    /// The run succeeded: keep the directories.
-    pub fn keep(mut self) {
-        self.created.clear();
-    }
-}
-
-impl Drop for OutDir {
-    fn drop(&mut self) {
-        // Only empty directories are removed (the temporary files are gone by now).
-        for d in &self.created {
-            if std::fs::remove_dir(d).is_err() {
-                break;
-            }
-        }
-    }
-}
-
 pub fn run(args: RunArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
     check_out_dir(args.out.as_deref())?;
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "run")).transpose()?;
     crate::work::say(crate::work::check_run(&sc, args.out.is_some())?);
     match &sc.load {
         Some(load) => run_load(&args, &sc, load),
@@ -325,7 +291,7 @@ pub fn run(args: RunArgs) -> Result<()> {
 /// `caisson run` on a `[load]` scenario.
 fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     // With --out the histories go to their files as the run proceeds.
-    let out = args.out.as_deref().map(OutDir::create).transpose()?;
+    let _set = args.out.as_deref().map(crate::output::OutSet::open);
     let mut files = match &args.out {
         Some(dir) => Some(HistoryFiles::create(dir, sc.foundation().springs)?),
         None => None,
@@ -352,10 +318,7 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
         let envelope = files.finish()?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
         write_plots(dir, &envelope, title)?;
-        if let Some(o) = out {
-            o.keep();
-        }
-        tidy_out_dir(dir, "run", &[]);
+        tidy_out_dir(dir, "run", &[])?;
         if !args.json {
             crate::sayln!(
                 "\nWrote summary.json, history.csv, springs.csv, loads.svg, displacements.svg, springs.svg to {}",

@@ -122,10 +122,21 @@ pub fn run(args: SizeArgs) -> Result<()> {
         ));
     }
     check_out_dir(args.out.as_deref())?;
-    // Every width of the grid must build (a width whose caisson floats is an input error).
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "size")).transpose()?;
+    // Every width of the grid must build (a width whose caisson floats is an input error); the
+    // work is estimated on them as `design` estimates one width's lives, and refused over the
+    // budget (docs/cli.md, Limits).
+    let mut grid = Vec::new();
     for w in curve_widths(&p) {
-        at_width(&sc, w)?.storm_case(design.screen).map_err(input_err)?;
+        let sw = at_width(&sc, w)?;
+        let case = sw.storm_case(design.screen).map_err(input_err)?;
+        let waves = sw.waves_for("`caisson size`").map_err(input_err)?;
+        let one_width = caisson::analysis::lifetime::DesignParams { lives: p.lives, ..design.clone() };
+        grid.push(caisson::analysis::work::design(&case, &one_width, waves));
     }
+    let candidates = grid.len() + 2 * bisection_steps(&p, (p.range_m.1 - p.range_m.0) / (grid.len() - 1) as f64);
+    let note = crate::work::check("size", &caisson::analysis::work::size(&grid, candidates), &crate::work::SIZE)?;
     if args.resume && args.out.is_none() {
         return Err(input_err("--resume needs the checkpoint: give --out DIR (DIR/size_checkpoint.jsonl)"));
     }
@@ -135,7 +146,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
     }
-    let _lock = checkpoint.as_deref().map(crate::cmd_design::CheckpointLock::acquire).transpose()?;
+    let _lock = checkpoint.as_deref().map(|c| crate::cmd_design::CheckpointLock::acquire(c, "size")).transpose()?;
     let mut finished: Vec<Candidate> = Vec::new();
     let mut writer: Option<(String, std::fs::File)> = None;
     if let Some(path) = &checkpoint {
@@ -216,6 +227,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
         );
     }
     crate::interrupt::graceful();
+    crate::work::say(note);
     let sizing = size(&p, &mut evaluate)?;
     pb.finish_and_clear();
     // The deterministic width is cheap: it is searched from a quarter of the range's smallest
@@ -246,13 +258,13 @@ pub fn run(args: SizeArgs) -> Result<()> {
         crate::say!("{}", size_text(&report));
     }
     if let Some(dir) = &args.out {
-        ensure_dir(dir)?;
+        let _set = crate::output::OutSet::open(dir);
         write_atomic(&dir.join("size.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("candidates.csv"), &candidates_csv(&report)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("size");
         plot(dir, title, &report)?;
         let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-        crate::output::tidy_out_dir(dir, "size", &keep);
+        crate::output::tidy_out_dir(dir, "size", &keep)?;
         if !args.json {
             crate::sayln!(
                 "\nWrote size.json, candidates.csv, design_curve.svg (and size_checkpoint.jsonl) to {}",

@@ -3,7 +3,7 @@
 
 use crate::cli::SpectrumArgs;
 use crate::input_err;
-use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, write_atomic};
+use crate::output::{check_out_dir, pretty, progress, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::spectrum::{estimated_steps, log_space, sweep, SpectrumPoint};
@@ -46,6 +46,8 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
         )));
     };
     check_out_dir(args.out.as_deref())?;
+    // Held to the end: a second run into the same --out is refused at once.
+    let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "spectrum")).transpose()?;
     let ratios = log_space(from, to, count);
     let steps = estimated_steps(sc.structure(), &ratios);
     if steps.is_nan() || steps > MAX_STEPS {
@@ -105,7 +107,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
         crate::sayln!("Ψ closed: undamped SDOF (docs/model.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
     }
     if let Some(dir) = &args.out {
-        ensure_dir(dir)?;
+        let _set = crate::output::OutSet::open(dir);
         let mut w = csv::Writer::from_writer(Vec::new());
         w.write_record([
             "tr_over_t0",
@@ -157,7 +159,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
                 },
             ],
         )?;
-        crate::output::tidy_out_dir(dir, "spectrum", &[]);
+        crate::output::tidy_out_dir(dir, "spectrum", &[])?;
         if !args.json {
             crate::sayln!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
         }

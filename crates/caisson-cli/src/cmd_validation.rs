@@ -217,6 +217,8 @@ const CHOICES: &str = include_str!("validation_choices.md");
 pub fn run(args: ValidationArgs) -> Result<()> {
     let out = args.out;
     crate::output::check_out_dir(Some(&out))?;
+    let _out_lock = crate::output::OutLock::acquire(&out, "validation")?;
+    let _set = crate::output::OutSet::open(&out);
     let figs = out.join("figures");
     ensure_dir(&figs)?;
     let mut t = String::new();
@@ -542,7 +544,7 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let _ = writeln!(t, "{CHOICES}");
     let path = out.join("validation.md");
     write_atomic(&path, t.as_bytes())?;
-    crate::output::tidy_out_dir(&out, "validation", &[]);
+    crate::output::tidy_out_dir(&out, "validation", &[])?;
     crate::sayln!(
         "Wrote {} and its figures in {} ({} of {} findings reproduced with seed-2011, {} with consistent)",
         path.display(),

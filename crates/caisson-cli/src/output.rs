@@ -108,13 +108,15 @@ fn present(dir: &Path, pattern: &str) -> Vec<(String, PathBuf)> {
     out
 }
 
-/// After `command` has written its files into `dir`: no file there may be mistaken for this
+/// After `command` has written its files into `dir`: the set is put in place ([`publish`]), and
+/// no file there may be mistaken for this
 /// run's results. Files that `command` writes (by name, [`OUTPUTS`]) but did not write this time
 /// are left from an earlier run: they are removed, and a line on stderr names them (a design
 /// checkpoint other than `keep` is named in a `Warning:` instead: it may hold work to resume).
 /// Files that other commands write are named in a `Warning:`. Other files are not caisson's and
 /// are left alone.
-pub fn tidy_out_dir(dir: &Path, command: &str, keep: &[&Path]) {
+pub fn tidy_out_dir(dir: &Path, command: &str, keep: &[&Path]) -> Result<()> {
+    publish()?;
     let written = written().clone();
     let mut removed = Vec::new();
     let mut foreign: Vec<String> = Vec::new();
@@ -151,6 +153,7 @@ pub fn tidy_out_dir(dir: &Path, command: &str, keep: &[&Path]) {
     if !foreign.is_empty() {
         eprintln!("Warning: {} also holds {}: they are not results of this run", dir.display(), foreign.join("; "));
     }
+    Ok(())
 }
 
 /// A temporary file beside its destination, created exclusively; removed on drop unless
@@ -188,10 +191,18 @@ impl TempFile {
     }
 
     /// Flush the file's data to disk and rename it to `dest` (then sync the directory, where the
-    /// platform allows it). On error the temporary file is removed.
+    /// platform allows it). On error the temporary file is removed. While an [`OutSet`] is open
+    /// on `dest`'s directory the rename waits for [`OutSet::publish`] (the file stays, whole and
+    /// synced, under its temporary name).
     pub fn commit(mut self, dest: &Path) -> Result<()> {
         let synced = std::fs::File::open(&self.path).and_then(|f| f.sync_all());
         synced.with_context(|| format!("writing {}", dest.display()))?;
+        if let Some(set) = staged().as_mut().filter(|s| dest.starts_with(&s.dir)) {
+            set.files.push((self.path.clone(), dest.to_path_buf()));
+            self.committed = true;
+            written().push(dest.to_path_buf());
+            return Ok(());
+        }
         {
             // Under the registry's lock: Ctrl-C cannot remove the file between these steps.
             let mut files = pending();
@@ -219,6 +230,230 @@ impl Drop for TempFile {
             let _ = std::fs::remove_file(&self.path);
             forget_pending(&self.path);
         }
+    }
+}
+
+/// The files of the open [`OutSet`]: (temporary file, destination), in the order written.
+struct Staged {
+    dir: PathBuf,
+    files: Vec<(PathBuf, PathBuf)>,
+}
+
+static STAGED: Mutex<Option<Staged>> = Mutex::new(None);
+
+fn staged() -> std::sync::MutexGuard<'static, Option<Staged>> {
+    STAGED.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The files of one run in its `--out` directory, written as a set: while it is open, every file
+/// committed into the directory stays (written and synced) under its temporary name, and
+/// [`tidy_out_dir`] renames them all into place at the end ([`publish`]), one after the other
+/// under the registry's lock (Ctrl-C waits). A run that fails or is stopped before (a full disk,
+/// an error, Ctrl-C, a kill) leaves the previous set as it was: the guard's drop removes its
+/// temporary files (after a kill, the next run that takes the directory's lock does, [`OutLock`]).
+pub struct OutSet(());
+
+impl OutSet {
+    /// Open the set of `dir` (one at a time per process): files committed into `dir` from now
+    /// on wait for [`publish`].
+    #[must_use = "the set is discarded when the guard is dropped"]
+    pub fn open(dir: &Path) -> OutSet {
+        *staged() = Some(Staged { dir: dir.to_path_buf(), files: Vec::new() });
+        OutSet(())
+    }
+}
+
+/// Whether an [`OutSet`] is open.
+pub fn set_open() -> bool {
+    staged().is_some()
+}
+
+/// Rename every file of the open [`OutSet`] into place and sync the directory (nothing without
+/// an open set). A rename that fails (a destination made a directory meanwhile) is an error
+/// naming the file; the files after it are removed.
+pub fn publish() -> Result<()> {
+    let Some(set) = staged().take() else { return Ok(()) };
+    let mut files = pending();
+    let mut result = Ok(());
+    for (tmp, dest) in &set.files {
+        if result.is_ok() {
+            result = std::fs::rename(tmp, dest).with_context(|| format!("writing {}", dest.display()));
+        }
+        if result.is_err() {
+            let _ = std::fs::remove_file(tmp);
+        }
+        files.retain(|p| p != tmp);
+    }
+    drop(files);
+    let _ = std::fs::File::open(&set.dir).and_then(|d| d.sync_all());
+    result
+}
+
+impl Drop for OutSet {
+    fn drop(&mut self) {
+        // Not published: the run failed; its files never replace the previous set.
+        if let Some(set) = staged().take() {
+            for (tmp, dest) in set.files {
+                let _ = std::fs::remove_file(&tmp);
+                forget_pending(&tmp);
+                written().retain(|p| p != &dest);
+            }
+        }
+    }
+}
+
+/// A lock file holding `PID COMMAND`, created with `create_new` and removed on drop (and by the
+/// Ctrl-C handler). A lock whose process is gone is taken over (with a note); one held by a
+/// running process is refused by an input error naming the command that holds it.
+pub struct Lock {
+    path: PathBuf,
+}
+
+impl Lock {
+    /// Take the lock file `path` for `command`; `what` says what it guards (`"the checkpoint
+    /// out/checkpoint.jsonl"`), `fix` what to do instead of waiting (`"give another --out"`).
+    pub fn acquire(path: &Path, command: &str, what: &str, fix: &str) -> Result<Lock> {
+        for _ in 0..2 {
+            register_pending(path);
+            match std::fs::OpenOptions::new().write(true).create_new(true).open(path) {
+                Ok(mut f) => {
+                    let _ = writeln!(f, "{} {command}", std::process::id());
+                    return Ok(Lock { path: path.to_path_buf() });
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                    forget_pending(path);
+                    let text = read_small(path).unwrap_or_default();
+                    let mut words = text.split_whitespace();
+                    let holder = words.next().and_then(|t| t.parse::<u32>().ok());
+                    let by = words.next().map_or("caisson".to_string(), |c| format!("caisson {c}"));
+                    match holder {
+                        Some(pid) if !process_running(pid) => {
+                            eprintln!(
+                                "Note: removed the stale lock {} of process {pid}, which is no longer running",
+                                path.display()
+                            );
+                            let _ = std::fs::remove_file(path);
+                        }
+                        _ => {
+                            return Err(crate::input_err(format!(
+                                "{what} is in use by another `{by}` run{} (its lock {} exists): wait for that run to end or {fix}; if no such run is going on, remove {}",
+                                holder.map_or(String::new(), |p| format!(" (process {p})")),
+                                path.display(),
+                                path.display()
+                            )))
+                        }
+                    }
+                }
+                Err(e) => {
+                    forget_pending(path);
+                    return Err(anyhow::Error::new(e).context(format!("creating the lock {}", path.display())));
+                }
+            }
+        }
+        Err(crate::input_err(format!("cannot take the lock {} (another run took it meanwhile)", path.display())))
+    }
+}
+
+impl Drop for Lock {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.path);
+        forget_pending(&self.path);
+    }
+}
+
+/// The first 4 KiB of a (lock) file as text.
+pub fn read_small(path: &Path) -> Option<String> {
+    use std::io::Read;
+    let mut buf = Vec::new();
+    std::fs::File::open(path).ok()?.take(4096).read_to_end(&mut buf).ok()?;
+    Some(String::from_utf8_lossy(&buf).into_owned())
+}
+
+/// The lock of an output directory, `DIR/.caisson.lock`: every command that writes `--out`
+/// holds it from before its first file to the end, so two runs into one directory cannot mix
+/// their files (the second is refused at once). Taking it also removes the temporary files
+/// (`NAME.PID-N.tmp` of caisson's outputs) that a killed run left there.
+pub struct OutLock {
+    lock: Option<Lock>,
+    /// The directories this lock created, innermost first: removed on drop if left empty (a
+    /// run that fails leaves no empty directory behind).
+    created: Vec<PathBuf>,
+}
+
+impl Drop for OutLock {
+    fn drop(&mut self) {
+        drop(self.lock.take());
+        for d in &self.created {
+            if std::fs::remove_dir(d).is_err() {
+                break;
+            }
+        }
+    }
+}
+
+/// The name of the lock of an output directory.
+pub const OUT_LOCK: &str = ".caisson.lock";
+
+impl OutLock {
+    /// Create `dir` (as [`ensure_dir`]) and take its lock for `command`.
+    pub fn acquire(dir: &Path, command: &str) -> Result<OutLock> {
+        let created = dir
+            .ancestors()
+            .filter(|p| !p.as_os_str().is_empty())
+            .take_while(|p| std::fs::symlink_metadata(p).is_err())
+            .map(Path::to_path_buf)
+            .collect();
+        ensure_dir(dir)?;
+        let lock = Lock::acquire(
+            &dir.join(OUT_LOCK),
+            command,
+            &format!("the output directory {}", dir.display()),
+            "give another --out",
+        )?;
+        remove_stale_temporaries(dir, &|name| OUTPUTS.iter().any(|(_, p)| p.iter().any(|p| matches(p, name))));
+        remove_stale_temporaries(&dir.join("figures"), &|name| matches("validation_*.svg", name));
+        Ok(OutLock { lock: Some(lock), created })
+    }
+}
+
+/// Remove the temporary files `NAME.PID-N.tmp` in `dir` whose `NAME` is `ours` and whose process
+/// is no longer running (a run killed while writing NAME), with a note on stderr.
+pub fn remove_stale_temporaries(dir: &Path, ours: &dyn Fn(&str) -> bool) {
+    let Ok(entries) = std::fs::read_dir(dir) else { return };
+    let mut removed = Vec::new();
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some((stem, pid)) = temporary_of(&name) else { continue };
+        if ours(stem) && !process_running(pid) && std::fs::remove_file(e.path()).is_ok() {
+            removed.push(name);
+        }
+    }
+    if !removed.is_empty() {
+        removed.sort();
+        eprintln!(
+            "Note: removed {} from {}: temporary files of a run that was stopped",
+            removed.join(", "),
+            dir.display()
+        );
+    }
+}
+
+/// `("NAME", PID)` of a temporary file name `NAME.PID-N.tmp` ([`TempFile::create`]).
+fn temporary_of(name: &str) -> Option<(&str, u32)> {
+    let rest = name.strip_suffix(".tmp")?;
+    let (stem, tail) = rest.rsplit_once('.')?;
+    let (pid, n) = tail.split_once('-')?;
+    n.parse::<u64>().ok()?;
+    Some((stem, pid.parse().ok()?))
+}
+
+/// Whether process `pid` is running (Linux: `/proc/PID`; elsewhere assumed running, so a stale
+/// lock or temporary file is reported rather than removed).
+pub fn process_running(pid: u32) -> bool {
+    if cfg!(target_os = "linux") {
+        pid == std::process::id() || Path::new("/proc").join(pid.to_string()).exists()
+    } else {
+        true
     }
 }
 

@@ -177,7 +177,8 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                 }
             }
         }
-        root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
+        // The file is written here: an error (a full disk) names it.
+        root.present().map_err(|e| anyhow::anyhow!("writing {}: {e}", path.display()))?;
     }
     tmp.commit(path).context("writing an SVG plot")?;
     Ok(())

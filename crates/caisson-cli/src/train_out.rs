@@ -2,7 +2,7 @@
 //! CSV and the seed's Figs. 12/14-style plots of one realization. Also the progress bar and the
 //! thread pool shared with `caisson campaign`.
 
-use crate::cmd_run::{write_plots, HistoryFiles, OutDir};
+use crate::cmd_run::{write_plots, HistoryFiles};
 use crate::input_err;
 use crate::output::{pretty, progress, report_json, tidy_out_dir, write_atomic};
 use crate::plot::{Panel, Series};
@@ -206,7 +206,7 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
     if let Some(dir) = out {
         // Realization 0 again, its time histories written as it runs (deterministic: the same
         // numbers).
-        let guard = OutDir::create(dir)?;
+        let _set = crate::output::OutSet::open(dir);
         let mut files = HistoryFiles::create(dir, case.structure.foundation.springs)?;
         let mut rows = Rows::new(Sampler::of(case.structure), |r: &HistoryRow<'_>| files.row(r));
         case.run(0, Some(&mut rows)).context("the dynamic run failed")?;
@@ -218,8 +218,7 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
         let title = path.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
         write_plots(dir, &envelope, &format!("{title}, realization 0"))?;
         cumulative_plot(&dir.join("sliding.svg"), title, &summary)?;
-        guard.keep();
-        tidy_out_dir(dir, "run", &[]);
+        tidy_out_dir(dir, "run", &[])?;
         if !json_out {
             crate::sayln!("\nWrote summary.json, realizations.csv, waves.csv, history.csv and springs.csv (realization 0), loads.svg, displacements.svg, springs.svg, sliding.svg to {}", dir.display());
         }

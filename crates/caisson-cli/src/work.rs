@@ -1,5 +1,5 @@
 //! The work budget of the commands that can run long (docs/cli.md, "Limits"): `run`, `campaign`,
-//! `design` and `fragility` estimate their work with [`caisson::analysis::work`] before they
+//! `design`, `size` and `fragility` estimate their work with [`caisson::analysis::work`] before they
 //! start and refuse a run over [`Budget::DEFAULT`] with an input error (exit 2) that gives the
 //! estimate, the limit and what to change (the options and keys of the CLI, [`Advice`]); a long
 //! run within the budget says its estimate on stderr. `merge` simulates nothing and is not
@@ -35,6 +35,13 @@ pub const DESIGN: Advice = Advice {
     steps: "lower --lives (or `[design] lives`, or the lives of --life-range), `[design] life_years` or `[design] storm_duration_h`, or raise `[solver] dt_max_s` (with --brute-force, `[solver] dt_s`)",
     waves: "lower --lives (or `[design] lives`, or the lives of --life-range), `[design] life_years` or `[design] storm_duration_h`",
     memory: "lower --lives (or `[design] lives`, or the lives of --life-range)",
+    disk: "",
+};
+
+pub const SIZE: Advice = Advice {
+    steps: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    waves: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    memory: "lower `[size] lives`",
     disk: "",
 };
 

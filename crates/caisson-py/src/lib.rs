@@ -20,12 +20,13 @@ use caisson::analysis::checks::{
 use caisson::analysis::conventional::{static_check, DesignWave, StaticCheck};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormOutcome, LIFE_COLUMNS};
-use caisson::analysis::run::{run as run_engine, History};
+use caisson::analysis::run::{run as run_engine, run_observed, History};
 use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
 use caisson::analysis::work::{self, Advice, Budget, Histories, WorkEstimate};
+use caisson::dynamics::{Observer, StepView};
 use caisson::foundation::DampingMode;
-use caisson::loads::series::ForceSeries;
+use caisson::loads::series::{ForceSeries, MAX_SAMPLES};
 use caisson::loads::{LoadSpec, WaveForce};
 use caisson::report::campaign::CampaignReport;
 use caisson::report::design::{design_fingerprint, DesignReport};
@@ -35,7 +36,7 @@ use caisson::report::run::RunReport;
 use caisson::report::spectrum::SpectrumReport;
 use caisson::report::train::TrainRunReport;
 use caisson::scenario::design::MAX_LIVES;
-use caisson::scenario::{Scenario, ScenarioError as LibError};
+use caisson::scenario::{Scenario, ScenarioError as LibError, MAX_MAGNITUDE};
 use caisson::waves::{breaking, dispersion, surf_zone};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::create_exception;
@@ -44,7 +45,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::ops::ControlFlow;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Duration;
 
 create_exception!(
@@ -145,6 +146,22 @@ impl CoreScenario {
     /// file names (a force series).
     #[new]
     fn new(py: Python<'_>, text: &str, name: &str, base_dir: &str) -> PyResult<Self> {
+        // The CLI's limit on a scenario file, for text too.
+        let max = caisson::scenario::MAX_SCENARIO_BYTES;
+        if text.len() as u64 > max {
+            let message = format!(
+                "the scenario text is {} bytes, larger than {} MiB, the most a scenario file may be",
+                text.len(),
+                max >> 20
+            );
+            return Err(scenario_error(
+                py,
+                message,
+                None,
+                Some(format!("{} bytes", text.len())),
+                Some(format!("at most {} MiB", max >> 20)),
+            ));
+        }
         Scenario::from_toml(text, Path::new(name), Path::new(base_dir))
             .map(|sc| CoreScenario { sc })
             .map_err(|e| lib_error(py, e, Some(text)))
@@ -167,7 +184,7 @@ impl CoreScenario {
     }
     #[getter]
     fn has_fragility(&self) -> bool {
-        self.sc.fragility.is_some()
+        self.sc.has_fragility_table()
     }
     /// Simulated time of a `[load]` run, s.
     #[getter]
@@ -183,6 +200,13 @@ impl CoreScenario {
     fn structure_json(&self) -> PyResult<String> {
         serde_json::to_string(self.sc.structure()).map_err(|e| PyRuntimeError::new_err(e.to_string()))
     }
+}
+
+/// The text of the scenario file `path`, read as the CLI reads it (at most 1 MiB, a regular
+/// file: never a FIFO or a device read for ever).
+#[pyfunction]
+fn read_scenario(py: Python<'_>, path: &str) -> PyResult<String> {
+    py.detach(|| caisson::scenario::read_text(Path::new(path))).map_err(|e| lib_error(py, e, None))
 }
 
 /// JSON text of a report, refusing non-finite numbers as the CLI does.
@@ -202,60 +226,155 @@ fn report_json<T: serde::Serialize>(report: &T, what: &str) -> PyResult<String> 
     Ok(v.to_string())
 }
 
-/// Run `job` on a local pool of `threads` workers with the GIL released; `progress(done, total)`
-/// is called from this thread (GIL held) at most every 0.1 s while the count moves, and once at
-/// the end.
-fn drive<T: Send>(
+/// The payload a driver unwinds with when Python asked it to stop ([`Ctl::tick`]): caught by
+/// [`drive`], never a panic (`resume_unwind` does not run the panic hook).
+struct Cancelled;
+
+/// What a job running under [`drive`] sees: the count of finished items and whether Python has
+/// asked it to stop (a signal such as Ctrl-C, or an exception in the progress callback).
+struct Ctl {
+    done: AtomicUsize,
+    cancel: AtomicBool,
+}
+
+impl Ctl {
+    fn new() -> Self {
+        Ctl { done: AtomicUsize::new(0), cancel: AtomicBool::new(false) }
+    }
+    /// One more item finished; unwinds with [`Cancelled`] if asked to stop.
+    fn tick(&self) {
+        self.count();
+        self.check();
+    }
+    /// One more item finished.
+    fn count(&self) {
+        self.done.fetch_add(1, Ordering::Relaxed);
+    }
+    fn cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
+    }
+    /// Unwind with [`Cancelled`] if asked to stop (a cancellation point).
+    fn check(&self) {
+        if self.cancelled() {
+            std::panic::resume_unwind(Box::new(Cancelled));
+        }
+    }
+}
+
+/// The threads a call may start: 0 (one per core) to [`caisson::MAX_THREADS`], as the CLI's
+/// `--threads` (also `caisson._core.check_threads`, for the calls that start none).
+#[pyfunction]
+fn check_threads(py: Python<'_>, threads: usize) -> PyResult<()> {
+    if threads > caisson::MAX_THREADS {
+        let allowed = format!("a whole number from 0 (one per core) to {}", caisson::MAX_THREADS);
+        return Err(scenario_error(
+            py,
+            format!("`threads` = {threads}: must be {allowed}"),
+            Some("threads".into()),
+            Some(threads.to_string()),
+            Some(allowed),
+        ));
+    }
+    Ok(())
+}
+
+/// Run `job` on a local pool of `threads` workers with the GIL released. The calling thread
+/// wakes every 0.1 s: it runs Python's signal handlers (Ctrl-C raises `KeyboardInterrupt`) and
+/// calls `progress(done, total)` (GIL held) when the count moved, and once at the end. A signal
+/// or an exception of `progress` asks the job to stop ([`Ctl`]): the job's result so far (if it
+/// returned one rather than unwinding) comes back with the error.
+fn drive_keep<T: Send>(
     py: Python<'_>,
     threads: usize,
     total: usize,
     progress: Option<Py<PyAny>>,
-    job: impl FnOnce(&(dyn Fn() + Sync)) -> T + Send,
-) -> PyResult<T> {
+    job: impl FnOnce(&Ctl) -> T + Send,
+) -> PyResult<(Option<T>, Option<PyErr>)> {
+    check_threads(py, threads)?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .map_err(|e| PyRuntimeError::new_err(format!("starting the worker threads: {e}")))?;
-    let done = AtomicUsize::new(0);
-    let tick = || {
-        done.fetch_add(1, Ordering::Relaxed);
-    };
-    let Some(progress) = progress else {
-        return Ok(py.detach(|| pool.install(|| job(&tick))));
-    };
+    let ctl = Ctl::new();
     let mut reported = usize::MAX;
-    let mut report = |n: usize| -> PyResult<()> {
-        if n != reported {
-            reported = n;
-            Python::attach(|py| progress.call1(py, (n, total)).map(|_| ()))?;
+    let mut poll = |n: usize, py: Python<'_>| -> PyResult<()> {
+        py.check_signals()?;
+        if let Some(progress) = &progress {
+            if n != reported {
+                reported = n;
+                progress.call1(py, (n, total))?;
+            }
         }
         Ok(())
     };
-    let (result, callback_error) = py.detach(|| {
+    let (result, stop) = py.detach(|| {
         std::thread::scope(|s| {
             let (tx, rx) = std::sync::mpsc::channel();
+            let ctl = &ctl;
             let worker = s.spawn(move || {
-                let out = pool.install(|| job(&tick));
+                let out = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| pool.install(|| job(ctl))));
                 let _ = tx.send(());
                 out
             });
-            let mut callback_error = None;
+            let mut stop: Option<PyErr> = None;
             loop {
                 let finished = rx.recv_timeout(Duration::from_millis(100)).is_ok();
-                if callback_error.is_none() {
-                    callback_error = report(done.load(Ordering::Relaxed)).err();
+                if stop.is_none() {
+                    if let Err(e) = Python::attach(|py| poll(ctl.done.load(Ordering::Relaxed), py)) {
+                        ctl.cancel.store(true, Ordering::Relaxed);
+                        stop = Some(e);
+                    }
                 }
                 if finished {
                     break;
                 }
             }
-            (worker.join(), callback_error)
+            (worker.join(), stop)
         })
     });
-    let result = result.map_err(|_| PyRuntimeError::new_err("a worker thread panicked"))?;
-    match callback_error {
-        Some(e) => Err(e),
-        None => Ok(result),
+    match result {
+        Ok(Ok(t)) => Ok((Some(t), stop)),
+        Ok(Err(payload)) if payload.is::<Cancelled>() => Ok((None, stop)),
+        _ => Err(PyRuntimeError::new_err("internal error: a worker thread panicked")),
+    }
+}
+
+/// [`drive_keep`] for a job whose partial result is of no use: its result, or the error that
+/// stopped it.
+fn drive<T: Send>(
+    py: Python<'_>,
+    threads: usize,
+    total: usize,
+    progress: Option<Py<PyAny>>,
+    job: impl FnOnce(&Ctl) -> T + Send,
+) -> PyResult<T> {
+    match drive_keep(py, threads, total, progress, job)? {
+        (_, Some(e)) => Err(e),
+        (Some(t), None) => Ok(t),
+        (None, None) => Err(PyRuntimeError::new_err("internal error: a job stopped without a reason")),
+    }
+}
+
+/// The observer of a Python `run`: hands each step to the history (if kept) and is a
+/// cancellation point ([`Ctl::check`]) every 4096 steps (a few milliseconds).
+struct Watch<'a> {
+    inner: Option<&'a mut History>,
+    ctl: &'a Ctl,
+    steps: u32,
+}
+
+impl Observer for Watch<'_> {
+    fn observe(&mut self, view: &StepView<'_>) {
+        if let Some(h) = self.inner.as_deref_mut() {
+            h.observe(view);
+        }
+        self.steps = self.steps.wrapping_add(1);
+        if self.steps.is_multiple_of(4096) {
+            self.ctl.check();
+        }
+    }
+    fn reads_springs(&self) -> bool {
+        self.inner.as_deref().is_some_and(|h| h.reads_springs())
     }
 }
 
@@ -310,12 +429,24 @@ fn series_from(py: Python<'_>, t_s: &[f64], fx_kn: &[f64], fy_kn: &[f64], moment
             Some(allowed.to_string()),
         )
     };
+    if n > MAX_SAMPLES {
+        return Err(bad(
+            "t_s",
+            format!("{n} samples"),
+            &format!("at most {MAX_SAMPLES} samples (what the largest series file holds)"),
+        ));
+    }
     for (name, v) in [("fx_kn", fx_kn), ("fy_kn", fy_kn), ("moment_knm", moment_knm)] {
         if v.len() != n {
             return Err(bad(name, format!("{} values", v.len()), &format!("must have one value per time ({n})")));
         }
-        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-            return Err(bad(name, format!("{x} (sample {i})"), "must be a finite number"));
+        // Beyond 1e300 kN a value overflows once converted to N, as in a scenario file.
+        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !(x.is_finite() && x.abs() <= MAX_MAGNITUDE)) {
+            return Err(bad(
+                name,
+                format!("{x:e} (sample {i})"),
+                &format!("must be a finite number of magnitude at most {MAX_MAGNITUDE:e}"),
+            ));
         }
     }
     if n < 2 {
@@ -358,6 +489,12 @@ const DESIGN: Advice = Advice {
     memory: "simulate fewer lives at a time (`indices=`)",
     disk: "",
 };
+const LOADS: Advice = Advice {
+    steps: "",
+    waves: "evaluate fewer waves per call (in chunks)",
+    memory: "evaluate fewer waves per call (in chunks: the table holds about 600 bytes per wave)",
+    disk: "",
+};
 const FRAGILITY: Advice = Advice {
     steps: "lower `[fragility] storms`, the number of `[fragility] significant_heights_m` or `[fragility] storm_duration_h`, or raise `[solver] dt_max_s`",
     waves: "lower `[fragility] storms`, the number of `[fragility] significant_heights_m` or `[fragility] storm_duration_h`",
@@ -387,7 +524,25 @@ fn check_work(py: Python<'_>, command: &str, e: &WorkEstimate, advice: &Advice) 
             };
             Err(scenario_error(py, message, None, Some(value), Some(allowed)))
         }
-        _ => Ok(()),
+        _ => probe_memory(command, e.memory_bytes),
+    }
+}
+
+/// Refuse with `MemoryError` work whose `bytes` held cannot be had now (an address-space limit,
+/// `ulimit -v`, or a small machine): a reservation of that size is tried and given back before
+/// the work starts, so that an allocation failing later (which aborts the interpreter, or
+/// panics in numpy) is unlikely.
+fn probe_memory(command: &str, bytes: f64) -> PyResult<()> {
+    if bytes < (64 << 20) as f64 {
+        return Ok(());
+    }
+    let mut v: Vec<u8> = Vec::new();
+    match v.try_reserve_exact(bytes as usize) {
+        Ok(()) => Ok(()),
+        Err(_) => Err(pyo3::exceptions::PyMemoryError::new_err(format!(
+            "{command} would hold about {} in memory, which cannot be had now (an address-space limit or a small machine): ask for less at a time",
+            work::describe_bytes(bytes)
+        ))),
     }
 }
 
@@ -495,6 +650,8 @@ fn run_load<'py>(
             let s = series_from(py, t.as_slice()?, fx.as_slice()?, fy.as_slice()?, m.as_slice()?)?;
             let d = duration_s.unwrap_or_else(|| s.last_time_s());
             own = LoadSpec::Series(s);
+            // The bound of a `[load]` on the weight, as the CLI checks a series file.
+            sc.check_load(&own).map_err(|e| lib_error(py, e, None))?;
             (&own, d)
         }
         None => {
@@ -531,7 +688,19 @@ fn run_load<'py>(
     })?;
     let h = if history { Histories::Held } else { Histories::None };
     check_work(py, "caisson.run", &py.detach(|| work::run(sc.structure(), duration, h)), &RUN_LOAD)?;
-    let result = py.detach(|| run_engine(sc.structure(), load, duration, history)).map_err(run_error)?;
+    let structure = sc.structure();
+    let (summary, held) = drive(py, 1, 1, None, |ctl| {
+        let mut held = history.then(|| {
+            let samples = (duration / structure.solver.output_interval_s).ceil() as usize + 1;
+            let (c, f) = (&structure.caisson, &structure.foundation);
+            let x = f.spring_positions(c.width_m);
+            History::new(structure.solver.output_interval_s, samples, x, c.weight_in_water_n, f.mu_static)
+        });
+        let mut watch = Watch { inner: held.as_mut(), ctl, steps: 0 };
+        run_observed(structure, load, duration, Some(&mut watch)).map(|summary| (summary, held))
+    })?
+    .map_err(run_error)?;
+    let result = caisson::analysis::run::RunResult { summary, history: held };
     let x = sc.foundation().spring_positions(sc.caisson().width_m);
     let s = sc.structure();
     let mut warnings = structure_warnings(s);
@@ -605,8 +774,8 @@ fn spectrum(
         ));
     }
     let structure = sc.structure();
-    let points =
-        drive(py, threads, ratios.len(), progress, |tick| sweep(structure, base, &ratios, tick))?.map_err(run_error)?;
+    let points = drive(py, threads, ratios.len(), progress, |ctl| sweep(structure, base, &ratios, &|| ctl.tick()))?
+        .map_err(run_error)?;
     let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
     let report = SpectrumReport::new(
         structure.model().natural_period_s(),
@@ -633,7 +802,8 @@ fn run_trains(py: Python<'_>, sc: &CoreScenario, threads: usize, progress: Optio
     let case = sc.sc.train_case().map_err(|e| lib_error(py, e, None))?;
     check_work(py, "caisson.run", &py.detach(|| work::train(&case, Histories::None)), &RUN_WAVES)?;
     let total = case.waves.train.realizations;
-    let summary = drive(py, threads, total, progress, |tick| run_realizations(&case, tick))?.map_err(run_error)?;
+    let summary =
+        drive(py, threads, total, progress, |ctl| run_realizations(&case, &|| ctl.tick()))?.map_err(run_error)?;
     report_json(&TrainRunReport::new(case.structure, case.waves, &summary), "summary")
 }
 
@@ -683,7 +853,10 @@ fn loads_columns<'py>(
             ));
         }
     }
+    check_threads(py, threads)?;
     let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
+    let e = work::loads_table(h.len(), loads_table::bytes_per_row(ws, w, mu));
+    check_work(py, "caisson.loads.evaluate", &e, &LOADS)?;
     loads_table::build(py, ws, w, mu, h, t, threads)?
         .map_err(|(_, e)| scenario_error(py, e, Some("[waves] regime".into()), None, None))
 }
@@ -773,7 +946,8 @@ fn campaign(
     }
     check_work(py, "caisson.campaign", &py.detach(|| work::campaign(&c.setups, true)), &CAMPAIGN)?;
     let total = c.setups.iter().map(|s| s.waves.train.realizations).sum();
-    let results = drive(py, threads, total, progress, |tick| run_campaign(&c.setups, tick))?.map_err(run_error)?;
+    let results =
+        drive(py, threads, total, progress, |ctl| run_campaign(&c.setups, &|| ctl.tick()))?.map_err(run_error)?;
     report_json(&CampaignReport::new(&c, &results, true), "campaign")
 }
 
@@ -794,13 +968,31 @@ fn design_lives<'py>(
     // The lives asked for, not the scenario's count (a shard costs its own lives).
     let (e, advice, command) = estimate_of(py, &sc.sc, "design", Some(total), true, None)?;
     check_work(py, command, &e, advice)?;
-    let lives = drive(py, threads, total, progress, |tick| {
+    let (lives, stop) = drive_keep(py, threads, total, progress, |ctl| {
         run_lives(&case, &design.life, design.seed, &indices, &|_, _| {
-            tick();
+            // Stopped (Ctrl-C): the lives in progress finish and are kept, as the CLI keeps them.
+            if ctl.cancelled() {
+                return ControlFlow::Break(());
+            }
+            ctl.count();
             ControlFlow::Continue(())
         })
-    })?
-    .map_err(|e| run_error(format!("{e}: {}", e.source)))?;
+    })?;
+    let lives = match lives {
+        Some(r) => r.map_err(|e| run_error(format!("{e}: {}", e.source)))?,
+        None => Vec::new(),
+    };
+    let d = lives_columns(py, &lives)?;
+    if let Some(e) = stop {
+        // `e.lives`: the columns of the lives finished before the stop.
+        let _ = e.value(py).setattr("lives", &d);
+        return Err(e);
+    }
+    Ok(d)
+}
+
+/// The columns of `lives` (sorted by index): `life`, then [`LIFE_COLUMNS`].
+fn lives_columns<'py>(py: Python<'py>, lives: &[(usize, StormOutcome)]) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("life", PyArray1::from_vec(py, lives.iter().map(|(i, _)| *i as u64).collect::<Vec<u64>>()))?;
     for (name, column) in LIFE_COLUMNS {
@@ -891,7 +1083,7 @@ fn fragility(
     let ws = sc.sc.waves_for("Fragility").map_err(|e| lib_error(py, e, None))?;
     check_work(py, "Fragility.run", &py.detach(|| work::fragility(&case, p)), &FRAGILITY)?;
     let total = p.heights_m.len() * p.storms;
-    let r = drive(py, threads, total, progress, |tick| run_fragility(&case, p, tick))?
+    let r = drive(py, threads, total, progress, |ctl| run_fragility(&case, p, &|| ctl.tick()))?
         .map_err(|e| run_error(format!("{e}: {}", e.source)))?;
     report_json(&FragilityReport::new(name, sc.sc.structure(), ws, p, &r), "fragility")
 }
@@ -986,6 +1178,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
     m.add_function(wrap_pyfunction!(estimate, m)?)?;
+    m.add_function(wrap_pyfunction!(read_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(check_threads, m)?)?;
+    m.add("MAX_THREADS", caisson::MAX_THREADS)?;
+    m.add("MAX_SAMPLES", MAX_SAMPLES)?;
     m.add_function(wrap_pyfunction!(budget_json, m)?)?;
     m.add("MAX_LIVES", MAX_LIVES)?;
     m.add_function(wrap_pyfunction!(_bench_run_s, m)?)?;

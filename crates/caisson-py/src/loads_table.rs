@@ -87,10 +87,21 @@ impl ColumnSink for Block<'_> {
 impl Block<'_> {
     /// The rows of the waves (`heights_m[i]`, `periods_s[i]`) of this block; the first error
     /// with its row.
-    fn fill(&mut self, ws: &WaveSetup, w: f64, mu: f64, h: &[f64], t: &[f64]) -> Result<(), (usize, String)> {
+    fn fill(
+        &mut self,
+        ws: &WaveSetup,
+        w: f64,
+        mu: f64,
+        h: &[f64],
+        t: &[f64],
+        ctl: &crate::Ctl,
+    ) -> Result<(), (usize, String)> {
         let rows = self.numbers.first().map_or(0, |c| c.len());
         let (h, t) = (&h[self.first_row..][..rows], &t[self.first_row..][..rows]);
         for (row, (&h, &t)) in h.iter().zip(t).enumerate() {
+            if row.is_multiple_of(1024) {
+                ctl.check();
+            }
             let check = StaticCheck::new(ws, DesignWave::with_height(ws, h, t), w, mu, ws.regime())
                 .map_err(|e| (self.first_row + row, e.to_string()))?;
             (self.row, self.at) = (row, [0; 3]);
@@ -117,6 +128,18 @@ fn cut<T>(columns: &mut [T], rows: usize, block: usize, blocks: usize) -> Vec<Ve
 /// A table for Python: column names, and per column a numpy array (numbers, flags) or
 /// (codes, distinct values) (text).
 pub type Table = (Vec<String>, Vec<Py<PyAny>>);
+
+/// Bytes a row of the table takes (its numbers, flags and text codes; about 600 bytes, which is
+/// the peak measured per wave of `loads.evaluate` with its DataFrame): the memory bound of
+/// `loads.evaluate` (`caisson::analysis::work::loads_table`).
+pub fn bytes_per_row(ws: &WaveSetup, weight_in_water_n: f64, mu: f64) -> f64 {
+    let (w, mut layout) = (weight_in_water_n, Layout::default());
+    if let Ok(c) = StaticCheck::new(ws, DesignWave::of(ws), w, mu, ws.regime()) {
+        LoadsReport::new(ws, &c, w, mu).columns(&mut layout);
+    }
+    let (n, f, c) = (layout.count(Kind::Number), layout.count(Kind::Flag), layout.count(Kind::Text));
+    (8 * n.max(1) + f + 4 * c) as f64
+}
 
 /// The table of the waves (`heights_m[i]`, `periods_s[i]`) (equal lengths, checked by the
 /// caller) at the site and caisson of `ws`, on `threads` threads (1: this one; 0: one per core);
@@ -150,15 +173,12 @@ pub fn build(
     let texts = {
         let (mut nw, mut fw, mut cw) = (numbers.readwrite(), flags.readwrite(), codes.readwrite());
         let (nd, fd, cd) = (nw.as_slice_mut()?, fw.as_slice_mut()?, cw.as_slice_mut()?);
-        let pool =
-            match threads {
-                1 => None,
-                n => Some(rayon::ThreadPoolBuilder::new().num_threads(n).build().map_err(|e| {
-                    pyo3::exceptions::PyRuntimeError::new_err(format!("starting the worker threads: {e}"))
-                })?),
-            };
+        let workers = match threads {
+            0 => std::thread::available_parallelism().map_or(1, |n| n.get()),
+            n => n,
+        };
         // Blocks of at least 2048 rows, about 8 per thread (the regimes cost differently).
-        let parts = pool.as_ref().map_or(1, |p| 8 * p.current_num_threads());
+        let parts = if workers == 1 { 1 } else { 8 * workers };
         let block = rows.div_ceil(parts).max(2048).min(rows.max(1));
         let blocks = rows.div_ceil(block);
         let (mut nb, mut fb, mut cb) =
@@ -175,19 +195,16 @@ pub fn build(
             })
             .collect();
         let (h, t) = (heights_m, periods_s);
-        let fill = |blocks: &mut [Block<'_>]| -> Result<(), (usize, String)> {
-            match &pool {
-                None => blocks.iter_mut().try_for_each(|b| b.fill(ws, w, mu, h, t)),
-                Some(pool) => {
-                    use rayon::prelude::*;
-                    let errors: Vec<_> =
-                        pool.install(|| blocks.par_iter_mut().map(|b| b.fill(ws, w, mu, h, t).err()).collect());
-                    // The first row's error, whatever the threads.
-                    errors.into_iter().flatten().min_by_key(|e| e.0).map_or(Ok(()), Err)
-                }
+        // On `threads` workers (`crate::drive`: Ctrl-C stops it within 1024 rows of a block).
+        let merged = crate::drive(py, threads, 0, None, |ctl| {
+            use rayon::prelude::*;
+            let errors: Vec<_> = blocks.par_iter_mut().map(|b| b.fill(ws, w, mu, h, t, ctl).err()).collect();
+            // The first row's error, whatever the threads.
+            match errors.into_iter().flatten().min_by_key(|e| e.0) {
+                Some(e) => Err(e),
+                None => Ok(merge_texts(&mut blocks, n_text)),
             }
-        };
-        let merged = py.detach(|| fill(&mut blocks).map(|()| merge_texts(&mut blocks, n_text)));
+        })?;
         match merged {
             Ok(texts) => texts,
             Err(e) => return Ok(Err(e)),

@@ -51,6 +51,10 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// results of different versions are never mixed.
 pub const RESULTS_VERSION: u32 = 10;
 
+/// Most worker threads a parallel driver may be given (the CLI's `--threads`, the Python
+/// `threads=`; 0 means one per core): more only costs memory and start-up time.
+pub const MAX_THREADS: usize = 256;
+
 /// Which reading of the seed paper sets the defaults of the model's choices (docs/model.md §10,
 /// "Profiles"). A profile only sets defaults: every key given in a scenario overrides it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]

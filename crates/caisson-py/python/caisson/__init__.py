@@ -97,7 +97,8 @@ class Scenario:
         directory for text)."""
         if isinstance(source, os.PathLike) or (isinstance(source, str) and not _looks_like_text(source)):
             p = Path(source)
-            text = p.read_text(encoding="utf-8")
+            # As the CLI reads it: at most 1 MiB, a regular file (never a FIFO or /dev/zero).
+            text = _core.read_scenario(str(p))
             return cls(text, path=str(source), base_dir=base_dir if base_dir is not None else (p.parent or Path(".")))
         return cls(str(source), base_dir=base_dir if base_dir is not None else ".")
 
@@ -275,6 +276,7 @@ def run(
     A scenario with ``[waves]`` and no ``[load]`` runs its wave trains (``threads``, ``progress``:
     per realization). See :class:`RunResult`.
     """
+    _core.check_threads(threads)
     if t_s is not None or fx_kn is not None:
         if t_s is None or fx_kn is None:
             raise ScenarioError("a force series needs both t_s and fx_kn")
@@ -471,7 +473,7 @@ class Design:
     def estimate(self, indices: Optional[Iterable[int]] = None) -> dict:
         """The work of :meth:`simulate_lives` on ``indices`` (default: all lives), as
         :func:`estimate`: counted on the number of lives asked for."""
-        n = self._lives if indices is None else len(list(indices))
+        n = self._lives if indices is None else len(self._indices(indices))
         return estimate(self._scenario, "design", lives=max(n, 1))
 
     def simulate_lives(self, indices: Optional[Iterable[int]] = None, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
@@ -483,11 +485,34 @@ class Design:
         rad. A life ends at the wave that fails it (docs/design.md, "Failure"). Raises
         :class:`ScenarioError` if the lives asked for are over the work budget (:meth:`estimate`):
         ask for fewer at a time."""
-        idx = list(range(self._lives)) if indices is None else [int(i) for i in indices]
-        if any(i < 0 for i in idx):
-            raise ScenarioError("life indices must be ≥ 0")
-        cols = _core.design_lives(self._scenario._core, idx, threads, progress)
+        idx = list(range(self._lives)) if indices is None else self._indices(indices)
+        try:
+            cols = _core.design_lives(self._scenario._core, idx, threads, progress)
+        except KeyboardInterrupt as e:
+            # The lives finished before Ctrl-C, as the CLI keeps them in its checkpoint.
+            if isinstance(getattr(e, "lives", None), dict):
+                e.lives = pd.DataFrame(e.lives)
+            raise
         return pd.DataFrame(cols)
+
+    def _indices(self, indices: Any) -> list:
+        """Life indices as a list of ints: whole numbers from 0 to lives − 1, each once."""
+        allowed = f"whole numbers from 0 to {self._lives - 1} (the design has {self._lives} lives), each once"
+        if isinstance(indices, (str, bytes)) or not isinstance(indices, Iterable):
+            raise ScenarioError(f"`indices` = {indices!r}: must be an iterable of life indices, {allowed}")
+        out = []
+        seen = set()
+        for i in indices:
+            if isinstance(i, (bool, np.bool_)) or not isinstance(i, (int, np.integer)):
+                raise ScenarioError(f"life index {i!r} ({type(i).__name__}): indices must be {allowed}")
+            i = int(i)
+            if not 0 <= i < self._lives:
+                raise ScenarioError(f"life index {i}: indices must be {allowed}")
+            if i in seen:
+                raise ScenarioError(f"life index {i} is given twice: indices must be {allowed}")
+            seen.add(i)
+            out.append(i)
+        return out
 
     def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> dict:
         """``design.json`` (the dict of ``caisson design --json``) of the lives given (one
@@ -526,6 +551,10 @@ class Design:
                 i = int(np.argmax(bad))
                 raise ValueError(f"column {c!r} = {v[i]} in row {i} (life {life[i]}): {allowed}")
             cols[c] = v
+        beyond = (cols["life"] >= self._lives) | (cols["life"] != np.floor(cols["life"]))
+        if beyond.any():
+            i = int(np.argmax(beyond))
+            raise ValueError(f"life {life[i]} in row {i}: the design has lives 0 to {self._lives - 1}")
         if frame["life"].duplicated().any():
             dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
             raise ValueError(f"life {dup} appears more than once")

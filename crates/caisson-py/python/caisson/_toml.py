@@ -18,6 +18,10 @@ def _key(k: str) -> str:
 
 
 def _value(v: Any, where: str) -> str:
+    if type(v).__module__ == "numpy":
+        # numpy scalars and arrays (every pandas cell): their Python values. (np.float64 is a
+        # float whose repr is "np.float64(0.9)", which is no TOML.)
+        v = v.tolist()
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, int):
@@ -27,11 +31,9 @@ def _value(v: Any, where: str) -> str:
             return "nan"
         if math.isinf(v):
             return "inf" if v > 0 else "-inf"
-        return repr(v)
+        return repr(float(v))
     if isinstance(v, str):
         return json.dumps(v, ensure_ascii=False)
-    if hasattr(v, "item") and callable(v.item):  # numpy scalars
-        return _value(v.item(), where)
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_value(x, where) for x in v) + "]"
     if isinstance(v, Mapping):

@@ -66,6 +66,8 @@ pub fn run_campaign(setups: &[ConditionSetup], progress: Progress<'_>) -> Result
         setups.iter().enumerate().flat_map(|(c, s)| (0..s.waves.train.realizations).map(move |r| (c, r))).collect();
     let results: Vec<RealizationResult> = jobs
         .par_iter()
+        // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
+        .panic_fuse()
         .map(|&(c, r)| {
             let out = setups[c].case().run(r, None);
             progress();

@@ -450,6 +450,8 @@ pub fn run_fragility(
     let st = &StormCase { failure: None, ..*st };
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
+        // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
+        .panic_fuse()
         .map(|job| {
             let (level, storm) = (job / storms, job % storms);
             let h = p.heights_m[level];

@@ -84,6 +84,8 @@ pub fn sweep(
     let solver = structure.solver;
     ratios
         .par_iter()
+        // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
+        .panic_fuse()
         .map(|&ratio| {
             let tr = ratio * t0;
             let pulse = TrianglePulse { peak: base.peak, rise_s: tr, start_s: 0.0 };

@@ -319,6 +319,8 @@ pub fn realization_warnings(case: &TrainCase<'_>, rs: &[RealizationResult]) -> V
 pub fn run_realizations(case: &TrainCase<'_>, progress: Progress<'_>) -> Result<TrainSummary, TrainRunError> {
     let rs: Vec<RealizationResult> = (0..case.waves.train.realizations)
         .into_par_iter()
+        // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
+        .panic_fuse()
         .map(|r| {
             let out = case.run(r, None);
             progress();

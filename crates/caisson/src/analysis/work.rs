@@ -629,3 +629,42 @@ fn fragility_screen_share(case: &StormCase<'_>, p: &FragilityParams) -> f64 {
         shares.iter().sum::<f64>() / shares.len() as f64
     }
 }
+
+/// A sizing run (`caisson size`, `sizing::size`): `candidates` widths (the grid and the
+/// bisections: at most `curve_points + 2 · bisection_steps`), each one a design run of
+/// `[size] lives` lives. `grid` are the design estimates ([`design`]) at the widths of the grid;
+/// a bisection width lies between two of them, so each candidate counts as their mean. The
+/// lives of one width are held at a time.
+pub fn size(grid: &[WorkEstimate], candidates: usize) -> WorkEstimate {
+    let n = grid.len().max(1) as f64;
+    let k = candidates as f64 / n;
+    let sum = |f: fn(&WorkEstimate) -> f64| grid.iter().map(f).sum::<f64>() * k;
+    let first = grid.first();
+    WorkEstimate {
+        steps: sum(|e| e.steps),
+        step_cost: first.map_or(1.0, |e| e.step_cost),
+        waves: sum(|e| e.waves),
+        memory_bytes: grid.iter().map(|e| e.memory_bytes).fold(0.0, f64::max),
+        disk_bytes: 0.0,
+        simulated_s: sum(|e| e.simulated_s),
+        steps_from: first.map_or(StepsFrom::Pilot { steps_per_s: 0.0 }, |e| e.steps_from),
+        simulated_share: grid.iter().map(|e| e.simulated_share).sum::<f64>() / n,
+        basis: format!("{candidates} candidate widths × ({})", first.map_or_else(String::new, |e| e.basis.clone())),
+    }
+}
+
+/// A table of wave loads (the Python `loads.evaluate`): `rows` waves of `bytes_per_row` each
+/// (its columns), held until the call returns; no time step.
+pub fn loads_table(rows: usize, bytes_per_row: f64) -> WorkEstimate {
+    WorkEstimate {
+        steps: 0.0,
+        step_cost: 1.0,
+        waves: rows as f64,
+        memory_bytes: rows as f64 * bytes_per_row,
+        disk_bytes: 0.0,
+        simulated_s: 0.0,
+        steps_from: StepsFrom::Pilot { steps_per_s: 0.0 },
+        simulated_share: 0.0,
+        basis: format!("{rows} waves × {bytes_per_row:.0} bytes of columns"),
+    }
+}

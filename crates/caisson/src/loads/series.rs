@@ -27,6 +27,11 @@ pub enum SeriesError {
 }
 
 /// Sampled force series, stored in SI totals.
+/// Most samples a force series may have: what the largest series file
+/// (`scenario::validate::MAX_SERIES_BYTES`, 128 MiB) can hold at 8 bytes a row (`0,1,2,3`). A
+/// longer series (the Python `run(t_s=...)`) is refused before anything is copied.
+pub const MAX_SAMPLES: usize = (128 << 20) / 8;
+
 #[derive(Debug, Clone)]
 pub struct ForceSeries {
     t_s: Vec<f64>,

@@ -299,6 +299,53 @@ pub struct SolverTable {
 
 /// Parse scenario text. `path` is used in messages only.
 pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError> {
+    let file = parse_file(text, path)?;
+    if let Ok(table) = toml::from_str::<toml::Table>(text) {
+        check_magnitudes("", &toml::Value::Table(table))?;
+    }
+    Ok(file)
+}
+
+/// The largest magnitude of a number in a scenario file: beyond it a value in kN or kPa
+/// overflows to infinity once converted to SI, and the messages could only say `inf`.
+pub const MAX_MAGNITUDE: f64 = 1e300;
+
+/// Refuse a number beyond [`MAX_MAGNITUDE`] anywhere in `v` (`key`: its place, `[table] key`).
+fn check_magnitudes(key: &str, v: &toml::Value) -> Result<(), ScenarioError> {
+    match v {
+        toml::Value::Float(x) if x.is_finite() && x.abs() > MAX_MAGNITUDE => Err(ScenarioError::range(
+            key,
+            format!("{x:e}"),
+            format!("must be at most {MAX_MAGNITUDE:e} in magnitude (a number this large overflows once converted to SI units)"),
+        )),
+        toml::Value::Table(t) => t.iter().try_for_each(|(k, x)| {
+            let here = match (key, x) {
+                ("", toml::Value::Table(_)) => format!("[{k}]"),
+                ("", _) => k.to_string(),
+                (_, _) if key.starts_with('[') && !key.contains(' ') && !matches!(x, toml::Value::Table(_)) => {
+                    format!("{key} {k}")
+                }
+                (_, _) => format!("{key}.{k}"),
+            };
+            check_magnitudes(&here, x)
+        }),
+        toml::Value::Array(a) => a.iter().enumerate().try_for_each(|(i, x)| check_magnitudes(&format!("{key}[{i}]"), x)),
+        _ => Ok(()),
+    }
+}
+
+/// A value as the messages print it: its shortest decimal, or in scientific notation where that
+/// would be long (5e-324, not 0.000…0005).
+pub(crate) fn fmt_value(v: f64) -> String {
+    let s = v.to_string();
+    if s.len() > 16 {
+        format!("{v:e}")
+    } else {
+        s
+    }
+}
+
+fn parse_file(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError> {
     toml::from_str::<ScenarioFile>(text).map_err(|e| {
         let (line, column) = e
             .span()
@@ -318,7 +365,10 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
             path: path.to_path_buf(),
             line,
             column,
-            message: e.message().trim().to_string(),
+            message: match e.message().trim() {
+                "" => "this is not valid TOML (a line is `key = value` or a `[table]` header)".to_string(),
+                m => m.to_string(),
+            },
             source_line,
         }
     })
@@ -406,9 +456,15 @@ fn unit_of(key: &str) -> Option<&'static str> {
 /// Read a scenario file, parse it once and validate every table it holds. Relative file names
 /// in it (a force series) are taken from the file's directory.
 pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
-    let text = read_limited(path, MAX_SCENARIO_BYTES, "a scenario file", "a TOML file")
-        .map_err(|message| ScenarioError::Read { path: path.to_path_buf(), message })?;
+    let text = read_text(path)?;
     Scenario::from_toml(&text, path, path.parent().unwrap_or(Path::new(".")))
+}
+
+/// The text of the scenario file at `path` (at most [`MAX_SCENARIO_BYTES`], a regular file):
+/// what [`load`] parses, for a caller that keeps the text (the Python `Scenario.from_toml`).
+pub fn read_text(path: &Path) -> Result<String, ScenarioError> {
+    read_limited(path, MAX_SCENARIO_BYTES, "a scenario file", "a TOML file")
+        .map_err(|message| ScenarioError::Read { path: path.to_path_buf(), message })
 }
 
 /// Largest scenario file read, bytes: a thousand times the largest example; a file that never
@@ -425,6 +481,20 @@ pub(crate) fn read_limited(path: &Path, max: u64, what: &str, expected: &str) ->
         let size = if max >= 1 << 20 { format!("{} MiB", max >> 20) } else { format!("{} KiB", max >> 10) };
         format!("is larger than {size}, the most {what} may be")
     };
+    // A FIFO would block the open until a writer comes (for ever, without one), a directory is no
+    // file: each is refused before it is opened. A device (`/dev/zero`) is read up to the limit.
+    if let Ok(m) = std::fs::metadata(path) {
+        if m.is_dir() {
+            return Err(format!("is a directory; {expected} is expected"));
+        }
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if m.file_type().is_fifo() || m.file_type().is_socket() {
+                return Err(format!("is a FIFO or a socket, which could block for ever; {expected} is expected"));
+            }
+        }
+    }
     let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
     if file.metadata().map_err(|e| e.to_string())?.len() > max {
         return Err(limit());
@@ -462,6 +532,9 @@ pub struct Scenario {
     pub design: Option<DesignParams>,
     /// `[fragility]`.
     pub fragility: Option<FragilityParams>,
+    /// Why a `[fragility]` table was refused: only a fragility run says so
+    /// ([`Self::fragility_for`]); the other commands do not use the table.
+    fragility_refused: Option<ScenarioError>,
     /// `[size]`.
     pub size: Option<SizeParams>,
 }
@@ -471,6 +544,12 @@ impl Scenario {
     /// relative file names (the force series).
     pub fn from_toml(text: &str, path: &Path, base_dir: &Path) -> Result<Scenario, ScenarioError> {
         validate::validate(&parse_str(text, path)?, base_dir)
+    }
+
+    /// Refuse `load` on this caisson as a `[load]` of the file is refused (its peaks at most
+    /// 10³ W', `coherence.rs`): for a load built outside the file (the Python force series).
+    pub fn check_load(&self, load: &LoadSpec) -> Result<(), ScenarioError> {
+        coherence::check_load(self.caisson(), load)
     }
 
     /// The profile that sets the defaults (`[model] profile`).
@@ -579,8 +658,16 @@ impl Scenario {
         })
     }
 
-    /// The `[fragility]` of the scenario, or an error saying it is missing.
+    /// Whether the file has a `[fragility]` table (valid or not: [`Self::fragility_for`] says).
+    pub fn has_fragility_table(&self) -> bool {
+        self.fragility.is_some() || self.fragility_refused.is_some()
+    }
+
+    /// The `[fragility]` of the scenario, or why not: missing, or refused.
     pub fn fragility_for(&self, what: &str) -> Result<&FragilityParams, ScenarioError> {
+        if let Some(e) = &self.fragility_refused {
+            return Err(e.clone());
+        }
         self.fragility.as_ref().ok_or_else(|| {
             ScenarioError::missing(
                 "[fragility]",

@@ -23,7 +23,7 @@ pub(super) fn positive(key: &str, v: f64, unit: &str) -> R<f64> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
-        Err(ScenarioError::range(key, v, format!("must be a finite number > 0 ({unit})")))
+        Err(ScenarioError::range(key, super::fmt_value(v), format!("must be a finite number > 0 ({unit})")))
     }
 }
 
@@ -31,7 +31,7 @@ fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str) -> R<f64> {
     if v.is_finite() && v >= lo && v <= hi {
         Ok(v)
     } else {
-        Err(ScenarioError::range(key, v, format!("must be between {lo} and {hi} ({unit})")))
+        Err(ScenarioError::range(key, super::fmt_value(v), format!("must be between {lo} and {hi} ({unit})")))
     }
 }
 
@@ -99,6 +99,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         campaign: None,
         design: None,
         fragility: None,
+        fragility_refused: None,
         size: None,
     };
     coherence::check_time_step(&sc.structure)?;
@@ -118,7 +119,12 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         sc.design = Some(d);
     }
     if f.fragility.is_some() {
-        sc.fragility = Some(fragility::validate_fragility(f, &sc)?);
+        // Refused only when a fragility run asks for it: a `run` or `loads` of the same file
+        // must not be told to remove its `[load]` for a fragility's sake.
+        match fragility::validate_fragility(f, &sc) {
+            Ok(p) => sc.fragility = Some(p),
+            Err(e) => sc.fragility_refused = Some(e),
+        }
     }
     if f.size.is_some() {
         let lives = sc.design.as_ref().map(|d| d.lives).ok_or_else(|| {
@@ -411,7 +417,7 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
         if v.is_finite() {
             Ok(v * 1e3)
         } else {
-            Err(ScenarioError::range(key, v, "must be a finite number"))
+            Err(ScenarioError::range(key, super::fmt_value(v), "must be a finite number"))
         }
     };
     let peak = || -> R<WaveForce> {

@@ -82,6 +82,14 @@ pub(crate) fn place_caisson(site: &mut WaveSite, caisson: &Caisson) {
     site.length_m = caisson.length_m;
 }
 
+/// The smallest water depth and wave height accepted, m: a millimetre, below any laboratory
+/// flume's waves; smaller values (5e-324 m) only drive the formulas to NaN or give safety
+/// factors of 1e100.
+pub const MIN_LENGTH_M: f64 = 1e-3;
+/// The shortest wave period accepted, s (capillary ripples are shorter; no wave that loads a
+/// caisson is).
+pub const MIN_PERIOD_S: f64 = 0.01;
+
 /// A finite number in (lo, hi] (`lo_open`) or [lo, hi], else a keyed range error.
 pub(super) fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
     let above = if lo_open { v > lo } else { v >= lo };
@@ -89,7 +97,11 @@ pub(super) fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &
         Ok(v)
     } else {
         let low = if lo_open { format!("> {lo}") } else { format!("≥ {lo}") };
-        Err(ScenarioError::range(key, v, format!("must be a finite number {low} and ≤ {hi} ({unit})")))
+        Err(ScenarioError::range(
+            key,
+            super::fmt_value(v),
+            format!("must be a finite number {low} and ≤ {hi} ({unit})"),
+        ))
     }
 }
 
@@ -127,9 +139,9 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
     let hs = number(
         "[water] depth_at_toe_m",
         required("[water] depth_at_toe_m", w.depth_at_toe_m, "h_s, the water depth at the toe of the mound, m")?,
-        0.0,
+        MIN_LENGTH_M,
         1e4,
-        true,
+        false,
         "m",
     )?;
     let d = required(
@@ -137,11 +149,11 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
         w.depth_at_wall_m,
         "d, the water depth in front of the wall above the berm, m (= depth_at_toe_m without a mound)",
     )?;
-    if !(d.is_finite() && d > 0.0 && d <= hs) {
+    if !(d.is_finite() && d >= MIN_LENGTH_M && d <= hs) {
         return Err(ScenarioError::range(
             "[water] depth_at_wall_m",
-            d,
-            format!("must be > 0 and at most depth_at_toe_m = {hs} m (the berm cannot be below the seabed)"),
+            super::fmt_value(d),
+            format!("must be from {MIN_LENGTH_M} m (a laboratory flume's scale) to depth_at_toe_m = {hs} m (the berm cannot be below the seabed)"),
         ));
     }
     let hp = caisson.base_depth_m;
@@ -172,9 +184,9 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
     let period_s = number(
         "[waves] period_s",
         required("[waves] period_s", t.period_s, "the wave period T (T1/3 for irregular waves), s")?,
-        0.0,
+        MIN_PERIOD_S,
         1e3,
-        true,
+        false,
         "s",
     )?;
     let conflict = |key: &str, kind: &str| ScenarioError::Conflict {
@@ -196,7 +208,7 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
             t.significant_height_m,
             "the significant wave height H1/3 at the toe, m",
         )?;
-        ("[waves] significant_height_m", number("[waves] significant_height_m", h, 0.0, 1e3, true, "m")?)
+        ("[waves] significant_height_m", number("[waves] significant_height_m", h, MIN_LENGTH_M, 1e3, false, "m")?)
     } else {
         if t.significant_height_m.is_some() {
             return Err(conflict("significant_height_m", "regular"));
@@ -206,9 +218,9 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
             number(
                 "[waves] height_m",
                 required("[waves] height_m", t.height_m, "the incident wave height H, m")?,
-                0.0,
+                MIN_LENGTH_M,
                 1e3,
-                true,
+                false,
                 "m",
             )?,
         )
