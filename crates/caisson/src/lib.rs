@@ -49,7 +49,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// The version of the results: raised whenever a change moves any number the tool reports for
 /// the same input (a model, a default, a random stream). Outputs and checkpoints record it, so
 /// results of different versions are never mixed.
-pub const RESULTS_VERSION: u32 = 9;
+pub const RESULTS_VERSION: u32 = 11;
 
 /// Which reading of the seed paper sets the defaults of the model's choices (docs/model.md §10,
 /// "Profiles"). A profile only sets defaults: every key given in a scenario overrides it.
