@@ -29,8 +29,12 @@
 //!
 //! **Adaptive stepping** ([`Stepping::Adaptive`]): the local displacement error of a Newmark step
 //! is estimated after Zienkiewicz & Xie (1991), e_{n+1} = (β − 1/6) h² (q̈_{n+1} − q̈_n)
-//! (rotation counted as θ·B/2). A converged step with ‖e‖∞ > tol is rejected and retried shorter;
-//! the next step is h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h), within [dt_min, dt_max]. No
+//! (rotation counted as θ·B/2), and with the dashpot beside the springs (`elastic` mode) the
+//! larger of that and the trapezoidal rule's error in the elastic displacement of every slipping
+//! spring, h² κ N_i |ė_{n+1} − ė_n| / (12 c_d) (`Simulation::dashpot_error_m`). A converged
+//! step with ‖e‖∞ > tol is rejected and retried shorter; the next step is
+//! h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h; the cube root by `fast_cbrt`), within
+//! [dt_min, dt_max]. No
 //! step straddles a breakpoint of the load ([`LoadHistory::next_breakpoint_s`]: the start, peak
 //! and end of an impulse), so a short impact cannot be stepped over. Small steps then fall where
 //! the acceleration changes (impacts, slip onsets), large ones through the slowly varying
@@ -538,7 +542,10 @@ impl Simulation {
         let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
         let (un, vn) = (self.state.u, self.state.v);
         let mut theta = 1.0f64;
-        for (&x, s) in self.model.x_m.iter().zip(&self.state.springs) {
+        // The springs' responses at the converged iterate (the general path's) say which ones
+        // slip at the step's end; only those that stuck at its start are measured.
+        let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial);
+        for ((&x, s), _) in starts.filter(|((_, s), r)| r.state.sliding && !s.sliding && r.normal_n > 0.0) {
             let uy0 = un[1] - un[2] * x;
             let uy1 = c.u[1] - c.u[2] * x;
             let limit = law.limit_m(*s);
@@ -747,6 +754,9 @@ impl Simulation {
         // Events located in a row, and whether the step to try was shortened to end at one (it
         // is then not located again).
         let (mut events, mut at_event) = (0usize, false);
+        // The load's next breakpoint after the step's start: it stays the next one until the
+        // steps pass it, so it is looked up again only then.
+        let mut bp = f64::NEG_INFINITY;
         // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
         while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
             let t = self.state.t_s;
@@ -754,7 +764,9 @@ impl Simulation {
             let planned =
                 if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
             let mut h = planned.min(t_end_s - t);
-            let bp = load.next_breakpoint_s(t);
+            if t >= bp {
+                bp = load.next_breakpoint_s(t);
+            }
             if bp - t > p.dt_min_s && bp < t + h {
                 h = bp - t;
             }

@@ -151,10 +151,20 @@ impl Simulation {
         };
         if !outer_stick {
             let mut fails = 0u32;
-            for i in 0..n {
-                let (x, s) = (x_m[i], slip_m[i]);
-                let e_bar = ux_n - s + half_h * (rate_m[i] + follows_v[i] * vx_n);
-                fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+            if fs.any_sliding {
+                for i in 0..n {
+                    let (x, s) = (x_m[i], slip_m[i]);
+                    let e_bar = ux_n - s + half_h * (rate_m[i] + follows_v[i] * vx_n);
+                    fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                }
+            } else {
+                // Every rate is u̇_x,n: the same operations without the slices of the rates.
+                let shift = half_h * vx_n;
+                for i in 0..n {
+                    let (x, s) = (x_m[i], slip_m[i]);
+                    let e_bar = ux_n - s + shift;
+                    fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                }
             }
             if fails > 0 {
                 return None;
