@@ -8,26 +8,12 @@ use caisson::analysis::run::{run, RunResult};
 use caisson::analysis::spectrum::sweep;
 use caisson::loads::LoadSpec;
 use caisson::scenario::Scenario;
-use support::scenario;
+use support::{scenario, TABLE5};
 
 /// Run a scenario's `[load]` for its duration.
 fn run_load(s: &Scenario, record_history: bool) -> RunResult {
     run(s.structure(), s.load.as_ref().expect("a [load] table"), s.duration_s, record_history).unwrap()
 }
-
-/// The seed's Table 5 caisson (docs/model.md §8.2) with a triangle load.
-const TABLE5: &str = r#"
-[caisson]
-width_m = 0.78
-length_m = 1.0
-height_m = 1.12
-base_depth_m = 0.8
-weight_in_water_kn = 8.24
-[foundation]
-e100_kpa = 3.5e5
-poisson = 0.33
-density_kg_per_m3 = 2300
-"#;
 
 #[test]
 fn table6_from_table5_inputs() {
@@ -257,4 +243,57 @@ fn settlement_follows_the_held_uplift() {
     );
     assert!((r.foundation.static_settlement_m / expected - 1.0).abs() > 0.2, "the uplift must change the settlement");
     assert_eq!(r.slip_events, 0);
+}
+
+/// The time histories run to the end of the run when its duration is not a multiple of
+/// `output_interval_s` (docs/cli.md): a 0.6005 s run sampled every 1 ms has rows at 0, 1 ms, ...,
+/// 600 ms and a last one at 600.5 ms, whose state is the run's final state; kept whole
+/// ([`History`]) and streamed ([`Rows`], what `caisson run --out` writes), alike. A wave train
+/// (its own driver) ends on its last row too.
+#[test]
+fn history_rows_run_to_the_end() {
+    use caisson::analysis::run::{run_observed, HistoryRow, Rows, Sampler};
+    let text = format!(
+        "{TABLE5}\n[load]\nkind = \"triangle\"\npeak_horizontal_kn = 12.0\nrise_time_s = 0.05\nhorizontal_lever_m = 0.3\nduration_s = 0.6005\n"
+    );
+    let s = scenario(&text);
+    assert_eq!(s.solver().output_interval_s, 1e-3);
+    let r = run_load(&s, true);
+    let h = r.history.unwrap();
+    assert_eq!(h.len(), 602, "rows at 0, 1 ms, ..., 600 ms and 600.5 ms");
+    assert!((h.t_s[600] - 0.6).abs() < 1e-9 && (h.t_s[601] - 0.6005).abs() < 1e-12, "{:?}", &h.t_s[599..]);
+    assert_eq!(h.ux_m[601], r.summary.final_displacement_m);
+    let mut streamed = Vec::new();
+    let mut rows = Rows::new(Sampler::of(s.structure()), |row: &HistoryRow<'_>| streamed.push((row.t_s, row.ux_m)));
+    run_observed(s.structure(), s.load.as_ref().unwrap(), s.duration_s, Some(&mut rows)).unwrap();
+    drop(rows);
+    assert_eq!(streamed, h.t_s.iter().copied().zip(h.ux_m.iter().copied()).collect::<Vec<_>>());
+    // A run that ends on a row keeps it once.
+    let whole = scenario(&text.replace("duration_s = 0.6005", "duration_s = 0.6"));
+    assert_eq!(run_load(&whole, true).history.unwrap().len(), 601);
+    // A wave train of the PARI non-breaking set-up (its own driver): it ends on a row with the
+    // default interval (5 ms, its longest step), and on a row of its own with one of 12.3 ms,
+    // longer than its steps (rows fall on the first step at or after each interval, so the
+    // last gap is less than an interval and a step), which does not divide its duration.
+    let sc = support::example("pari_nonbreaking_loads.toml");
+    let case = sc.train_case().unwrap();
+    let row_times = |interval_s: f64| {
+        let mut structure = case.structure.clone();
+        structure.solver.output_interval_s = interval_s;
+        let mut times = Vec::new();
+        let mut rows = Rows::new(Sampler::of(&structure), |row: &HistoryRow<'_>| times.push(row.t_s));
+        caisson::analysis::train::TrainCase { structure: &structure, ..case }.run(0, Some(&mut rows)).unwrap();
+        drop(rows);
+        times
+    };
+    let default = row_times(case.structure.solver.output_interval_s);
+    let end = *default.last().unwrap();
+    let odd = row_times(0.0123);
+    let n = odd.len();
+    assert!((end / 0.0123 - (end / 0.0123).round()).abs() > 1e-3, "12.3 ms does not divide {end} s");
+    assert!(
+        odd[n - 1] == end && end - odd[n - 2] < 0.0123 + 5e-3 && n > 1000,
+        "{n} rows, the last {:?}",
+        &odd[n - 3..]
+    );
 }

@@ -237,11 +237,14 @@ impl HistoryRow<'_> {
 }
 
 /// Picks the rows of the time histories: the first committed step at or after each
-/// `output_interval_s`, from t = 0.
+/// `output_interval_s`, from t = 0, and the last step of the run ([`Observer::finish`]) when the
+/// run does not end on a row.
 #[derive(Debug, Clone)]
 pub struct Sampler {
     interval_s: f64,
     next_s: f64,
+    /// The time of the last row, s (−∞ before the first).
+    last_row_s: f64,
     weight_n: f64,
     mu_static: f64,
     spring_x_m: Vec<f64>,
@@ -249,7 +252,7 @@ pub struct Sampler {
 
 impl Sampler {
     pub fn new(interval_s: f64, spring_x_m: Vec<f64>, weight_n: f64, mu_static: f64) -> Self {
-        Sampler { interval_s, next_s: 0.0, weight_n, mu_static, spring_x_m }
+        Sampler { interval_s, next_s: 0.0, last_row_s: f64::NEG_INFINITY, weight_n, mu_static, spring_x_m }
     }
 
     /// The rows of a run of `structure` (its solver's output interval).
@@ -276,7 +279,17 @@ impl Sampler {
         while self.next_s <= t_s + 1e-12 {
             self.next_s += self.interval_s;
         }
+        self.last_row_s = t_s;
         true
+    }
+
+    /// Whether the run's last step, at `t_s`, is not a row yet (then it is one).
+    fn due_at_end(&mut self, t_s: f64) -> bool {
+        let due = t_s > self.last_row_s;
+        if due {
+            self.last_row_s = t_s;
+        }
+        due
     }
 
     /// The row of step `s`.
@@ -323,6 +336,12 @@ impl<F: FnMut(&HistoryRow<'_>)> Rows<F> {
 impl<F: FnMut(&HistoryRow<'_>)> Observer for Rows<F> {
     fn observe(&mut self, s: &StepView<'_>) {
         if self.sampler.due(s.t_s) {
+            let row = self.sampler.row(s);
+            (self.sink)(&row);
+        }
+    }
+    fn finish(&mut self, s: &StepView<'_>) {
+        if self.sampler.due_at_end(s.t_s) {
             let row = self.sampler.row(s);
             (self.sink)(&row);
         }
@@ -395,9 +414,20 @@ impl History {
 
 impl Observer for History {
     fn observe(&mut self, s: &StepView<'_>) {
-        if !self.sampler.due(s.t_s) {
-            return;
+        if self.sampler.due(s.t_s) {
+            self.push(s);
         }
+    }
+    fn finish(&mut self, s: &StepView<'_>) {
+        if self.sampler.due_at_end(s.t_s) {
+            self.push(s);
+        }
+    }
+}
+
+impl History {
+    /// Step `s` as a row.
+    fn push(&mut self, s: &StepView<'_>) {
         let r = self.sampler.row(s);
         self.t_s.push(r.t_s);
         self.ux_m.push(r.ux_m);
@@ -448,6 +478,19 @@ pub fn permanent_sliding_m(sim: &Simulation) -> f64 {
     springs.iter().map(|c| c.slip_m).sum::<f64>() / springs.len() as f64
 }
 
+/// The committed state of `sim` as a step for [`Observer::finish`].
+pub(crate) fn final_view<'a, L: LoadHistory + ?Sized>(sim: &'a Simulation, load: &L) -> StepView<'a> {
+    let t_s = sim.state().t_s;
+    StepView {
+        t_s,
+        state: sim.state(),
+        load: load.at(t_s),
+        reaction: sim.reaction(),
+        springs: sim.springs(),
+        iterations: 0,
+    }
+}
+
 /// Integrate `load` on `structure` for `duration_s` (from static equilibrium); with
 /// `record_history`, keep the time histories whole in memory ([`History`]; a long run is better
 /// streamed with [`run_observed`] and [`Rows`]).
@@ -492,7 +535,10 @@ pub fn run_observed<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
         };
         h.observe(&view);
     }
-    sim.run_until(duration_s, load, &mut Both(&mut peaks, rows))?;
+    sim.run_until(duration_s, load, &mut Both(&mut peaks, rows.as_deref_mut()))?;
+    if let Some(h) = rows {
+        h.finish(&final_view(&sim, load));
+    }
     let st = sim.state();
     Ok(RunSummary {
         permanent_sliding_m: permanent_sliding_m(&sim),

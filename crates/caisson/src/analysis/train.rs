@@ -263,6 +263,9 @@ impl TrainCase<'_> {
             });
             before = after;
         }
+        if let Some(h) = history {
+            h.finish(&super::run::final_view(&sim, &train));
+        }
         Ok(RealizationResult {
             index,
             sliding_m: before,

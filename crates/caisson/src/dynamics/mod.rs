@@ -29,13 +29,29 @@
 //!
 //! **Adaptive stepping** ([`Stepping::Adaptive`]): the local displacement error of a Newmark step
 //! is estimated after Zienkiewicz & Xie (1991), e_{n+1} = (β − 1/6) h² (q̈_{n+1} − q̈_n)
-//! (rotation counted as θ·B/2). A converged step with ‖e‖∞ > tol is rejected and retried shorter;
-//! the next step is h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h), within [dt_min, dt_max]. No
+//! (rotation counted as θ·B/2), and with the dashpot beside the springs (`elastic` mode) the
+//! larger of that and the trapezoidal rule's error in the elastic displacement of every slipping
+//! spring, h² κ N_i |ė_{n+1} − ė_n| / (12 c_d) (`Simulation::dashpot_error_m`). A converged
+//! step with ‖e‖∞ > tol is rejected and retried shorter; the next step is
+//! h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h; the cube root by `fast_cbrt`), within
+//! [dt_min, dt_max]. No
 //! step straddles a breakpoint of the load ([`LoadHistory::next_breakpoint_s`]: the start, peak
 //! and end of an impulse), so a short impact cannot be stepped over. Small steps then fall where
 //! the acceleration changes (impacts, slip onsets), large ones through the slowly varying
 //! pulsating load. A step that fails to converge is halved as in the fixed mode (at most
 //! `max_substep_levels` times in a row).
+//!
+//! **Events**: a converged step in which a spring that was in contact and sticking starts to
+//! slip is not committed if the onset falls inside it: the friction margin of that spring held
+//! sticking, g = κ N_i e_lim − |κ N_i e_i + c_d ė_i|, interpolated linearly between the step's
+//! start (g_0 > 0) and end (g_1 < 0), puts the onset at θ = g_0/(g_0 − g_1) of the step; the
+//! step is retaken to θ (1 + 1e-6) h, just past the earliest onset, then the rest of the
+//! fixed step (or the adaptive stepper goes on from there). An onset within 1 % of either end
+//! of the step (or within 1e-2 dt_s) is left where it falls; at most 16 onsets are located in a
+//! step. Without it, the force's kink (or with μ_d < μ_s its jump) at the onset is smeared over
+//! the step and the sliding converges at first order. Lift-off and re-contact are not located:
+//! doing so (with N_i interpolated the same way) made the rocking runs of the examples depend on
+//! rounding (two runs equal to 1e-16 drifting apart to 2.5e-6 over a storm).
 //!
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
@@ -58,6 +74,15 @@ use crate::loads::{LoadHistory, WaveForce};
 use crate::structure::Caisson;
 use nalgebra::{Matrix3, Vector3};
 use thiserror::Error;
+
+/// Events located within one step of the fixed stepping (or in a row by the adaptive stepping):
+/// a bound on the work of a step where many springs lift or slip one after the other.
+const MAX_EVENTS_PER_STEP: usize = 16;
+
+/// A step shortened to an event ends this fraction beyond it.
+const EVENT_OVERSHOOT: f64 = 1e-6;
+/// An event is located only if it splits the step into parts of at least this fraction of it.
+const EVENT_MIN_FRACTION: f64 = 0.01;
 
 /// Why a run stopped.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -176,6 +201,30 @@ impl Model {
     }
 }
 
+/// The committed elastic rate ė_n of a spring beside its dashpot: its own while it slips, the
+/// caisson's horizontal velocity `vx_n` while it sticks or is lifted (`foundation::spring`).
+#[inline(always)]
+fn elastic_rate(c: &SpringState, vx_n: f64) -> f64 {
+    if c.sliding {
+        c.rate_m_per_s
+    } else {
+        vx_n
+    }
+}
+
+/// x^(1/3) for x > 0, to about 1e-5 relative, without libm's `cbrt` (the step-size rule of the
+/// adaptive stepper needs a few digits, and `cbrt` cost 10 % of the design run's instructions):
+/// an estimate from the exponent bits (the bit pattern divided by 3, within 4 %), then two
+/// Newton steps y ← y − (y³ − x)/(3 y²), each about squaring the relative error.
+#[inline]
+fn fast_cbrt(x: f64) -> f64 {
+    let mut y = f64::from_bits(x.to_bits() / 3 + 0x2A9F_7893_782D_A1CE);
+    for _ in 0..2 {
+        y -= (y * y * y - x) / (3.0 * y * y);
+    }
+    y
+}
+
 /// Committed state: a plain snapshot (no scratch).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct State {
@@ -231,6 +280,11 @@ pub trait Observer {
     fn observes(&self) -> bool {
         true
     }
+    /// The run's last committed step again, after the run (the drivers call it): an observer
+    /// that samples the steps (the time histories) keeps it if it did not already, so that its
+    /// rows run to the end. Nothing by default.
+    #[inline]
+    fn finish(&mut self, _view: &StepView<'_>) {}
     /// Whether [`Self::observe`] reads [`StepView::springs`]; `false` spares the engine building
     /// the springs' responses of an all-sticking step (the slice is then empty).
     #[inline]
@@ -267,6 +321,10 @@ pub struct SolverStats {
     /// Shortest and longest accepted steps, s.
     pub min_step_s: f64,
     pub max_step_s: f64,
+    /// Onsets of slip located within a step (the step retaken to end at the onset: module
+    /// docs); not reported (a measure of the engine's work).
+    #[serde(skip)]
+    pub located_events: u64,
     /// Newton iterates whose resisting force took the all-sticking fast path (`sticking`); not
     /// reported (a measure of the engine's work, not a result).
     #[serde(skip)]
@@ -402,14 +460,20 @@ impl Simulation {
     #[inline]
     fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
         self.fast.iterate = None;
-        let cd_over_h = self.model.spring_dashpot_ns_per_m / h;
+        let cd = self.model.spring_dashpot_ns_per_m;
+        let c_prime = 2.0 * cd / h;
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let law = self.model.law;
-        let ux_n = self.state.u[0];
+        let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
         for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
-            // Elastic mode: the dashpot sits beside the spring, on its elastic displacement.
-            let r = law.trial_with_dashpot(*c, u[0], u[1] - u[2] * x, ux_n - c.slip_m, cd_over_h);
+            // Elastic mode: the dashpot sits beside the spring, on its elastic displacement, with
+            // the trapezoidal rate from ē_n = e_n + (h/2) ė_n (`foundation::spring`).
+            let e_bar = ux_n - c.slip_m + 0.5 * h * elastic_rate(c, vx_n);
+            let mut r = law.trial_with_dashpot(*c, u[0], u[1] - u[2] * x, e_bar, c_prime);
+            if cd > 0.0 && r.state.sliding {
+                r.state.rate_m_per_s = 2.0 * (u[0] - r.state.slip_m - e_bar) / h;
+            }
             if cdy > 0.0 && r.normal_n > 0.0 {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
                 // local vertical coordinate u_y − θ x.
@@ -464,6 +528,69 @@ impl Simulation {
         (f, self.tangent(h))
     }
 
+    /// The fraction θ of a converged step of length `h` (to `c`) at which the first slip onset
+    /// happens (module docs, "Events"): a spring in contact and sticking at the step's start that
+    /// slips at its end. The friction margin κ N_i e_lim − |F_i| of the spring held sticking is
+    /// interpolated linearly over the step. `None` if there is none, or if it falls close to
+    /// either end of the step.
+    fn event_fraction(&self, h: f64, c: &Converged) -> Option<f64> {
+        if self.fast.iterate.is_some() {
+            // Every spring sticks at the step's end.
+            return None;
+        }
+        let law = self.model.law;
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+        let (un, vn) = (self.state.u, self.state.v);
+        let mut theta = 1.0f64;
+        // The springs' responses at the converged iterate (the general path's) say which ones
+        // slip at the step's end; only those that stuck at its start are measured.
+        let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial);
+        for ((&x, s), _) in starts.filter(|((_, s), r)| r.state.sliding && !s.sliding && r.normal_n > 0.0) {
+            let uy0 = un[1] - un[2] * x;
+            let uy1 = c.u[1] - c.u[2] * x;
+            let limit = law.limit_m(*s);
+            // At the start: F = κ N e_n + c_d u̇_x,n (ē = e_n − (h/2) u̇_x,n); at the end the
+            // sticking trial of the step.
+            let e_n = un[0] - s.slip_m;
+            let (n0, g0) = law.stick_margin(s.slip_m, limit, un[0], uy0, e_n - 0.5 * h * vn[0], c_prime);
+            let e_bar = e_n + 0.5 * h * elastic_rate(s, vn[0]);
+            let (n1, g1) = law.stick_margin(s.slip_m, limit, c.u[0], uy1, e_bar, c_prime);
+            // The spring law's own tests: in contact while N > 0, sticking while the margin ≥ 0
+            // (contact events are not located: module docs).
+            if n0 > 0.0 && n1 > 0.0 && !s.sliding && g0 > 0.0 && g1 < 0.0 {
+                theta = theta.min(g0 / (g0 - g1));
+            }
+        }
+        // Just past the event, so that the step's end is not within rounding of the spring
+        // law's threshold (which side it fell on would then be decided by rounding).
+        let theta = theta * (1.0 + EVENT_OVERSHOOT);
+        // Neither part of the step shorter than a hundredth of it, nor than a hundredth of dt_s
+        // (shorter steps add work and rounding, and gain little accuracy).
+        let floor = EVENT_MIN_FRACTION.max(1e-2 * self.solver.dt_s / h);
+        (theta >= floor && theta <= 1.0 - floor).then_some(theta)
+    }
+
+    /// The local error of the trapezoidal rule for the elastic displacement of the springs that
+    /// slip over a converged step of length `h` (module docs, adaptive stepping), m: on a slip,
+    /// c_d ė = F − κ N e relaxes e with the time constant τ = c_d/(κ N), so d³e/dt³ = −ë/τ and
+    /// the rule's error h³ |d³e/dt³|/12 is h² |ė_{n+1} − ė_n| / (12 τ). 0 without a dashpot
+    /// beside the springs or when every spring sticks.
+    fn dashpot_error_m(&self, h: f64) -> f64 {
+        let cd = self.model.spring_dashpot_ns_per_m;
+        if cd == 0.0 || self.fast.iterate.is_some() {
+            return 0.0;
+        }
+        let vx_n = self.state.v[0];
+        let mut worst = 0.0f64;
+        for (c, r) in self.state.springs.iter().zip(&self.trial) {
+            if r.state.sliding && r.normal_n > 0.0 {
+                let kn = self.model.law.kappa_per_m * r.normal_n;
+                worst = worst.max(kn * (r.state.rate_m_per_s - elastic_rate(c, vx_n)).abs());
+            }
+        }
+        h * h * worst / (12.0 * cd)
+    }
+
     /// Newton-Raphson for one step of length `h` to load `p`. Commits nothing.
     fn try_step(&mut self, h: f64, p: Vector3<f64>) -> Result<Converged, (usize, f64)> {
         let (beta, gamma) = (self.solver.beta, self.solver.gamma);
@@ -508,8 +635,13 @@ impl Simulation {
     }
 
     fn commit(&mut self, h: f64, c: Converged) {
+        if self.fast.iterate.is_some() && !self.sticking_commit_possible() {
+            // All-sticking from a state with slipping springs: their responses need their own
+            // committed rates, so the step is committed spring by spring (`sticking`).
+            self.general_force(c.u, c.v, h);
+        }
         if self.fast.iterate.is_some() {
-            self.commit_sticking(h, self.state.u[0]);
+            self.commit_sticking(h, self.state.u[0], self.state.v[0]);
         } else {
             for (s, r) in self.state.springs.iter_mut().zip(&self.trial) {
                 *s = r.state;
@@ -527,18 +659,29 @@ impl Simulation {
         self.stats.max_residual = self.stats.max_residual.max(c.residual);
     }
 
-    /// Advance by `h` seconds, halving on failure (recursively, up to the allowed levels).
+    /// Advance by `h` seconds, halving on failure (recursively, up to the allowed levels), and
+    /// shortening a step to end at its first event (`events` more at most: module docs).
     fn advance<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
         &mut self,
         h: f64,
         level: usize,
+        events: usize,
         load: &L,
         obs: &mut O,
     ) -> Result<(), SolveError> {
-        let t1 = self.state.t_s + h;
+        let t0 = self.state.t_s;
+        let t1 = t0 + h;
         let w = load.at(t1);
         match self.try_step(h, self.load_vector(w)) {
             Ok(c) => {
+                if events > 0 {
+                    if let Some(theta) = self.event_fraction(h, &c) {
+                        // To the event without locating again, then the rest of the step.
+                        self.stats.located_events += 1;
+                        self.advance(theta * h, level, 0, load, obs)?;
+                        return self.advance(t1 - self.state.t_s, level, events - 1, load, obs);
+                    }
+                }
                 let it = c.iterations;
                 self.commit(h, c);
                 if obs.observes() {
@@ -562,8 +705,8 @@ impl Simulation {
                 }
                 self.stats.substeps += 1;
                 self.stats.max_substep_level = self.stats.max_substep_level.max(level + 1);
-                self.advance(0.5 * h, level + 1, load, obs)?;
-                self.advance(0.5 * h, level + 1, load, obs)
+                self.advance(0.5 * h, level + 1, events, load, obs)?;
+                self.advance(t1 - self.state.t_s, level + 1, events, load, obs)
             }
         }
     }
@@ -575,7 +718,7 @@ impl Simulation {
         load: &L,
         obs: &mut O,
     ) -> Result<(), SolveError> {
-        let r = self.advance(self.solver.dt_s, 0, load, obs);
+        let r = self.advance(self.solver.dt_s, 0, MAX_EVENTS_PER_STEP, load, obs);
         self.fill_sticking_responses();
         r
     }
@@ -608,6 +751,12 @@ impl Simulation {
         let c_err = (self.solver.beta - 1.0 / 6.0).abs();
         let half_b = 0.5 * self.model.width_m;
         let mut level = 0usize;
+        // Events located in a row, and whether the step to try was shortened to end at one (it
+        // is then not located again).
+        let (mut events, mut at_event) = (0usize, false);
+        // The load's next breakpoint after the step's start: it stays the next one until the
+        // steps pass it, so it is looked up again only then.
+        let mut bp = f64::NEG_INFINITY;
         // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
         while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
             let t = self.state.t_s;
@@ -615,7 +764,9 @@ impl Simulation {
             let planned =
                 if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
             let mut h = planned.min(t_end_s - t);
-            let bp = load.next_breakpoint_s(t);
+            if t >= bp {
+                bp = load.next_breakpoint_s(t);
+            }
             if bp - t > p.dt_min_s && bp < t + h {
                 h = bp - t;
             }
@@ -628,10 +779,22 @@ impl Simulation {
             let w = load.at(t1);
             match self.try_step(h, self.load_vector(w)) {
                 Ok(c) => {
+                    if !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
+                        if let Some(theta) = self.event_fraction(h, &c) {
+                            if theta * h >= p.dt_min_s {
+                                self.stats.located_events += 1;
+                                events += 1;
+                                at_event = true;
+                                self.h_next = theta * h;
+                                level = 0;
+                                continue;
+                            }
+                        }
+                    }
                     let an = self.state.a;
                     let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * half_b];
-                    let err = c_err * h * h * da[0].max(da[1]).max(da[2]);
-                    let ratio = if err > 0.0 { 0.9 * (p.tolerance_m / err).cbrt() } else { f64::INFINITY };
+                    let err = (c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.dashpot_error_m(h));
+                    let ratio = if err > 0.0 { 0.9 * fast_cbrt(p.tolerance_m / err) } else { f64::INFINITY };
                     if err > p.tolerance_m && h > p.dt_min_s {
                         self.stats.rejected_steps += 1;
                         self.h_next = (h * ratio.clamp(0.1, 0.9)).max(p.dt_min_s);
@@ -659,6 +822,10 @@ impl Simulation {
                     let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
                     self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
                     level = 0;
+                    if !at_event {
+                        events = 0;
+                    }
+                    at_event = false;
                 }
                 Err((iterations, residual)) => {
                     if level >= self.solver.max_substep_levels {
@@ -691,7 +858,7 @@ impl Simulation {
             if h <= 0.0 {
                 continue;
             }
-            self.advance(h, 0, load, obs)?;
+            self.advance(h, 0, MAX_EVENTS_PER_STEP, load, obs)?;
             self.state.t_s = target;
         }
         Ok(())
@@ -740,6 +907,20 @@ mod tests {
         }
     }
 
+    /// `fast_cbrt` against `cbrt` from 1e-30 to 1e30: within 1e-4 relative (two Newton steps
+    /// from an estimate within 4 % leave about 1e-5; a step-size rule needs a few digits).
+    #[test]
+    fn fast_cbrt_is_cbrt() {
+        let mut checked = 0;
+        for k in -3000..=3000 {
+            let x = 10f64.powf(k as f64 * 0.01 + 0.003);
+            let (a, b) = (fast_cbrt(x), x.cbrt());
+            assert!((a / b - 1.0).abs() <= 1e-4, "{x}: {a} against {b}");
+            checked += 1;
+        }
+        assert_eq!(checked, 6001);
+    }
+
     /// The tangent of the assembled resisting force (springs with their shear, normal and
     /// rotation coupling, and the per-spring dashpots of the `elastic` and `springs` placements)
     /// against central finite differences, for both horizontal and both vertical dashpot
@@ -760,7 +941,7 @@ mod tests {
                 sim.state.u = [2e-4, -settle, 0.0];
                 for (i, s) in sim.state.springs.iter_mut().enumerate() {
                     let e = law.stick_limit_m * [0.3, -0.4, 2.5, -3.0, 0.1, 1.8, -0.2, 4.0, -2.2, 0.5][i];
-                    *s = SpringState { slip_m: sim.state.u[0] - e, sliding: i % 3 == 0 };
+                    *s = SpringState { slip_m: sim.state.u[0] - e, sliding: i % 3 == 0, rate_m_per_s: 0.0 };
                 }
                 let x = sim.model.x_m.clone();
                 // Trial: a small further shoreward push (the elastic-mode dashpot c/(n h) turns

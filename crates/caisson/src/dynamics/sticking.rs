@@ -2,23 +2,27 @@
 //! in contact and sticks, the sums over the springs are closed forms in the displacements.
 //!
 //! With N_i = −k_y (u_y − θ x_i) = a + b x_i (a = −k_y u_y, b = k_y θ), e_i = u_x − s_i and, in
-//! the `elastic` damping mode, the dashpot rate (e_i − e_n,i)/h = (u_x − u_x,n)/h the same for
-//! every sticking spring ([`crate::foundation::spring`]):
+//! the `elastic` damping mode, the dashpot term c' (e_i − ē_n,i) = c' (u_x − u_x,n − (h/2) ė_n,i)
+//! of every sticking spring (c' = 2 c_d/h, ė_n,i = u̇_x,n unless the spring was slipping:
+//! [`crate::foundation::spring`]):
 //!
 //! ```text
 //! Σ N_i     = n a + b Σx_i                      Σ x_i N_i = a Σx_i + b Σx_i²
 //! Σ e_i     = n E − Σd_i                        Σ x_i e_i = E Σx_i − Σx_i d_i
-//! Σ F_i     = κ (a Σe_i + b Σx_i e_i) + n (c_d/h) (u_x − u_x,n)
+//! Σ F_i     = κ (a Σe_i + b Σx_i e_i) + c' (n (u_x − u_x,n) − (h/2) Σė_n,i)
 //! E = u_x − s_1,  d_i = s_i − s_1               (slips relative to the first spring's)
+//! Σė_n,i    = Σ_slipping ė_n,i + n_sticking u̇_x,n
 //! ```
 //!
 //! and the vertical dashpots of the `springs` form add c_y (n v_y − θ̇ Σx_i) to the vertical force
 //! and −c_y (v_y Σx_i − θ̇ Σx_i²) to the moment. The tangent's entries are the same sums:
-//! ∂ΣF/∂u_x = κ ΣN_i + n c_d/h, ∂ΣF/∂u_y = −κ k_y Σe_i, ∂ΣF/∂θ = κ k_y Σx_i e_i, and the
+//! ∂ΣF/∂u_x = κ ΣN_i + n c', ∂ΣF/∂u_y = −κ k_y Σe_i, ∂ΣF/∂θ = κ k_y Σx_i e_i, and the
 //! vertical block (k_y + γ c_y/(β h)) (n, −Σx_i; −Σx_i, Σx_i²).
 //!
-//! n, Σx_i, Σx_i², Σd_i and Σx_i d_i change only when a spring's slip position does, i.e. after a
-//! step committed by the general path; they are recomputed before the next iterate.
+//! n, Σx_i, Σx_i², Σd_i, Σx_i d_i and the slipping springs' Σė_n,i change only when a spring's
+//! slip state does, i.e. after a step committed by the general path; they are recomputed before
+//! the next iterate. A step that the fast path found all-sticking from a state with slipping
+//! springs is committed through the general path (their responses need their own rates).
 //!
 //! Whether every spring sticks is decided spring by spring by the spring law's own test
 //! ([`SpringLaw::sticks`], the same operations as its `sticking` branch), so the path
@@ -59,6 +63,13 @@ pub(super) struct FastPath {
     /// [`SpringLaw::limit_m`]: crate::foundation::SpringLaw::limit_m
     slip_m: Vec<f64>,
     limit_m: Vec<f64>,
+    /// The committed elastic rate ė_n,i of a slipping spring, 0 for the others, m/s; and 1 for a
+    /// spring whose rate is the caisson's velocity u̇_x,n (sticking or lifted), 0 for the others.
+    rate_m: Vec<f64>,
+    follows_v: Vec<f64>,
+    /// Σ of `rate_m` and of `follows_v`.
+    sum_rate: f64,
+    n_follow: f64,
     /// The last iterate, if it took the fast path.
     pub iterate: Option<StickIterate>,
     /// The committed step, if all-sticking (its base reaction in closed form).
@@ -75,20 +86,28 @@ pub(super) struct StickIterate {
     sum_e: f64,
     sum_xe: f64,
     shear_n: f64,
-    cd_over_h: f64,
+    /// c' = 2 c_d/h, N/m.
+    c_prime: f64,
 }
 
 /// An all-sticking step committed without its per-spring responses: its length and the
-/// horizontal displacement it started from (e_n,i = u_x,n − s_i).
+/// horizontal displacement and velocity it started from (e_n,i = u_x,n − s_i, ė_n,i = u̇_x,n).
 #[derive(Debug, Clone, Copy)]
 struct PendingResponses {
     h: f64,
     ux_prev_m: f64,
+    vx_prev_m_per_s: f64,
 }
 
 impl FastPath {
     pub fn new(springs: usize) -> Self {
-        FastPath { slip_m: vec![0.0; springs], limit_m: vec![0.0; springs], ..FastPath::default() }
+        FastPath {
+            slip_m: vec![0.0; springs],
+            limit_m: vec![0.0; springs],
+            rate_m: vec![0.0; springs],
+            follows_v: vec![0.0; springs],
+            ..FastPath::default()
+        }
     }
 
     /// Forget everything derived from the committed spring states (they changed).
@@ -110,12 +129,14 @@ impl Simulation {
             self.refresh_fast_path();
         }
         let law = self.model.law;
-        let cd_over_h = self.model.spring_dashpot_ns_per_m / h;
-        let ux_n = self.state.u[0];
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+        let half_h = 0.5 * h;
+        let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let fs = &self.fast;
         // Indexed over slices of one length, so that the compiler vectorizes the test.
         let n = fs.slip_m.len();
         let (x_m, slip_m, limit_m) = (&self.model.x_m[..n], &fs.slip_m[..n], &fs.limit_m[..n]);
+        let (rate_m, follows_v) = (&fs.rate_m[..n], &fs.follows_v[..n]);
         // Shared slip position and limit: κ N_i is monotonic in x_i (each rounded operation of
         // N_i = −k_y (u_y − θ x_i) is), so the outermost springs have its extremes, and their
         // test with a margin decides for every spring ([`SpringLaw::sticks_with_margin`]).
@@ -124,14 +145,26 @@ impl Simulation {
         // [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
         let outer_stick = fs.same_slips && !fs.any_sliding && {
             let (s, limit) = (slip_m[0], limit_m[0]);
-            let sticks = |x: f64| law.sticks_with_margin(s, limit, u[0], u[1] - u[2] * x, ux_n - s, cd_over_h);
+            let e_bar = ux_n - s + half_h * vx_n;
+            let sticks = |x: f64| law.sticks_with_margin(s, limit, u[0], u[1] - u[2] * x, e_bar, c_prime);
             sticks(x_m[0]) & sticks(x_m[n - 1])
         };
         if !outer_stick {
             let mut fails = 0u32;
-            for i in 0..n {
-                let (x, s) = (x_m[i], slip_m[i]);
-                fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, ux_n - s, cd_over_h));
+            if fs.any_sliding {
+                for i in 0..n {
+                    let (x, s) = (x_m[i], slip_m[i]);
+                    let e_bar = ux_n - s + half_h * (rate_m[i] + follows_v[i] * vx_n);
+                    fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                }
+            } else {
+                // Every rate is u̇_x,n: the same operations without the slices of the rates.
+                let shift = half_h * vx_n;
+                for i in 0..n {
+                    let (x, s) = (x_m[i], slip_m[i]);
+                    let e_bar = ux_n - s + shift;
+                    fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                }
             }
             if fails > 0 {
                 return None;
@@ -143,14 +176,15 @@ impl Simulation {
         let sum_xe = e_ref * fs.sum_x - fs.sum_xd;
         let sum_n = fs.n * a + b * fs.sum_x;
         let sum_xn = a * fs.sum_x + b * fs.sum_x2;
-        let shear_n = law.kappa_per_m * (a * sum_e + b * sum_xe) + fs.n * cd_over_h * (u[0] - ux_n);
+        let dashpot = c_prime * (fs.n * (u[0] - ux_n) - half_h * (fs.sum_rate + fs.n_follow * vx_n));
+        let shear_n = law.kappa_per_m * (a * sum_e + b * sum_xe) + dashpot;
         let (mut f1, mut f2) = (-sum_n, sum_xn);
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         if cdy > 0.0 {
             f1 += cdy * (fs.n * v[1] - v[2] * fs.sum_x);
             f2 -= cdy * (v[1] * fs.sum_x - v[2] * fs.sum_x2);
         }
-        self.fast.iterate = Some(StickIterate { sum_n, sum_xn, sum_e, sum_xe, shear_n, cd_over_h });
+        self.fast.iterate = Some(StickIterate { sum_n, sum_xn, sum_e, sum_xe, shear_n, c_prime });
         self.stats.sticking_iterates += 1;
         Some(Vector3::new(shear_n, f1, f2))
     }
@@ -164,7 +198,7 @@ impl Simulation {
         let kd = if cdy > 0.0 { cdy * (self.solver.gamma / (self.solver.beta * h)) } else { 0.0 };
         let kk = law.ky_n_per_m + kd;
         let kxy = law.kappa_per_m * law.ky_n_per_m;
-        let k00 = law.kappa_per_m * it.sum_n + fs.n * it.cd_over_h;
+        let k00 = law.kappa_per_m * it.sum_n + fs.n * it.c_prime;
         let (k01, k02) = (-kxy * it.sum_e, kxy * it.sum_xe);
         let (k11, k12, k22) = (fs.n * kk, -kk * fs.sum_x, kk * fs.sum_x2);
         Matrix3::new(k00, k01, k02, 0.0, k11, k12, 0.0, k12, k22)
@@ -202,6 +236,13 @@ impl Simulation {
         (fs.n, fs.sum_x, fs.sum_x2, fs.sum_d, fs.sum_xd) = (0.0, 0.0, 0.0, 0.0, 0.0);
         fs.s_ref_m = s_ref_m;
         fs.any_sliding = false;
+        (fs.sum_rate, fs.n_follow) = (0.0, 0.0);
+        let rates = fs.rate_m.iter_mut().zip(fs.follows_v.iter_mut());
+        for (c, (rate, follows)) in self.state.springs.iter().zip(rates) {
+            (*rate, *follows) = if c.sliding { (c.rate_m_per_s, 0.0) } else { (0.0, 1.0) };
+            fs.sum_rate += *rate;
+            fs.n_follow += *follows;
+        }
         let slices = fs.slip_m.iter_mut().zip(fs.limit_m.iter_mut());
         for ((&x, c), (slip, limit)) in self.model.x_m.iter().zip(&self.state.springs).zip(slices) {
             let d = c.slip_m - s_ref_m;
@@ -220,21 +261,23 @@ impl Simulation {
         fs.valid = true;
     }
 
-    /// Commit the spring states of an all-sticking step of length `h` that started at
-    /// u_x,n = `ux_prev_m`: every spring keeps its slip position and sticks. Its per-spring
-    /// responses are built later, when asked for ([`Self::fill_sticking_responses`]).
+    /// Whether the last iterate took the fast path from a committed state where no spring was
+    /// slipping: a step that can be committed by [`Self::commit_sticking`].
     #[inline]
-    pub(super) fn commit_sticking(&mut self, h: f64, ux_prev_m: f64) {
+    pub(super) fn sticking_commit_possible(&self) -> bool {
+        self.fast.iterate.is_some() && !self.fast.any_sliding
+    }
+
+    /// Commit the spring states of an all-sticking step of length `h` that started at
+    /// u_x,n = `ux_prev_m`, u̇_x,n = `vx_prev_m_per_s`, from a state where no spring was slipping
+    /// ([`Self::sticking_commit_possible`]): every spring keeps its slip position and sticks. Its
+    /// per-spring responses are built later, when asked for ([`Self::fill_sticking_responses`]).
+    #[inline]
+    pub(super) fn commit_sticking(&mut self, h: f64, ux_prev_m: f64, vx_prev_m_per_s: f64) {
         let fs = &mut self.fast;
-        if fs.any_sliding {
-            for (s, limit) in self.state.springs.iter_mut().zip(fs.limit_m.iter_mut()) {
-                s.sliding = false;
-                *limit = self.model.law.stick_limit_m;
-            }
-            fs.any_sliding = false;
-        }
+        debug_assert!(!fs.any_sliding);
         fs.committed = fs.iterate;
-        fs.pending = Some(PendingResponses { h, ux_prev_m });
+        fs.pending = Some(PendingResponses { h, ux_prev_m, vx_prev_m_per_s });
     }
 
     /// The springs' responses of the committed step for an observer: empty if they are not
@@ -254,10 +297,11 @@ impl Simulation {
     pub(super) fn fill_sticking_responses(&mut self) {
         let Some(p) = self.fast.pending.take() else { return };
         let law = self.model.law;
-        let cd_over_h = self.model.spring_dashpot_ns_per_m / p.h;
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / p.h;
         let u = self.state.u;
         for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
-            *out = law.sticking_response(*c, u[0], u[1] - u[2] * x, p.ux_prev_m - c.slip_m, cd_over_h);
+            let e_bar = p.ux_prev_m - c.slip_m + 0.5 * p.h * p.vx_prev_m_per_s;
+            *out = law.sticking_response(*c, u[0], u[1] - u[2] * x, e_bar, c_prime);
         }
     }
 }
@@ -288,7 +332,7 @@ mod tests {
         sim.state.u = [2e-4, -settle, 0.0];
         for (i, s) in sim.state.springs.iter_mut().enumerate() {
             let e = law.stick_limit_m * [e_first, -0.4, 0.5, -0.2, 0.1, 0.6, -0.3, 0.45, -0.5, 0.2][i];
-            *s = SpringState { slip_m: sim.state.u[0] - e, sliding: i % 3 == 0 };
+            *s = SpringState { slip_m: sim.state.u[0] - e, sliding: i % 3 == 0, rate_m_per_s: 0.0 };
         }
         sim.fast.invalidate();
         let theta = settle / (0.5 * sim.model.width_m) * if lift { 1.2 } else { 0.3 };
@@ -342,7 +386,7 @@ mod tests {
             let (u, v, h) = sticking_trial(&mut sim, 1.01, false);
             assert!(sim.sticking_force(u, v, h).is_none(), "{mode:?}/{vertical:?}: a slip");
             assert!(sim.general_force(u, v, h) != Vector3::zeros() && sim.trial[0].state.sliding);
-            let (u, v, h) = sticking_trial(&mut sim, 0.9, false);
+            let (u, v, h) = sticking_trial(&mut sim, 0.7, false);
             assert!(sim.sticking_force(u, v, h).is_some(), "{mode:?}/{vertical:?}: sticks");
             let (u, v, h) = sticking_trial(&mut sim, 0.3, true);
             assert!(sim.sticking_force(u, v, h).is_none(), "{mode:?}/{vertical:?}: a lift-off");

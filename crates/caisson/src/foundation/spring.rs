@@ -20,16 +20,20 @@
 //!
 //! **Dashpot with the spring (`damping_mode = "elastic"`, docs/model.md §10 item 30)**: the
 //! horizontal dashpot c_d acts in parallel with the elastic spring and both in series with the
-//! slider (a Kelvin element on a friction slider). Over a step of length h from the committed
-//! elastic displacement e_n, with the dashpot rate (e − e_n)/h:
+//! slider (a Kelvin element on a friction slider), F = κ N e + c_d ė. Over a step of length h the
+//! elastic rate follows the trapezoidal rule, ė_{n+1} = 2 (e − e_n)/h − ė_n (second order, as
+//! Newmark's average acceleration), so that with c' = 2 c_d/h and ē_n = e_n + (h/2) ė_n:
 //!
 //! ```text
-//! stick:  F = κ N e + c_d (e − e_n)/h,  e = u_x − s_n,  while |F| ≤ μ N (μ_s, or μ_d if slipping)
-//! slip:   F = ± μ_d N,  e = (F + c_d e_n/h) / (κ N + c_d/h),  s = u_x − e
+//! stick:  F = κ N e + c' (e − ē_n),  e = u_x − s_n,  while |F| ≤ μ N (μ_s, or μ_d if slipping)
+//! slip:   F = ± μ_d N,  e = (F + c' ē_n) / (κ N + c'),  s = u_x − e,  ė = 2 (e − ē_n)/h
 //! ```
 //!
-//! so friction caps the whole force the foundation transmits, dashpot included. With c_d = 0 this
-//! is the law above.
+//! The caller passes ē_n and c' ([`SpringLaw::trial_with_dashpot`]); the committed rate ė_n is
+//! [`SpringState::rate_m_per_s`] for a spring that was slipping, and the caisson's horizontal
+//! velocity u̇_x,n for one that stuck (its slider does not move, so ė = u̇_x) or was lifted (it
+//! re-contacts sticking). Friction caps the whole force the foundation transmits, dashpot
+//! included. With c_d = 0 this is the law above.
 //!
 //! Trial → commit → revert: [`SpringLaw::trial`] computes the response from the committed
 //! [`SpringState`] without changing it; committing is copying [`SpringResponse::state`].
@@ -41,6 +45,10 @@ pub struct SpringState {
     pub slip_m: f64,
     /// The spring was slipping at the end of the last committed step.
     pub sliding: bool,
+    /// ė, the rate of the elastic displacement e = u_x − s of a spring that was slipping at the
+    /// end of the last committed step, m/s (module docs); 0 otherwise (the rate of a sticking or
+    /// lifted spring is the caisson's horizontal velocity) and without a dashpot beside the spring.
+    pub rate_m_per_s: f64,
 }
 
 /// Constitutive constants shared by all springs of a foundation.
@@ -94,14 +102,15 @@ impl SpringLaw {
         self.trial_with_dashpot(c, ux, uy, 0.0, 0.0)
     }
 
-    /// As [`Self::trial`] with a dashpot `c_over_h` = c_d/h (N/m) beside the elastic spring,
-    /// `e_prev_m` the committed elastic displacement e_n (module docs).
+    /// As [`Self::trial`] with a dashpot beside the elastic spring: `c_over_h` = c' = 2 c_d/h
+    /// (N/m) and `e_prev_m` = ē_n = e_n + (h/2) ė_n (module docs). The trial state's
+    /// [`SpringState::rate_m_per_s`] is left 0: the caller, who knows h, sets it on a slip.
     #[inline]
     pub fn trial_with_dashpot(&self, c: SpringState, ux: f64, uy: f64, e_prev_m: f64, c_over_h: f64) -> SpringResponse {
         if uy >= 0.0 {
             return SpringResponse {
                 dslip_dux: 1.0,
-                state: SpringState { slip_m: ux, sliding: false },
+                state: SpringState { slip_m: ux, sliding: false, rate_m_per_s: 0.0 },
                 ..SpringResponse::default()
             };
         }
@@ -120,7 +129,7 @@ impl SpringLaw {
                 dshear_duy: self.kappa_per_m * g * dn,
                 dnormal_duy: dn,
                 dslip_dux: 1.0,
-                state: SpringState { slip_m: ux - e_slip, sliding: true },
+                state: SpringState { slip_m: ux - e_slip, sliding: true, rate_m_per_s: 0.0 },
             }
         }
     }
@@ -147,7 +156,7 @@ impl SpringLaw {
     }
 
     /// [`Self::sticks`] with a margin: the trial force is within the friction cap by more than
-    /// 1e-12 of κ N_i (|e| + `limit_m`) + |c_d (e − e_n)/h|, far more than the rounding of the
+    /// 1e-12 of κ N_i (|e| + `limit_m`) + |c' (e − ē_n)|, far more than the rounding of the
     /// trial (a few units in the last place of these terms). For springs that share the slip
     /// position and the limit, and so e and the dashpot term, the test of the two with the
     /// smallest and the largest κ N_i then implies [`Self::sticks`] of every spring between: in
@@ -177,6 +186,16 @@ impl SpringLaw {
         self.stick_response(c, n, kn, e, f_trial, c_over_h)
     }
 
+    /// The normal force N_i (unclamped: negative when the spring would be in tension) and the
+    /// friction margin κ N_i `limit_m` − |κ N_i e + c' (e − ē)| of a spring at slip position
+    /// `slip_m` if it stuck at (`ux`, `uy`) (module docs): the two quantities whose sign changes
+    /// are the spring's events (lift-off or re-contact, and the onset of slip).
+    #[inline]
+    pub fn stick_margin(&self, slip_m: f64, limit_m: f64, ux: f64, uy: f64, e_bar_m: f64, c_prime: f64) -> (f64, f64) {
+        let (n, kn, _, f_trial, _) = self.elastic_trial(slip_m, limit_m, ux, uy, e_bar_m, c_prime);
+        (n, kn * limit_m - f_trial.abs())
+    }
+
     /// The `sticking` branch's response from the elastic trial.
     #[inline(always)]
     fn stick_response(&self, c: SpringState, n: f64, kn: f64, e: f64, f_trial: f64, c_over_h: f64) -> SpringResponse {
@@ -188,12 +207,12 @@ impl SpringLaw {
             dshear_duy: self.kappa_per_m * e * dn,
             dnormal_duy: dn,
             dslip_dux: 0.0,
-            state: SpringState { slip_m: c.slip_m, sliding: false },
+            state: SpringState { slip_m: c.slip_m, sliding: false, rate_m_per_s: 0.0 },
         }
     }
 
     /// The elastic trial of a spring with `uy` < 0 (module docs): N_i, κ N_i, e = u_x − s_i, the
-    /// trial force κ N_i e + c_d (e − e_n)/h and whether it is within the friction cap
+    /// trial force κ N_i e + c' (e − ē_n) and whether it is within the friction cap
     /// κ N_i `limit_m`.
     #[inline(always)]
     fn elastic_trial(
@@ -246,7 +265,7 @@ mod tests {
     #[test]
     fn sliding_spring_sticks_again_on_reversal() {
         let l = law();
-        let c = SpringState { slip_m: 0.01, sliding: true };
+        let c = SpringState { slip_m: 0.01, sliding: true, rate_m_per_s: 0.0 };
         // Trial elastic displacement smaller than e_d (reversal): sticks, slip position kept.
         let r = l.trial(c, 0.01 + 0.5 * l.slip_offset_m, -1e-5);
         assert!(!r.state.sliding && r.state.slip_m == 0.01);
@@ -263,7 +282,7 @@ mod tests {
             ex in -3.0f64..3.0, uy_rel in -2.0f64..0.5, slip in -1e-3f64..1e-3, sliding in any::<bool>()
         ) {
             let l = law();
-            let c = SpringState { slip_m: slip, sliding };
+            let c = SpringState { slip_m: slip, sliding, rate_m_per_s: 0.0 };
             let ux = slip + ex * l.stick_limit_m;
             let uy = uy_rel * 8240.0 / 10.0 / l.ky_n_per_m;
             let r = l.trial(c, ux, uy);

@@ -15,6 +15,22 @@ pub fn example(name: &str) -> Scenario {
     caisson::scenario::load(&dir.join(name)).unwrap_or_else(|e| panic!("examples/{name}: {e}"))
 }
 
+/// The seed's Table 5 caisson on its soil (docs/model.md §8.2; Table 6 from the soil route), the
+/// `[caisson]` and `[foundation]` tables without a closing newline: tests append keys of their
+/// own to `[foundation]` and their `[load]`.
+pub const TABLE5: &str = r#"
+[caisson]
+width_m = 0.78
+length_m = 1.0
+height_m = 1.12
+base_depth_m = 0.8
+weight_in_water_kn = 8.24
+[foundation]
+e100_kpa = 3.5e5
+poisson = 0.33
+density_kg_per_m3 = 2300
+"#;
+
 /// The seed's Table 5 caisson (0.78 m wide, W' `weight_kn`) on a foundation 100 × stiffer than
 /// Table 6, undamped, with μ_s = μ_d = `mu`: under a force through its base centre it is the
 /// rigid block of docs/model.md §6.3 (tests/verification.rs, tests/sizing.rs). `width_m` replaces
