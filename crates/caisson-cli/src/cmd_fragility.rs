@@ -19,9 +19,6 @@ use caisson::scenario;
 use std::fmt::Write;
 use std::path::Path;
 
-/// The two sliding models, as named in JSON and CSV.
-const MODELS: [&str; 2] = ["dynamic", "rigid_block"];
-
 /// What a fragility analysis runs on.
 struct Setup<'a> {
     structure: &'a Structure,
@@ -166,29 +163,33 @@ fn fragility_csv(s: &Setup<'_>, r: &FragilityResult) -> Result<Vec<u8>> {
     Ok(w.into_inner()?)
 }
 
-/// One panel per (limit, model): the storm shares and the fitted curve over the grid. The curve
-/// goes on beyond the highest height by 40 % of the grid's span, where the legend (upper right)
-/// would otherwise hide the points near P = 1.
+/// One panel per limit, both models on it (the engineer compares them): the storm shares as
+/// markers and each model's fitted curve in its colour, over the heights of the grid.
 fn fragility_plot(path: &Path, name: &str, r: &FragilityResult) -> Result<()> {
     let (lo, hi) = (r.levels[0].h13_m, r.levels[r.levels.len() - 1].h13_m);
-    let hi = hi + 0.4 * (hi - lo);
     let curve_at = |f: &LognormalFit| {
         (0..=200).map(|i| lo + (hi - lo) * i as f64 / 200.0).map(|h| (h, f.probability(h))).collect::<Vec<_>>()
     };
     let mut out = Vec::new();
     for (j, f) in r.fits.iter().enumerate() {
+        let mut series = Vec::new();
         for (m, (label, fit)) in
             [("dynamic model", &f.dynamic), ("rigid block", &f.rigid_block)].into_iter().enumerate()
         {
             let pts = r.levels.iter().map(|l| (l.h13_m, counts(l, m)[j] as f64 / l.storms.len() as f64)).collect();
-            let mut series = vec![Series::markers(format!("{label}: share of storms"), pts)];
             match fit {
-                Ok(x) => series
-                    .push(Series::line(format!("lognormal: θ = {:.2} m, β = {:.3}", x.median, x.beta), curve_at(x))),
-                Err(_) => series[0].label.push_str(" (no fit)"),
+                Ok(x) => {
+                    series.push(Series::markers(
+                        format!("{label}: storms; lognormal θ = {:.2} m, β = {:.3}", x.median, x.beta),
+                        pts,
+                    ));
+                    // Unlabelled: the fit in its model's colour.
+                    series.push(Series::line("", curve_at(x)));
+                }
+                Err(_) => series.push(Series::markers(format!("{label}: storms (no lognormal fit)"), pts)),
             }
-            out.push(Panel { y_label: format!("P(S > {} m), {}", f.limit_m, MODELS[m].replace('_', " ")), series });
         }
+        out.push(Panel { y_label: format!("P(S > {} m)", f.limit_m), series });
     }
     panels(
         path,

@@ -202,8 +202,9 @@ fn out_writes_json_csv_and_svg() {
     assert!(!csv.contains("NaN") && !csv.to_lowercase().contains("inf"));
     let svg = std::fs::read_to_string(out.join("fragility.svg")).unwrap();
     assert!(svg.starts_with("<svg"));
-    for label in ["P(S &gt; 0.05 m), dynamic", "P(S &gt; 0.2 m), rigid block"] {
-        assert!(svg.contains(label), "no panel `{label}`");
+    // One panel per limit, both models on it.
+    for label in ["P(S &gt; 0.05 m)", "P(S &gt; 0.2 m)", "dynamic model: storms", "rigid block: storms"] {
+        assert!(svg.contains(label), "no `{label}` in the plot");
     }
     let mut names: Vec<String> =
         std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();

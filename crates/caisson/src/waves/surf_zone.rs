@@ -94,7 +94,8 @@ pub fn equivalent_deep_water_height_m(h13_m: f64, period_s: f64, depth_m: f64, s
         lo = hi;
         hi *= 2.0;
     }
-    if !(h13(hi) >= h13_m) {
+    let bracketed = h13(hi) >= h13_m; // false for a NaN too
+    if !bracketed {
         return None;
     }
     for _ in 0..200 {
