@@ -59,13 +59,16 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
     );
     let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to H_max = {HMAX_RATIO} H1/3, no tide or estimation errors; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
-    let sf = goda_sliding_safety(s, s.waves.height_m(), s.waves.period_s()).map_or("-".into(), |v| format!("{v:.3}"));
-    let dw =
-        caisson::analysis::conventional::DesignWave::irregular(&s.waves.model, s.waves.height_m(), s.waves.period_s());
+    let (h13, period) = (s.waves.height_m(), s.waves.period_s());
+    let check = caisson::report::fragility::goda_design_check(s.structure, s.waves, h13, period);
+    let sf = check.and_then(|c| c.safety.sliding).map_or("-".into(), |v| format!("{v:.3}"));
+    let dw = check.map_or_else(
+        || caisson::analysis::conventional::DesignWave::irregular(&s.waves.model, h13, period),
+        |c| c.design_wave,
+    );
     let _ = writeln!(
         t,
-        "Design wave H1/3 = {} m: Goda static sliding safety factor {sf} at H_max = {:.2} m ({})",
-        s.waves.height_m(),
+        "Design wave H1/3 = {h13} m: Goda static sliding safety factor {sf} at H_max = {:.2} m ({})",
         dw.design_height_m,
         dw.rule.describe()
     );

@@ -68,7 +68,7 @@ pub const PLAUSIBLE_LOAD_OVER_WEIGHT: f64 = 100.0;
 pub const MAX_LOAD_OVER_WEIGHT: f64 = 1e3;
 /// H_max / H1/3 of the largest wave of an irregular train (Goda's design ratio, as the storms of
 /// [`super::fragility`]).
-const NOMINAL_HMAX_RATIO: f64 = 1.8;
+const NOMINAL_HMAX_RATIO: f64 = super::conventional::HMAX_OVER_H13;
 /// Rotation beyond which the caisson is rocking, not vibrating, rad.
 pub const ROCKING_LIMIT_RAD: f64 = 0.01;
 /// Sliding beyond which the caisson has failed, as a fraction of the base width.

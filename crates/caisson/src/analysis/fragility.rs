@@ -79,7 +79,7 @@ use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use thiserror::Error;
 
 /// H_max / H1/3 of a storm (Goda's design ratio).
-pub const HMAX_RATIO: f64 = 1.8;
+pub const HMAX_RATIO: f64 = super::conventional::HMAX_OVER_H13;
 /// log2 of the 32-bit words of its stream each storm owns (module docs, "Streams").
 pub const STORM_WORDS_LOG2: u32 = 40;
 

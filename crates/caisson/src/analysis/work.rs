@@ -484,7 +484,7 @@ fn storm_pilot(case: &StormCase<'_>, h_m: f64, period_s: f64) -> Option<f64> {
 fn design_wave(waves: &WaveSetup) -> (f64, f64) {
     let h = match waves.train.kind {
         TrainKind::Regular { .. } => waves.height_m(),
-        TrainKind::Irregular { .. } => 1.8 * waves.height_m(),
+        TrainKind::Irregular { .. } => super::conventional::HMAX_OVER_H13 * waves.height_m(),
     };
     (h, waves.period_s())
 }

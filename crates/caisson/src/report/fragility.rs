@@ -176,7 +176,7 @@ impl FragilityReport {
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),
             design_wave: {
                 let check = goda_design_check(structure, waves, h, t);
-                let dw = DesignWave::irregular(&waves.model, h, t);
+                let dw = check.map_or_else(|| DesignWave::irregular(&waves.model, h, t), |c| c.design_wave);
                 DesignWaveReport {
                     significant_height_m: h,
                     hmax_m: dw.design_height_m,
