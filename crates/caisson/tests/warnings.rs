@@ -34,6 +34,7 @@ fn prototype(caisson: &str, foundation: &str) -> Scenario {
 #[test]
 fn every_bundled_example_has_plausible_inputs() {
     let names = [
+        "breakwater_impact.toml",
         "design_breakwater.toml",
         "fifteen_waves.toml",
         "fragility.toml",
