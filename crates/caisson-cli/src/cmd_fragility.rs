@@ -57,7 +57,7 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
         c.weight_in_water_n / 1e3,
         s.structure.foundation.mu_static
     );
-    let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to H_max = {HMAX_RATIO} H1/3, no tide or estimation errors; {} storms per height, seed {}",
+    let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to Goda's design-wave H_max of each height ({HMAX_RATIO} H1/3, or the breaking limit at the toe where lower), no tide or estimation errors; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
     let (h13, period) = (s.waves.height_m(), s.waves.period_s());
     let check = caisson::report::fragility::goda_design_check(s.structure, s.waves, h13, period);

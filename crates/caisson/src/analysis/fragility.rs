@@ -5,9 +5,12 @@
 //! **Storms.** The intensity measure IM is H1/3 at the structure (the toe of the mound). At
 //! height level i (H_i) storm j is one [`simulate_storm`] with
 //!
-//! * H1/3 = H_i, the Rayleigh heights of the storm limited to H_max = 1.8 H_i ([`HMAX_RATIO`],
-//!   Goda's design ratio for the largest of about 250-1000 waves; waves above the breaker
-//!   height at the wall break on it and load it by the impact model of the scenario);
+//! * H1/3 = H_i, the Rayleigh heights of the storm limited to Goda's design-wave H_max of H_i
+//!   ([`super::conventional::DesignWave::irregular`], docs/model.md §1.3): 1.8 H_i ([`HMAX_RATIO`],
+//!   Goda's design ratio for the largest of about 250-1000 waves), or Goda's (2000)
+//!   breaking-limited H_max at the toe where that is lower (inside the surf zone), as the design
+//!   life limits its waves; waves above the breaker height at the wall break on it and load it by
+//!   the impact model of the scenario;
 //! * T1/3 = `period_s` for every wave, N = round(duration / T1/3) waves (at least 1);
 //! * no tide, no estimation errors (force and friction factors 1): a fragility is conditional
 //!   on the IM, and the spread comes from the wave sequence and the rise times only. The
@@ -70,8 +73,10 @@
 //! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
 //! same relative accuracy.
 
+use super::conventional::DesignWave;
 use super::lifetime::{simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
+use crate::loads::model::WaveLoadModel;
 use crate::loads::risetime::LoadRng;
 use rand::SeedableRng;
 use rayon::prelude::*;
@@ -342,11 +347,12 @@ impl FragilityParams {
         (self.storm_duration_s / self.period_s).round().max(1.0) as usize
     }
 
-    /// The storm at height `h13_m` (module docs).
-    pub fn storm_input(&self, h13_m: f64) -> StormInput {
+    /// The storm at height `h13_m` on the site of `model` (module docs): its waves limited to
+    /// the design wave's H_max.
+    pub fn storm_input(&self, model: &WaveLoadModel, h13_m: f64) -> StormInput {
         StormInput {
             h13_m,
-            hmax_m: HMAX_RATIO * h13_m,
+            hmax_m: DesignWave::irregular(model, h13_m, self.period_s).design_height_m,
             period_s: self.period_s,
             waves: self.waves_per_storm(),
             tide_m: 0.0,
@@ -361,7 +367,7 @@ impl FragilityParams {
 pub struct LevelResult {
     /// H1/3 at the structure, m.
     pub h13_m: f64,
-    /// H_max = 1.8 H1/3, m.
+    /// H_max of its storms (the design wave's: 1.8 H1/3 or the breaking limit), m.
     pub hmax_m: f64,
     /// One outcome per storm, in storm order.
     pub storms: Vec<StormOutcome>,
@@ -375,14 +381,14 @@ pub struct LevelResult {
 }
 
 impl LevelResult {
-    fn new(h13_m: f64, storms: Vec<StormOutcome>, limits_m: &[f64], rotation_rad: f64) -> Self {
+    fn new(input: &StormInput, storms: Vec<StormOutcome>, limits_m: &[f64], rotation_rad: f64) -> Self {
         let rotated = |o: &StormOutcome| o.max_rotation_rad > rotation_rad;
         let count = |exceeds: &dyn Fn(&StormOutcome, f64) -> bool| {
             limits_m.iter().map(|&s| storms.iter().filter(|o| exceeds(o, s)).count() as u64).collect()
         };
         LevelResult {
-            h13_m,
-            hmax_m: HMAX_RATIO * h13_m,
+            h13_m: input.h13_m,
+            hmax_m: input.hmax_m,
             dynamic_exceedances: count(&|o, s| rotated(o) || o.sliding_m.abs() > s),
             rigid_block_exceedances: count(&|o, s| o.rigid_block_sliding_m > s),
             rotation_failures: storms.iter().filter(|o| rotated(o)).count() as u64,
@@ -456,7 +462,7 @@ pub fn run_fragility(
             let (level, storm) = (job / storms, job % storms);
             let h = p.heights_m[level];
             let mut rng = storm_rng(p.seed, h, storm);
-            let out = simulate_storm(st, &p.storm_input(h), &mut rng).map_err(|source| StormFailed {
+            let out = simulate_storm(st, &p.storm_input(st.model, h), &mut rng).map_err(|source| StormFailed {
                 h13_m: h,
                 storm,
                 source,
@@ -469,7 +475,7 @@ pub fn run_fragility(
         .heights_m
         .iter()
         .zip(outcomes.chunks(storms.max(1)))
-        .map(|(&h, o)| LevelResult::new(h, o.to_vec(), &p.limits_m, p.failure_rotation_rad))
+        .map(|(&h, o)| LevelResult::new(&p.storm_input(st.model, h), o.to_vec(), &p.limits_m, p.failure_rotation_rad))
         .collect();
     Ok(FragilityResult { fits: fit_levels(&levels, &p.limits_m), levels })
 }
@@ -652,7 +658,7 @@ mod tests {
         let sc = example();
         let case = sc.storm_case(true).unwrap();
         let p = sc.fragility_for("test").unwrap();
-        let input = p.storm_input(11.0);
+        let input = p.storm_input(case.model, 11.0);
         let mut rng = storm_rng(p.seed, 11.0, 7);
         let start = rng.get_word_pos();
         let o = simulate_storm(&case, &input, &mut rng).unwrap();
@@ -676,11 +682,21 @@ mod tests {
             seed: 1,
             failure_rotation_rad: 0.01,
         };
-        let s = p.storm_input(4.0);
-        assert_eq!(
-            (s.h13_m, s.hmax_m, s.waves, s.tide_m, s.force_factor, s.friction_factor),
-            (4.0, 7.2, 655, 0.0, 1.0, 1.0)
-        );
+        let sc = example();
+        let model = sc.storm_case(true).unwrap().model;
+        let s = p.storm_input(model, 4.0);
+        assert_eq!((s.h13_m, s.waves, s.tide_m, s.force_factor, s.friction_factor), (4.0, 655, 0.0, 1.0, 1.0));
+        // H_max is at most 1.8 H1/3 = 7.2 m; at h = 20 m and T = 11 s Goda's breaking-limited
+        // H_max of the H0' whose H1/3 is 4 m is a little lower (7.05 m, 1.76 H1/3).
+        assert!(s.hmax_m <= 7.2 && s.hmax_m > 7.0, "H_max at H1/3 = 4 m: {}", s.hmax_m);
+        // Inside the surf zone the storm's waves stop at Goda's breaking-limited H_max: at
+        // H1/3 = 7.5 m, T = 12.8 s on the example's site (h = 20 m, tan θ = 1/100) it is the
+        // 13.451 m of the hand calculation in tests/goda_design.rs, not 1.8 × 7.5 = 13.5 m; at
+        // 11 m it stays below the 20 m depth (1.8 × 11 = 19.8 m).
+        let p128 = FragilityParams { period_s: 12.8, ..p.clone() };
+        assert!((p128.storm_input(model, 7.5).hmax_m - 13.451).abs() < 1e-3, "{:?}", p128.storm_input(model, 7.5));
+        let h11 = p128.storm_input(model, 11.0).hmax_m;
+        assert!(h11 > 13.451 && h11 < 16.0, "H_max at H1/3 = 11 m: {h11} m");
         // The third storm ends seaward: it counts by its magnitude (signed, it would exceed no
         // limit above 0.05 m and the mean would be −0.05/3 m).
         let storms = [0.05, 0.1, -0.2].map(|v: f64| StormOutcome {
@@ -690,7 +706,9 @@ mod tests {
             screened_waves: 4,
             ..StormOutcome::default()
         });
-        let l = LevelResult::new(2.0, storms.to_vec(), &[0.05, 0.1, 0.3], 0.01);
+        let level = StormInput { h13_m: 2.0, hmax_m: 3.6, ..s };
+        let l = LevelResult::new(&level, storms.to_vec(), &[0.05, 0.1, 0.3], 0.01);
+        assert_eq!((l.h13_m, l.hmax_m), (2.0, 3.6));
         assert_eq!(l.dynamic_exceedances, vec![2, 1, 0]);
         assert_eq!(l.rigid_block_exceedances, vec![3, 2, 1]);
         assert_eq!(l.rotation_failures, 0);
@@ -701,7 +719,7 @@ mod tests {
         let mut rotated = storms;
         rotated[0].max_rotation_rad = 0.02;
         rotated[1].max_rotation_rad = 0.01;
-        let l = LevelResult::new(2.0, rotated.to_vec(), &[0.05, 0.1, 0.3], 0.01);
+        let l = LevelResult::new(&level, rotated.to_vec(), &[0.05, 0.1, 0.3], 0.01);
         assert_eq!(l.dynamic_exceedances, vec![3, 2, 1]);
         assert_eq!(l.rigid_block_exceedances, vec![3, 2, 1]);
         assert_eq!(l.rotation_failures, 1);

@@ -576,7 +576,8 @@ pub fn fragility(case: &StormCase<'_>, p: &FragilityParams) -> WorkEstimate {
     let waves_drawn = (levels * p.storms * n) as f64;
     let share = if case.screen { fragility_screen_share(case, p) } else { 1.0 };
     let middle = p.heights_m.get(levels / 2).copied().unwrap_or(1.0);
-    let steps_from = steps_from(case.structure, || storm_pilot(case, p.storm_input(middle).hmax_m, p.period_s));
+    let steps_from =
+        steps_from(case.structure, || storm_pilot(case, p.storm_input(case.model, middle).hmax_m, p.period_s));
     let simulated_s = waves_drawn * p.period_s * share;
     WorkEstimate {
         steps: simulated_s * steps_from.steps_per_s(),
@@ -605,7 +606,7 @@ fn fragility_screen_share(case: &StormCase<'_>, p: &FragilityParams) -> f64 {
     let mut shares = Vec::with_capacity(picked);
     for k in 0..picked {
         let level = k * levels / picked;
-        let input = p.storm_input(p.heights_m[level]);
+        let input = p.storm_input(case.model, p.heights_m[level]);
         let input = super::lifetime::StormInput { waves: input.waves.min(PILOT_LEVEL_WAVES), ..input };
         let (mut waves, mut simulated) = (0u64, 0u64);
         for j in 0..p.storms.min(PILOT_LEVEL_STORMS) {
