@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -88,6 +89,17 @@ def assert_same_json(got, want, path: str = "") -> int:
     else:
         assert got == want, f"{path}: {got!r} != {want!r}"
     return 1
+
+
+def assert_replace_error_is_the_clis(err, table: str, stderr: str) -> None:
+    """A `Scenario.replace` error says what the CLI says of the same scenario written to a file
+    (its words after `Error: `), without the file's place (`scenario.toml line 7, column 1: `,
+    a line of TOML the user never wrote), after the change it comes from (`replace(caisson=...)`)."""
+    words = re.sub(r"^\S+ line \d+(, column \d+)?: ", "", stderr.strip().removeprefix("Error: "))
+    words = re.sub(r" \(in `[^`]*`\)$", "", words).replace("unknown field", "unknown key", 1)
+    message = str(err)
+    assert message.startswith(f"replace({table}=") and message.endswith(words), (message, words)
+    assert not re.search(r"line \d+", message), message
 
 
 def short_design_toml(tmp_path: Path, lives: int = 40, years: int = 20) -> Path:

@@ -50,7 +50,7 @@ def test_cli_shards_merged_equal_python_shards_bit_for_bit(tmp_path, design_file
     for (a, b), part, d in zip(RANGES, parts, shard_dirs):
         pd.testing.assert_frame_equal(part, read_csv_exact(d / "lives.csv"), check_exact=True, check_dtype=False)
 
-    got = design.statistics(parts)
+    got = design.statistics(parts).report
     compared = assert_same_json(got, want)
     assert compared > 70, compared  # design.json has 79 values here: all of them, not a handful
     assert got["lives"] == LIVES

@@ -1,9 +1,12 @@
 """caisson: how far a caisson breakwater slides under waves (Python bindings of the Rust engine).
 
 A thin layer: every number is computed by the Rust library (the same code as the ``caisson``
-command); this package only assembles its results into dicts, pandas DataFrames and xarray
-Datasets. Units are in every key and column name (``sliding_m``, ``fx_kn``); summaries are dicts
-with exactly the keys of the CLI's JSON (docs/cli.md, docs/design.md, docs/fragility.md).
+command); this package only assembles its results into typed results (:class:`RunResult`,
+:class:`DesignStatistics`, :class:`FragilityResult`: fields with their units, the same name for
+the same quantity in every result, docs/python.md "Results"), pandas DataFrames and xarray
+Datasets. Units are in every field, key and column name (``sliding_m``, ``fx_kn``); each result
+keeps the CLI's JSON report it was built from, with exactly its keys (docs/cli.md,
+docs/design.md, docs/fragility.md).
 
 Runs that could take long (``run``, ``campaign``, ``Design.simulate_lives``, ``Fragility.run``)
 estimate their work first and raise :class:`ScenarioError` beyond the CLI's budget
@@ -17,15 +20,15 @@ is called from the calling thread about every 0.1 s while work finishes.
 >>> import caisson
 >>> sc = caisson.Scenario.from_toml("examples/table5_triangle.toml")
 >>> r = caisson.run(sc)
->>> r.summary["permanent_sliding_m"], r.history[["time_s", "fx_kn", "ux_m"]]
+>>> r.permanent_sliding_m, r.history[["time_s", "fx_kn", "ux_m"]]
 """
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import sys
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
@@ -34,6 +37,7 @@ import pandas as pd
 
 from . import _core, _toml
 from ._core import FitError, RunError, ScenarioError
+from .results import DesignStatistics, FragilityResult, ModelStatistics, ResultWarning, RunResult
 
 __all__ = [
     "Scenario",
@@ -41,6 +45,9 @@ __all__ = [
     "RunError",
     "FitError",
     "RunResult",
+    "DesignStatistics",
+    "ModelStatistics",
+    "ResultWarning",
     "run",
     "campaign",
     "spectrum",
@@ -120,8 +127,9 @@ class Scenario:
 
     def replace(self, **tables: Mapping[str, Any]) -> "Scenario":
         """A new scenario with keys of tables changed, e.g. ``sc.replace(caisson={"width_m": 22.0},
-        design={"lives": 100})``; a value ``None`` removes the key. Validated again: errors name the
-        file key (``[caisson] width_m``)."""
+        design={"lives": 100})``; a value ``None`` removes the key; a number is taken as the number
+        it equals (``lives=10.0`` is 10). Validated again: an error names the key and the value
+        given (``replace(caisson={'widht_m': 1.0})``), never a line of the generated TOML."""
         d = self.to_dict()
         for table, keys in tables.items():
             if keys is None:
@@ -134,7 +142,10 @@ class Scenario:
                 else:
                     t[k] = v
             d[table] = t
-        return Scenario(_toml.dumps(d), path=self._path, base_dir=self._base_dir)
+        try:
+            return Scenario(_toml.dumps(d), path=self._path, base_dir=self._base_dir)
+        except ScenarioError as e:
+            raise _replace_error(e, tables, self._path) from None
 
     @property
     def path(self) -> str:
@@ -187,25 +198,29 @@ class Scenario:
         return f"Scenario({self._path!r}, tables: caisson, foundation, {', '.join(tables)})"
 
 
+def _replace_error(e: ScenarioError, tables: Mapping[str, Any], path: str) -> ScenarioError:
+    """``e`` of a scenario built by :meth:`Scenario.replace`, in the caller's words: the
+    message without the place in the generated TOML text, and the change it comes from."""
+    message = re.sub(r"^" + re.escape(path) + r" line \d+(, column \d+)?: ", "", str(e))
+    message = re.sub(r" \(in `[^`]*`\)$", "", message)
+    m = re.match(r"^\[([^\]]+)\](?: (.+))?$", getattr(e, "key", None) or "")
+    # The change the error is about: the key, else its table, else every change given.
+    given = "replace(" + ", ".join(f"{t}={v!r}" for t, v in tables.items()) + "): "
+    if m and m.group(1) in tables and tables[m.group(1)] is not None:
+        table, name = m.group(1), m.group(2)
+        if name is not None and name in tables[table]:
+            given = f"replace({table}={{{name!r}: {tables[table][name]!r}}}): "
+        else:
+            given = f"replace({table}={tables[table]!r}): "
+    out = ScenarioError(given + message.replace("unknown field", "unknown key", 1))
+    out.key = getattr(e, "key", None)
+    out.value = getattr(e, "value", None)
+    out.allowed = getattr(e, "allowed", None)
+    return out
+
+
 def _restore_scenario(text: str, path: str, base_dir: str) -> Scenario:
     return Scenario(text, path=path, base_dir=base_dir)
-
-
-@dataclass(frozen=True)
-class RunResult:
-    """The results of :func:`run`.
-
-    ``summary``: the CLI's ``summary.json`` (``caisson run --json``) as a dict. For a ``[load]``
-    run, ``history``: one row every ``[solver] output_interval_s`` with the columns of
-    ``history.csv`` (``time_s``, ``ux_m``, ``fx_kn``, ...), and ``springs``: an xarray Dataset
-    (dims ``time_s`` × ``spring``; ``normal_kn``, ``shear_kn``, ``uy_m``; coordinate ``x_m``).
-    For a ``[waves]`` run, ``waves``: one row per wave of every realization.
-    """
-
-    summary: dict
-    history: Optional[pd.DataFrame] = None
-    springs: Any = None
-    waves: Optional[pd.DataFrame] = None
 
 
 def _springs_dataset(time_s: np.ndarray, s: dict):
@@ -292,17 +307,16 @@ def run(
     if scenario.has_load or not scenario.has_waves:
         return _run_load(scenario, None, duration_s, history)
     summary = json.loads(_core.run_trains(scenario._core, threads, progress))
-    return RunResult(summary=summary, waves=_waves_frame(summary))
+    return RunResult.of_waves(summary, _waves_frame(summary))
 
 
 def _run_load(scenario: Scenario, series, duration_s, history: bool) -> RunResult:
     text, cols = _core.run_load(scenario._core, series, duration_s, history)
     summary = json.loads(text)
     if cols is None:
-        return RunResult(summary=summary)
+        return RunResult.of_load(summary)
     h, s = cols
-    frame = pd.DataFrame(h)
-    return RunResult(summary=summary, history=frame, springs=_springs_dataset(h["time_s"], s))
+    return RunResult.of_load(summary, pd.DataFrame(h), _springs_dataset(h["time_s"], s))
 
 
 def campaign(
@@ -514,9 +528,10 @@ class Design:
             out.append(i)
         return out
 
-    def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> dict:
-        """``design.json`` (the dict of ``caisson design --json``) of the lives given (one
-        DataFrame or several, e.g. shards from workers, in any order). The statistics of lives
+    def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> DesignStatistics:
+        """The statistics of the lives given (one DataFrame or several, e.g. shards from
+        workers, in any order): a :class:`DesignStatistics` (typed fields, and the dict of
+        ``caisson design --json`` as ``.report``, which it also reads as). The statistics of lives
         0 .. N − 1 are exactly those of ``caisson design`` with N lives. Raises ``ValueError``
         for a life given twice, a missing column (``life`` and those of ``lives.csv``), no lives,
         a non-finite length or a count that is not a whole number ≥ 0."""
@@ -560,10 +575,10 @@ class Design:
             raise ValueError(f"life {dup} appears more than once")
         order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
         cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
-        return json.loads(_core.design_statistics(self._scenario._core, cols))
+        return DesignStatistics.of(json.loads(_core.design_statistics(self._scenario._core, cols)))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
-        """All lives at once: (``design.json`` dict, lives DataFrame)."""
+        """All lives at once: (:class:`DesignStatistics`, lives DataFrame)."""
         lives = self.simulate_lives(threads=threads, progress=progress)
         return self.statistics(lives), lives
 
@@ -581,21 +596,19 @@ def _restore_design(scenario: Scenario, lives: int) -> Design:
     return Design(scenario, lives=lives)
 
 
-@dataclass(frozen=True)
-class FragilityResult:
-    """The results of :meth:`Fragility.run`: ``summary`` (``fragility.json``), ``levels`` (one row
-    per height), ``storms`` (one row per storm: ``level``, ``significant_height_m``, ``storm``,
-    ``sliding_m``, ``rigid_block_sliding_m``, ``max_rotation_rad``) and ``fits`` (one row per
-    limit and model)."""
-
-    summary: dict
-    levels: pd.DataFrame
-    storms: pd.DataFrame
-    fits: pd.DataFrame
-
-
 class Fragility:
-    """Fragility curves for sliding (``caisson fragility``, docs/fragility.md)."""
+    """Fragility curves for sliding (``caisson fragility``, docs/fragility.md): for each
+    significant height H1/3 at the structure in ``[fragility] significant_heights_m``,
+    ``storms`` storms of ``storm_duration_h`` of Rayleigh waves (limited to Goda's design-wave
+    H_max of that H1/3) through the dynamic model and the rigid block; the share of storms whose
+    sliding exceeds each of ``limits_m``, and a lognormal curve P(S > limit | H1/3) =
+    Φ((ln H1/3 − ln θ)/β) fitted to the counts by maximum likelihood. θ (the median, in m of
+    H1/3) and β are in :attr:`FragilityResult.fits`.
+
+    >>> f = caisson.Fragility(caisson.Scenario.from_toml("examples/fragility.toml"))
+    >>> r = f.run(threads=2)                      # a FragilityResult
+    >>> r.fits[["limit_m", "model", "median_significant_height_m", "beta"]]
+    """
 
     __slots__ = ("_scenario",)
 
@@ -629,8 +642,8 @@ class Fragility:
         )
         fits = pd.DataFrame(
             [{"limit_m": f["limit_m"], "model": m, **f[m]} for f in s["fits"] for m in ("dynamic", "rigid_block")]
-        )
-        return FragilityResult(summary=s, levels=levels, storms=storms, fits=fits)
+        ).rename(columns={"median_m": "median_significant_height_m"})
+        return FragilityResult(summary=s, levels=levels, storms=storms, fits=fits, warnings=ResultWarning.all_of(s))
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("a Fragility is immutable")
@@ -654,3 +667,8 @@ def fit_lognormal(im: Any, k: Any, n: Any) -> dict:
 
 
 from . import loads, waves  # noqa: E402  (submodules use the names above)
+
+
+def __dir__() -> list:
+    """The package's names (``__all__``), not the modules and typing names it imports."""
+    return sorted(__all__)

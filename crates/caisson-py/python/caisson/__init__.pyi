@@ -5,6 +5,13 @@ import pandas as pd
 import xarray as xr
 
 from . import loads as loads, waves as waves
+from .results import (
+    DesignStatistics as DesignStatistics,
+    FragilityResult as FragilityResult,
+    ModelStatistics as ModelStatistics,
+    ResultWarning as ResultWarning,
+    RunResult as RunResult,
+)
 
 __version__: str
 RESULTS_VERSION: int
@@ -47,12 +54,6 @@ class Scenario:
     @property
     def duration_s(self) -> float: ...
 
-class RunResult:
-    summary: dict
-    history: Optional[pd.DataFrame]
-    springs: Optional[xr.Dataset]
-    waves: Optional[pd.DataFrame]
-
 def run(
     scenario: Scenario,
     *,
@@ -89,14 +90,8 @@ class Design:
     def fingerprint(self) -> str: ...
     def estimate(self, indices: Optional[Iterable[int]] = ...) -> dict: ...
     def simulate_lives(self, indices: Optional[Iterable[int]] = ..., *, threads: int = ..., progress: Progress = ...) -> pd.DataFrame: ...
-    def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> dict: ...
-    def run(self, *, threads: int = ..., progress: Progress = ...) -> tuple[dict, pd.DataFrame]: ...
-
-class FragilityResult:
-    summary: dict
-    levels: pd.DataFrame
-    storms: pd.DataFrame
-    fits: pd.DataFrame
+    def statistics(self, lives: Union[pd.DataFrame, Sequence[pd.DataFrame]]) -> DesignStatistics: ...
+    def run(self, *, threads: int = ..., progress: Progress = ...) -> tuple[DesignStatistics, pd.DataFrame]: ...
 
 class Fragility:
     def __init__(self, scenario: Scenario) -> None: ...

@@ -27,6 +27,10 @@ def _value(v: Any, where: str) -> str:
     if isinstance(v, int):
         return str(v)
     if isinstance(v, float):
+        # A whole number is written as one (10.0 as 10): a key that wants a whole number takes
+        # it, and one that wants a real number reads the same value (exact below 2^53).
+        if v.is_integer() and abs(v) < 2.0**53:
+            return str(int(v))
         if math.isnan(v):
             return "nan"
         if math.isinf(v):

@@ -1,0 +1,239 @@
+"""Typed results of the drivers: every field documented with its unit (docs/python.md, "Results").
+
+The same quantity has the same name in every kind of result and in the CLI's JSON:
+``permanent_sliding_m`` is the sliding a run leaves (a ``[load]`` run's, or the mean over the
+realizations of a ``[waves]`` run), ``failure_probability`` the share of failed lives (as in
+``size.json``), ``warnings`` a tuple of :class:`ResultWarning`. Each result keeps the CLI's report it
+was built from (``summary`` / ``report``: the dict of the command's ``--json``, its keys stable
+across results versions), and the design statistics also read as that dict
+(``stats["dynamic"]["expected_sliding_m"]``), so code written against the JSON keeps working.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any, Iterator, Optional
+
+import pandas as pd
+
+__all__ = ["ResultWarning", "RunResult", "ModelStatistics", "DesignStatistics", "FragilityResult"]
+
+
+@dataclass(frozen=True)
+class ResultWarning:  
+    """One warning of a result (docs/cli.md, "Warnings"): ``code`` (stable, e.g.
+    ``"failed-lives"``), ``message`` (what was found and what to check), ``details``: the other
+    keys of its JSON entry (e.g. the realization or life it concerns)."""
+
+    code: str
+    message: str
+    details: Mapping = field(default_factory=dict)
+
+    @staticmethod
+    def all_of(report: Mapping) -> tuple:
+        """The warnings of a CLI report (its ``warnings`` list), in order."""
+        return tuple(
+            ResultWarning(w.get("code", ""), w.get("message", ""), {k: v for k, v in w.items() if k not in ("code", "message")})
+            for w in report.get("warnings", [])
+        )
+
+    def __str__(self) -> str:
+        return f"{self.code}: {self.message}"
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """The results of :func:`caisson.run`, of either kind of run.
+
+    Fields (units in the names):
+
+    - ``kind``: ``"load"`` (a ``[load]`` or a force series: one run) or ``"waves"`` (wave trains:
+      ``realizations`` runs of ``[waves] waves`` waves each).
+    - ``permanent_sliding_m``: the sliding the run leaves, m, shoreward +; for ``"waves"`` the mean
+      over the realizations of each realization's total (``summary["sliding_m"]["mean"]``).
+    - ``rigid_block_sliding_m``: the rigid block's (Shimosako model) beside it, m, mean over the
+      realizations; ``None`` for ``"load"`` (no wave to slide it).
+    - ``max_horizontal_reaction_kn``: the largest horizontal base reaction, kN (the effective
+      design load), over every realization.
+    - ``slip_events``: how many times a slip began (for ``"waves"``: the mean per realization).
+    - ``realizations``: one row per realization (``"waves"``: ``sliding_m``,
+      ``rigid_block_sliding_m``, ``max_horizontal_reaction_kn``, ``slip_events``,
+      ``breaking_waves``, ``steps``); ``None`` for ``"load"``.
+    - ``warnings``: tuple of :class:`ResultWarning`.
+    - ``summary``: the CLI's ``summary.json`` (``caisson run --json``) as a dict.
+    - ``history`` (``"load"``): one row every ``[solver] output_interval_s``, the columns of
+      ``history.csv`` (``time_s``, ``ux_m``, ``fx_kn``, ...); ``springs`` (``"load"``): an
+      xarray Dataset (dims ``time_s`` × ``spring``; ``normal_kn``, ``shear_kn``, ``uy_m``;
+      coordinate ``x_m``); ``waves`` (``"waves"``): one row per wave of every realization.
+    """
+
+    kind: str
+    permanent_sliding_m: float
+    rigid_block_sliding_m: Optional[float]
+    max_horizontal_reaction_kn: float
+    slip_events: float
+    warnings: tuple
+    summary: dict
+    realizations: Optional[pd.DataFrame] = None
+    history: Optional[pd.DataFrame] = None
+    springs: Any = None
+    waves: Optional[pd.DataFrame] = None
+
+    @staticmethod
+    def of_load(summary: dict, history: Optional[pd.DataFrame] = None, springs: Any = None) -> "RunResult":
+        return RunResult(
+            kind="load",
+            permanent_sliding_m=summary["permanent_sliding_m"],
+            rigid_block_sliding_m=None,
+            max_horizontal_reaction_kn=summary["max_horizontal_reaction_kn"],
+            slip_events=summary["slip_events"],
+            warnings=ResultWarning.all_of(summary),
+            summary=summary,
+            history=history,
+            springs=springs,
+        )
+
+    @staticmethod
+    def of_waves(summary: dict, waves: pd.DataFrame) -> "RunResult":
+        keys = ("index", "sliding_m", "rigid_block_sliding_m", "max_horizontal_reaction_kn", "slip_events", "breaking_waves", "steps")
+        rows = pd.DataFrame([{k: r[k] for k in keys} for r in summary["realizations"]]).rename(columns={"index": "realization"})
+        return RunResult(
+            kind="waves",
+            permanent_sliding_m=summary["sliding_m"]["mean"],
+            rigid_block_sliding_m=summary["rigid_block_sliding_m"]["mean"],
+            max_horizontal_reaction_kn=summary["max_horizontal_reaction_kn"]["max"],
+            slip_events=summary["slip_events"]["mean"],
+            warnings=ResultWarning.all_of(summary),
+            summary=summary,
+            realizations=rows,
+            waves=waves,
+        )
+
+
+@dataclass(frozen=True)
+class ModelStatistics:
+    """One model's statistics over the lives of a design (``design.json``'s ``dynamic`` or
+    ``rigid_block``; docs/design.md). Lengths in m; |S| is the distance from the caisson's place
+    at the end of a life, a failed life counted at the sliding limit.
+
+    - ``expected_sliding_m``: E|S| (failed lives at the limit); ``expected_sliding_uncapped_m``:
+      with every life as simulated; ``expected_sliding_per_year_m``: E|S| / life_years.
+    - ``percentiles_m``: ``{"p5": ..., "p50": ..., "p95": ..., "p99": ...}`` of |S|.
+    - ``exceedance_probability``: ``{threshold_m: P(|S| > threshold)}``.
+    - ``failure_probability``, ``failure_lives``: the lives that failed (by sliding beyond
+      ``[design] failure_sliding_m`` or rotating beyond ``failure_rotation_rad``);
+      ``failure_probability_by_sliding``, ``failure_probability_by_rotation``: by mode.
+    - ``surviving_lives``, ``surviving_expected_sliding_m``: the lives that did not fail.
+    """
+
+    expected_sliding_m: float
+    expected_sliding_uncapped_m: float
+    expected_sliding_per_year_m: float
+    percentiles_m: Mapping
+    exceedance_probability: Mapping
+    failure_probability: float
+    failure_lives: int
+    failure_probability_by_sliding: float
+    failure_probability_by_rotation: float
+    surviving_lives: int
+    surviving_expected_sliding_m: float
+
+    @staticmethod
+    def of(m: Mapping) -> "ModelStatistics":
+        f = m["failure"]
+        return ModelStatistics(
+            expected_sliding_m=m["expected_sliding_m"],
+            expected_sliding_uncapped_m=m["expected_sliding_uncapped_m"],
+            expected_sliding_per_year_m=m["expected_sliding_per_year_m"],
+            percentiles_m=dict(m["percentiles_m"]),
+            exceedance_probability={e["threshold_m"]: e["probability"] for e in m["exceedance_probability"]},
+            failure_probability=f["probability"],
+            failure_lives=f["lives"],
+            failure_probability_by_sliding=f["by_sliding"]["probability"],
+            failure_probability_by_rotation=f["by_rotation"]["probability"],
+            surviving_lives=m["surviving"]["lives"],
+            surviving_expected_sliding_m=m["surviving"]["expected_sliding_m"],
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class DesignStatistics(Mapping):
+    """The statistics of a design's lives (``caisson design --json``, docs/design.md):
+    ``lives``, ``life_years``; ``dynamic`` and ``rigid_block``: :class:`ModelStatistics`;
+    ``waves``, ``simulated_waves`` (the waves drawn and those run through the dynamic model);
+    ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``design.json``.
+
+    It also reads as that dict (``stats["dynamic"]["failure"]["probability"]``, ``dict(stats)``,
+    ``stats == json.load(open("design.json"))``).
+    """
+
+    lives: int
+    life_years: int
+    dynamic: ModelStatistics
+    rigid_block: ModelStatistics
+    waves: int
+    simulated_waves: int
+    warnings: tuple
+    report: dict
+
+    @staticmethod
+    def of(report: dict) -> "DesignStatistics":
+        return DesignStatistics(
+            lives=report["lives"],
+            life_years=report["life_years"],
+            dynamic=ModelStatistics.of(report["dynamic"]),
+            rigid_block=ModelStatistics.of(report["rigid_block"]),
+            waves=report["waves"],
+            simulated_waves=report["simulated_waves"],
+            warnings=ResultWarning.all_of(report),
+            report=report,
+        )
+
+    def __getitem__(self, key: str) -> Any:
+        return self.report[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.report)
+
+    def __len__(self) -> int:
+        return len(self.report)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, DesignStatistics):
+            return self.report == other.report
+        return isinstance(other, Mapping) and self.report == dict(other)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        d = self.dynamic
+        return (
+            f"DesignStatistics(lives={self.lives}, life_years={self.life_years}, "
+            f"expected_sliding_m={d.expected_sliding_m:.4g}, failure_probability={d.failure_probability:.4g})"
+        )
+
+
+@dataclass(frozen=True)
+class FragilityResult:
+    """The results of :meth:`caisson.Fragility.run` (docs/fragility.md).
+
+    - ``levels``: one row per height: ``significant_height_m`` (H1/3 at the structure, the
+      intensity measure), ``hmax_m`` (the largest wave of its storms), ``storms``,
+      ``mean_sliding_m``, ``max_sliding_m``, ``mean_rigid_block_sliding_m``,
+      ``max_rigid_block_sliding_m`` (m), ``rotation_failures``, ``screened_share``,
+      ``simulated_waves``, ``goda_sliding_safety_factor``.
+    - ``storms``: one row per storm: ``level``, ``significant_height_m``, ``storm``,
+      ``sliding_m``, ``rigid_block_sliding_m`` (m), ``max_rotation_rad``.
+    - ``fits``: one row per limit and model: ``limit_m`` (the sliding limit, m), ``model``
+      (``"dynamic"`` or ``"rigid_block"``), ``fitted``, ``median_significant_height_m`` (θ: the
+      H1/3 at which P(S > limit) = 1/2, m; ``median_m`` in ``fragility.json``), ``beta``
+      (lognormal standard deviation), ``ln_median_se``, ``beta_se``, ``log_likelihood``.
+    - ``warnings``: tuple of :class:`ResultWarning`; ``summary``: the dict of ``fragility.json``.
+    """
+
+    summary: dict
+    levels: pd.DataFrame
+    storms: pd.DataFrame
+    fits: pd.DataFrame
+    warnings: tuple = ()
