@@ -169,10 +169,9 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
             rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * dk)).collect(),
             rs.iter().map(|r| (r.summary.sliding_m.min * dk, r.summary.sliding_m.max * dk)).collect(),
         ));
-        rb_series.push(Series::line(
-            label,
-            rs.iter().map(|r| (r.condition.height_m, r.summary.rigid_block_sliding_m.mean * rk)).collect(),
-        ));
+        // A weight tested at one height is a point, not a line of one point (which draws nothing).
+        let rb = rs.iter().map(|r| (r.condition.height_m, r.summary.rigid_block_sliding_m.mean * rk)).collect();
+        rb_series.push(if rs.len() == 1 { Series::markers(label, rb) } else { Series::line(label, rb) });
     }
     panels(
         &dir.join(format!("{stem}_vs_height.svg")),
