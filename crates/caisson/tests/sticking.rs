@@ -10,12 +10,17 @@
 //! the converged state; the adaptive stepper's step lengths depend smoothly on the accelerations.
 //! Only a decision that falls within rounding of its threshold (a residual at the tolerance, an
 //! error estimate at its limit, a spring at its friction cap) could take another branch; none
-//! does on these cases (identical step and iteration counts, asserted).
-//! Measured: at most 6e-12 of the largest value of a quantity (`cargo test --release --test
-//! sticking -- --nocapture` prints it). Tolerance: 1e-9 of the largest value of each quantity
-//! plus 1e-12 (m, N) for quantities near zero, a hundred times the measured difference and
-//! five orders below the adaptive stepper's own accuracy (0.15 % on the design example,
-//! BENCHMARKS.md).
+//! does on these cases (identical step and iteration counts, asserted). One place amplifies the
+//! ulps: a located slip onset (docs/model.md §9.1) splits its step at a root found to the
+//! locator's tolerance, and a root a few ulps of force away lands up to 2e-5 of that step apart
+//! (the first example, `breakwater_impact`: shortest step 1.273341 µs against 1.273363 µs, the
+//! same 3227 steps and 15 located events).
+//! Measured: at most 6e-12 of the largest value of a quantity on the examples without such a
+//! root, 6.7e-8 on `breakwater_impact` (its sliding, 0.7 nm of 10.9 mm; `cargo test --release
+//! --test sticking -- --nocapture` prints the largest). Tolerance: 1e-6 of the largest value of
+//! each quantity plus 1e-12 (m, N) for quantities near zero, fifteen times the largest measured
+//! difference and three orders below the adaptive stepper's own accuracy (0.15 % on the design
+//! example, BENCHMARKS.md).
 
 mod support;
 
@@ -99,7 +104,7 @@ fn compare(name: &str, old: &Results, new: &Results, largest: &mut (f64, String)
         let scale = o.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (i, (a, b)) in o.iter().zip(n).enumerate() {
             let d = (a - b).abs();
-            assert!(d <= 1e-9 * scale + 1e-12, "{name} {key}[{i}]: {b} with the fast path, {a} without");
+            assert!(d <= 1e-6 * scale + 1e-12, "{name} {key}[{i}]: {b} with the fast path, {a} without");
             if scale > 0.0 && d / scale > largest.0 {
                 *largest = (d / scale, format!("{name} {key}[{i}]"));
             }
@@ -139,7 +144,7 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         largest.0,
         largest.1
     );
-    assert_eq!(examples.len(), 12, "{examples:?}");
+    assert_eq!(examples.len(), 13, "{examples:?}");
     assert!(compared > 100, "{compared} values compared");
     assert!(sticking > 0, "the fast path was taken");
 }
