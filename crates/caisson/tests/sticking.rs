@@ -1,26 +1,23 @@
 //! The all-sticking fast path (`SolverParams::sticking_fast_path`, docs/model.md §9.1) is the
 //! same model: with it on and off, every bundled example and the waves of the design example give
-//! the same results to rounding, in the same steps and Newton iterations.
+//! the same results to well within the Newton tolerance's reach, in the same steps and with no
+//! more Newton iterations (to one in a thousand).
 //!
 //! Why they are not identical to the last bit: the path decides which springs stick by the spring
-//! law's own operations, but sums the forces and the tangent in closed form (n Σ, Σx_i, Σx_i² ...
-//! times the displacements) instead of spring by spring: the same quantities added in another
-//! order, a few units in the last place apart (1e-16 relative). A Newton iterate that lands a few
-//! ulps away from the other moves the next one as little, since each step is a contraction onto
-//! the converged state; the adaptive stepper's step lengths depend smoothly on the accelerations.
-//! Only a decision that falls within rounding of its threshold (a residual at the tolerance, an
-//! error estimate at its limit, a spring at its friction cap) could take another branch; none
-//! does on these cases (identical step and iteration counts, asserted). One place amplifies the
-//! ulps: a located slip onset (docs/model.md §9.1) splits its step at a root found to the
-//! locator's tolerance, and a root a few ulps of force away lands up to 2e-5 of that step apart
-//! (the first example, `breakwater_impact`: shortest step 1.273341 µs against 1.273363 µs, the
-//! same 3227 steps and 15 located events).
-//! Measured: at most 6e-12 of the largest value of a quantity on the examples without such a
-//! root, 6.7e-8 on `breakwater_impact` (its sliding, 0.7 nm of 10.9 mm; `cargo test --release
-//! --test sticking -- --nocapture` prints the largest). Tolerance: 1e-6 of the largest value of
-//! each quantity plus 1e-12 (m, N) for quantities near zero, fifteen times the largest measured
-//! difference and three orders below the adaptive stepper's own accuracy (0.15 % on the design
-//! example, BENCHMARKS.md).
+//! law's own operations, but sums the forces in closed form (n Σ, Σx_i, Σx_i² ... times the
+//! displacements) instead of spring by spring, and it solves an all-sticking step directly (the
+//! vertical and rocking rows eliminated, a quadratic in δ_x: `dynamics::sticking`), where Newton's
+//! iteration stops anywhere inside the residual tolerance (1e-9 W'). The two steps land within
+//! that tolerance of each other; the adaptive stepper's step lengths depend smoothly on the
+//! accelerations and carry the difference on, and a wave that slides carries it into its slip.
+//! Only a decision that falls within that reach of its threshold (an error estimate at its
+//! limit, a spring at its friction cap) could take another branch; none does on these cases
+//! (identical step counts, asserted). Measured: at most 1.9e-7 of the largest value of a
+//! quantity on the examples (the sliding of a fragility storm of 2 h), 5e-9 on the design waves
+//! (`cargo test --release --test sticking -- --nocapture` prints it). Tolerance: 1e-6 of the
+//! largest value of each quantity plus 1e-12 (m, N) for quantities near zero, five times the
+//! measured difference and three orders below the adaptive stepper's own accuracy (0.15 % on the
+//! design example, BENCHMARKS.md).
 
 mod support;
 
@@ -132,7 +129,15 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         let (new, new_work) = results(&with_fast_path(&sc, true));
         compared += compare(&name, &old, &new, &mut largest);
         if let (Some(o), Some(n)) = (old_work, new_work) {
-            assert_eq!((o.0, o.1), (n.0, n.1), "{name}: steps and Newton iterations without and with the fast path");
+            assert_eq!(o.0, n.0, "{name}: steps without and with the fast path");
+            // A direct step counts one iteration, where Newton's predictor may have landed inside
+            // the tolerance with none (at rest, under no load).
+            assert!(
+                n.1 as f64 <= 1.001 * o.1 as f64,
+                "{name}: {} Newton iterations with the fast path, {} without",
+                n.1,
+                o.1
+            );
             assert_eq!(o.2, 0, "{name}: the switch turns the fast path off");
             iterations += n.1 + n.0;
             sticking += n.2;
@@ -152,8 +157,8 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
 /// The waves of the design example that reach the dynamic model (heights about its sliding
 /// threshold, from sticking throughout to sliding and rocking), each from rest as the lifetime run
 /// takes them: the permanent sliding, the peak displacement, rotation, base reaction and spring
-/// shear, and the smallest spring normal force to rounding; the same steps and Newton
-/// iterations; and most resisting forces all-sticking.
+/// shear, and the smallest spring normal force (within the tolerance of the module docs); the
+/// same steps, no more Newton iterations; and most step attempts all-sticking (solved directly).
 #[test]
 fn the_design_waves_are_the_same_with_the_fast_path() {
     let sc = support::example("design_breakwater.toml");
@@ -174,30 +179,26 @@ fn the_design_waves_are_the_same_with_the_fast_path() {
         out
     };
     let (old, new) = (waves(false), waves(true));
-    let (mut steps, mut resisting, mut sticking, mut sliding_waves) = (0, 0, 0, 0);
+    let (mut steps, mut attempts, mut sticking, mut sliding_waves) = (0, 0, 0, 0);
     let mut largest = 0.0f64;
     for (i, ((o, os), (n, ns))) in old.iter().zip(&new).enumerate() {
         for (a, b) in o.iter().zip(n) {
             let d = (a - b).abs();
-            assert!(d <= 1e-9 * a.abs() + 1e-12, "wave {i}: {b} with the fast path, {a} without");
+            assert!(d <= 1e-6 * a.abs() + 1e-12, "wave {i}: {b} with the fast path, {a} without");
             if a.abs() > 0.0 {
                 largest = largest.max(d / a.abs());
             }
         }
-        assert_eq!(
-            (os.steps, os.newton_iterations, os.rejected_steps),
-            (ns.steps, ns.newton_iterations, ns.rejected_steps),
-            "wave {i}: steps, iterations and rejected steps"
-        );
+        assert_eq!((os.steps, os.rejected_steps), (ns.steps, ns.rejected_steps), "wave {i}: steps and rejected steps");
+        assert!(ns.newton_iterations <= os.newton_iterations, "wave {i}: Newton iterations");
         assert_eq!(os.sticking_iterates, 0);
         steps += ns.steps;
-        // One resisting force per Newton iteration and one per (accepted or rejected) attempt.
-        resisting += ns.newton_iterations + ns.steps + ns.rejected_steps;
+        attempts += ns.steps + ns.rejected_steps;
         sticking += ns.sticking_iterates;
         sliding_waves += usize::from(o[0].abs() > 1e-3);
     }
-    println!("largest relative difference {largest:.2e}; {sticking} of {resisting} resisting forces all-sticking, {steps} steps");
+    println!("largest relative difference {largest:.2e}; {sticking} all-sticking resisting forces in {attempts} step attempts, {steps} steps");
     assert!(steps > 1000, "{steps} steps");
     assert!(sliding_waves >= 3 && sliding_waves < old.len(), "{sliding_waves} waves slid more than 1 mm");
-    assert!(sticking as f64 > 0.5 * resisting as f64, "{sticking} of {resisting} all-sticking");
+    assert!(sticking as f64 > 0.5 * attempts as f64, "{sticking} all-sticking in {attempts} attempts");
 }

@@ -21,7 +21,10 @@
 //! r = p − M q̈ − C q̇ − f_S,     K̂ = M/(β h²) + γ C/(β h) + ∂f_S/∂q,   K̂ Δδ = r
 //! ```
 //!
-//! until max(|r_x|, |r_y|, |r_θ|/B) ≤ tol · W' → **commit** (copy the trial spring states). A step
+//! until max(|r_x|, |r_y|, |r_θ|/B) ≤ tol · W' → **commit** (copy the trial spring states). After
+//! a step that left every spring in contact and sticking, the next one is first solved directly
+//! as all-sticking (a quadratic in δ_x, `sticking`), and iterated only if a spring slips or lifts
+//! there. A step
 //! that does not converge in `max_iterations` is reverted (nothing was committed) and split in two
 //! halves, recursively, at most `max_substep_levels` times; then the run fails with
 //! [`SolveError::NonConvergence`] carrying the time and the residual. A non-finite residual
@@ -401,6 +404,7 @@ impl Simulation {
         for (c, r) in self.state.springs.iter_mut().zip(&self.trial) {
             *c = r.state;
         }
+        self.fast.direct = true;
     }
 
     pub fn state(&self) -> &State {
@@ -605,6 +609,11 @@ impl Simulation {
         let k_dyn = m * c1 + c * (gamma * c2);
         let tol = self.solver.tolerance * self.model.weight_n;
         let inv_b = 1.0 / self.model.width_m;
+        if self.solver.sticking_fast_path && self.fast.direct {
+            if let Some(c) = self.direct_sticking_step(h, p, tol) {
+                return Ok(c);
+            }
+        }
         let mut delta = match self.solver.predictor {
             Predictor::LastDisplacement => Vector3::zeros(),
             Predictor::ConstantAcceleration => vn * h + an * (0.5 * h * h),
@@ -642,11 +651,13 @@ impl Simulation {
         }
         if self.fast.iterate.is_some() {
             self.commit_sticking(h, self.state.u[0], self.state.v[0]);
+            self.fast.direct = true;
         } else {
             for (s, r) in self.state.springs.iter_mut().zip(&self.trial) {
                 *s = r.state;
             }
             self.fast.invalidate();
+            self.fast.direct = self.trial.iter().all(|r| !r.state.sliding && r.normal_n > 0.0);
         }
         self.state.t_s += h;
         self.state.u = c.u;

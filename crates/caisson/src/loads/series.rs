@@ -44,9 +44,11 @@ pub struct ForceSeries {
 impl ForceSeries {
     /// Parse CSV text. `width_m` is the base width, needed only for the lever-arm form.
     pub fn from_csv_str(text: &str, width_m: f64) -> Result<Self, SeriesError> {
-        let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
+        // Fields are trimmed here rather than by the reader (`csv::Trim::All` rebuilds every
+        // record), and one record is reused for every row: the parse allocates nothing per row.
+        let mut rdr = csv::ReaderBuilder::new().flexible(true).from_reader(text.as_bytes());
         let headers = rdr.headers().map_err(|e| SeriesError::Csv(e.to_string()))?.clone();
-        let names: Vec<&str> = headers.iter().collect();
+        let names: Vec<&str> = headers.iter().map(str::trim).collect();
         let levers = match names.as_slice() {
             ["time_s", "fx_kn", "fy_kn", "moment_knm"] => false,
             ["time_s", "fx_kn", "fy_kn", "horizontal_lever_m", "uplift_lever_m"] => true,
@@ -55,14 +57,18 @@ impl ForceSeries {
         let ncol = names.len();
         let mut t_s = Vec::new();
         let mut f = Vec::new();
-        for (k, rec) in rdr.records().enumerate() {
-            let line = k + 2;
-            let rec = rec.map_err(|e| SeriesError::Csv(format!("line {line}: {e}")))?;
+        let mut rec = csv::StringRecord::new();
+        for line in 2.. {
+            match rdr.read_record(&mut rec) {
+                Ok(true) => {}
+                Ok(false) => break,
+                Err(e) => return Err(SeriesError::Csv(format!("line {line}: {e}"))),
+            }
             if rec.len() != ncol {
                 return Err(SeriesError::WrongColumnCount { line, expected: ncol, found: rec.len() });
             }
             let mut v = [0.0; 5];
-            for (j, field) in rec.iter().enumerate() {
+            for (j, field) in rec.iter().map(str::trim).enumerate() {
                 v[j] = field.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| SeriesError::BadNumber {
                     line,
                     column: names[j].to_string(),
