@@ -2,11 +2,13 @@
 //! the dynamic model for every wave that can slide it (Shimosako & Takahashi 1999; Goda & Takagi
 //! 2000; docs/model.md §6.4), and the storms of a fragility analysis (docs/model.md §7).
 //!
-//! **One life** (`life_years` storms, one per year, docs/model.md §6.4 steps 1-7):
+//! **One life** (`life_years` years of storms, one per year by default, docs/model.md §6.4 steps
+//! 1-7; the other climates of [`super::climate`] change the steps as its docs say):
 //!
 //! 1. annual maximum deep-water significant height H0 from an extreme-value distribution,
 //!    by inversion of a uniform U: Weibull F(H) = 1 − exp[−((H − B)/A)^k] (H ≥ B), or Gumbel
-//!    F(H) = exp[−exp(−(H − B)/A)]; times the deep-water estimation error;
+//!    F(H) = exp[−exp(−(H − B)/A)]; times the deep-water estimation error (peaks over threshold:
+//!    a Poisson number of storms a year, each H0 an exceedance of the threshold);
 //! 2. period T1/3 = a H0^b (Goda & Takagi: a = 3.3, b = 0.63) and N = duration / T1/3 waves;
 //! 3. tide at the peak ζ = (R/2)(1 + cos φ), φ uniform: every depth (toe, wall, base) grows by ζ,
 //!    the crest freeboard shrinks by ζ, and the weight in water falls by ρ_w g B l ζ (the caisson
@@ -82,8 +84,9 @@
 //! expected-sliding literature does: Shimosako & Takahashi 1999; Goda & Takagi 2000).
 //!
 //! **Random numbers**: one ChaCha8 stream per life (seed, stream = life index); per storm in
-//! order: U for H0, four truncated normals for the errors, U for the tide phase. The waves of
-//! storm y (counting from 0) come from the same stream at word (y + 1) · 2^40
+//! order: U for H0, four truncated normals for the errors, U for the tide phase (and, only for
+//! the climates that need them, the draws [`super::climate`] lists). The waves of
+//! storm y (counting from 0 over the life) come from the same stream at word (y + 1) · 2^40
 //! ([`STORM_WAVE_WORDS_LOG2`]; at most 6 words per wave, so a storm of up to 1.8e11 waves stays
 //! in its part): per drawn wave, U for its exceedance probability, one standard normal for the
 //! rise time, U for its place ([`WaveDraws::EveryWave`] and the screen off: per wave, U for the
@@ -94,6 +97,7 @@
 //! Lives are independent, so results do not depend on the thread count, and a life can be
 //! recomputed alone (checkpoint/resume).
 
+use super::climate::{Climate, StormModel};
 use super::run::permanent_sliding_m;
 use super::train::RigidBlock;
 use super::Structure;
@@ -132,6 +136,20 @@ impl StormDistribution {
                 location_m + scale_m * (-(1.0 - p).ln()).powf(1.0 / shape)
             }
             StormDistribution::Gumbel { location_m, scale_m } => location_m - scale_m * (-p.ln()).ln(),
+        }
+    }
+
+    /// F(h), the probability of a height at most `h_m`.
+    pub fn cdf(&self, h_m: f64) -> f64 {
+        match *self {
+            StormDistribution::Weibull { scale_m, shape, location_m } => {
+                if h_m <= location_m {
+                    0.0
+                } else {
+                    1.0 - (-((h_m - location_m) / scale_m).powf(shape)).exp()
+                }
+            }
+            StormDistribution::Gumbel { location_m, scale_m } => (-(-(h_m - location_m) / scale_m).exp()).exp(),
         }
     }
 }
@@ -180,7 +198,7 @@ impl Default for Errors {
 }
 
 /// The life model (docs/model.md §6.4), every coefficient a parameter.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct LifeParams {
     pub life_years: usize,
     pub storms: StormDistribution,
@@ -192,6 +210,25 @@ pub struct LifeParams {
     /// Tidal range R, m.
     pub tidal_range_m: f64,
     pub errors: Errors,
+    /// The climate's choices beyond today's model ([`Climate`]); not in the fingerprint when they
+    /// are the defaults, so checkpoints of earlier runs stay valid.
+    #[serde(skip_serializing_if = "Climate::is_default")]
+    pub climate: Climate,
+}
+
+impl LifeParams {
+    /// The deep-water H0 of a storm from the uniform `u` (before its error): the annual maximum
+    /// F⁻¹(u), or an exceedance of the threshold t, F⁻¹(F(t) + u (1 − F(t))) (peaks over
+    /// threshold; [`super::climate`]).
+    pub fn storm_height_m(&self, u: f64) -> f64 {
+        match self.climate.storms {
+            StormModel::AnnualMaxima => self.storms.quantile_m(u),
+            StormModel::PeaksOverThreshold { threshold_m, .. } => {
+                let f = self.storms.cdf(threshold_m);
+                self.storms.quantile_m((f + u * (1.0 - f)).min(1.0 - 1e-12)).max(threshold_m)
+            }
+        }
+    }
 }
 
 /// What the storms act on: the structure at still water, the site's wave loads, the rigid-block
@@ -615,36 +652,41 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     let mut life = StormOutcome::default();
     let mut scratch = StormScratch::default();
     let site = &st.model.site;
-    for year in 0..p.life_years {
-        let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
-        let e = &p.errors;
-        let (e_h0, e_tr, e_f, e_mu) = (
-            e.deep_water_height.draw(&mut rng),
-            e.transformation.draw(&mut rng),
-            e.wave_force.draw(&mut rng),
-            e.friction.draw(&mut rng),
-        );
-        let phi = 2.0 * PI * rng.gen::<f64>();
-        let h0 = (p.storms.quantile_m(u) * e_h0).max(1e-3);
-        let period_s = p.period_coefficient * h0.powf(p.period_exponent);
-        let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos());
-        let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
-        let storm = StormInput {
-            h13_m: z.h13_m * e_tr,
-            hmax_m: z.hmax_m * e_tr,
-            period_s,
-            waves: (p.storm_duration_s / period_s).round().max(1.0) as usize,
-            tide_m,
-            force_factor: e_f,
-            friction_factor: e_mu,
-        };
-        // The storm's waves from their own part of the stream: how many it draws does not move
-        // the next storm's numbers (common random numbers across caissons, docs/size.md).
-        let mut waves_rng = rng.clone();
-        waves_rng.set_word_pos(((year as u128) + 1) << STORM_WAVE_WORDS_LOG2);
-        let failed = st.failure.is_some_and(|f| life.failed(&f));
-        let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, &mut scratch)?;
-        life.add(&o);
+    // Storms counted over the life: storm k draws its waves from word (k + 1) · 2^40.
+    let mut storm_index: u128 = 0;
+    for _year in 0..p.life_years {
+        for _ in 0..p.climate.storms.storms_in_year(&mut rng) {
+            let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
+            let e = &p.errors;
+            let (e_h0, e_tr, e_f, e_mu) = (
+                e.deep_water_height.draw(&mut rng),
+                e.transformation.draw(&mut rng),
+                e.wave_force.draw(&mut rng),
+                e.friction.draw(&mut rng),
+            );
+            let phi = 2.0 * PI * rng.gen::<f64>();
+            let h0 = (p.storm_height_m(u) * e_h0).max(1e-3);
+            let period_s = p.period_coefficient * h0.powf(p.period_exponent);
+            let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos());
+            let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
+            let storm = StormInput {
+                h13_m: z.h13_m * e_tr,
+                hmax_m: z.hmax_m * e_tr,
+                period_s,
+                waves: (p.storm_duration_s / period_s).round().max(1.0) as usize,
+                tide_m,
+                force_factor: e_f,
+                friction_factor: e_mu,
+            };
+            // The storm's waves from their own part of the stream: how many it draws does not move
+            // the next storm's numbers (common random numbers across caissons, docs/size.md).
+            let mut waves_rng = rng.clone();
+            storm_index += 1;
+            waves_rng.set_word_pos(storm_index << STORM_WAVE_WORDS_LOG2);
+            let failed = st.failure.is_some_and(|f| life.failed(&f));
+            let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, &mut scratch)?;
+            life.add(&o);
+        }
     }
     Ok(life)
 }

@@ -5,6 +5,7 @@
 
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
+use crate::analysis::climate::{Climate, StormModel, MAX_STORM_RATE_PER_YEAR};
 use crate::analysis::lifetime::{DesignParams, ErrorModel, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
 
@@ -47,6 +48,12 @@ pub struct DesignTable {
     pub failure_rotation_rad: Option<f64>,
     /// Run lives to their end after failure (default false: a life ends at failure).
     pub continue_after_failure: Option<bool>,
+    /// `"annual-maxima"` (default) or `"peaks-over-threshold"`.
+    pub storm_model: Option<String>,
+    /// Peaks over threshold: the mean number of storms a year.
+    pub storm_rate_per_year: Option<f64>,
+    /// Peaks over threshold: the threshold of the deep-water H1/3, m.
+    pub storm_threshold_m: Option<f64>,
 }
 
 /// The largest `[design] failure_rotation_rad` (and `[fragility]`'s), rad: 0.1 rad (5.7°) lifts
@@ -146,6 +153,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             ))
         }
     };
+    let climate = Climate { storms: storm_model(t, &storms)? };
     let k = num("error_truncation_sigmas", t.error_truncation_sigmas, 2.0, 0.5, 10.0, false, "standard deviations")?;
     let d = Errors::default();
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
@@ -194,6 +202,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             storm_duration_s: num("storm_duration_h", t.storm_duration_h, 2.0, 0.0, 72.0, true, "h")? * 3600.0,
             tidal_range_m: num("tidal_range_m", t.tidal_range_m, 0.0, 0.0, 20.0, false, "m")?,
             errors,
+            climate,
         },
         lives: count("lives", t.lives, 5000, MAX_LIVES as i64)?,
         seed,
@@ -206,6 +215,67 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         failure_rotation_rad: failure_rotation("[design] failure_rotation_rad", t.failure_rotation_rad)?,
         continue_after_failure: t.continue_after_failure.unwrap_or(false),
     })
+}
+
+/// `[design] storm_model` and its keys (docs/design.md, "Climate").
+fn storm_model(t: &DesignTable, dist: &StormDistribution) -> R<StormModel> {
+    match t.storm_model.as_deref().unwrap_or("annual-maxima") {
+        "annual-maxima" => {
+            for (key, given) in [
+                ("storm_rate_per_year", t.storm_rate_per_year.is_some()),
+                ("storm_threshold_m", t.storm_threshold_m.is_some()),
+            ] {
+                if given {
+                    return Err(ScenarioError::Conflict {
+                        message: format!("`[design] {key}` is used only with storm_model = \"peaks-over-threshold\"; remove it, or set that storm_model"),
+                    });
+                }
+            }
+            Ok(StormModel::AnnualMaxima)
+        }
+        "peaks-over-threshold" => {
+            let rate_per_year = num(
+                "storm_rate_per_year",
+                Some(required(
+                    "storm_rate_per_year",
+                    t.storm_rate_per_year,
+                    "the mean number of storms a year above the threshold",
+                )?),
+                0.0,
+                0.0,
+                MAX_STORM_RATE_PER_YEAR,
+                true,
+                "storms a year",
+            )?;
+            let threshold_m = num(
+                "storm_threshold_m",
+                Some(required(
+                    "storm_threshold_m",
+                    t.storm_threshold_m,
+                    "the threshold of the deep-water H1/3 the storms exceed, m",
+                )?),
+                0.0,
+                0.0,
+                100.0,
+                false,
+                "m",
+            )?;
+            // The fitted distribution must leave room above the threshold.
+            if 1.0 - dist.cdf(threshold_m) < 1e-9 {
+                return Err(ScenarioError::range(
+                    "[design] storm_threshold_m",
+                    threshold_m,
+                    "must be a height the storm distribution exceeds (1 − F(threshold) ≥ 1e-9): lower it, or check the distribution's parameters",
+                ));
+            }
+            Ok(StormModel::PeaksOverThreshold { rate_per_year, threshold_m })
+        }
+        other => Err(ScenarioError::range(
+            "[design] storm_model",
+            format!("\"{other}\""),
+            "must be \"annual-maxima\" or \"peaks-over-threshold\"",
+        )),
+    }
 }
 
 /// A failure rotation limit (`key`), rad: in (0, [`MAX_FAILURE_ROTATION_RAD`]], default

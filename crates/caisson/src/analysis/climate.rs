@@ -1,0 +1,121 @@
+//! The site's climate of a lifetime run beyond the one model of Shimosako & Takahashi (1999): how
+//! many storms a year bring, how long they last, where the waves come from, how the estimation
+//! errors are drawn and how the still-water level rises over the life (docs/design.md, "Climate").
+//! Every default is today's model ([`Climate::default`]: one storm a year, a fixed duration,
+//! head-on waves, errors per storm, no rise), and a default climate draws no number: a run with
+//! the defaults gives the results of results version 10 bit for bit.
+//!
+//! **Storms** ([`StormModel`]). Annual maxima (the default): one storm a year, its deep-water H0 the
+//! annual maximum of `[design] storm_distribution`. Peaks over threshold (the partial-duration
+//! series of extreme-value analysis: the storms above a threshold, fitted by an extreme-value
+//! distribution, their yearly number Poisson; Goda 2000, ch. 11; Coles 2001, ch. 4): the number of storms in a year is Poisson with mean λ (`storm_rate_per_year`),
+//! P(n) = e^−λ λ^n / n!, drawn by inversion of one uniform; each storm's H0 is an exceedance of the
+//! threshold u (`storm_threshold_m`) from the fitted distribution F: H0 = F⁻¹(F(u) + U (1 − F(u))),
+//! the distribution of H given H > u.
+
+use crate::loads::risetime::LoadRng;
+use rand::Rng;
+
+/// The climate's choices (module docs); the default is today's model.
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
+pub struct Climate {
+    pub storms: StormModel,
+}
+
+impl Climate {
+    /// Whether every choice is today's (a run then draws exactly the numbers it drew before).
+    pub fn is_default(&self) -> bool {
+        *self == Climate::default()
+    }
+}
+
+/// How many storms a year brings, and which distribution their peaks follow (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum StormModel {
+    /// One storm a year, the annual maximum (Shimosako & Takahashi 1999).
+    #[default]
+    AnnualMaxima,
+    /// A Poisson number of storms a year of mean `rate_per_year`, each an exceedance of
+    /// `threshold_m` (deep-water H1/3, m).
+    PeaksOverThreshold { rate_per_year: f64, threshold_m: f64 },
+}
+
+/// The largest `[design] storm_rate_per_year`: the Poisson inversion stays exact in f64 (e^−λ is
+/// far above the smallest normal number) and a 1000-year life holds at most some 10⁵ storms.
+pub const MAX_STORM_RATE_PER_YEAR: f64 = 50.0;
+
+impl StormModel {
+    /// The number of storms of one year: 1 for annual maxima (no number drawn), a Poisson number
+    /// of mean λ from one uniform otherwise.
+    pub fn storms_in_year(&self, rng: &mut LoadRng) -> usize {
+        match *self {
+            StormModel::AnnualMaxima => 1,
+            StormModel::PeaksOverThreshold { rate_per_year, .. } => poisson_inverse(rate_per_year, rng.gen()),
+        }
+    }
+
+    /// The mean number of storms a year.
+    pub fn mean_storms_per_year(&self) -> f64 {
+        match *self {
+            StormModel::AnnualMaxima => 1.0,
+            StormModel::PeaksOverThreshold { rate_per_year, .. } => rate_per_year,
+        }
+    }
+}
+
+/// The smallest n with P(N ≤ n) > u for N Poisson of mean `rate` (inversion by sequential search,
+/// Devroye 1986 §X.3), u in [0, 1). Bounded: it stops at λ + 40 √λ + 40, beyond which the
+/// probability left is far below the resolution of u.
+pub fn poisson_inverse(rate: f64, u: f64) -> usize {
+    let cap = (rate + 40.0 * rate.sqrt() + 40.0) as usize;
+    let mut p = (-rate).exp();
+    let mut cdf = p;
+    let mut n = 0;
+    while cdf <= u && n < cap {
+        n += 1;
+        p *= rate / n as f64;
+        cdf += p;
+    }
+    n
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::loads::generator::realization_rng;
+
+    /// The counts of 200 000 years at λ = 3.7 and 0.4: the sample mean and variance are both λ
+    /// (the Poisson's mean and variance) within 5 standard errors: the mean's is (λ/n)^½, the
+    /// variance's (λ (1 + 2λ)/n)^½ (the fourth central moment of a Poisson is λ + 3λ²).
+    #[test]
+    fn storm_counts_have_the_poisson_mean_and_variance() {
+        let n = 200_000;
+        let mut checked = 0;
+        for rate in [3.7, 0.4] {
+            let m = StormModel::PeaksOverThreshold { rate_per_year: rate, threshold_m: 1.0 };
+            let mut rng = realization_rng(7, 0);
+            let counts: Vec<f64> = (0..n).map(|_| m.storms_in_year(&mut rng) as f64).collect();
+            let mean = counts.iter().sum::<f64>() / n as f64;
+            let var = counts.iter().map(|c| (c - mean).powi(2)).sum::<f64>() / (n - 1) as f64;
+            assert!((mean - rate).abs() < 5.0 * (rate / n as f64).sqrt(), "λ = {rate}: mean {mean}");
+            assert!((var - rate).abs() < 5.0 * (rate * (1.0 + 2.0 * rate) / n as f64).sqrt(), "λ = {rate}: var {var}");
+            checked += 1;
+        }
+        assert_eq!(checked, 2);
+    }
+
+    /// The inversion against the Poisson CDF by hand at λ = 2: P(0) = e^−2 = 0.1353,
+    /// P(≤1) = 3 e^−2 = 0.4060, P(≤2) = 5 e^−2 = 0.6767.
+    #[test]
+    fn poisson_inversion_by_hand() {
+        let e = (-2.0f64).exp();
+        assert_eq!(poisson_inverse(2.0, 0.0), 0);
+        assert_eq!(poisson_inverse(2.0, e - 1e-12), 0);
+        assert_eq!(poisson_inverse(2.0, e + 1e-12), 1);
+        assert_eq!(poisson_inverse(2.0, 3.0 * e + 1e-12), 2);
+        assert_eq!(poisson_inverse(2.0, 5.0 * e - 1e-12), 2);
+        assert_eq!(poisson_inverse(2.0, 5.0 * e + 1e-12), 3);
+        assert_eq!(StormModel::AnnualMaxima.storms_in_year(&mut realization_rng(1, 0)), 1);
+    }
+}

@@ -1,0 +1,120 @@
+//! The climates of a lifetime run (docs/design.md, "Climate"; `analysis::climate`) against their
+//! closed forms, through `simulate_life` where the life's outcome shows them.
+
+mod support;
+
+use caisson::analysis::lifetime::{simulate_life, StormCase, StormOutcome};
+use caisson::scenario::Scenario;
+use support::scenario;
+
+/// A calm site (every storm far below what slides the caisson: the screen's load bound spares the
+/// grid, so a life costs microseconds) with a constant period (b = 0: T1/3 = a = 10 s) and storms
+/// of 0.15 h (54 waves): a life's `waves` is 54 × its number of storms.
+const CALM: &str = r#"
+[caisson]
+width_m = 20.0
+height_m = 24.5
+base_depth_m = 17.5
+weight_in_water_kn = 4500.0
+[foundation]
+mu_static = 0.6
+mu_dynamic = 0.6
+e100_kpa = 3.5e5
+density_kg_per_m3 = 2000
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 20.0
+depth_at_wall_m = 16.5
+seabed_slope = 0.01
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.8
+[solver]
+dt_max_s = 0.05
+error_tolerance_m = 1e-6
+[design]
+life_years = 4
+lives = 10
+seed = 5
+storm_distribution = "weibull"
+storm_scale_m = 0.5
+storm_shape = 1.4
+storm_location_m = 1.0
+period_coefficient = 10.0
+period_exponent = 0.0
+storm_duration_h = 0.15
+"#;
+
+/// `CALM` with `extra` keys appended to `[design]`.
+fn calm(extra: &str) -> Scenario {
+    scenario(&format!("{CALM}{extra}\n"))
+}
+
+/// Lives 0..n of `sc`.
+fn lives(sc: &Scenario, n: usize) -> Vec<StormOutcome> {
+    let d = sc.design.clone().unwrap();
+    let st = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
+    (0..n).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect()
+}
+
+/// Mean and sample variance.
+fn moments(x: &[f64]) -> (f64, f64) {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    (mean, x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0))
+}
+
+/// Peaks over threshold at λ = 2.5 storms a year over 4 years: a life's storms are Poisson of
+/// mean and variance 4λ = 10. 4000 lives: the mean within 5 standard errors ((10/4000)^½ = 0.05),
+/// the variance within 5 of its standard errors ((10 (1 + 20)/4000)^½ = 0.23). No storm slides
+/// the caisson (the site is calm), so the lives are cheap.
+#[test]
+fn pot_storms_per_life_are_poisson_through_simulate_life() {
+    let sc = calm("storm_model = \"peaks-over-threshold\"\nstorm_rate_per_year = 2.5\nstorm_threshold_m = 1.2");
+    let n = 4000;
+    let storms: Vec<f64> = lives(&sc, n)
+        .iter()
+        .map(|o| {
+            assert_eq!(o.waves % 54, 0, "54 waves a storm");
+            assert_eq!(o.simulated_waves, 0, "the site is calm");
+            (o.waves / 54) as f64
+        })
+        .collect();
+    assert_eq!(storms.len(), n);
+    let (mean, var) = moments(&storms);
+    assert!((mean - 10.0).abs() < 5.0 * (10.0f64 / n as f64).sqrt(), "mean {mean}");
+    assert!((var - 10.0).abs() < 5.0 * (10.0 * 21.0 / n as f64).sqrt(), "variance {var}");
+}
+
+/// The annual maxima model (the default, and written out) gives one storm a year: 4 × 54 waves.
+#[test]
+fn annual_maxima_is_one_storm_a_year() {
+    for sc in [calm(""), calm("storm_model = \"annual-maxima\"")] {
+        let all = lives(&sc, 20);
+        assert_eq!(all.len(), 20);
+        assert!(all.iter().all(|o| o.waves == 4 * 54));
+    }
+}
+
+/// The storm heights of peaks over threshold t = 1.2 m are the fitted Weibull (A = 0.5 m,
+/// k = 1.4, B = 1 m) given H > t: on 10 000 evenly spaced uniforms, the share above x is
+/// (1 − F(x))/(1 − F(t)) = exp[−((x − B)/A)^k + ((t − B)/A)^k] to 1/10 000, at four heights; none
+/// is below the threshold.
+#[test]
+fn pot_heights_are_the_exceedances_of_the_threshold() {
+    let sc = calm("storm_model = \"peaks-over-threshold\"\nstorm_rate_per_year = 2.5\nstorm_threshold_m = 1.2");
+    let life = &sc.design.as_ref().unwrap().life;
+    let n = 10_000;
+    let h: Vec<f64> = (0..n).map(|i| life.storm_height_m((i as f64 + 0.5) / n as f64)).collect();
+    assert!(h.iter().all(|&x| x >= 1.2));
+    let z = |x: f64| ((x - 1.0) / 0.5f64).powf(1.4);
+    let mut checked = 0;
+    for x in [1.3, 1.6, 2.0, 2.5] {
+        let share = h.iter().filter(|&&v| v > x).count() as f64 / n as f64;
+        let exact = (-z(x) + z(1.2)).exp();
+        assert!((share - exact).abs() <= 1.0 / n as f64 + 1e-12, "x = {x}: {share} vs {exact}");
+        checked += 1;
+    }
+    assert_eq!(checked, 4);
+}
