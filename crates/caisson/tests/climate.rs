@@ -118,3 +118,26 @@ fn pot_heights_are_the_exceedances_of_the_threshold() {
     }
     assert_eq!(checked, 4);
 }
+
+/// Lognormal durations of mean 2 h and COV 0.5 with T1/3 = 1 s (a = 1, b = 0) and one storm a
+/// life: a life's `waves` is round(D / 1 s), of mean 7200 and standard deviation 3600 (the
+/// rounding adds 1/12 to the variance). 4000 lives: the mean within 5 standard errors
+/// (3600/√4000 = 57), the standard deviation within 6 % (its standard error is about 1.6 %
+/// at this COV, the lognormal's kurtosis 3 + 6.6 with σ² = ln 1.25).
+#[test]
+fn lognormal_durations_through_simulate_life() {
+    let text = CALM
+        .replace("life_years = 4", "life_years = 1")
+        .replace("period_coefficient = 10.0", "period_coefficient = 1.0")
+        .replace("storm_duration_h = 0.15", "storm_duration_h = 2.0");
+    let sc = scenario(&format!("{text}storm_duration_model = \"lognormal\"\nstorm_duration_cov = 0.5\n"));
+    let n = 4000;
+    let waves: Vec<f64> = lives(&sc, n).iter().map(|o| o.waves as f64).collect();
+    assert_eq!(waves.len(), n);
+    let (mean, var) = moments(&waves);
+    assert!((mean - 7200.0).abs() < 5.0 * 3600.0 / (n as f64).sqrt(), "mean {mean}");
+    assert!((var.sqrt() / 3600.0 - 1.0).abs() < 0.06, "sd {}", var.sqrt());
+    // Fixed durations: every life 7200 waves.
+    let fixed = scenario(&text);
+    assert!(lives(&fixed, 10).iter().all(|o| o.waves == 7200));
+}

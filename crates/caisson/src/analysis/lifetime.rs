@@ -205,7 +205,8 @@ pub struct LifeParams {
     /// T1/3 = a H0^b: a (s·m^−b) and b.
     pub period_coefficient: f64,
     pub period_exponent: f64,
-    /// Duration of the storm peak, s (N = duration / T1/3 waves).
+    /// Duration of the storm peak, s (N = duration / T1/3 waves); the mean of a distribution of
+    /// durations ([`Climate::duration`]).
     pub storm_duration_s: f64,
     /// Tidal range R, m.
     pub tidal_range_m: f64,
@@ -667,13 +668,14 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let phi = 2.0 * PI * rng.gen::<f64>();
             let h0 = (p.storm_height_m(u) * e_h0).max(1e-3);
             let period_s = p.period_coefficient * h0.powf(p.period_exponent);
+            let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
             let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos());
             let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
             let storm = StormInput {
                 h13_m: z.h13_m * e_tr,
                 hmax_m: z.hmax_m * e_tr,
                 period_s,
-                waves: (p.storm_duration_s / period_s).round().max(1.0) as usize,
+                waves: (duration_s / period_s).round().max(1.0) as usize,
                 tide_m,
                 force_factor: e_f,
                 friction_factor: e_mu,

@@ -5,7 +5,7 @@
 
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
-use crate::analysis::climate::{Climate, StormModel, MAX_STORM_RATE_PER_YEAR};
+use crate::analysis::climate::{Climate, StormDuration, StormModel, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR};
 use crate::analysis::lifetime::{DesignParams, ErrorModel, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
 
@@ -54,6 +54,10 @@ pub struct DesignTable {
     pub storm_rate_per_year: Option<f64>,
     /// Peaks over threshold: the threshold of the deep-water H1/3, m.
     pub storm_threshold_m: Option<f64>,
+    /// `"fixed"` (default) or `"lognormal"` (mean `storm_duration_h`).
+    pub storm_duration_model: Option<String>,
+    /// Lognormal durations: the coefficient of variation.
+    pub storm_duration_cov: Option<f64>,
 }
 
 /// The largest `[design] failure_rotation_rad` (and `[fragility]`'s), rad: 0.1 rad (5.7°) lifts
@@ -153,7 +157,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             ))
         }
     };
-    let climate = Climate { storms: storm_model(t, &storms)? };
+    let climate = Climate { storms: storm_model(t, &storms)?, duration: duration_model(t)? };
     let k = num("error_truncation_sigmas", t.error_truncation_sigmas, 2.0, 0.5, 10.0, false, "standard deviations")?;
     let d = Errors::default();
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
@@ -274,6 +278,34 @@ fn storm_model(t: &DesignTable, dist: &StormDistribution) -> R<StormModel> {
             "[design] storm_model",
             format!("\"{other}\""),
             "must be \"annual-maxima\" or \"peaks-over-threshold\"",
+        )),
+    }
+}
+
+/// `[design] storm_duration_model` and its COV (docs/design.md, "Climate").
+fn duration_model(t: &DesignTable) -> R<StormDuration> {
+    match t.storm_duration_model.as_deref().unwrap_or("fixed") {
+        "fixed" => match t.storm_duration_cov {
+            Some(_) => Err(ScenarioError::Conflict {
+                message: "`[design] storm_duration_cov` is used only with storm_duration_model = \"lognormal\"; remove it, or set that model".into(),
+            }),
+            None => Ok(StormDuration::Fixed),
+        },
+        "lognormal" => Ok(StormDuration::Lognormal {
+            cov: num(
+                "storm_duration_cov",
+                Some(required("storm_duration_cov", t.storm_duration_cov, "the coefficient of variation of the durations (e.g. 0.5)")?),
+                0.0,
+                0.0,
+                MAX_STORM_DURATION_COV,
+                true,
+                "fraction",
+            )?,
+        }),
+        other => Err(ScenarioError::range(
+            "[design] storm_duration_model",
+            format!("\"{other}\""),
+            "must be \"fixed\" or \"lognormal\"",
         )),
     }
 }
