@@ -26,6 +26,7 @@ fn bench(c: &mut Criterion) {
         waves: 720,
         tide_m: 1.0,
         force_factor: 1.0,
+        impact_factor: 1.0,
         friction_factor: 1.0,
     };
     let mut g = c.benchmark_group("mild_storm_720_waves");

@@ -351,6 +351,7 @@ impl FragilityParams {
             waves: self.waves_per_storm(),
             tide_m: 0.0,
             force_factor: 1.0,
+            impact_factor: 1.0,
             friction_factor: 1.0,
         }
     }

@@ -6,7 +6,7 @@
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
 use crate::analysis::climate::{Climate, StormDuration, StormModel, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR};
-use crate::analysis::lifetime::{DesignParams, ErrorModel, Errors, LifeParams, StormDistribution};
+use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
 
 /// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
@@ -54,6 +54,13 @@ pub struct DesignTable {
     pub storm_rate_per_year: Option<f64>,
     /// Peaks over threshold: the threshold of the deep-water H1/3, m.
     pub storm_threshold_m: Option<f64>,
+    /// `"storm"` (default: errors drawn for every storm) or `"life"` (once per life).
+    pub error_scope: Option<String>,
+    /// Whether the errors are truncated at ±`error_truncation_sigmas` (default true).
+    pub error_truncated: Option<bool>,
+    /// The impulsive component's own error (default: the wave force's).
+    pub impact_force_bias: Option<f64>,
+    pub impact_force_cov: Option<f64>,
     /// `"fixed"` (default) or `"lognormal"` (mean `storm_duration_h`).
     pub storm_duration_model: Option<String>,
     /// Lognormal durations: the coefficient of variation.
@@ -158,19 +165,41 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         }
     };
     let climate = Climate { storms: storm_model(t, &storms)?, duration: duration_model(t)? };
+    let truncated = t.error_truncated.unwrap_or(true);
+    if !truncated && t.error_truncation_sigmas.is_some() {
+        return Err(ScenarioError::Conflict {
+            message: "`[design] error_truncation_sigmas` is not used with error_truncated = false (untruncated normal errors); remove one of them".into(),
+        });
+    }
     let k = num("error_truncation_sigmas", t.error_truncation_sigmas, 2.0, 0.5, 10.0, false, "standard deviations")?;
     let d = Errors::default();
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
         let bias = num(&format!("{name}_bias"), bias, def.bias, -0.9, 1.0, false, "fraction")?;
         let cov = num(&format!("{name}_cov"), cov, def.cov, 0.0, 1.0, false, "fraction")?;
-        if 1.0 + bias - k * cov <= 0.0 {
+        if truncated && 1.0 + bias - k * cov <= 0.0 {
             return Err(ScenarioError::range(
                 &format!("[design] {name}_cov"),
                 cov,
                 format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive"),
             ));
         }
-        Ok(ErrorModel { bias, cov, truncation_sigmas: k })
+        Ok(ErrorModel { bias, cov, truncation_sigmas: truncated.then_some(k) })
+    };
+    let wave_force = err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?;
+    let impact_force = match (t.impact_force_bias, t.impact_force_cov) {
+        (None, None) => None,
+        (bias, cov) => Some(err("impact_force", bias, cov, wave_force)?),
+    };
+    let scope = match t.error_scope.as_deref().unwrap_or("storm") {
+        "storm" => ErrorScope::Storm,
+        "life" => ErrorScope::Life,
+        other => {
+            return Err(ScenarioError::range(
+                "[design] error_scope",
+                format!("\"{other}\""),
+                "must be \"storm\" (errors drawn for every storm) or \"life\" (once per life)",
+            ))
+        }
     };
     let errors = Errors {
         deep_water_height: err(
@@ -180,8 +209,10 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             d.deep_water_height,
         )?,
         transformation: err("transformation", t.transformation_bias, t.transformation_cov, d.transformation)?,
-        wave_force: err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?,
+        wave_force,
         friction: err("friction", t.friction_bias, t.friction_cov, d.friction)?,
+        impact_force,
+        scope,
     };
     let mut thresholds_m = STANDARD_THRESHOLDS_M.to_vec();
     for (i, v) in t.thresholds_m.iter().flatten().enumerate() {
