@@ -203,3 +203,21 @@ fn the_impact_factor_scales_the_impulsive_component() {
     assert!(two.sliding_m > one.sliding_m + 0.01, "{one:?} {two:?}");
     assert!((one.sliding_m - none.sliding_m).abs() < 1e-3, "{none:?} {one:?}");
 }
+
+/// The sea-level rise reaches the storms: with 4.5 m of rise over the life (linear) and a tidal
+/// range of 19 m, the water at the last storm rises by up to 19 + 4.5 · 3.5/4 = 22.94 m, beyond
+/// W'/(ρ_w g B l) = 4500 kN / (1030 · 9.80665 · 20 m² ) = 22.28 m: the caisson would float, and
+/// the file is refused naming the weight and the rise; without the rise it is accepted.
+#[test]
+fn a_caisson_that_floats_at_the_risen_sea_is_refused() {
+    let text = format!("{CALM}tidal_range_m = 19.0\n");
+    assert!(Scenario::from_toml(&text, std::path::Path::new("t.toml"), std::path::Path::new(".")).is_ok());
+    let e = Scenario::from_toml(
+        &format!("{text}sea_level_rise_m = 4.5\n"),
+        std::path::Path::new("t.toml"),
+        std::path::Path::new("."),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("[caisson] weight_in_water_kn") && e.contains("sea-level rise of up to 3.9375 m"), "{e}");
+}

@@ -19,6 +19,15 @@
 //! ln D ~ N(μ, σ²), σ² = ln(1 + c²), μ = ln D̄ − σ²/2, so E[D] = D̄ and Var D = (c D̄)²; D is
 //! limited to [`MAX_STORM_DURATION_S`] (72 h, the largest fixed duration; at c ≤ 1 and D̄ ≤ 12 h
 //! the limit moves the mean by less than 10⁻⁴). N = round(D / T1/3) waves as before.
+//!
+//! **Sea level** ([`SeaLevelRise`]). The still-water level rises over the life by r(t), t the time
+//! of the storm in years from the start of the life (the storms of year y at t = y + ½, the middle
+//! of their year): linearly, r(t) = R t / N_y with R the rise at the end of the life
+//! (`sea_level_rise_m`), or by linear interpolation in a table of years and metres
+//! (`sea_level_rise_table`; constant beyond its ends), as sea-level-rise scenarios are given
+//! (IPCC AR6 WG1 ch. 9 gives projections by year). The rise is added to the tide: every depth
+//! grows by ζ + r(t), the crest freeboard and the weight in water fall with it (docs/model.md §6.4
+//! step 3). No number is drawn.
 
 use crate::loads::risetime::LoadRng;
 use rand::Rng;
@@ -29,6 +38,7 @@ use rand_distr::StandardNormal;
 pub struct Climate {
     pub storms: StormModel,
     pub duration: StormDuration,
+    pub sea_level: SeaLevelRise,
 }
 
 impl Climate {
@@ -105,6 +115,54 @@ impl StormDuration {
     }
 }
 
+/// How the still-water level rises over the life (module docs).
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum SeaLevelRise {
+    /// No rise (the default).
+    #[default]
+    None,
+    /// r(t) = `rise_m` · t / `life_years`: `rise_m` at the end of the life.
+    Linear { rise_m: f64, life_years: f64 },
+    /// Linear interpolation in (year, m) points, years increasing; constant beyond the ends.
+    Table { points: Vec<(f64, f64)> },
+}
+
+/// The largest rise of `[design] sea_level_rise_m` and of a table's levels, m.
+pub const MAX_SEA_LEVEL_RISE_M: f64 = 5.0;
+
+impl SeaLevelRise {
+    /// The rise at `t_years` from the start of the life, m.
+    pub fn rise_m(&self, t_years: f64) -> f64 {
+        match self {
+            SeaLevelRise::None => 0.0,
+            SeaLevelRise::Linear { rise_m, life_years } => rise_m * t_years / life_years,
+            SeaLevelRise::Table { points } => match points.iter().position(|&(y, _)| y > t_years) {
+                None => points.last().map_or(0.0, |p| p.1),
+                Some(0) => points[0].1,
+                Some(i) => {
+                    let ((y0, r0), (y1, r1)) = (points[i - 1], points[i]);
+                    r0 + (r1 - r0) * (t_years - y0) / (y1 - y0)
+                }
+            },
+        }
+    }
+
+    /// The rise at the storms of year `year` (counting from 0): at its middle, m.
+    pub fn rise_in_year_m(&self, year: usize) -> f64 {
+        self.rise_m(year as f64 + 0.5)
+    }
+
+    /// The highest rise over a life of `life_years` years (at the storms' times), m.
+    pub fn max_rise_m(&self, life_years: usize) -> f64 {
+        match self {
+            SeaLevelRise::None => 0.0,
+            // Piecewise linear: the largest value is at an end or at a point inside the life.
+            _ => (0..life_years).map(|y| self.rise_in_year_m(y)).fold(0.0, f64::max),
+        }
+    }
+}
+
 /// The smallest n with P(N ≤ n) > u for N Poisson of mean `rate` (inversion by sequential search,
 /// Devroye 1986 §X.3), u in [0, 1). Bounded: it stops at λ + 40 √λ + 40, beyond which the
 /// probability left is far below the resolution of u.
@@ -165,6 +223,26 @@ mod tests {
         let b = a.clone();
         assert_eq!(StormDuration::Fixed.draw_s(7200.0, &mut a), 7200.0);
         assert_eq!(a.get_word_pos(), b.get_word_pos());
+    }
+
+    /// The path by hand: 0.5 m over 100 years is 0.25 m at 50 years and 0.0025 m at the storm of
+    /// year 0 (t = ½); the table [(0, 0), (50, 0.2), (100, 0.5)] gives 0.1 m at 25 years, 0.32 m
+    /// at 70, 0.5 m beyond 100 and 0 before 0; its largest rise over a 60-year life is at t = 59.5
+    /// years, 0.2 + 0.3 · 9.5/50 = 0.257 m.
+    #[test]
+    fn sea_level_paths_by_hand() {
+        let lin = SeaLevelRise::Linear { rise_m: 0.5, life_years: 100.0 };
+        assert!((lin.rise_m(50.0) - 0.25).abs() < 1e-15);
+        assert!((lin.rise_in_year_m(0) - 0.0025).abs() < 1e-15);
+        assert!((lin.max_rise_m(100) - 0.4975).abs() < 1e-12);
+        let tab = SeaLevelRise::Table { points: vec![(0.0, 0.0), (50.0, 0.2), (100.0, 0.5)] };
+        let cases = [(25.0, 0.1), (70.0, 0.32), (100.0, 0.5), (130.0, 0.5), (-1.0, 0.0), (0.0, 0.0), (50.0, 0.2)];
+        for (t, r) in cases {
+            assert!((tab.rise_m(t) - r).abs() < 1e-12, "t = {t}: {}", tab.rise_m(t));
+        }
+        assert!((tab.max_rise_m(60) - 0.257).abs() < 1e-12);
+        assert_eq!(SeaLevelRise::None.max_rise_m(50), 0.0);
+        assert_eq!(cases.len(), 7);
     }
 
     /// The inversion against the Poisson CDF by hand at λ = 2: P(0) = e^−2 = 0.1353,

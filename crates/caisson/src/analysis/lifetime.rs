@@ -279,6 +279,12 @@ pub struct LifeParams {
 }
 
 impl LifeParams {
+    /// The highest water level above still water of the life's storms: the tidal range and the
+    /// largest sea-level rise, m.
+    pub fn highest_water_m(&self) -> f64 {
+        self.tidal_range_m + self.climate.sea_level.max_rise_m(self.life_years)
+    }
+
     /// The deep-water H0 of a storm from the uniform `u` (before its error): the annual maximum
     /// F⁻¹(u), or an exceedance of the threshold t, F⁻¹(F(t) + u (1 − F(t))) (peaks over
     /// threshold; [`super::climate`]).
@@ -348,7 +354,7 @@ pub struct StormInput {
     pub hmax_m: f64,
     pub period_s: f64,
     pub waves: usize,
-    /// Water level above still water, m.
+    /// Water level above still water (the tide and the sea-level rise), m.
     pub tide_m: f64,
     /// Multiplier on every wave force (but the impulsive component's).
     pub force_factor: f64,
@@ -733,7 +739,8 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     let life_errors = (p.errors.scope == ErrorScope::Life).then(|| p.errors.draw(&mut rng));
     // Storms counted over the life: storm k draws its waves from word (k + 1) · 2^40.
     let mut storm_index: u128 = 0;
-    for _year in 0..p.life_years {
+    for year in 0..p.life_years {
+        let rise_m = p.climate.sea_level.rise_in_year_m(year);
         for _ in 0..p.climate.storms.storms_in_year(&mut rng) {
             let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
             let e = match life_errors {
@@ -744,7 +751,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let h0 = (p.storm_height_m(u) * e.h0).max(1e-3);
             let period_s = p.period_coefficient * h0.powf(p.period_exponent);
             let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
-            let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos());
+            let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
             let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
             let storm = StormInput {
                 h13_m: z.h13_m * e.transformation,

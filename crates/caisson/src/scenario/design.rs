@@ -5,7 +5,10 @@
 
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
-use crate::analysis::climate::{Climate, StormDuration, StormModel, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR};
+use crate::analysis::climate::{
+    Climate, SeaLevelRise, StormDuration, StormModel, MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV,
+    MAX_STORM_RATE_PER_YEAR,
+};
 use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
 
@@ -61,6 +64,10 @@ pub struct DesignTable {
     /// The impulsive component's own error (default: the wave force's).
     pub impact_force_bias: Option<f64>,
     pub impact_force_cov: Option<f64>,
+    /// The rise of the still-water level at the end of the life, m (linear from 0).
+    pub sea_level_rise_m: Option<f64>,
+    /// The rise as a table of [years from the start of the life, m] points.
+    pub sea_level_rise_table: Option<Vec<Vec<f64>>>,
     /// `"fixed"` (default) or `"lognormal"` (mean `storm_duration_h`).
     pub storm_duration_model: Option<String>,
     /// Lognormal durations: the coefficient of variation.
@@ -164,7 +171,12 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             ))
         }
     };
-    let climate = Climate { storms: storm_model(t, &storms)?, duration: duration_model(t)? };
+    let life_years = count("life_years", t.life_years, 50, 1000)?;
+    let climate = Climate {
+        storms: storm_model(t, &storms)?,
+        duration: duration_model(t)?,
+        sea_level: sea_level(t, life_years)?,
+    };
     let truncated = t.error_truncated.unwrap_or(true);
     if !truncated && t.error_truncation_sigmas.is_some() {
         return Err(ScenarioError::Conflict {
@@ -230,7 +242,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let seed = seed_of("[design] seed", t.seed)?;
     Ok(DesignParams {
         life: LifeParams {
-            life_years: count("life_years", t.life_years, 50, 1000)?,
+            life_years,
             storms,
             period_coefficient: num("period_coefficient", t.period_coefficient, 3.3, 0.0, 100.0, true, "s·m^−b")?,
             period_exponent: num("period_exponent", t.period_exponent, 0.63, 0.0, 2.0, false, "-")?,
@@ -338,6 +350,50 @@ fn duration_model(t: &DesignTable) -> R<StormDuration> {
             format!("\"{other}\""),
             "must be \"fixed\" or \"lognormal\"",
         )),
+    }
+}
+
+/// `[design] sea_level_rise_m` or `sea_level_rise_table` (docs/design.md, "Climate").
+fn sea_level(t: &DesignTable, life_years: usize) -> R<SeaLevelRise> {
+    let unit = "m; the still-water level's rise, at most 5 m";
+    match (t.sea_level_rise_m, &t.sea_level_rise_table) {
+        (Some(_), Some(_)) => Err(ScenarioError::Conflict {
+            message: "give `[design] sea_level_rise_m` (a linear rise) or `sea_level_rise_table` (years and metres), not both".into(),
+        }),
+        (None, None) => Ok(SeaLevelRise::None),
+        (Some(r), None) => Ok(SeaLevelRise::Linear {
+            rise_m: num("sea_level_rise_m", Some(r), 0.0, 0.0, MAX_SEA_LEVEL_RISE_M, false, unit)?,
+            life_years: life_years as f64,
+        }),
+        (None, Some(rows)) => {
+            let key = "[design] sea_level_rise_table";
+            if rows.is_empty() || rows.len() > 1000 {
+                return Err(ScenarioError::range(key, format!("{} rows", rows.len()), "must list 1 to 1000 [years, m] pairs"));
+            }
+            let mut points = Vec::with_capacity(rows.len());
+            for (i, row) in rows.iter().enumerate() {
+                let &[y, r] = row.as_slice() else {
+                    return Err(ScenarioError::range(
+                        &format!("{key}[{i}]"),
+                        format!("{row:?}"),
+                        "must be a pair [years from the start of the life, rise m]",
+                    ));
+                };
+                let y = number(&format!("{key}[{i}][0]"), y, 0.0, 1000.0, false, "years from the start of the life")?;
+                let r = number(&format!("{key}[{i}][1]"), r, 0.0, MAX_SEA_LEVEL_RISE_M, false, unit)?;
+                if let Some(&(y0, _)) = points.last() {
+                    if y <= y0 {
+                        return Err(ScenarioError::range(
+                            &format!("{key}[{i}][0]"),
+                            y,
+                            format!("must be larger than the year before it ({y0}): the years must increase"),
+                        ));
+                    }
+                }
+                points.push((y, r));
+            }
+            Ok(SeaLevelRise::Table { points })
+        }
     }
 }
 
