@@ -25,6 +25,7 @@ fn bench(c: &mut Criterion) {
         period_s: 10.0,
         waves: 720,
         tide_m: 1.0,
+        angle_rad: 0.0,
         force_factor: 1.0,
         impact_factor: 1.0,
         friction_factor: 1.0,

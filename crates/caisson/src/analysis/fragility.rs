@@ -350,6 +350,7 @@ impl FragilityParams {
             period_s: self.period_s,
             waves: self.waves_per_storm(),
             tide_m: 0.0,
+            angle_rad: 0.0,
             force_factor: 1.0,
             impact_factor: 1.0,
             friction_factor: 1.0,

@@ -356,6 +356,8 @@ pub struct StormInput {
     pub waves: usize,
     /// Water level above still water (the tide and the sea-level rise), m.
     pub tide_m: f64,
+    /// The waves' angle to the breakwater's normal, rad (Goda's β before the 15° rule).
+    pub angle_rad: f64,
     /// Multiplier on every wave force (but the impulsive component's).
     pub force_factor: f64,
     /// Multiplier on the impulsive component (impact force and uplift), = `force_factor` unless
@@ -571,6 +573,7 @@ fn storm_from(
     model.site.depth_at_wall_m += s.tide_m;
     model.site.base_depth_m += s.tide_m;
     model.site.crest_freeboard_m = (model.site.crest_freeboard_m - s.tide_m).max(0.0);
+    model.options.angle_rad = s.angle_rad;
     let mut caisson = st.structure.caisson;
     caisson.base_depth_m += s.tide_m;
     caisson.weight_in_water_n -= model.site.rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * s.tide_m;
@@ -751,6 +754,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let h0 = (p.storm_height_m(u) * e.h0).max(1e-3);
             let period_s = p.period_coefficient * h0.powf(p.period_exponent);
             let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
+            let angle_rad = p.climate.direction.draw_rad(&mut rng);
             let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
             let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
             let storm = StormInput {
@@ -759,6 +763,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
                 period_s,
                 waves: (duration_s / period_s).round().max(1.0) as usize,
                 tide_m,
+                angle_rad,
                 force_factor: e.force,
                 impact_factor: e.impact,
                 friction_factor: e.friction,

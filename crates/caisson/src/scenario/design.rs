@@ -6,8 +6,8 @@
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
 use crate::analysis::climate::{
-    Climate, SeaLevelRise, StormDuration, StormModel, MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV,
-    MAX_STORM_RATE_PER_YEAR,
+    Climate, SeaLevelRise, StormDuration, StormModel, WaveDirection, MAX_ANGLE_SPREAD_DEG, MAX_MEAN_ANGLE_DEG,
+    MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR,
 };
 use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
 use serde::Deserialize;
@@ -68,6 +68,12 @@ pub struct DesignTable {
     pub sea_level_rise_m: Option<f64>,
     /// The rise as a table of [years from the start of the life, m] points.
     pub sea_level_rise_table: Option<Vec<Vec<f64>>>,
+    /// `"head-on"` (default), `"normal"` or `"uniform"`: the storms' angle to the normal.
+    pub wave_direction: Option<String>,
+    /// The mean angle to the breakwater's normal, degrees.
+    pub wave_direction_mean_deg: Option<f64>,
+    /// The standard deviation (normal) or half-width (uniform) of the angle, degrees.
+    pub wave_direction_spread_deg: Option<f64>,
     /// `"fixed"` (default) or `"lognormal"` (mean `storm_duration_h`).
     pub storm_duration_model: Option<String>,
     /// Lognormal durations: the coefficient of variation.
@@ -176,6 +182,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         storms: storm_model(t, &storms)?,
         duration: duration_model(t)?,
         sea_level: sea_level(t, life_years)?,
+        direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
     };
     let truncated = t.error_truncated.unwrap_or(true);
     if !truncated && t.error_truncation_sigmas.is_some() {
@@ -394,6 +401,61 @@ fn sea_level(t: &DesignTable, life_years: usize) -> R<SeaLevelRise> {
             }
             Ok(SeaLevelRise::Table { points })
         }
+    }
+}
+
+/// The storms' wave direction of `table` (`[design]` or `[fragility]`): `wave_direction` and its
+/// mean and spread (docs/design.md, "Climate").
+pub(super) fn direction(
+    table: &str,
+    kind: &Option<String>,
+    mean: Option<f64>,
+    spread: Option<f64>,
+) -> R<WaveDirection> {
+    let deg = std::f64::consts::PI / 180.0;
+    let mean_rad = || -> R<f64> {
+        Ok(mean.map_or(Ok(0.0), |v| {
+            number(
+                &format!("{table} wave_direction_mean_deg"),
+                v,
+                -MAX_MEAN_ANGLE_DEG,
+                MAX_MEAN_ANGLE_DEG,
+                false,
+                "degrees from the breakwater's normal",
+            )
+        })? * deg)
+    };
+    let spread_rad = |what: &str| -> R<f64> {
+        let key = format!("{table} wave_direction_spread_deg");
+        let v = waves::required(&key, spread, what)?;
+        Ok(number(&key, v, 0.0, MAX_ANGLE_SPREAD_DEG, true, "degrees")? * deg)
+    };
+    match kind.as_deref().unwrap_or("head-on") {
+        "head-on" => {
+            for (key, given) in
+                [("wave_direction_mean_deg", mean.is_some()), ("wave_direction_spread_deg", spread.is_some())]
+            {
+                if given {
+                    return Err(ScenarioError::Conflict {
+                        message: format!("`{table} {key}` is not used with wave_direction = \"head-on\" (the default); remove it, or set wave_direction = \"normal\" or \"uniform\""),
+                    });
+                }
+            }
+            Ok(WaveDirection::HeadOn)
+        }
+        "normal" => Ok(WaveDirection::Normal {
+            mean_rad: mean_rad()?,
+            sd_rad: spread_rad("the standard deviation of the angle, degrees (e.g. 15)")?,
+        }),
+        "uniform" => Ok(WaveDirection::Uniform {
+            mean_rad: mean_rad()?,
+            half_width_rad: spread_rad("the half-width of the angles about the mean, degrees (e.g. 20)")?,
+        }),
+        other => Err(ScenarioError::range(
+            &format!("{table} wave_direction"),
+            format!("\"{other}\""),
+            "must be \"head-on\", \"normal\" or \"uniform\"",
+        )),
     }
 }
 
