@@ -49,6 +49,7 @@
 //! 0.90 kB on `table5_triangle.toml`, 0.84 kB on `fifteen_waves.toml`).
 
 use super::campaign::ConditionSetup;
+use super::climate::StormModel;
 use super::fragility::FragilityParams;
 use super::lifetime::{simulate_life, simulate_storm, DesignParams, LifeParams, StormCase};
 use super::train::{TrainCase, WaveSetup};
@@ -522,9 +523,13 @@ pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> Work
         steps_from,
         simulated_share: share,
         basis: format!(
-            "{} lives × {} years × about {per_storm:.0} waves per storm, {:.3} % of them simulated (screen pilot)",
+            "{} lives × {} years{} × about {per_storm:.0} waves per storm, {:.3} % of them simulated (screen pilot)",
             p.lives,
             life.life_years,
+            match life.climate.storms {
+                StormModel::AnnualMaxima => String::new(),
+                StormModel::PeaksOverThreshold { rate_per_year, .. } => format!(" × {rate_per_year} storms a year"),
+            },
             100.0 * share
         ),
     }

@@ -180,7 +180,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let life_years = count("life_years", t.life_years, 50, 1000)?;
     let climate = Climate {
         storms: storm_model(t, &storms)?,
-        duration: duration_model(t)?,
+        duration: duration_model("[design]", &t.storm_duration_model, t.storm_duration_cov)?,
         sea_level: sea_level(t, life_years)?,
         direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
     };
@@ -332,28 +332,23 @@ fn storm_model(t: &DesignTable, dist: &StormDistribution) -> R<StormModel> {
     }
 }
 
-/// `[design] storm_duration_model` and its COV (docs/design.md, "Climate").
-fn duration_model(t: &DesignTable) -> R<StormDuration> {
-    match t.storm_duration_model.as_deref().unwrap_or("fixed") {
-        "fixed" => match t.storm_duration_cov {
+/// The storm durations of `table` (`[design]` or `[fragility]`): `storm_duration_model` and its
+/// COV (docs/design.md, "Climate").
+pub(super) fn duration_model(table: &str, model: &Option<String>, cov: Option<f64>) -> R<StormDuration> {
+    match model.as_deref().unwrap_or("fixed") {
+        "fixed" => match cov {
             Some(_) => Err(ScenarioError::Conflict {
-                message: "`[design] storm_duration_cov` is used only with storm_duration_model = \"lognormal\"; remove it, or set that model".into(),
+                message: format!("`{table} storm_duration_cov` is used only with storm_duration_model = \"lognormal\"; remove it, or set that model"),
             }),
             None => Ok(StormDuration::Fixed),
         },
-        "lognormal" => Ok(StormDuration::Lognormal {
-            cov: num(
-                "storm_duration_cov",
-                Some(required("storm_duration_cov", t.storm_duration_cov, "the coefficient of variation of the durations (e.g. 0.5)")?),
-                0.0,
-                0.0,
-                MAX_STORM_DURATION_COV,
-                true,
-                "fraction",
-            )?,
-        }),
+        "lognormal" => {
+            let key = format!("{table} storm_duration_cov");
+            let v = waves::required(&key, cov, "the coefficient of variation of the durations (e.g. 0.5)")?;
+            Ok(StormDuration::Lognormal { cov: number(&key, v, 0.0, MAX_STORM_DURATION_COV, true, "fraction")? })
+        }
         other => Err(ScenarioError::range(
-            "[design] storm_duration_model",
+            &format!("{table} storm_duration_model"),
             format!("\"{other}\""),
             "must be \"fixed\" or \"lognormal\"",
         )),
