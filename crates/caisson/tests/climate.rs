@@ -255,3 +255,32 @@ fn the_storm_angle_acts_through_goda_beta() {
     assert!(oblique.rigid_block_sliding_m < head_on.rigid_block_sliding_m);
     assert!(oblique.rigid_block_sliding_m > 1e-3, "the impact, unreduced, still slides the block: {oblique:?}");
 }
+
+/// The work estimate of the climate example (peaks over threshold, 3 storms a year; oblique
+/// waves; the sea rising) counts the storms a year: its waves against those of the first 100
+/// lives (3 % allowed, as for the design example, tests/work.rs), its screened share against
+/// theirs within a factor of 3.
+#[test]
+fn the_work_estimate_counts_the_storms_of_a_pot_climate() {
+    let sc = support::example("design_climate.toml");
+    let d = sc.design.clone().unwrap();
+    let case = sc.storm_case(true).unwrap();
+    let e = caisson::analysis::work::design(&case, &d, sc.waves.as_ref().unwrap());
+    let lives: Vec<usize> = (0..100).collect();
+    let r = caisson::analysis::lifetime::run_lives(&case, &d.life, d.seed, &lives, &|_, _| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .unwrap();
+    let (waves, simulated) = r.iter().fold((0u64, 0u64), |(w, s), (_, o)| (w + o.waves, s + o.simulated_waves));
+    let real_per_life = waves as f64 / 100.0;
+    let per_life = e.waves / d.lives as f64;
+    assert!((per_life / real_per_life - 1.0).abs() < 0.03, "{per_life} waves per life, ran {real_per_life}");
+    let ratio = e.simulated_share / (simulated as f64 / waves as f64);
+    assert!(
+        (1.0 / 3.0..3.0).contains(&ratio),
+        "share {} against {}",
+        e.simulated_share,
+        simulated as f64 / waves as f64
+    );
+    assert!(e.basis.contains("× 3 storms a year"), "{}", e.basis);
+}
