@@ -284,3 +284,26 @@ fn the_work_estimate_counts_the_storms_of_a_pot_climate() {
     );
     assert!(e.basis.contains("× 3 storms a year"), "{}", e.basis);
 }
+
+/// The defaults leave the checkpoint fingerprint of earlier runs as it was: the serialized life
+/// model of a file without climate keys has none of the new fields (and the truncation is the
+/// number it was), one with them has them; the fingerprints differ.
+#[test]
+fn default_climate_leaves_the_fingerprint_unchanged() {
+    let sc = support::example("design_breakwater.toml");
+    let d = sc.design.clone().unwrap();
+    let json = serde_json::to_value(&d.life).unwrap();
+    for key in ["climate"] {
+        assert!(json.get(key).is_none(), "{key} in {json}");
+    }
+    let errors = &json["errors"];
+    assert!(errors.get("impact_force").is_none() && errors.get("scope").is_none(), "{errors}");
+    assert_eq!(errors["wave_force"]["truncation_sigmas"], 2.0);
+    let climate = support::example("design_climate.toml");
+    let c = climate.design.clone().unwrap();
+    assert!(serde_json::to_value(&c.life).unwrap().get("climate").is_some());
+    let fp = |s: &Scenario, p: &caisson::analysis::lifetime::DesignParams| {
+        caisson::report::design::design_fingerprint(&s.storm_case(true).unwrap(), p)
+    };
+    assert_ne!(fp(&sc, &d), fp(&climate, &c));
+}
