@@ -172,7 +172,7 @@ impl ErrorModel {
     fn draw(&self, rng: &mut LoadRng) -> f64 {
         let z = loop {
             let z: f64 = rng.sample(StandardNormal);
-            if self.truncation_sigmas.map_or(true, |k| z.abs() <= k) {
+            if self.truncation_sigmas.is_none_or(|k| z.abs() <= k) {
                 break z;
             }
         };
