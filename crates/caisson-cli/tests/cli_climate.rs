@@ -133,7 +133,7 @@ fn a_climate_is_recorded_in_the_report() {
     assert_eq!(c["impact_force_error"]["cov"], 0.2);
     let text = caisson().args(["design", f.to_str().unwrap()]).assert().success().get_output().stdout.clone();
     let text = String::from_utf8_lossy(&text);
-    assert!(text.contains("climate: peaks over 7.5 m, 1.5 storms a year (Poisson)"), "{text}");
+    assert!(text.contains("climate: peaks over threshold, 1.5 storms a year (Poisson) above H0 = 7.5 m"), "{text}");
     assert!(
         text.contains("sea level rising 0.3 m over 5 years") && text.contains("errors drawn once per life"),
         "{text}"

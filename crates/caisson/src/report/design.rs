@@ -205,7 +205,9 @@ impl ClimateChoices {
     pub fn describe(&self) -> String {
         let mut parts = Vec::new();
         if let StormModel::PeaksOverThreshold { rate_per_year, threshold_m } = self.storms {
-            parts.push(format!("peaks over {threshold_m} m, {rate_per_year} storms a year (Poisson)"));
+            parts.push(format!(
+                "peaks over threshold, {rate_per_year} storms a year (Poisson) above H0 = {threshold_m} m"
+            ));
         }
         parts.extend(duration_text(&self.storm_duration));
         parts.extend(direction_text(&self.wave_direction));
