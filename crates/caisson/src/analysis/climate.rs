@@ -3,13 +3,14 @@
 //! errors are drawn and how the still-water level rises over the life (docs/design.md, "Climate").
 //! Every default is today's model ([`Climate::default`]: one storm a year, a fixed duration,
 //! head-on waves, errors per storm, no rise), and a default climate draws no number: a run with
-//! the defaults gives the results of results version 10 bit for bit.
+//! the defaults gives the results of results version 11 bit for bit.
 //!
 //! **Storms** ([`StormModel`]). Annual maxima (the default): one storm a year, its deep-water H0 the
 //! annual maximum of `[design] storm_distribution`. Peaks over threshold (the partial-duration
 //! series of extreme-value analysis: the storms above a threshold, fitted by an extreme-value
-//! distribution, their yearly number Poisson; Goda 2000, ch. 11; Coles 2001, ch. 4): the number of storms in a year is Poisson with mean λ (`storm_rate_per_year`),
-//! P(n) = e^−λ λ^n / n!, drawn by inversion of one uniform; each storm's H0 is an exceedance of the
+//! distribution, their yearly number Poisson; Goda 2000, ch. 11; Coles 2001, ch. 4): the number
+//! of storms in a year is Poisson with mean λ (`storm_rate_per_year`), P(n) = e^−λ λ^n / n!,
+//! drawn by inversion of one uniform; each storm's H0 is an exceedance of the
 //! threshold u (`storm_threshold_m`) from the fitted distribution F: H0 = F⁻¹(F(u) + U (1 − F(u))),
 //! the distribution of H given H > u.
 //!
@@ -17,8 +18,9 @@
 //! `storm_duration_h`. Lognormal: the duration D of each storm is lognormal with mean D̄
 //! (`storm_duration_h`) and coefficient of variation c (`storm_duration_cov`):
 //! ln D ~ N(μ, σ²), σ² = ln(1 + c²), μ = ln D̄ − σ²/2, so E[D] = D̄ and Var D = (c D̄)²; D is
-//! limited to [`MAX_STORM_DURATION_S`] (72 h, the largest fixed duration; at c ≤ 1 and D̄ ≤ 12 h
-//! the limit moves the mean by less than 10⁻⁴). N = round(D / T1/3) waves as before.
+//! limited to [`MAX_STORM_DURATION_S`] (72 h, the largest fixed duration; at c ≤ 0.5 and
+//! D̄ ≤ 6 h the limit moves the mean by less than 10⁻⁶ of it, at c = 1 and D̄ = 12 h by 1 %).
+//! N = round(D / T1/3) waves as before.
 //!
 //! **Sea level** ([`SeaLevelRise`]). The still-water level rises over the life by r(t), t the time
 //! of the storm in years from the start of the life (the storms of year y at t = y + ½, the middle
