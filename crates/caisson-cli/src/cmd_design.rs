@@ -813,6 +813,9 @@ fn design_text(r: &DesignReport) -> String {
         100.0 * r.screened_waves as f64 / r.waves.max(1) as f64,
         if r.screen { "" } else { " (screen off)" }
     );
+    if let Some(c) = &r.climate {
+        let _ = writeln!(t, "{}", c.describe());
+    }
     let _ = writeln!(
         t,
         "sliding S: shoreward +; |S| its magnitude at the end of the life; failure: moved beyond {:.3} m from its place or rotated beyond {} rad",

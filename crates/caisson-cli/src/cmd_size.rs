@@ -243,6 +243,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
         (design.failure_limit_m(c.width_m), checks.map(|sf| ChecksAtWidth::new(c.width_m, &sf)))
     };
     let mut report = SizeReport::new(&p, design.life.life_years, design.seed, &sizing, goda, &extra);
+    report.climate = caisson::report::design::ClimateChoices::of(&design.life);
     report.warnings = structure_warnings(sc.structure());
     report.warnings.extend(range_warnings(&report));
     report.warnings.extend(goda_warnings(&report));
@@ -458,6 +459,9 @@ fn size_text(r: &SizeReport) -> String {
         r.lives_per_candidate,
         r.seed
     );
+    if let Some(c) = &r.climate {
+        let _ = writeln!(t, "{}", c.describe());
+    }
     let _ = writeln!(t);
     let _ = writeln!(t, "required width, dynamic model   {}", required_text(&r.dynamic));
     let _ = writeln!(t, "required width, rigid block     {}", required_text(&r.rigid_block));

@@ -25,7 +25,9 @@ fn bench(c: &mut Criterion) {
         period_s: 10.0,
         waves: 720,
         tide_m: 1.0,
+        angle_rad: 0.0,
         force_factor: 1.0,
+        impact_factor: 1.0,
         friction_factor: 1.0,
     };
     let mut g = c.benchmark_group("mild_storm_720_waves");

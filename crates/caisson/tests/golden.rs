@@ -127,5 +127,5 @@ fn every_example_matches_its_golden_results() {
         assert!(compare(&name, &got, &want) > 0, "{name}: nothing compared");
         checked += 1;
     }
-    assert_eq!(checked, 13, "examples checked: {examples:?}");
+    assert_eq!(checked, 14, "examples checked: {examples:?}");
 }

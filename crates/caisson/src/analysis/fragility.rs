@@ -32,6 +32,12 @@
 //! rayon and are collected in order, so the results do not depend on the number of threads. The
 //! library does not print: `progress` is called once per storm.
 //!
+//! **Climate** (`[fragility] storm_duration_model`, `wave_direction`: the keys of `[design]`,
+//! [`super::climate`]). By default every storm lasts `storm_duration_h` and meets the breakwater
+//! head-on. With lognormal durations or a distribution of directions, storm j draws its duration
+//! and then its angle from the last 64 words of its part of the stream (from (j + 1) · 2^40 − 64),
+//! so its waves are drawn as before; N = round(D / T1/3).
+//!
 //! **Counts.** k_i(s) = #{storms at H_i with |S| > s} (strictly greater), S the storm's net
 //! sliding (shoreward +; a rocking caisson can end a storm seaward, docs/design.md), for the
 //! dynamic model and for the rigid block (Shimosako model; S ≥ 0) separately; P̂_i = k_i / n_i.
@@ -73,6 +79,7 @@
 //! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
 //! same relative accuracy.
 
+use super::climate::{StormDuration, WaveDirection};
 use super::conventional::DesignWave;
 use super::lifetime::{simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
@@ -339,6 +346,10 @@ pub struct FragilityParams {
     /// A storm that rotates the caisson beyond this counts as exceeding every limit (module
     /// docs, "Counts"), rad.
     pub failure_rotation_rad: f64,
+    /// The storms' durations (fixed: `storm_duration_s`; or a distribution of that mean) and
+    /// wave directions (module docs, "Climate").
+    pub duration: StormDuration,
+    pub direction: WaveDirection,
 }
 
 impl FragilityParams {
@@ -356,11 +367,31 @@ impl FragilityParams {
             period_s: self.period_s,
             waves: self.waves_per_storm(),
             tide_m: 0.0,
+            angle_rad: 0.0,
             force_factor: 1.0,
+            impact_factor: 1.0,
             friction_factor: 1.0,
         }
     }
+
+    /// Storm `storm` at height `h13_m`: [`Self::storm_input`] with its own duration and angle
+    /// when they are drawn (module docs, "Climate").
+    pub fn storm_input_of(&self, model: &WaveLoadModel, h13_m: f64, storm: usize) -> StormInput {
+        let mut s = self.storm_input(model, h13_m);
+        if self.duration != StormDuration::Fixed || self.direction != WaveDirection::HeadOn {
+            let mut rng = storm_rng(self.seed, h13_m, storm);
+            rng.set_word_pos((((storm as u128) + 1) << STORM_WORDS_LOG2) - STORM_CLIMATE_WORDS);
+            let duration_s = self.duration.draw_s(self.storm_duration_s, &mut rng);
+            s.waves = (duration_s / self.period_s).round().max(1.0) as usize;
+            s.angle_rad = self.direction.draw_rad(&mut rng);
+        }
+        s
+    }
 }
+
+/// The words at the end of each storm's part of its stream that its duration and angle are
+/// drawn from (module docs, "Climate").
+const STORM_CLIMATE_WORDS: u128 = 64;
 
 /// The storms of one height.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -462,11 +493,8 @@ pub fn run_fragility(
             let (level, storm) = (job / storms, job % storms);
             let h = p.heights_m[level];
             let mut rng = storm_rng(p.seed, h, storm);
-            let out = simulate_storm(st, &p.storm_input(st.model, h), &mut rng).map_err(|source| StormFailed {
-                h13_m: h,
-                storm,
-                source,
-            });
+            let out = simulate_storm(st, &p.storm_input_of(st.model, h, storm), &mut rng)
+                .map_err(|source| StormFailed { h13_m: h, storm, source });
             progress();
             out
         })
@@ -671,6 +699,36 @@ mod tests {
         );
     }
 
+    /// Lognormal durations (mean 2 h, COV 0.5) and uniform angles (20° ± 10°) over 4000 storms
+    /// of one height: the waves per storm have the mean 7200 s / 11 s = 654.5 (within 5 standard
+    /// errors, 327/√4000 = 5.2) and the angles the mean 20° (5 standard errors of 5.77°/√4000);
+    /// each storm's own angle and duration, and the same storm the same.
+    #[test]
+    fn storms_draw_their_duration_and_angle() {
+        let p = FragilityParams {
+            heights_m: vec![4.0],
+            storms: 4000,
+            limits_m: vec![0.1],
+            storm_duration_s: 7200.0,
+            period_s: 11.0,
+            seed: 1,
+            failure_rotation_rad: 0.01,
+            duration: StormDuration::Lognormal { cov: 0.5 },
+            direction: WaveDirection::Uniform { mean_rad: 20f64.to_radians(), half_width_rad: 10f64.to_radians() },
+        };
+        let sc = example();
+        let model = sc.storm_case(true).unwrap().model;
+        let s: Vec<StormInput> = (0..p.storms).map(|j| p.storm_input_of(model, 4.0, j)).collect();
+        let n = s.len() as f64;
+        let waves = s.iter().map(|x| x.waves as f64).sum::<f64>() / n;
+        let angle = s.iter().map(|x| x.angle_rad.to_degrees()).sum::<f64>() / n;
+        assert!((waves - 654.5).abs() < 5.0 * 327.0 / n.sqrt(), "{waves}");
+        assert!((angle - 20.0).abs() < 5.0 * 5.77 / n.sqrt(), "{angle}");
+        assert!(s.iter().all(|x| (10.0 - 1e-9..=30.0 + 1e-9).contains(&x.angle_rad.to_degrees())));
+        assert_ne!(s[0].waves, s[1].waves);
+        assert_eq!(p.storm_input_of(model, 4.0, 1), s[1]);
+    }
+
     #[test]
     fn storms_follow_the_grid() {
         let p = FragilityParams {
@@ -681,9 +739,12 @@ mod tests {
             period_s: 11.0,
             seed: 1,
             failure_rotation_rad: 0.01,
+            duration: StormDuration::Fixed,
+            direction: WaveDirection::HeadOn,
         };
         let sc = example();
         let model = sc.storm_case(true).unwrap().model;
+        assert_eq!(p.storm_input_of(model, 4.0, 2), p.storm_input(model, 4.0));
         let s = p.storm_input(model, 4.0);
         assert_eq!((s.h13_m, s.waves, s.tide_m, s.force_factor, s.friction_factor), (4.0, 655, 0.0, 1.0, 1.0));
         // H_max is at most 1.8 H1/3 = 7.2 m; at h = 20 m and T = 11 s Goda's breaking-limited

@@ -9,6 +9,7 @@
 
 pub mod campaign;
 pub mod checks;
+pub mod climate;
 pub mod closed_form;
 pub mod conventional;
 pub mod envelope;

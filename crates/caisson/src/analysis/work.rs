@@ -49,6 +49,7 @@
 //! 0.90 kB on `table5_triangle.toml`, 0.84 kB on `fifteen_waves.toml`).
 
 use super::campaign::ConditionSetup;
+use super::climate::StormModel;
 use super::fragility::FragilityParams;
 use super::lifetime::{simulate_life, simulate_storm, DesignParams, LifeParams, StormCase};
 use super::train::{TrainCase, WaveSetup};
@@ -503,10 +504,10 @@ const PILOT_WAVES_PER_STORM: f64 = 128.0;
 pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> WorkEstimate {
     let life = &p.life;
     // Mean waves per storm over the storm distribution (its 64 quantiles), T = a H0^b.
-    let period = |q: f64| life.period_coefficient * life.storms.quantile_m(q).max(1e-3).powf(life.period_exponent);
+    let period = |q: f64| life.period_coefficient * life.storm_height_m(q).max(1e-3).powf(life.period_exponent);
     let per_storm: f64 =
         (0..64).map(|k| (life.storm_duration_s / period((k as f64 + 0.5) / 64.0)).round().max(1.0)).sum::<f64>() / 64.0;
-    let storms = p.lives as f64 * life.life_years as f64;
+    let storms = p.lives as f64 * life.life_years as f64 * life.climate.storms.mean_storms_per_year();
     let waves_drawn = storms * per_storm;
     let share = if case.screen { design_screen_share(case, p) } else { 1.0 };
     let (h, t) = design_wave(waves);
@@ -522,9 +523,13 @@ pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> Work
         steps_from,
         simulated_share: share,
         basis: format!(
-            "{} lives × {} years × about {per_storm:.0} waves per storm, {:.3} % of them simulated (screen pilot)",
+            "{} lives × {} years{} × about {per_storm:.0} waves per storm, {:.3} % of them simulated (screen pilot)",
             p.lives,
             life.life_years,
+            match life.climate.storms {
+                StormModel::AnnualMaxima => String::new(),
+                StormModel::PeaksOverThreshold { rate_per_year, .. } => format!(" × {rate_per_year} storms a year"),
+            },
             100.0 * share
         ),
     }
@@ -536,12 +541,12 @@ fn design_screen_share(case: &StormCase<'_>, p: &DesignParams) -> f64 {
     let coarse = coarse(case.structure);
     let pilot_case = StormCase { structure: &coarse, ..*case };
     let life = &p.life;
-    let t_median = life.period_coefficient * life.storms.quantile_m(0.5).max(1e-3).powf(life.period_exponent);
+    let t_median = life.period_coefficient * life.storm_height_m(0.5).max(1e-3).powf(life.period_exponent);
     let storms = life.life_years.min(PILOT_STORMS);
     let pilot = LifeParams {
         life_years: storms,
         storm_duration_s: (PILOT_WAVES_PER_STORM * t_median).min(life.storm_duration_s),
-        ..*life
+        ..life.clone()
     };
     let (mut waves, mut simulated) = (0u64, 0u64);
     for i in 0..PILOT_LIVES {

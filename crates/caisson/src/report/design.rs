@@ -2,9 +2,10 @@
 
 use super::{fingerprint, Provenance};
 use crate::analysis::checks::Warning;
+use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection};
 use crate::analysis::lifetime::{
-    capped_statistics, life_statistics, DesignParams, FailureLimits, LifeParams, LifeStatistics, StormCase,
-    StormOutcome, WaveDraws,
+    capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, LifeParams,
+    LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
@@ -167,6 +168,95 @@ pub struct DynamicStatistics {
     pub large_rotation_lives: usize,
 }
 
+/// The climate choices of a run that differ from today's model (docs/design.md, "Climate"): the
+/// `climate` object of `design.json` and `size.json`, absent when every choice is the default.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ClimateChoices {
+    pub storms: StormModel,
+    pub storm_duration: StormDuration,
+    pub wave_direction: WaveDirection,
+    pub sea_level_rise: SeaLevelRise,
+    pub error_scope: ErrorScope,
+    pub errors_truncated: bool,
+    /// The impulsive component's own error (bias, cov); absent: the wave force's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impact_force_error: Option<ErrorModel>,
+}
+
+impl ClimateChoices {
+    /// The choices of `life`, or `None` if all are today's.
+    pub fn of(life: &LifeParams) -> Option<Self> {
+        let e = &life.errors;
+        let truncated = e.wave_force.truncation_sigmas.is_some();
+        let default =
+            life.climate.is_default() && e.scope == ErrorScope::Storm && truncated && e.impact_force.is_none();
+        (!default).then(|| ClimateChoices {
+            storms: life.climate.storms,
+            storm_duration: life.climate.duration,
+            wave_direction: life.climate.direction,
+            sea_level_rise: life.climate.sea_level.clone(),
+            error_scope: e.scope,
+            errors_truncated: truncated,
+            impact_force_error: e.impact_force,
+        })
+    }
+
+    /// One line for a run's text output: each choice that is not today's.
+    pub fn describe(&self) -> String {
+        let mut parts = Vec::new();
+        if let StormModel::PeaksOverThreshold { rate_per_year, threshold_m } = self.storms {
+            parts.push(format!(
+                "peaks over threshold, {rate_per_year} storms a year (Poisson) above H0 = {threshold_m} m"
+            ));
+        }
+        parts.extend(duration_text(&self.storm_duration));
+        parts.extend(direction_text(&self.wave_direction));
+        match &self.sea_level_rise {
+            SeaLevelRise::None => {}
+            SeaLevelRise::Linear { rise_m, life_years } => {
+                parts.push(format!("sea level rising {rise_m} m over {life_years} years"))
+            }
+            SeaLevelRise::Table { points } => parts.push(format!(
+                "sea level rising by a table of {} points (to {} m)",
+                points.len(),
+                points.iter().map(|p| p.1).fold(0.0, f64::max)
+            )),
+        }
+        if self.error_scope == ErrorScope::Life {
+            parts.push("errors drawn once per life".into());
+        }
+        if !self.errors_truncated {
+            parts.push("errors not truncated".into());
+        }
+        if let Some(m) = self.impact_force_error {
+            parts.push(format!("impact error bias {} COV {}", m.bias, m.cov));
+        }
+        format!("climate: {}", parts.join("; "))
+    }
+}
+
+/// The storm durations in words, if drawn.
+pub fn duration_text(d: &StormDuration) -> Option<String> {
+    match d {
+        StormDuration::Fixed => None,
+        StormDuration::Lognormal { cov } => Some(format!("lognormal storm durations (COV {cov})")),
+    }
+}
+
+/// The wave directions in words, if not head-on.
+pub fn direction_text(d: &WaveDirection) -> Option<String> {
+    let deg = 180.0 / std::f64::consts::PI;
+    match *d {
+        WaveDirection::HeadOn => None,
+        WaveDirection::Normal { mean_rad, sd_rad } => {
+            Some(format!("wave angle normal {:.1}° ± {:.1}° (σ)", mean_rad * deg, sd_rad * deg))
+        }
+        WaveDirection::Uniform { mean_rad, half_width_rad } => {
+            Some(format!("wave angle uniform {:.1}° ± {:.1}°", mean_rad * deg, half_width_rad * deg))
+        }
+    }
+}
+
 /// The results of a design run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DesignReport {
@@ -183,6 +273,9 @@ pub struct DesignReport {
     pub failure_rotation_rad: f64,
     /// Whether a life ends at the wave that fails it (`[design] continue_after_failure` false).
     pub lives_end_at_failure: bool,
+    /// The climate choices that are not today's model; absent if none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub climate: Option<ClimateChoices>,
     pub dynamic: DynamicStatistics,
     pub rigid_block: ModelStatistics,
     pub rigid_block_mu: f64,
@@ -218,6 +311,7 @@ impl DesignReport {
             failure_sliding_m,
             failure_rotation_rad: p.failure_rotation_rad,
             lives_end_at_failure: !p.continue_after_failure,
+            climate: ClimateChoices::of(&p.life),
             dynamic: DynamicStatistics {
                 sliding: ModelStatistics::new(&dynamic, &modes, failure_sliding_m, &p.thresholds_m, years),
                 expected_net_sliding_m: mean(|l| l.sliding_m),

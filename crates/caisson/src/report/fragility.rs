@@ -2,6 +2,7 @@
 
 use super::Provenance;
 use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::climate::{StormDuration, WaveDirection};
 use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
 use crate::analysis::train::WaveSetup;
@@ -143,6 +144,13 @@ pub struct FragilityReport {
     pub scenario: String,
     pub period_s: f64,
     pub storm_duration_h: f64,
+    /// The storms' durations when drawn (storm_duration_h their mean; waves_per_storm that of
+    /// the mean); absent when fixed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub storm_duration: Option<StormDuration>,
+    /// The storms' wave directions when not head-on; absent when head-on.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wave_direction: Option<WaveDirection>,
     pub waves_per_storm: usize,
     pub hmax_ratio: f64,
     pub storms: usize,
@@ -167,6 +175,8 @@ impl FragilityReport {
             scenario: name.to_string(),
             period_s: p.period_s,
             storm_duration_h: p.storm_duration_s / 3600.0,
+            storm_duration: (p.duration != StormDuration::Fixed).then_some(p.duration),
+            wave_direction: (p.direction != WaveDirection::HeadOn).then_some(p.direction),
             waves_per_storm: p.waves_per_storm(),
             hmax_ratio: HMAX_RATIO,
             storms: p.storms,

@@ -63,6 +63,10 @@ pub struct SizeReport {
     pub lives_per_candidate: usize,
     pub life_years: usize,
     pub seed: u64,
+    /// The climate choices of `[design]` that are not today's model; absent if none (set by the
+    /// caller: [`super::design::ClimateChoices::of`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub climate: Option<super::design::ClimateChoices>,
     pub tolerance_m: f64,
     /// The required width by the dynamic model and by the rigid block (Shimosako model).
     pub dynamic: Required,
@@ -113,6 +117,7 @@ impl SizeReport {
             lives_per_candidate: p.lives,
             life_years,
             seed,
+            climate: None,
             tolerance_m: p.tolerance_m,
             dynamic: sizing.dynamic,
             rigid_block: sizing.rigid_block,

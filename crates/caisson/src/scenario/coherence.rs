@@ -94,8 +94,21 @@ pub(super) fn check_waves(caisson: &Caisson, waves: &WaveSetup) -> R<()> {
 /// A design caisson keeps a positive weight in water at the highest tide (module docs).
 pub(super) fn check_floating(caisson: &Caisson, rho_w: f64, design: &DesignParams) -> R<()> {
     let r = design.life.tidal_range_m;
-    let lost = rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * r;
+    let rise = design.life.climate.sea_level.max_rise_m(design.life.life_years);
+    let lost = rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * (r + rise);
     let w = caisson.weight_in_water_n;
+    if rise > 0.0 && w - lost <= 0.0 {
+        return Err(ScenarioError::range(
+            "[caisson] weight_in_water_kn",
+            format!("{:.4}", w / 1e3),
+            format!(
+                "must exceed the {:.4} kN the caisson loses at the highest water ([design] tidal_range_m = {r} m and a sea-level rise of up to {rise:.4} m raise the water by ρ_w g B l (R + rise) over a base of {} m × {} m), or it floats: lower the tidal range or the rise, or check width_m, length_m and the weight (the total over length_m)",
+                lost / 1e3,
+                caisson.width_m,
+                caisson.length_m
+            ),
+        ));
+    }
     if w - lost <= 0.0 {
         return Err(ScenarioError::range(
             "[caisson] weight_in_water_kn",

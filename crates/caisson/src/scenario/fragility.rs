@@ -34,6 +34,12 @@ pub struct FragilityTable {
     /// A storm that rotates the caisson beyond this counts as exceeding every limit, rad.
     /// Default 0.01 (as `[design] failure_rotation_rad`).
     pub failure_rotation_rad: Option<f64>,
+    /// The climate keys of `[design]` that apply to a storm (docs/design.md, "Climate").
+    pub storm_duration_model: Option<String>,
+    pub storm_duration_cov: Option<f64>,
+    pub wave_direction: Option<String>,
+    pub wave_direction_mean_deg: Option<f64>,
+    pub wave_direction_spread_deg: Option<f64>,
 }
 
 /// At most this many heights and limits.
@@ -172,6 +178,13 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
         period_s,
         seed,
         failure_rotation_rad,
+        duration: super::design::duration_model("[fragility]", &t.storm_duration_model, t.storm_duration_cov)?,
+        direction: super::design::direction(
+            "[fragility]",
+            &t.wave_direction,
+            t.wave_direction_mean_deg,
+            t.wave_direction_spread_deg,
+        )?,
     })
 }
 
@@ -223,7 +236,9 @@ significant_heights_m = [4.0, 6.0, 8.0]
                 storm_duration_s: 7200.0,
                 period_s: 12.0,
                 seed: 1,
-                failure_rotation_rad: 0.01
+                failure_rotation_rad: 0.01,
+                duration: crate::analysis::climate::StormDuration::Fixed,
+                direction: crate::analysis::climate::WaveDirection::HeadOn,
             }
         );
         assert_eq!(p.waves_per_storm(), 600);

@@ -1,0 +1,307 @@
+//! The climates of a lifetime run (docs/design.md, "Climate"; `analysis::climate`) against their
+//! closed forms, through `simulate_life` where the life's outcome shows them.
+
+mod support;
+
+use caisson::analysis::lifetime::{simulate_life, simulate_storm, StormCase, StormInput, StormOutcome};
+use caisson::loads::generator::realization_rng;
+use caisson::scenario::Scenario;
+use support::scenario;
+
+/// A calm site (every storm far below what slides the caisson: the screen's load bound spares the
+/// grid, so a life costs microseconds) with a constant period (b = 0: T1/3 = a = 10 s) and storms
+/// of 0.15 h (54 waves): a life's `waves` is 54 × its number of storms.
+const CALM: &str = r#"
+[caisson]
+width_m = 20.0
+height_m = 24.5
+base_depth_m = 17.5
+weight_in_water_kn = 4500.0
+[foundation]
+mu_static = 0.6
+mu_dynamic = 0.6
+e100_kpa = 3.5e5
+density_kg_per_m3 = 2000
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 20.0
+depth_at_wall_m = 16.5
+seabed_slope = 0.01
+[waves]
+kind = "irregular"
+significant_height_m = 7.5
+period_s = 12.8
+[solver]
+dt_max_s = 0.05
+error_tolerance_m = 1e-6
+[design]
+life_years = 4
+lives = 10
+seed = 5
+storm_distribution = "weibull"
+storm_scale_m = 0.5
+storm_shape = 1.4
+storm_location_m = 1.0
+period_coefficient = 10.0
+period_exponent = 0.0
+storm_duration_h = 0.15
+"#;
+
+/// `CALM` with `extra` keys appended to `[design]`.
+fn calm(extra: &str) -> Scenario {
+    scenario(&format!("{CALM}{extra}\n"))
+}
+
+/// Lives 0..n of `sc`.
+fn lives(sc: &Scenario, n: usize) -> Vec<StormOutcome> {
+    let d = sc.design.clone().unwrap();
+    let st = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
+    (0..n).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect()
+}
+
+/// Mean and sample variance.
+fn moments(x: &[f64]) -> (f64, f64) {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    (mean, x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0))
+}
+
+/// Peaks over threshold at λ = 2.5 storms a year over 4 years: a life's storms are Poisson of
+/// mean and variance 4λ = 10. 4000 lives: the mean within 5 standard errors ((10/4000)^½ = 0.05),
+/// the variance within 5 of its standard errors ((10 (1 + 20)/4000)^½ = 0.23). No storm slides
+/// the caisson (the site is calm), so the lives are cheap.
+#[test]
+fn pot_storms_per_life_are_poisson_through_simulate_life() {
+    let sc = calm("storm_model = \"peaks-over-threshold\"\nstorm_rate_per_year = 2.5\nstorm_threshold_m = 1.2");
+    let n = 4000;
+    let storms: Vec<f64> = lives(&sc, n)
+        .iter()
+        .map(|o| {
+            assert_eq!(o.waves % 54, 0, "54 waves a storm");
+            assert_eq!(o.simulated_waves, 0, "the site is calm");
+            (o.waves / 54) as f64
+        })
+        .collect();
+    assert_eq!(storms.len(), n);
+    let (mean, var) = moments(&storms);
+    assert!((mean - 10.0).abs() < 5.0 * (10.0f64 / n as f64).sqrt(), "mean {mean}");
+    assert!((var - 10.0).abs() < 5.0 * (10.0 * 21.0 / n as f64).sqrt(), "variance {var}");
+}
+
+/// The annual maxima model (the default, and written out) gives one storm a year: 4 × 54 waves.
+#[test]
+fn annual_maxima_is_one_storm_a_year() {
+    for sc in [calm(""), calm("storm_model = \"annual-maxima\"")] {
+        let all = lives(&sc, 20);
+        assert_eq!(all.len(), 20);
+        assert!(all.iter().all(|o| o.waves == 4 * 54));
+    }
+}
+
+/// The storm heights of peaks over threshold t = 1.2 m are the fitted Weibull (A = 0.5 m,
+/// k = 1.4, B = 1 m) given H > t: on 10 000 evenly spaced uniforms, the share above x is
+/// (1 − F(x))/(1 − F(t)) = exp[−((x − B)/A)^k + ((t − B)/A)^k] to 1/10 000, at four heights; none
+/// is below the threshold.
+#[test]
+fn pot_heights_are_the_exceedances_of_the_threshold() {
+    let sc = calm("storm_model = \"peaks-over-threshold\"\nstorm_rate_per_year = 2.5\nstorm_threshold_m = 1.2");
+    let life = &sc.design.as_ref().unwrap().life;
+    let n = 10_000;
+    let h: Vec<f64> = (0..n).map(|i| life.storm_height_m((i as f64 + 0.5) / n as f64)).collect();
+    assert!(h.iter().all(|&x| x >= 1.2));
+    let z = |x: f64| ((x - 1.0) / 0.5f64).powf(1.4);
+    let mut checked = 0;
+    for x in [1.3, 1.6, 2.0, 2.5] {
+        let share = h.iter().filter(|&&v| v > x).count() as f64 / n as f64;
+        let exact = (-z(x) + z(1.2)).exp();
+        assert!((share - exact).abs() <= 1.0 / n as f64 + 1e-12, "x = {x}: {share} vs {exact}");
+        checked += 1;
+    }
+    assert_eq!(checked, 4);
+}
+
+/// Lognormal durations of mean 2 h and COV 0.5 with T1/3 = 1 s (a = 1, b = 0) and one storm a
+/// life: a life's `waves` is round(D / 1 s), of mean 7200 and standard deviation 3600 (the
+/// rounding adds 1/12 to the variance). 4000 lives: the mean within 5 standard errors
+/// (3600/√4000 = 57), the standard deviation within 6 % (its standard error is about 1.6 %
+/// at this COV, the lognormal's kurtosis 3 + 6.6 with σ² = ln 1.25).
+#[test]
+fn lognormal_durations_through_simulate_life() {
+    let text = CALM
+        .replace("life_years = 4", "life_years = 1")
+        .replace("period_coefficient = 10.0", "period_coefficient = 1.0")
+        .replace("storm_duration_h = 0.15", "storm_duration_h = 2.0");
+    let sc = scenario(&format!("{text}storm_duration_model = \"lognormal\"\nstorm_duration_cov = 0.5\n"));
+    let n = 4000;
+    let waves: Vec<f64> = lives(&sc, n).iter().map(|o| o.waves as f64).collect();
+    assert_eq!(waves.len(), n);
+    let (mean, var) = moments(&waves);
+    assert!((mean - 7200.0).abs() < 5.0 * 3600.0 / (n as f64).sqrt(), "mean {mean}");
+    assert!((var.sqrt() / 3600.0 - 1.0).abs() < 0.06, "sd {}", var.sqrt());
+    // Fixed durations: every life 7200 waves.
+    let fixed = scenario(&text);
+    assert!(lives(&fixed, 10).iter().all(|o| o.waves == 7200));
+}
+
+/// Errors per life: every storm of a life has the same errors. With H0 = 2 m in every storm
+/// (a Weibull of scale 10⁻¹² m at 2 m), T1/3 = H0 (a = 1, b = 1) and 2 h storms, a storm has
+/// round(3600 / e) waves, e its deep-water error, and a life of 4 storms has 4 times the
+/// variance of one storm's count with errors per storm, 16 times with errors per life: the
+/// ratio of the two variances of the life totals is 4. 4000 lives each: each variance within
+/// about 2.2 % (one standard error), the ratio within 15 %. Per life, a life's total is 4 times
+/// one storm's.
+#[test]
+fn errors_per_life_are_shared_by_the_storms() {
+    let text = CALM
+        .replace("storm_scale_m = 0.5", "storm_scale_m = 1e-12")
+        .replace("storm_location_m = 1.0", "storm_location_m = 2.0")
+        .replace("period_coefficient = 10.0", "period_coefficient = 1.0")
+        .replace("period_exponent = 0.0", "period_exponent = 1.0")
+        .replace("storm_duration_h = 0.15", "storm_duration_h = 2.0");
+    let n = 4000;
+    let var_of = |extra: &str| {
+        let all = lives(&scenario(&format!("{text}{extra}\n")), n);
+        assert_eq!(all.len(), n);
+        let w: Vec<f64> = all.iter().map(|o| o.waves as f64).collect();
+        (moments(&w).1, all)
+    };
+    let (per_storm, _) = var_of("");
+    let (per_life, all) = var_of("error_scope = \"life\"");
+    assert!(all.iter().all(|o| o.waves % 4 == 0), "four equal storms a life");
+    let ratio = per_life / per_storm;
+    assert!((ratio - 4.0).abs() < 0.15 * 4.0, "ratio {ratio}");
+}
+
+/// The impulsive component's own error multiplies the impact only: a storm of the design
+/// example (300 waves of H1/3 = 9 m, limited to 13.45 m, at T = 12.8 s: some 5 waves above the
+/// breaker height at the wall, 12.79 m, impulsive), the quasi-static factor kept at 1.
+#[test]
+fn the_impact_factor_scales_the_impulsive_component() {
+    let sc = support::example("design_breakwater.toml");
+    let case = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
+    let storm = |impact_factor: f64| {
+        let s = StormInput {
+            h13_m: 9.0,
+            hmax_m: 13.45,
+            period_s: 12.8,
+            waves: 300,
+            tide_m: 0.0,
+            angle_rad: 0.0,
+            force_factor: 1.0,
+            impact_factor,
+            friction_factor: 1.0,
+        };
+        simulate_storm(&case, &s, &mut realization_rng(4, 0)).unwrap()
+    };
+    let (none, one, two) = (storm(0.0), storm(1.0), storm(2.0));
+    // The rigid block slides under the impacts only (their own factor; the quasi-static load of
+    // this storm alone cannot slide it): 0, then more with each factor.
+    assert_eq!(none.rigid_block_sliding_m, 0.0, "{none:?}");
+    assert!(one.rigid_block_sliding_m > 0.005, "{one:?}");
+    assert!(two.rigid_block_sliding_m > 2.0 * one.rigid_block_sliding_m, "{two:?}");
+    // The dynamic model (the foundation's compliance spreads an impulse of 25 ms) hardly slides
+    // more at the factor 1 than at 0 (its sliding here is the quasi-static one's), more at 2.
+    assert!(two.sliding_m > one.sliding_m + 0.01, "{one:?} {two:?}");
+    assert!((one.sliding_m - none.sliding_m).abs() < 1e-3, "{none:?} {one:?}");
+}
+
+/// The sea-level rise reaches the storms: with 4.5 m of rise over the life (linear) and a tidal
+/// range of 19 m, the water at the last storm rises by up to 19 + 4.5 · 3.5/4 = 22.94 m, beyond
+/// W'/(ρ_w g B l) = 4500 kN / (1030 · 9.80665 · 20 m² ) = 22.28 m: the caisson would float, and
+/// the file is refused naming the weight and the rise; without the rise it is accepted.
+#[test]
+fn a_caisson_that_floats_at_the_risen_sea_is_refused() {
+    let text = format!("{CALM}tidal_range_m = 19.0\n");
+    assert!(Scenario::from_toml(&text, std::path::Path::new("t.toml"), std::path::Path::new(".")).is_ok());
+    let e = Scenario::from_toml(
+        &format!("{text}sea_level_rise_m = 4.5\n"),
+        std::path::Path::new("t.toml"),
+        std::path::Path::new("."),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("[caisson] weight_in_water_kn") && e.contains("sea-level rise of up to 3.9375 m"), "{e}");
+}
+
+/// The storm's angle reaches Goda's β: the storm of the impact test (impact factor 1) at θ = 10°
+/// is the head-on storm exactly (β = max(0, |θ| − 15°) = 0), at −10° too; at 60° (β = 45°: p1 and
+/// the uplift times (1 + cos 45°)/2 = 0.854, the α2 term times cos² 45° = ½ more) the
+/// dynamic model, which slides here under the quasi-static load, slides less than half as far
+/// (3.2 cm → 1.0 cm); the rigid block, which only the impacts slide, slides less (the uplift under
+/// them is smaller, the friction larger) but still slides: the impact has no angle.
+#[test]
+fn the_storm_angle_acts_through_goda_beta() {
+    let sc = support::example("design_breakwater.toml");
+    let case = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
+    let storm = |deg: f64| {
+        let s = StormInput {
+            h13_m: 9.0,
+            hmax_m: 13.45,
+            period_s: 12.8,
+            waves: 300,
+            tide_m: 0.0,
+            angle_rad: deg.to_radians(),
+            force_factor: 1.0,
+            impact_factor: 1.0,
+            friction_factor: 1.0,
+        };
+        simulate_storm(&case, &s, &mut realization_rng(4, 0)).unwrap()
+    };
+    let head_on = storm(0.0);
+    assert_eq!(storm(10.0), head_on);
+    assert_eq!(storm(-10.0), head_on);
+    let oblique = storm(60.0);
+    assert!(oblique.sliding_m < 0.5 * head_on.sliding_m, "{head_on:?} {oblique:?}");
+    assert!(oblique.rigid_block_sliding_m < head_on.rigid_block_sliding_m);
+    assert!(oblique.rigid_block_sliding_m > 1e-3, "the impact, unreduced, still slides the block: {oblique:?}");
+}
+
+/// The work estimate of the climate example (peaks over threshold, 3 storms a year; oblique
+/// waves; the sea rising) counts the storms a year: its waves against those of the first 100
+/// lives (3 % allowed, as for the design example, tests/work.rs), its screened share against
+/// theirs within a factor of 3.
+#[test]
+fn the_work_estimate_counts_the_storms_of_a_pot_climate() {
+    let sc = support::example("design_climate.toml");
+    let d = sc.design.clone().unwrap();
+    let case = sc.storm_case(true).unwrap();
+    let e = caisson::analysis::work::design(&case, &d, sc.waves.as_ref().unwrap());
+    let lives: Vec<usize> = (0..100).collect();
+    let r = caisson::analysis::lifetime::run_lives(&case, &d.life, d.seed, &lives, &|_, _| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .unwrap();
+    let (waves, simulated) = r.iter().fold((0u64, 0u64), |(w, s), (_, o)| (w + o.waves, s + o.simulated_waves));
+    let real_per_life = waves as f64 / 100.0;
+    let per_life = e.waves / d.lives as f64;
+    assert!((per_life / real_per_life - 1.0).abs() < 0.03, "{per_life} waves per life, ran {real_per_life}");
+    let ratio = e.simulated_share / (simulated as f64 / waves as f64);
+    assert!(
+        (1.0 / 3.0..3.0).contains(&ratio),
+        "share {} against {}",
+        e.simulated_share,
+        simulated as f64 / waves as f64
+    );
+    assert!(e.basis.contains("× 3 storms a year"), "{}", e.basis);
+}
+
+/// The defaults leave the checkpoint fingerprint of earlier runs as it was: the serialized life
+/// model of a file without climate keys has none of the new fields (and the truncation is the
+/// number it was), one with them has them; the fingerprints differ.
+#[test]
+fn default_climate_leaves_the_fingerprint_unchanged() {
+    let sc = support::example("design_breakwater.toml");
+    let d = sc.design.clone().unwrap();
+    let json = serde_json::to_value(&d.life).unwrap();
+    assert!(json.get("climate").is_none(), "climate in {json}");
+    let errors = &json["errors"];
+    assert!(errors.get("impact_force").is_none() && errors.get("scope").is_none(), "{errors}");
+    assert_eq!(errors["wave_force"]["truncation_sigmas"], 2.0);
+    let climate = support::example("design_climate.toml");
+    let c = climate.design.clone().unwrap();
+    assert!(serde_json::to_value(&c.life).unwrap().get("climate").is_some());
+    let fp = |s: &Scenario, p: &caisson::analysis::lifetime::DesignParams| {
+        caisson::report::design::design_fingerprint(&s.storm_case(true).unwrap(), p)
+    };
+    assert_ne!(fp(&sc, &d), fp(&climate, &c));
+}
