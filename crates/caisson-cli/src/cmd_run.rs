@@ -5,7 +5,6 @@ use crate::input_err;
 use crate::output::{check_out_dir, pretty, report_json, tidy_out_dir, write_atomic, TempFile};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response};
 use caisson::analysis::envelope::{Column, HistoryEnvelope};
 use caisson::analysis::run::{self as engine, HistoryRow, Rows, RunSummary, Sampler};
 use caisson::loads::LoadSpec;
@@ -300,12 +299,7 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     let summary =
         engine::run_observed(sc.structure(), load, sc.duration_s, rows.as_mut()).context("the dynamic run failed")?;
     drop(rows);
-    let x = sc.foundation().spring_positions(sc.caisson().width_m);
-    let s = sc.structure();
-    let mut warnings = structure_warnings(s);
-    warnings.extend(run_load_warnings(s, load));
-    warnings.extend(response_warnings(s, &Response::from(&summary)));
-    let report = RunReport::new(&summary, x, warnings);
+    let report = RunReport::new(sc.structure(), load, &summary);
     let json = report_json(&report, "summary")?;
     crate::output::print_warnings(&report.warnings);
     if args.json {

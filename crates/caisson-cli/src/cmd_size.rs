@@ -3,7 +3,6 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
-use crate::cmd_design::line_check;
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
 use crate::plot::{Panel, Series};
@@ -13,6 +12,7 @@ use caisson::analysis::conventional::{conventional_width, static_check, ChecksAt
 use caisson::analysis::lifetime::{run_lives, StormOutcome};
 use caisson::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, Reached, Required};
 use caisson::loads::safety::SafetyFactors;
+use caisson::report::checkpoint::{candidate_line, SizeHeader};
 use caisson::report::design::design_fingerprint;
 use caisson::report::size::{GodaWidth, SizeReport};
 use caisson::scenario::{self, Scenario};
@@ -40,76 +40,44 @@ fn goda_checks(sc: &Scenario) -> Option<SafetyFactors> {
 /// candidate width (its statistics, ending with the `"check"` of the header and the line, as the
 /// design checkpoint's lines do).
 const CHECKPOINT: &str = "size_checkpoint.jsonl";
-const CHECKPOINT_FORMAT: u32 = 1;
 
-#[derive(serde::Serialize, serde::Deserialize)]
-struct Header {
-    caisson_size_checkpoint: u32,
-    fingerprint: String,
-    caisson_version: String,
-    results_version: u32,
-}
-
-/// The key that ends every candidate line.
-const CHECK_KEY: &str = ",\"check\":\"";
-
-fn candidate_line(header_line: &str, c: &Candidate) -> Result<String> {
-    let body = serde_json::to_string(c)?;
-    let check = line_check(header_line, &body);
-    Ok(format!("{}{CHECK_KEY}{check}\"}}\n", &body[..body.len() - 1]))
-}
-
-fn parse_candidate_line(header_line: &str, line: &str) -> std::result::Result<Candidate, String> {
-    let (head, tail) = line.rsplit_once(CHECK_KEY).ok_or("is not a candidate line of a sizing checkpoint")?;
-    let check = tail.strip_suffix("\"}").ok_or("is not a candidate line of a sizing checkpoint")?;
-    let body = format!("{head}}}");
-    if line_check(header_line, &body) != check {
-        return Err("does not match its check: it was edited, or it comes from another checkpoint".into());
-    }
-    serde_json::from_str(&body).map_err(|e| format!("is not a candidate: {e}"))
-}
-
-/// The finished candidates of the checkpoint `path` of this run (`fingerprint`), or why not.
+/// The finished candidates of the checkpoint `path` of this run (`fingerprint`), read with the
+/// library's reader ([`caisson::report::checkpoint::read_size`]), or why not.
 fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<(String, Vec<Candidate>)> {
+    use caisson::report::checkpoint::{CheckpointError, LineError, LineFault, SIZE_FORMAT};
     let text = std::fs::read_to_string(path)
         .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
-    let mut lines = text.split_inclusive('\n');
-    let header_line = lines.next().unwrap_or("").trim_end_matches('\n').to_string();
     let again = "run without --resume to start again";
-    let header: Header = serde_json::from_str(&header_line).map_err(|_| {
-        input_err(format!("--resume: {} does not start with a sizing checkpoint header; {again}", path.display()))
-    })?;
-    if header.caisson_size_checkpoint != CHECKPOINT_FORMAT || header.results_version != caisson::RESULTS_VERSION {
-        return Err(input_err(format!(
-            "--resume: {} is of checkpoint format {} and results version {} (this caisson: {CHECKPOINT_FORMAT} and {}); {again}",
+    match caisson::report::checkpoint::read_size(text.as_bytes(), fingerprint) {
+        Ok(cp) => Ok((cp.header_line, cp.candidates)),
+        Err(CheckpointError::Io(e)) => Err(anyhow::Error::new(e)),
+        Err(CheckpointError::NotAHeader) => Err(input_err(format!(
+            "--resume: {} does not start with a sizing checkpoint header; {again}",
+            path.display()
+        ))),
+        Err(CheckpointError::Format { format, .. }) => Err(input_err(format!(
+            "--resume: {} is of checkpoint format {format} (this caisson: {SIZE_FORMAT}); {again}",
             path.display(),
-            header.caisson_size_checkpoint,
-            header.results_version,
+        ))),
+        Err(CheckpointError::ResultsVersion { results_version, .. }) => Err(input_err(format!(
+            "--resume: {} is of results version {results_version} (this caisson: {}); {again}",
+            path.display(),
             caisson::RESULTS_VERSION
-        )));
-    }
-    if header.fingerprint != fingerprint {
-        return Err(input_err(format!(
+        ))),
+        Err(CheckpointError::Fingerprint { .. }) => Err(input_err(format!(
             "--resume: {} belongs to another sizing run (another scenario, [design] or [size]); {again}",
             path.display()
-        )));
-    }
-    let mut done: Vec<Candidate> = Vec::new();
-    for (k, line) in lines.enumerate() {
-        let Some(line) = line.strip_suffix('\n') else { break }; // a torn last line: cut away
-        let c = parse_candidate_line(&header_line, line)
-            .map_err(|why| input_err(format!("--resume: {} line {}: {why}", path.display(), k + 2)))?;
-        if done.iter().any(|d| d.width_m == c.width_m) {
-            return Err(input_err(format!(
-                "--resume: {} line {}: the width {} m appears twice",
-                path.display(),
-                k + 2,
-                c.width_m
-            )));
+        ))),
+        Err(CheckpointError::Line { line, fault }) => {
+            let why = match fault {
+                LineFault::Refused(LineError::Malformed) => "is not a candidate line of a sizing checkpoint".into(),
+                LineFault::Refused(LineError::NotARecord(e)) => format!("is not a candidate: {e}"),
+                LineFault::Repeats { what, .. } => format!("{what} appears twice"),
+                fault => fault.to_string(),
+            };
+            Err(input_err(format!("--resume: {} line {line}: {why}", path.display())))
         }
-        done.push(c);
     }
-    Ok((header_line, done))
 }
 
 pub fn run(args: SizeArgs) -> Result<()> {
@@ -153,18 +121,12 @@ pub fn run(args: SizeArgs) -> Result<()> {
         let (header_line, done) = if args.resume {
             read_checkpoint(path, &fingerprint)?
         } else {
-            let header = Header {
-                caisson_size_checkpoint: CHECKPOINT_FORMAT,
-                fingerprint: fingerprint.clone(),
-                caisson_version: caisson::VERSION.to_string(),
-                results_version: caisson::RESULTS_VERSION,
-            };
-            (serde_json::to_string(&header)?, Vec::new())
+            (SizeHeader::new(fingerprint.clone()).line(), Vec::new())
         };
         // The checkpoint rewritten whole (its header and the complete lines), then appended to.
         let mut text = format!("{header_line}\n");
         for c in &done {
-            text.push_str(&candidate_line(&header_line, c)?);
+            text.push_str(&candidate_line(&header_line, c));
         }
         write_atomic(path, text.as_bytes())?;
         let f = std::fs::OpenOptions::new()
@@ -211,7 +173,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
         let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, &design.failure_limits(w), &p.criteria);
         if let Some((header_line, f)) = writer.borrow_mut().as_mut() {
             let path = checkpoint.as_deref().expect("a checkpoint with a writer");
-            f.write_all(candidate_line(header_line, &c)?.as_bytes())
+            f.write_all(candidate_line(header_line, &c).as_bytes())
                 .and_then(|_| f.sync_data())
                 .with_context(|| format!("writing the checkpoint {}", path.display()))?;
         }
@@ -247,10 +209,9 @@ pub fn run(args: SizeArgs) -> Result<()> {
     report.warnings.extend(range_warnings(&report));
     report.warnings.extend(goda_warnings(&report));
     report.warnings.extend(candidate_life_warnings(&sizing.candidates, &report, &design));
-    // Absent values (a width beyond the range, an undefined safety factor) are `null`: check
-    // the report's numbers themselves.
-    crate::output::check_finite_fields(&report, "size").map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
-    let json = serde_json::to_value(&report).context("serializing the results")?;
+    // Absent values (a width beyond the range, an undefined safety factor) are `null`; the
+    // library's encoder checks the report's numbers themselves.
+    let json = crate::output::report_json(&report, "size")?;
     crate::output::print_warnings(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);

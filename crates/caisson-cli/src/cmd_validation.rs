@@ -591,7 +591,7 @@ fn why_profiles_differ(t: &mut String) -> Result<()> {
             .context("the design example")?;
         let lives: Vec<_> = lives.into_iter().map(|(_, o)| o).collect();
         let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
-        let r = DesignReport::new(design, case.rigid_block_mu, failure_m, &lives);
+        let r = DesignReport::statistics(design, case.rigid_block_mu, failure_m, &lives);
         let d = &r.dynamic.sliding;
         let p03 = d.exceedance_probability.iter().find(|e| e.threshold_m == 0.3).map_or(0.0, |e| e.probability);
         let _ = writeln!(

@@ -3,11 +3,17 @@
 //! `docs/fragility.md`. The CLI serializes them; the bindings build the same structs. Units are in
 //! the key names (forces in kN, pressures in kPa; the analyses themselves work in SI).
 //!
+//! Every report computes its own warnings in its constructor, and [`encode::to_json`] is the one
+//! way to JSON (refusing a non-finite number, naming its path): the CLI and the bindings only
+//! print what it returns.
+//!
 //! Every report carries its [`Provenance`]: the version of the tool that made it and the version
 //! of the results ([`crate::RESULTS_VERSION`]).
 
 pub mod campaign;
+pub mod checkpoint;
 pub mod design;
+pub mod encode;
 pub mod fragility;
 pub mod loads;
 pub mod run;
@@ -17,6 +23,7 @@ pub mod train;
 
 use crate::analysis::run::FoundationSummary;
 use crate::analysis::train::Spread;
+pub use encode::{to_json, to_json_pretty, to_json_text, NotFinite};
 use serde::Serialize;
 
 /// The tool and results versions of an output.
