@@ -612,7 +612,7 @@ pub(crate) fn report_lives(
     let failure_m = failure.sliding_m;
     let report = DesignReport::new(design, case, waves, lives);
     let doc = report_json(&report, "design")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if json {
         crate::sayln!("{}", pretty(&doc)?);
     } else {

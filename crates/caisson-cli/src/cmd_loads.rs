@@ -69,7 +69,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     });
     // Every number finite, or nothing is printed or written (an input error: the input's numbers).
     let report = LoadsReport::of_structure(sc.structure(), ws, &check, info).map_err(input_err)?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     let doc = crate::output::report_json(&report, "loads")?;
     if args.json {
         crate::sayln!("{}", pretty(&doc)?);

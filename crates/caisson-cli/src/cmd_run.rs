@@ -301,7 +301,7 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     drop(rows);
     let report = RunReport::new(sc.structure(), load, &summary);
     let json = report_json(&report, "summary")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

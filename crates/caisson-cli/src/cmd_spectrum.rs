@@ -64,7 +64,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     let model = sc.structure().model();
     let report = SpectrumReport::new(sc.structure(), &base, &pts);
     let json = report_json(&report, "spectrum")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

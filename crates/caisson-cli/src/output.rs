@@ -562,7 +562,7 @@ pub fn progress(len: u64, what: &str, items: &str) -> indicatif::ProgressBar {
 }
 
 /// Print plausibility warnings on standard error, one `Warning:` line each.
-pub fn print_warnings(warnings: &[caisson::analysis::checks::Warning]) {
+pub fn print_warning_lines(warnings: &[caisson::analysis::checks::Warning]) {
     for line in warning_lines(warnings) {
         eprintln!("{line}");
     }

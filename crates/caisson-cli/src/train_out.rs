@@ -197,7 +197,7 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
     pb.finish_and_clear();
     let report = TrainRunReport::new(case.structure, case.waves, &summary);
     let json = report_json(&report, "summary")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if json_out {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -21,12 +21,13 @@ use caisson::analysis::run::{run as run_engine, run_observed, History};
 use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
 use caisson::analysis::work::{self, Advice, Budget, Histories, WorkEstimate};
+use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::dynamics::{Observer, StepView};
 use caisson::foundation::DampingMode;
 use caisson::loads::series::{ForceSeries, MAX_SAMPLES};
 use caisson::loads::{LoadSpec, WaveForce};
 use caisson::report::campaign::CampaignReport;
-use caisson::report::checkpoint::{Merge, MergeError};
+use caisson::report::checkpoint::{read_design, CheckpointError, DesignCheckpoint, Merge, MergeError};
 use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::report::fragility::FragilityReport;
 use caisson::report::loads::LoadsReport;
@@ -1074,6 +1075,157 @@ fn design_fingerprint_of(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> 
     Ok(design_fingerprint(&case, design))
 }
 
+const SIZE: Advice = Advice {
+    steps: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    waves: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    memory: "lower `[size] lives`",
+    disk: "",
+};
+
+/// A sizing error as Python raises it: the scenario's as `ScenarioError`, a failed run as
+/// `RunError`.
+fn size_error(py: Python<'_>, e: SizeError) -> PyErr {
+    match e {
+        SizeError::Scenario(e) => lib_error(py, e, None),
+        e @ SizeError::AtWidth { .. } => scenario_error(py, e.to_string(), None, None, None),
+        SizeError::Run { width_m, source } => {
+            run_error(format!("the lives at the width {width_m} m: {source}: {}", source.source))
+        }
+        e @ SizeError::NoConstruction(_) => scenario_error(py, e.to_string(), Some("[caisson]".into()), None, None),
+        e => PyRuntimeError::new_err(e.to_string()),
+    }
+}
+
+/// The scenario's sizing (`caisson size --json`): `size.json` text, by the library's driver.
+#[pyfunction]
+#[pyo3(signature = (sc, threads=1, progress=None))]
+fn size(py: Python<'_>, sc: &CoreScenario, threads: usize, progress: Option<Py<PyAny>>) -> PyResult<String> {
+    let sizer = Sizer::new(&sc.sc, "`caisson.size`").map_err(|e| size_error(py, e))?;
+    let estimate = py.detach(|| sizer.estimate("`caisson.size`")).map_err(|e| size_error(py, e))?;
+    check_work(py, "caisson.size", &estimate, &SIZE)?;
+    let total = sizer.candidates() * sizer.params.lives;
+    let report = drive(py, threads, total, progress, |ctl| {
+        let life = || {
+            ctl.count();
+            if ctl.cancelled() {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
+        let hooks = Hooks { width: &mut |_, _| {}, life: &life, candidate: &mut |_| Ok(()) };
+        sizer.run(&[], hooks)
+    })?
+    .map_err(|e| size_error(py, e))?;
+    report_json(&report, "size")
+}
+
+/// A checkpoint's refusal as a `ValueError` naming the file (and the line).
+fn checkpoint_error(name: &str, e: CheckpointError) -> PyErr {
+    use caisson::report::checkpoint::{LineError, LineFault};
+    let message = match e {
+        CheckpointError::Fingerprint { found, expected } => format!(
+            "{name} was written for a different scenario or options (fingerprint {found}, this design {expected}: the caisson, foundation, solver, waves, [design] life model or seed differ, or it was run with --brute-force)"
+        ),
+        CheckpointError::Line { line, fault: LineFault::Refused(LineError::Malformed | LineError::NotARecord(_)) } => {
+            format!("{name} line {line} is not a life line of a caisson design checkpoint")
+        }
+        CheckpointError::Format { format, caisson_version } => format!(
+            "{name} is of checkpoint format {format} (caisson {caisson_version}); this caisson reads format {}",
+            caisson::report::checkpoint::DESIGN_FORMAT
+        ),
+        CheckpointError::ResultsVersion { results_version, caisson_version } => format!(
+            "{name} holds results version {results_version} (caisson {caisson_version}); this caisson computes results version {}: its lives would not match",
+            caisson::RESULTS_VERSION
+        ),
+        e => format!("{name}: {e}"),
+    };
+    PyValueError::new_err(message)
+}
+
+/// The lives of the design checkpoint `data` (the bytes of the file `name`) of the scenario's
+/// `[design]`, read by the library's codec: the columns of [`design_lives`].
+fn read_design_lives(sc: &Scenario, name: &str, data: &[u8]) -> PyResult<DesignCheckpoint> {
+    let design = sc.design_for("Design").map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let case = sc.storm_case(design.screen).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let fingerprint = design_fingerprint(&case, design);
+    read_design(data, &|_| fingerprint.clone(), &|| {}).map_err(|e| checkpoint_error(name, e))
+}
+
+/// The lives of a `caisson design` checkpoint (`data`: the bytes of the file `name`) of the
+/// scenario's `[design]`: columns sorted by life as [`design_lives`] returns them. A torn last
+/// line is left out.
+#[pyfunction]
+fn read_design_checkpoint<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    name: &str,
+    data: &[u8],
+) -> PyResult<Bound<'py, PyDict>> {
+    let cp = py.detach(|| read_design_lives(&sc.sc, name, data))?;
+    let lives: Vec<(usize, StormOutcome)> = cp.lives.into_iter().collect();
+    lives_columns(py, &lives)
+}
+
+/// The shards `files` ((name, bytes) of each checkpoint) of the scenario's design joined into
+/// lives 0..`lives` by the rules of `caisson merge`: (`design.json` text, the lives' columns).
+#[pyfunction]
+fn merge_checkpoints<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    files: Vec<(String, Vec<u8>)>,
+    lives: usize,
+) -> PyResult<(String, Bound<'py, PyDict>)> {
+    let mut merge = Merge::new(lives);
+    let mut ranges: Vec<std::ops::Range<usize>> = Vec::new();
+    let text = |r: &std::ops::Range<usize>| format!("{}..{}", r.start, r.end);
+    for (name, data) in &files {
+        let cp = py.detach(|| read_design_lives(&sc.sc, name, data))?;
+        if cp.torn_bytes > 0 {
+            return Err(PyValueError::new_err(format!(
+                "shard {name} ends in a line cut short ({} bytes: the run stopped while writing it): complete the shard first (`caisson design --life-range {} --resume`)",
+                cp.torn_bytes,
+                text(&cp.header.range())
+            )));
+        }
+        ranges.push(cp.header.range());
+        merge.add(Some(cp.header.range()), cp.lives).map_err(|e| shard_error(&e, &files, &ranges, lives))?;
+    }
+    let all = merge.finish().map_err(|e| shard_error(&e, &files, &ranges, lives))?;
+    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
+    let design = DesignParams { lives, ..design.clone() };
+    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    let report = DesignReport::new(&design, &case, sc.sc.waves.as_ref(), &all);
+    let indexed: Vec<(usize, StormOutcome)> = all.into_iter().enumerate().collect();
+    Ok((report_json(&report, "design")?, lives_columns(py, &indexed)?))
+}
+
+/// A refusal of the merge rules naming the shards (by file) and the lives they were run for.
+fn shard_error(e: &MergeError, files: &[(String, Vec<u8>)], ranges: &[std::ops::Range<usize>], n: usize) -> PyErr {
+    let shard = |k: usize| format!("shard {} (lives {}..{})", files[k].0, ranges[k].start, ranges[k].end);
+    PyValueError::new_err(match *e {
+        MergeError::Beyond { shard: k, life, .. } => {
+            format!("{} holds life {life}, beyond the lives to merge, 0..{n} (the design's lives)", shard(k))
+        }
+        MergeError::Overlap { life, first, second } => format!(
+            "life {life} is in two shards: {} and {}; shards must not overlap: give each life to one shard",
+            shard(first),
+            shard(second)
+        ),
+        MergeError::Missing { start, end, missing, gaps, incomplete } => {
+            let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
+            let hint = match incomplete {
+                Some(k) => format!("{} is incomplete: complete it with --resume", shard(k)),
+                None => format!("run them (`caisson design --life-range {start}..{end}`) and merge that shard too"),
+            };
+            format!(
+                "lives {start}..{end} are in no shard ({} lives{more}; the merge needs lives 0..{n}): {hint}",
+                end - start
+            )
+        }
+    })
+}
+
 /// The scenario's `[fragility]`: `fragility.json` text (`name`: the scenario file's name).
 #[pyfunction]
 #[pyo3(signature = (sc, name, threads=1, progress=None))]
@@ -1181,6 +1333,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(life_columns, m)?)?;
     m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
+    m.add_function(wrap_pyfunction!(size, m)?)?;
+    m.add_function(wrap_pyfunction!(read_design_checkpoint, m)?)?;
+    m.add_function(wrap_pyfunction!(merge_checkpoints, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
     m.add_function(wrap_pyfunction!(estimate, m)?)?;
     m.add_function(wrap_pyfunction!(read_scenario, m)?)?;

@@ -657,3 +657,10 @@ def fit_lognormal(im: Any, k: Any, n: Any) -> dict:
 
 
 from . import loads, waves  # noqa: E402  (submodules use the names above)
+
+
+# Sizing, and the CLI's design checkpoints and shards: the library's driver, codec and merge rules
+# (module _size).
+from ._size import merge, read_checkpoint, resume, size  # noqa: E402
+
+__all__ += ["size", "read_checkpoint", "resume", "merge"]

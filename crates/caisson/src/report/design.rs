@@ -1,6 +1,6 @@
 //! `caisson design`: `design.json` (keys in docs/design.md).
 
-use super::{fingerprint, Provenance};
+use super::{fingerprint, ModelReport, Provenance};
 use crate::analysis::checks::{life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, FailureLimits, LifeParams, LifeStatistics, StormCase,
@@ -173,6 +173,9 @@ pub struct DynamicStatistics {
 pub struct DesignReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]; absent in a table row).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub model: Option<ModelReport>,
     pub lives: usize,
     pub life_years: usize,
     pub seed: u64,
@@ -204,6 +207,7 @@ impl DesignReport {
         let width_m = case.structure.caisson.width_m;
         let failure = p.failure_limits(width_m);
         let mut report = DesignReport::statistics(p, case.rigid_block_mu, failure.sliding_m, lives);
+        report.model = Some(ModelReport::from(case.structure));
         report.warnings = structure_warnings(case.structure);
         report.warnings.extend(life_warnings(lives, &failure, width_m));
         if let Some(ws) = waves {
@@ -229,6 +233,7 @@ impl DesignReport {
         let screened: u64 = lives.iter().map(|l| l.screened_waves).sum();
         DesignReport {
             provenance: Provenance::CURRENT,
+            model: None,
             lives: lives.len(),
             life_years: years,
             seed: p.seed,

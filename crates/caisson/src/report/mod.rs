@@ -23,6 +23,10 @@ pub mod train;
 
 use crate::analysis::run::FoundationSummary;
 use crate::analysis::train::Spread;
+use crate::analysis::Structure;
+use crate::foundation::{DampingMode, VerticalDamping};
+use crate::structure::MassMatrix;
+use crate::Profile;
 pub use encode::{to_json, to_json_pretty, to_json_text, NotFinite};
 use serde::Serialize;
 
@@ -44,6 +48,36 @@ impl Provenance {
 impl Default for Provenance {
     fn default() -> Self {
         Provenance::CURRENT
+    }
+}
+
+/// The model a report's numbers were computed with (the `model` object of every report): the
+/// profile (`[model] profile`) and the choices it made or the scenario's keys overrode. Two
+/// reports with the same `model` and results version came from the same equations.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ModelReport {
+    pub profile: Profile,
+    /// Where the horizontal foundation dashpot acts (`[foundation] damping_mode`).
+    pub damping_mode: DampingMode,
+    /// How the vertical and rotational dashpots are formed (`[foundation] vertical_damping`).
+    pub vertical_damping: VerticalDamping,
+    /// The rigid-body mass matrix (`[caisson] mass_matrix`).
+    pub mass_matrix: MassMatrix,
+    /// Static and dynamic friction coefficients of the base.
+    pub mu_static: f64,
+    pub mu_dynamic: f64,
+}
+
+impl From<&Structure> for ModelReport {
+    fn from(s: &Structure) -> Self {
+        ModelReport {
+            profile: s.profile,
+            damping_mode: s.foundation.damping_mode,
+            vertical_damping: s.foundation.vertical_damping,
+            mass_matrix: s.caisson.mass_matrix,
+            mu_static: s.foundation.mu_static,
+            mu_dynamic: s.foundation.mu_dynamic,
+        }
     }
 }
 

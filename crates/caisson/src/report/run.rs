@@ -1,6 +1,6 @@
 //! `caisson run` on a `[load]` scenario: `summary.json` (keys in docs/cli.md).
 
-use super::{kn, FoundationReport, Provenance};
+use super::{kn, FoundationReport, ModelReport, Provenance};
 use crate::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response, Warning};
 use crate::analysis::run::RunSummary;
 use crate::analysis::Structure;
@@ -22,6 +22,8 @@ pub struct RunSolverReport {
 pub struct RunReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub permanent_sliding_m: f64,
     pub max_horizontal_displacement_m: f64,
     pub max_rotation_rad: f64,
@@ -53,6 +55,7 @@ impl RunReport {
         let spring_positions_m = structure.foundation.spring_positions(structure.caisson.width_m);
         RunReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(structure),
             permanent_sliding_m: s.permanent_sliding_m,
             max_horizontal_displacement_m: s.max_horizontal_displacement_m,
             max_rotation_rad: s.max_rotation_rad,

@@ -1,6 +1,6 @@
 //! `caisson spectrum`: `spectrum.json` (keys in docs/cli.md).
 
-use super::{kn, Provenance};
+use super::{kn, ModelReport, Provenance};
 use crate::analysis::checks::{run_load_warnings, structure_warnings, Warning};
 use crate::analysis::spectrum::SpectrumPoint;
 use crate::analysis::Structure;
@@ -41,6 +41,8 @@ impl From<&SpectrumPoint> for SpectrumPointReport {
 pub struct SpectrumReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub natural_period_s: f64,
     pub peak_horizontal_kn: f64,
     pub peak_uplift_kn: f64,
@@ -59,6 +61,7 @@ impl SpectrumReport {
         let resistance_n = structure.foundation.mu_static * structure.caisson.weight_in_water_n;
         SpectrumReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(structure),
             natural_period_s: structure.model().natural_period_s(),
             peak_horizontal_kn: kn(base.peak.fx_n),
             peak_uplift_kn: kn(base.peak.fy_n),
