@@ -266,9 +266,12 @@ fn spectrum_section(t: &mut String, figs: &Path) -> Result<()> {
     Ok(())
 }
 
+/// The sliding spectra of one placement: below and above the resistance.
+type SlidingSpectra = (Vec<SpectrumPoint>, Vec<SpectrumPoint>);
+
 /// §3's runs and figures: the sliding spectra at 0.9 and 1.1 × the static sliding resistance
 /// `ssr` (kN) over `ratios`, per dashpot placement ([`MODES`]): (below, above) for each.
-fn sliding_spectra(figs: &Path, ratios: &[f64], ssr: f64) -> Result<Vec<(Vec<SpectrumPoint>, Vec<SpectrumPoint>)>> {
+fn sliding_spectra(figs: &Path, ratios: &[f64], ssr: f64) -> Result<Vec<SlidingSpectra>> {
     let mut sl = Vec::new();
     for (_, mode) in MODES {
         let below = run_spectrum(&table5_pulse(mode, 0.9 * ssr, 0.6, 0.8)?, ratios)?;
@@ -306,6 +309,63 @@ fn sliding_spectra(figs: &Path, ratios: &[f64], ssr: f64) -> Result<Vec<(Vec<Spe
         )?;
     }
     Ok(sl)
+}
+
+/// §3's table: the sliding of both placements below and above the resistance, the closed forms.
+fn sliding_table(t: &mut String, ratios: &[f64], sl: &[SlidingSpectra]) {
+    let _ = writeln!(t, "| t_r/T0 | seed-2011, 0.9 SSR (mm) | consistent, 0.9 SSR (mm) | seed-2011, 1.1 SSR (mm) | consistent, 1.1 SSR (mm) | rigid block, 1.1 SSR (mm) | Shimosako, 1.1 SSR (mm) |\n|---|---|---|---|---|---|---|");
+    for (i, ratio) in ratios.iter().enumerate() {
+        let _ = writeln!(
+            t,
+            "| {:.3} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
+            ratio,
+            sl[0].0[i].permanent_sliding_m * 1e3,
+            sl[1].0[i].permanent_sliding_m * 1e3,
+            sl[0].1[i].permanent_sliding_m * 1e3,
+            sl[1].1[i].permanent_sliding_m * 1e3,
+            sl[0].1[i].rigid_block_sliding_m * 1e3,
+            sl[0].1[i].shimosako_sliding_m * 1e3
+        );
+    }
+}
+
+/// §4-5's runs and figures: the PARI campaigns (non-breaking, breaking, and breaking at nominal
+/// heights) per dashpot placement ([`MODES`]).
+#[allow(clippy::type_complexity)]
+fn pari_campaigns(
+    figs: &Path,
+) -> Result<(Vec<Vec<ConditionResult>>, Vec<Vec<ConditionResult>>, Vec<Vec<ConditionResult>>)> {
+    let mut nb = Vec::new();
+    let mut br = Vec::new();
+    for (_, mode) in MODES {
+        nb.push(campaign(NONBREAKING, mode, false)?);
+        br.push(campaign(BREAKING, mode, false)?);
+    }
+    for (i, (mode, _)) in MODES.iter().enumerate() {
+        campaign_plots(
+            figs,
+            &format!("validation_pari_nonbreaking_{mode}"),
+            &format!("PARI non-breaking, profile {mode}"),
+            &nb[i],
+        )?;
+        campaign_plots(
+            figs,
+            &format!("validation_pari_breaking_{mode}"),
+            &format!("PARI breaking, profile {mode}"),
+            &br[i],
+        )?;
+    }
+    let mut nominal = Vec::new();
+    for (i, (mode, placement)) in MODES.iter().enumerate() {
+        nominal.push(campaign(BREAKING, *placement, true)?);
+        campaign_plots(
+            figs,
+            &format!("validation_pari_breaking_nominal_{mode}"),
+            &format!("PARI breaking, nominal heights, profile {mode}"),
+            &nominal[i],
+        )?;
+    }
+    Ok((nb, br, nominal))
 }
 
 pub fn run(args: ValidationArgs) -> Result<()> {
@@ -377,53 +437,11 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let _ = writeln!(t, "## 3. Sliding under a triangular pulse (seed Figs. 7 right and 8)\n");
     let _ = writeln!(t, "Table 5 caisson (soil route, C = 598 kN·s/m), μ_s = μ_d = 0.6 so that the closed forms of docs/model.md §6.3 apply exactly, horizontal force at the still-water level, no uplift; peak 0.9 and 1.1 × the static sliding resistance μ_s W' = {ssr:.3} kN. Both dashpot placements (docs/model.md §10 item 30). The closed forms use the mass with the added mass.\n");
     let _ = writeln!(t, "![below](figures/validation_sliding_spectrum_below.svg)\n\n![above](figures/validation_sliding_spectrum_above.svg)\n");
-    let _ = writeln!(t, "| t_r/T0 | seed-2011, 0.9 SSR (mm) | consistent, 0.9 SSR (mm) | seed-2011, 1.1 SSR (mm) | consistent, 1.1 SSR (mm) | rigid block, 1.1 SSR (mm) | Shimosako, 1.1 SSR (mm) |\n|---|---|---|---|---|---|---|");
-    for (i, ratio) in ratios.iter().enumerate() {
-        let _ = writeln!(
-            t,
-            "| {:.3} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
-            ratio,
-            sl[0].0[i].permanent_sliding_m * 1e3,
-            sl[1].0[i].permanent_sliding_m * 1e3,
-            sl[0].1[i].permanent_sliding_m * 1e3,
-            sl[1].1[i].permanent_sliding_m * 1e3,
-            sl[0].1[i].rigid_block_sliding_m * 1e3,
-            sl[0].1[i].shimosako_sliding_m * 1e3
-        );
-    }
+    sliding_table(&mut t, &ratios, &sl);
     let _ = writeln!(t);
 
     // 4-5. Campaigns.
-    let mut nb = Vec::new();
-    let mut br = Vec::new();
-    for (_, mode) in MODES {
-        nb.push(campaign(NONBREAKING, mode, false)?);
-        br.push(campaign(BREAKING, mode, false)?);
-    }
-    for (i, (mode, _)) in MODES.iter().enumerate() {
-        campaign_plots(
-            &figs,
-            &format!("validation_pari_nonbreaking_{mode}"),
-            &format!("PARI non-breaking, profile {mode}"),
-            &nb[i],
-        )?;
-        campaign_plots(
-            &figs,
-            &format!("validation_pari_breaking_{mode}"),
-            &format!("PARI breaking, profile {mode}"),
-            &br[i],
-        )?;
-    }
-    let mut nominal = Vec::new();
-    for (i, (mode, placement)) in MODES.iter().enumerate() {
-        nominal.push(campaign(BREAKING, *placement, true)?);
-        campaign_plots(
-            &figs,
-            &format!("validation_pari_breaking_nominal_{mode}"),
-            &format!("PARI breaking, nominal heights, profile {mode}"),
-            &nominal[i],
-        )?;
-    }
+    let (nb, br, nominal) = pari_campaigns(&figs)?;
 
     let findings = vec![
         Finding {
