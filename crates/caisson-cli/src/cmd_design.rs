@@ -462,6 +462,66 @@ pub(crate) fn load_design(
     Ok((sc, design))
 }
 
+/// The checkpoint of a run at `path`: read by `--resume` (`resume`) and appended to, or created
+/// with the header of this run (`fingerprint`, the lives `range`, `brute_force`). Returns the
+/// lives it holds and its writer.
+fn open_run_checkpoint(
+    path: &Path,
+    resume: bool,
+    fingerprint: &str,
+    range: &std::ops::Range<usize>,
+    brute_force: bool,
+) -> Result<(BTreeMap<usize, StormOutcome>, CheckpointWriter)> {
+    if resume {
+        let cp = read_checkpoint(path, &Reader::resume(), &|_| fingerprint.to_string(), &|| {})?;
+        let w = CheckpointWriter::resume(path, &cp)?;
+        Ok((cp.lives, w))
+    } else {
+        let header = Header::new(fingerprint.to_string(), range, brute_force);
+        Ok((BTreeMap::new(), CheckpointWriter::create(path, header.line())?))
+    }
+}
+
+/// Refuse to report `done` of `asked` lives: interrupted (Ctrl-C) or stopped by `--stop-after`,
+/// the finished lives `kept` there.
+fn refuse_incomplete(done: usize, asked: usize, kept: &str) -> Result<()> {
+    if done < asked && crate::interrupt::requested() {
+        return Err(anyhow::Error::new(crate::Interrupted(format!(
+            "interrupted (Ctrl-C) after {done} of {asked} lives; the finished lives are in {kept}: run again with --resume to complete"
+        ))));
+    }
+    if done < asked {
+        anyhow::bail!(
+            "stopped after {done} of {asked} lives (--stop-after); the finished lives are in {kept}; run again with --resume to complete"
+        );
+    }
+    Ok(())
+}
+
+/// The outputs of a shard (`--life-range`): its `lives.csv` in `dir` (the checkpoint is kept),
+/// no statistics.
+fn write_shard(
+    dir: &Path,
+    done: &BTreeMap<usize, StormOutcome>,
+    range: &std::ops::Range<usize>,
+    scenario: &Path,
+    checkpoint: Option<&Path>,
+    kept: &str,
+) -> Result<()> {
+    write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
+    let keep: Vec<&Path> = checkpoint.into_iter().collect();
+    crate::output::tidy_out_dir(dir, "design", &keep)?;
+    crate::sayln!(
+        "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {kept}; no statistics (`caisson merge` joins the shards)",
+        range.start,
+        range.end,
+        range.len(),
+        scenario.display(),
+        dir.display()
+    );
+    Ok(())
+}
+
 pub fn run(args: DesignArgs) -> Result<()> {
     let (sc, design) = load_design(&args.scenario, "`caisson design`", args.lives, args.brute_force)?;
     // A shard runs its range; a whole run lives 0..N.
@@ -491,14 +551,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let _lock = checkpoint.as_deref().map(|c| CheckpointLock::acquire(c, "design")).transpose()?;
     let (mut done, writer) = match &checkpoint {
         Some(path) => {
-            if args.resume {
-                let cp = read_checkpoint(path, &Reader::resume(), &|_| fingerprint.clone(), &|| {})?;
-                let w = CheckpointWriter::resume(path, &cp)?;
-                (cp.lives, Some(Mutex::new(w)))
-            } else {
-                let header = Header::new(fingerprint.clone(), &range, args.brute_force);
-                (BTreeMap::new(), Some(Mutex::new(CheckpointWriter::create(path, header.line())?)))
-            }
+            let (done, w) = open_run_checkpoint(path, args.resume, &fingerprint, &range, args.brute_force)?;
+            (done, Some(Mutex::new(w)))
         }
         None => (BTreeMap::new(), None),
     };
@@ -544,22 +598,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     done.extend(results);
     let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
-    if done.len() < range.len() && crate::interrupt::requested() {
-        return Err(anyhow::Error::new(crate::Interrupted(format!(
-            "interrupted (Ctrl-C) after {} of {} lives; the finished lives are in {}: run again with --resume to complete",
-            done.len(),
-            range.len(),
-            kept()
-        ))));
-    }
-    if done.len() < range.len() {
-        anyhow::bail!(
-            "stopped after {} of {} lives (--stop-after); the finished lives are in {}; run again with --resume to complete",
-            done.len(),
-            range.len(),
-            kept()
-        );
-    }
+    refuse_incomplete(done.len(), range.len(), &kept())?;
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);
     if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
@@ -575,19 +614,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     if shard {
         let dir = args.out.as_deref().expect("--life-range requires --out");
-        write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
-        let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-        crate::output::tidy_out_dir(dir, "design", &keep)?;
-        crate::sayln!(
-            "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {}; no statistics (`caisson merge` joins the shards)",
-            range.start,
-            range.end,
-            range.len(),
-            args.scenario.display(),
-            dir.display(),
-            kept()
-        );
-        return Ok(());
+        return write_shard(dir, &done, &range, &args.scenario, checkpoint.as_deref(), &kept());
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
