@@ -208,7 +208,7 @@ pub fn run(args: CampaignArgs) -> Result<()> {
     pb.finish_and_clear();
     let report = CampaignReport::new(&campaign, &results, false);
     let json = report_json(&report, "campaign")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -51,99 +51,14 @@ use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::io::{BufRead, Read, Write};
-use std::ops::{ControlFlow, Range};
+use std::io::{Read, Write};
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-/// The checkpoint format written: 2 added the check of every life line (format 1 had none); 3
-/// adds the range of lives and `brute_force` to the header (for shards and `caisson merge`).
-pub(crate) const CHECKPOINT_FORMAT: u32 = 3;
-
-/// The first line of a checkpoint.
-#[derive(serde::Serialize, serde::Deserialize)]
-pub(crate) struct Header {
-    pub caisson_design_checkpoint: u32,
-    pub fingerprint: String,
-    /// The lives the run that wrote the header was asked for, `life_start..life_end` (end
-    /// exclusive; `0..lives` for a whole run). A `--resume` may ask for others: the life lines
-    /// say which lives the checkpoint holds.
-    pub life_start: usize,
-    pub life_end: usize,
-    /// Whether the lives were run with `--brute-force` (part of the fingerprint too).
-    pub brute_force: bool,
-    pub caisson_version: String,
-    pub results_version: u32,
-}
-
-impl Header {
-    /// The header this build writes.
-    pub fn new(fingerprint: String, lives: &Range<usize>, brute_force: bool) -> Self {
-        Header {
-            caisson_design_checkpoint: CHECKPOINT_FORMAT,
-            fingerprint,
-            life_start: lives.start,
-            life_end: lives.end,
-            brute_force,
-            caisson_version: caisson::VERSION.to_string(),
-            results_version: caisson::RESULTS_VERSION,
-        }
-    }
-}
-
-#[derive(serde::Serialize, serde::Deserialize)]
-struct LifeLine {
-    life: usize,
-    #[serde(flatten)]
-    outcome: StormOutcome,
-}
-
-/// The key that ends every life line: `,"check":"<16 hex digits>"}`.
-const CHECK_KEY: &str = ",\"check\":\"";
-const CHECK_TAIL_LEN: usize = CHECK_KEY.len() + 16 + 2;
-
-/// The check of a life line: FNV-1a of the header line, a newline and the life's JSON.
-pub(crate) fn line_check(header_line: &str, body: &str) -> String {
-    let mut bytes = Vec::with_capacity(header_line.len() + 1 + body.len());
-    bytes.extend_from_slice(header_line.as_bytes());
-    bytes.push(b'\n');
-    bytes.extend_from_slice(body.as_bytes());
-    format!("{:016x}", caisson::report::fnv1a_64(&bytes))
-}
-
-/// A finished life as a checkpoint line, newline included: its JSON with `"check"` last.
-pub(crate) fn life_line(header_line: &str, life: usize, outcome: &StormOutcome) -> String {
-    let body = serde_json::to_string(&LifeLine { life, outcome: *outcome }).expect("a life serializes");
-    let check = line_check(header_line, &body);
-    format!("{}{CHECK_KEY}{check}\"}}\n", &body[..body.len() - 1])
-}
-
-/// A complete checkpoint line (without its newline) back to its life, or why it is refused.
-fn parse_life_line(header_line: &str, line: &str) -> Result<(usize, StormOutcome), String> {
-    let not_a_life = || "is not a life line of a caisson design checkpoint".to_string();
-    let cut = line.len().checked_sub(CHECK_TAIL_LEN).filter(|&c| line.is_char_boundary(c)).ok_or_else(not_a_life)?;
-    let (head, tail) = line.split_at(cut);
-    let check = tail.strip_prefix(CHECK_KEY).and_then(|t| t.strip_suffix("\"}")).ok_or_else(not_a_life)?;
-    let body = format!("{head}}}");
-    if line_check(header_line, &body) != check {
-        return Err("does not match its check: it was edited, or it comes from another checkpoint".into());
-    }
-    let l: LifeLine = serde_json::from_str(&body).map_err(|_| not_a_life())?;
-    Ok((l.life, l.outcome))
-}
-
-/// What is read from a checkpoint (by `--resume` and by `caisson merge`).
-pub(crate) struct Checkpoint {
-    /// The header line as written (the lines' checks depend on it).
-    pub header_line: String,
-    pub header: Header,
-    pub lives: BTreeMap<usize, StormOutcome>,
-    /// Length of the header and the complete lines, bytes: a torn last line starts here.
-    pub complete_len: u64,
-    /// Bytes of a last line cut short (0: none).
-    pub torn_bytes: u64,
-}
+pub(crate) use caisson::report::checkpoint::{life_line, read_line_limited, DesignHeader as Header, MAX_LINE_BYTES};
+use caisson::report::checkpoint::{CheckpointError, DesignCheckpoint as Checkpoint, LineError, LineFault};
 
 /// Who reads a checkpoint: the words of its errors.
 pub(crate) struct Reader {
@@ -170,9 +85,6 @@ impl Reader {
     }
 }
 
-/// The longest line a checkpoint reader keeps (a life line is about 400 bytes; a header less).
-pub(crate) const MAX_LINE_BYTES: usize = 64 * 1024;
-
 /// Open a checkpoint or shard for reading: a regular file (not a device such as /dev/zero, a
 /// FIFO or a directory, which could be read for ever), read no further than its length when
 /// opened.
@@ -190,121 +102,56 @@ pub(crate) fn open_checkpoint(path: &Path, who: &str) -> Result<std::io::BufRead
     Ok(std::io::BufReader::new(file.take(meta.len())))
 }
 
-/// Read one line of `r` (through its `\n`) into `buf`, keeping at most `max + 1` bytes of it (a
-/// longer line is counted, not kept): (the line's length in bytes, whether it ends with `\n`).
-pub(crate) fn read_line_limited(r: &mut impl BufRead, buf: &mut Vec<u8>, max: usize) -> std::io::Result<(u64, bool)> {
-    buf.clear();
-    let mut len = 0u64;
-    loop {
-        let chunk = r.fill_buf()?;
-        if chunk.is_empty() {
-            return Ok((len, false));
-        }
-        let (take, done) = match chunk.iter().position(|&b| b == b'\n') {
-            Some(i) => (i + 1, true),
-            None => (chunk.len(), false),
-        };
-        let room = (max + 1).saturating_sub(buf.len()).min(take);
-        buf.extend_from_slice(&chunk[..room]);
-        len += take as u64;
-        r.consume(take);
-        if done {
-            return Ok((len, true));
-        }
-    }
-}
-
-/// Read a checkpoint: a header of this format and results version whose fingerprint is
-/// `fingerprint_for(header)`, then every complete line a life of it, each life once (an input
-/// error naming the line otherwise); a last line without its newline is torn (reported in
-/// [`Checkpoint::torn_bytes`]). `on_life` is called once per life read.
+/// Read a checkpoint with the library's reader ([`caisson::report::checkpoint::read_design`]):
+/// a header of this format and results version whose fingerprint is `fingerprint_for(header)`,
+/// then every complete line a life of it, each life once; its refusals worded for `reader` with
+/// the file's name. `on_life` is called once per life read.
 pub(crate) fn read_checkpoint(
     path: &Path,
     reader: &Reader,
     fingerprint_for: &dyn Fn(&Header) -> String,
     on_life: &dyn Fn(),
 ) -> Result<Checkpoint> {
+    let file = open_checkpoint(path, &reader.who)?;
+    caisson::report::checkpoint::read_design(file, fingerprint_for, on_life)
+        .map_err(|e| checkpoint_error(path, reader, e))
+}
+
+/// A checkpoint's refusal in the words of `reader`, naming the file (and the line).
+fn checkpoint_error(path: &Path, reader: &Reader, e: CheckpointError) -> anyhow::Error {
     let Reader { who, this, again, line_fix } = reader;
-    let mut file = open_checkpoint(path, who)?;
-    let mut buf = Vec::new();
-    // (bytes of the line, whether it ended with its newline); at most MAX_LINE_BYTES kept in buf.
-    let mut read_line = |buf: &mut Vec<u8>| -> Result<(u64, bool)> {
-        read_line_limited(&mut file, buf, MAX_LINE_BYTES)
-            .with_context(|| format!("reading the checkpoint {}", path.display()))
-    };
-    let (_, complete) = read_line(&mut buf)?;
-    let complete = complete && buf.len() <= MAX_LINE_BYTES;
-    let header_line = std::str::from_utf8(&buf).unwrap_or("").trim_end_matches('\n').to_string();
-    // A header of another format names its format if it has one.
-    let format = serde_json::from_str::<serde_json::Value>(&header_line)
-        .ok()
-        .and_then(|v| v.get("caisson_design_checkpoint").and_then(|f| f.as_u64()))
-        .filter(|_| complete);
-    if let Some(f) = format.filter(|&f| f != CHECKPOINT_FORMAT as u64) {
-        let version = serde_json::from_str::<serde_json::Value>(&header_line)
-            .ok()
-            .and_then(|v| v.get("caisson_version").and_then(|v| v.as_str().map(String::from)))
-            .unwrap_or_else(|| "?".into());
-        return Err(input_err(format!(
-            "{who}: the checkpoint {} is of format {f} (caisson {version}), this caisson reads format {CHECKPOINT_FORMAT} (whose lines carry a check and whose header gives the range of lives); {again}",
-            path.display(),
-        )));
-    }
-    let header: Header = serde_json::from_str(&header_line).ok().filter(|_| complete).ok_or_else(|| {
-        input_err(format!(
-            "{who}: {} line 1 is not a caisson design checkpoint header (of results version {}); {again}",
-            path.display(),
+    let path_text = path.display();
+    match e {
+        CheckpointError::Io(e) => anyhow::Error::new(e).context(format!("reading the checkpoint {path_text}")),
+        CheckpointError::Format { format, caisson_version } => input_err(format!(
+            "{who}: the checkpoint {path_text} is of format {format} (caisson {caisson_version}), this caisson reads format {} (whose lines carry a check and whose header gives the range of lives); {again}",
+            caisson::report::checkpoint::DESIGN_FORMAT
+        )),
+        CheckpointError::NotAHeader => input_err(format!(
+            "{who}: {path_text} line 1 is not a caisson design checkpoint header (of results version {}); {again}",
             caisson::RESULTS_VERSION
-        ))
-    })?;
-    if header.results_version != caisson::RESULTS_VERSION {
-        return Err(input_err(format!(
-            "{who}: the checkpoint {} holds results version {} (caisson {}), this caisson {} computes results version {}; its lives would not match: {again}",
-            path.display(),
-            header.results_version,
-            header.caisson_version,
+        )),
+        CheckpointError::ResultsVersion { results_version, caisson_version } => input_err(format!(
+            "{who}: the checkpoint {path_text} holds results version {results_version} (caisson {caisson_version}), this caisson {} computes results version {}; its lives would not match: {again}",
             caisson::VERSION,
             caisson::RESULTS_VERSION
-        )));
+        )),
+        CheckpointError::Fingerprint { found, expected } => input_err(format!(
+            "{who}: the checkpoint {path_text} was written for a different scenario or options (fingerprint {found}, {this} {expected}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}"
+        )),
+        CheckpointError::Line { line, fault } => {
+            let why = match fault {
+                LineFault::TooLong { len } => format!(
+                    "is {len} bytes long, longer than any life line ({MAX_LINE_BYTES} bytes at most): the file is damaged"
+                ),
+                LineFault::Refused(LineError::Malformed | LineError::NotARecord(_)) => {
+                    "is not a life line of a caisson design checkpoint".into()
+                }
+                fault => fault.to_string(),
+            };
+            input_err(format!("{who}: {path_text} line {line} {why}; {line_fix}"))
+        }
     }
-    let fingerprint = fingerprint_for(&header);
-    if header.fingerprint != fingerprint {
-        return Err(input_err(format!(
-            "{who}: the checkpoint {} was written for a different scenario or options (fingerprint {}, {this} {}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}",
-            path.display(),
-            header.fingerprint,
-            fingerprint
-        )));
-    }
-    let mut cp =
-        Checkpoint { header_line, header, lives: BTreeMap::new(), complete_len: buf.len() as u64, torn_bytes: 0 };
-    let mut line_of: BTreeMap<usize, usize> = BTreeMap::new();
-    for n in 2.. {
-        let (len, complete) = read_line(&mut buf)?;
-        if len == 0 {
-            break;
-        }
-        if !complete {
-            // The run stopped while writing this line (or a crash left a tail of NUL bytes).
-            cp.torn_bytes = len;
-            break;
-        }
-        let refuse = |why: String| input_err(format!("{who}: {} line {n} {why}; {line_fix}", path.display()));
-        if len > MAX_LINE_BYTES as u64 {
-            return Err(refuse(format!(
-                "is {len} bytes long, longer than any life line ({MAX_LINE_BYTES} bytes at most): the file is damaged"
-            )));
-        }
-        let text = std::str::from_utf8(&buf[..buf.len() - 1]).map_err(|_| refuse("is not UTF-8 text".into()))?;
-        let (life, outcome) = parse_life_line(&cp.header_line, text).map_err(refuse)?;
-        if let Some(first) = line_of.insert(life, n) {
-            return Err(refuse(format!("repeats life {life} (already on line {first})")));
-        }
-        cp.lives.insert(life, outcome);
-        cp.complete_len += buf.len() as u64;
-        on_life();
-    }
-    Ok(cp)
 }
 
 /// The longest time a finished life's line waits before it is flushed to disk (module docs).
@@ -615,6 +462,66 @@ pub(crate) fn load_design(
     Ok((sc, design))
 }
 
+/// The checkpoint of a run at `path`: read by `--resume` (`resume`) and appended to, or created
+/// with the header of this run (`fingerprint`, the lives `range`, `brute_force`). Returns the
+/// lives it holds and its writer.
+fn open_run_checkpoint(
+    path: &Path,
+    resume: bool,
+    fingerprint: &str,
+    range: &std::ops::Range<usize>,
+    brute_force: bool,
+) -> Result<(BTreeMap<usize, StormOutcome>, CheckpointWriter)> {
+    if resume {
+        let cp = read_checkpoint(path, &Reader::resume(), &|_| fingerprint.to_string(), &|| {})?;
+        let w = CheckpointWriter::resume(path, &cp)?;
+        Ok((cp.lives, w))
+    } else {
+        let header = Header::new(fingerprint.to_string(), range, brute_force);
+        Ok((BTreeMap::new(), CheckpointWriter::create(path, header.line())?))
+    }
+}
+
+/// Refuse to report `done` of `asked` lives: interrupted (Ctrl-C) or stopped by `--stop-after`,
+/// the finished lives `kept` there.
+fn refuse_incomplete(done: usize, asked: usize, kept: &str) -> Result<()> {
+    if done < asked && crate::interrupt::requested() {
+        return Err(anyhow::Error::new(crate::Interrupted(format!(
+            "interrupted (Ctrl-C) after {done} of {asked} lives; the finished lives are in {kept}: run again with --resume to complete"
+        ))));
+    }
+    if done < asked {
+        anyhow::bail!(
+            "stopped after {done} of {asked} lives (--stop-after); the finished lives are in {kept}; run again with --resume to complete"
+        );
+    }
+    Ok(())
+}
+
+/// The outputs of a shard (`--life-range`): its `lives.csv` in `dir` (the checkpoint is kept),
+/// no statistics.
+fn write_shard(
+    dir: &Path,
+    done: &BTreeMap<usize, StormOutcome>,
+    range: &std::ops::Range<usize>,
+    scenario: &Path,
+    checkpoint: Option<&Path>,
+    kept: &str,
+) -> Result<()> {
+    write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
+    let keep: Vec<&Path> = checkpoint.into_iter().collect();
+    crate::output::tidy_out_dir(dir, "design", &keep)?;
+    crate::sayln!(
+        "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {kept}; no statistics (`caisson merge` joins the shards)",
+        range.start,
+        range.end,
+        range.len(),
+        scenario.display(),
+        dir.display()
+    );
+    Ok(())
+}
+
 pub fn run(args: DesignArgs) -> Result<()> {
     let (sc, design) = load_design(&args.scenario, "`caisson design`", args.lives, args.brute_force)?;
     // A shard runs its range; a whole run lives 0..N.
@@ -644,14 +551,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let _lock = checkpoint.as_deref().map(|c| CheckpointLock::acquire(c, "design")).transpose()?;
     let (mut done, writer) = match &checkpoint {
         Some(path) => {
-            if args.resume {
-                let cp = read_checkpoint(path, &Reader::resume(), &|_| fingerprint.clone(), &|| {})?;
-                let w = CheckpointWriter::resume(path, &cp)?;
-                (cp.lives, Some(Mutex::new(w)))
-            } else {
-                let header = Header::new(fingerprint.clone(), &range, args.brute_force);
-                (BTreeMap::new(), Some(Mutex::new(CheckpointWriter::create(path, serde_json::to_string(&header)?)?)))
-            }
+            let (done, w) = open_run_checkpoint(path, args.resume, &fingerprint, &range, args.brute_force)?;
+            (done, Some(Mutex::new(w)))
         }
         None => (BTreeMap::new(), None),
     };
@@ -697,22 +598,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     done.extend(results);
     let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
-    if done.len() < range.len() && crate::interrupt::requested() {
-        return Err(anyhow::Error::new(crate::Interrupted(format!(
-            "interrupted (Ctrl-C) after {} of {} lives; the finished lives are in {}: run again with --resume to complete",
-            done.len(),
-            range.len(),
-            kept()
-        ))));
-    }
-    if done.len() < range.len() {
-        anyhow::bail!(
-            "stopped after {} of {} lives (--stop-after); the finished lives are in {}; run again with --resume to complete",
-            done.len(),
-            range.len(),
-            kept()
-        );
-    }
+    refuse_incomplete(done.len(), range.len(), &kept())?;
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);
     if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
@@ -728,19 +614,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     if shard {
         let dir = args.out.as_deref().expect("--life-range requires --out");
-        write_atomic(&dir.join("lives.csv"), &lives_csv(done.iter().map(|(&i, o)| (i, o)))?)?;
-        let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-        crate::output::tidy_out_dir(dir, "design", &keep)?;
-        crate::sayln!(
-            "Shard of lives {}..{} ({} lives) of {}: wrote lives.csv to {} and the lives to {}; no statistics (`caisson merge` joins the shards)",
-            range.start,
-            range.end,
-            range.len(),
-            args.scenario.display(),
-            dir.display(),
-            kept()
-        );
-        return Ok(());
+        return write_shard(dir, &done, &range, &args.scenario, checkpoint.as_deref(), &kept());
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
@@ -763,14 +637,9 @@ pub(crate) fn report_lives(
 ) -> Result<()> {
     let failure = design.failure_limits(case.structure.caisson.width_m);
     let failure_m = failure.sliding_m;
-    let mut report = DesignReport::new(design, case.rigid_block_mu, failure_m, lives);
-    report.warnings = caisson::analysis::checks::structure_warnings(case.structure);
-    report.warnings.extend(caisson::analysis::checks::life_warnings(lives, &failure, case.structure.caisson.width_m));
-    if let Some(ws) = waves {
-        report.warnings.extend(caisson::analysis::checks::wave_load_warnings(case.structure, ws));
-    }
+    let report = DesignReport::new(design, case, waves, lives);
     let doc = report_json(&report, "design")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if json {
         crate::sayln!("{}", pretty(&doc)?);
     } else {

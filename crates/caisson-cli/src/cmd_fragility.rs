@@ -227,7 +227,7 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     let name = args.scenario.file_name().and_then(|s| s.to_str()).unwrap_or("fragility");
     let report = FragilityReport::new(name, setup.structure, setup.waves, params, &result);
     let json = report_json(&report, "fragility")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -8,7 +8,7 @@
 
 use crate::cli::LoadsArgs;
 use crate::input_err;
-use crate::output::{check_finite_fields, check_out_dir, pretty, write_atomic};
+use crate::output::{check_out_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
 use caisson::analysis::conventional::{static_check, DesignWaveRule, StaticCheck};
@@ -52,7 +52,6 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     // Goda's design wave (regular: H; irregular: H_max, docs/model.md §1.3) and its checks.
     let check = static_check(sc.structure(), ws).map_err(input_err)?;
     let loads = check.loads;
-    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
 
     let history = if args.history {
         let records = ws.model.regular_records(&loads, args.waves, &mut load_rng(args.seed));
@@ -61,27 +60,17 @@ pub fn run(args: LoadsArgs) -> Result<()> {
     } else {
         None
     };
-    let mut report = LoadsReport::new(ws, &check, w, mu);
-    report.warnings = caisson::analysis::checks::structure_warnings(sc.structure());
-    report.warnings.extend(caisson::analysis::checks::wave_load_warnings(sc.structure(), ws));
-    if let Some((records, _)) = &history {
-        report.history = Some(HistoryInfo {
-            waves: args.waves,
-            seed: args.seed,
-            rise_times_s: records.iter().map(|r| r.rise_time_s).collect(),
-            csv: "wave_loads.csv",
-            svg: "wave_loads.svg",
-        });
-    }
-    // Every number finite, or nothing is printed or written: the loads are closed forms of the
-    // scenario's numbers, so one that overflows is the input's (a huge weight or wave).
-    check_finite_fields(&report, "loads").map_err(|field| {
-        input_err(format!(
-            "the scenario's loads are not finite numbers ({field}): the [caisson], [water] or [waves] numbers are too large or too small for the formulas"
-        ))
-    })?;
-    crate::output::print_warnings(&report.warnings);
-    let doc = serde_json::to_value(&report)?;
+    let info = history.as_ref().map(|(records, _)| HistoryInfo {
+        waves: args.waves,
+        seed: args.seed,
+        rise_times_s: records.iter().map(|r| r.rise_time_s).collect(),
+        csv: "wave_loads.csv",
+        svg: "wave_loads.svg",
+    });
+    // Every number finite, or nothing is printed or written (an input error: the input's numbers).
+    let report = LoadsReport::of_structure(sc.structure(), ws, &check, info).map_err(input_err)?;
+    crate::output::print_warning_lines(&report.warnings);
+    let doc = crate::output::report_json(&report, "loads")?;
     if args.json {
         crate::sayln!("{}", pretty(&doc)?);
     } else {

@@ -34,13 +34,11 @@ use crate::cmd_design::{
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, process_running, progress, TempFile};
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::StormOutcome;
+use caisson::report::checkpoint::{Merge, MergeError};
 use caisson::report::design::design_fingerprint;
 use std::io::Write;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
-
-/// No shard holds the life yet.
-const NONE: u32 = u32::MAX;
 
 /// A shard on the command line.
 struct Shard {
@@ -93,6 +91,45 @@ fn refuse_if_running(shard: &Shard) -> Result<()> {
     }
 }
 
+/// A refusal of the merge rules in the words of `caisson merge`: the shards by name and by the
+/// lives they were run for (`ranges`, in the order read), the `n` lives to merge.
+fn merge_error(e: MergeError, shards: &[Shard], ranges: &[Range<usize>], n: usize, args: &MergeArgs) -> anyhow::Error {
+    let file = args.scenario.display();
+    input_err(match e {
+        MergeError::Beyond { shard, life, .. } => format!(
+            "{} (lives {}) holds life {life}, beyond the lives to merge, 0..{n} ({}); give --lives N to merge lives 0..N",
+            shards[shard].name(),
+            text(&ranges[shard]),
+            if args.lives.is_some() { format!("--lives {n}") } else { format!("`[design] lives` = {n} of {file}") }
+        ),
+        MergeError::Overlap { life, first, second } => format!(
+            "life {life} is in two shards: {} (lives {}) and {} (lives {}); shards must not overlap: give each life to one shard",
+            shards[first].name(),
+            text(&ranges[first]),
+            shards[second].name(),
+            text(&ranges[second])
+        ),
+        MergeError::Missing { start, end, missing, gaps, incomplete } => {
+            let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
+            let hint = match incomplete {
+                Some(k) => format!(
+                    "{} was run for lives {r} and is incomplete: complete it with `caisson design {file} --life-range {r} --resume --out {}`",
+                    shards[k].name(),
+                    shards[k].arg.display(),
+                    r = text(&ranges[k])
+                ),
+                None => format!(
+                    "run them (`caisson design {file} --life-range {start}..{end} --out DIR`) and merge that shard too"
+                ),
+            };
+            format!(
+                "lives {start}..{end} are in no shard ({} lives{more}; the merge needs lives 0..{n}): {hint}",
+                end - start
+            )
+        }
+    })
+}
+
 pub fn run(args: MergeArgs) -> Result<()> {
     check_out_dir(Some(&args.out))?;
     let _out_lock = crate::output::OutLock::acquire(&args.out, "merge")?;
@@ -129,15 +166,13 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let n = design.lives;
     let file = args.scenario.display().to_string();
 
-    // Read every shard: its lives into their places, each life from one shard only.
+    // Read every shard: its lives into their places, each life from one shard only (the
+    // library's merge rules, worded here with the shards' names).
     let pb = progress(n as u64, "reading the shards", "lives");
-    let mut lives: Vec<StormOutcome> = vec![StormOutcome::default(); n];
-    let mut owner: Vec<u32> = vec![NONE; n];
+    let mut merge = Merge::new(n);
     // The lives each shard was run for (its header).
-    let mut ranges: Vec<std::ops::Range<usize>> = Vec::with_capacity(shards.len());
-    for (k, s) in shards.iter().enumerate() {
-        let resume =
-            |range: &str| format!("caisson design {file} --life-range {range} --resume --out {}", s.arg.display());
+    let mut ranges: Vec<Range<usize>> = Vec::with_capacity(shards.len());
+    for s in &shards {
         let reader = Reader {
             who: s.name(),
             this: format!("{file} gives"),
@@ -147,63 +182,23 @@ pub fn run(args: MergeArgs) -> Result<()> {
                     .into(),
         };
         let cp = read_checkpoint(&s.checkpoint, &reader, &|_| fingerprint.clone(), &|| pb.inc(1))?;
-        let asked = cp.header.life_start..cp.header.life_end;
-        let range = text(&asked);
+        let range = cp.header.range();
         if cp.torn_bytes > 0 {
             return Err(input_err(format!(
-                "{}: its checkpoint {} ends in a line cut short ({} bytes: the run stopped while writing it): complete the shard first (`{}` drops that line)",
+                "{}: its checkpoint {} ends in a line cut short ({} bytes: the run stopped while writing it): complete the shard first (`caisson design {file} --life-range {} --resume --out {}` drops that line)",
                 s.name(),
                 s.checkpoint.display(),
                 cp.torn_bytes,
-                resume(&range)
+                text(&range),
+                s.arg.display()
             )));
         }
-        if let Some((&life, _)) = cp.lives.range(n..).next() {
-            return Err(input_err(format!(
-                "{} (lives {range}) holds life {life}, beyond the lives to merge, 0..{n} ({}); give --lives N to merge lives 0..N",
-                s.name(),
-                if args.lives.is_some() { format!("--lives {n}") } else { format!("`[design] lives` = {n} of {file}") }
-            )));
-        }
-        for (life, outcome) in cp.lives {
-            if owner[life] != NONE {
-                let other = owner[life] as usize;
-                return Err(input_err(format!(
-                    "life {life} is in two shards: {} (lives {}) and {} (lives {range}); shards must not overlap: give each life to one shard",
-                    shards[other].name(),
-                    text(&ranges[other]),
-                    s.name()
-                )));
-            }
-            owner[life] = k as u32;
-            lives[life] = outcome;
-        }
-        ranges.push(asked);
+        ranges.push(range.clone());
+        merge.add(Some(range), cp.lives).map_err(|e| merge_error(e, &shards, &ranges, n, &args))?;
     }
     pb.finish_and_clear();
-
     // Every life 0..N in some shard.
-    let missing = owner.iter().filter(|&&o| o == NONE).count();
-    if let Some(start) = owner.iter().position(|&o| o == NONE) {
-        let end = owner[start..].iter().position(|&o| o != NONE).map_or(n, |e| start + e);
-        let gaps = (0..n).filter(|&i| owner[i] == NONE && (i == 0 || owner[i - 1] != NONE)).count();
-        let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
-        // A shard that was run for them and stopped.
-        let stopped = shards.iter().zip(&ranges).find(|(_, r)| r.start < end && start < r.end);
-        let hint = match stopped {
-            Some((s, r)) => format!(
-                "{} was run for lives {r} and is incomplete: complete it with `caisson design {file} --life-range {r} --resume --out {}`",
-                s.name(),
-                s.arg.display(),
-                r = text(r)
-            ),
-            None => format!("run them (`caisson design {file} --life-range {start}..{end} --out DIR`) and merge that shard too"),
-        };
-        return Err(input_err(format!(
-            "lives {start}..{end} are in no shard ({} lives{more}; the merge needs lives 0..{n}): {hint}",
-            end - start
-        )));
-    }
+    let lives = merge.finish().map_err(|e| merge_error(e, &shards, &ranges, n, &args))?;
 
     // The merged checkpoint: the header and the lines of one run of lives 0..N.
     ensure_dir(&args.out)?;
@@ -211,7 +206,7 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
     // The checkpoint and the outputs of report_lives: one set.
     let _set = crate::output::OutSet::open(&args.out);
-    let header_line = serde_json::to_string(&Header::new(fingerprint, &(0..n), brute_force))?;
+    let header_line = Header::new(fingerprint, &(0..n), brute_force).line();
     let (tmp, f) = TempFile::create(&cp_path)?;
     let mut w = std::io::BufWriter::new(f);
     let written = (|| -> std::io::Result<()> {

@@ -3,145 +3,100 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
-use crate::cmd_design::line_check;
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
 use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::checks::{candidate_warnings, structure_warnings};
-use caisson::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave, Governs};
-use caisson::analysis::lifetime::{run_lives, StormOutcome};
-use caisson::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, Reached, Required};
-use caisson::loads::safety::SafetyFactors;
-use caisson::report::design::design_fingerprint;
+use caisson::analysis::conventional::Governs;
+use caisson::analysis::sizing::{Candidate, Reached, Required};
+use caisson::drive::size::{Hooks, SizeError, Sizer};
+use caisson::report::checkpoint::{candidate_line, SizeHeader};
 use caisson::report::size::{GodaWidth, SizeReport};
-use caisson::scenario::{self, Scenario};
+use caisson::scenario;
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::ops::ControlFlow;
 use std::path::Path;
 
-/// Width tolerance of the deterministic (Goda) width, m.
-const GODA_TOLERANCE_M: f64 = 1e-3;
-
-/// The scenario with the caisson `width_m` wide (its construction gives the weight).
-fn at_width(sc: &Scenario, width_m: f64) -> Result<Scenario> {
-    sc.clone()
-        .with_caisson(|c| *c = c.with_width_m(width_m))
-        .map_err(|e| input_err(format!("at the width {width_m} m of the search: {e}")))
-}
-
-/// Goda's static checks of the scenario's design wave on `sc`'s caisson.
-fn goda_checks(sc: &Scenario) -> Option<SafetyFactors> {
-    static_check(sc.structure(), sc.waves.as_ref()?).ok().map(|c| c.safety)
-}
-
 /// The checkpoint of a sizing run in `--out`: a header line, then one line per finished
 /// candidate width (its statistics, ending with the `"check"` of the header and the line, as the
 /// design checkpoint's lines do).
 const CHECKPOINT: &str = "size_checkpoint.jsonl";
-const CHECKPOINT_FORMAT: u32 = 1;
 
-#[derive(serde::Serialize, serde::Deserialize)]
-struct Header {
-    caisson_size_checkpoint: u32,
-    fingerprint: String,
-    caisson_version: String,
-    results_version: u32,
-}
-
-/// The key that ends every candidate line.
-const CHECK_KEY: &str = ",\"check\":\"";
-
-fn candidate_line(header_line: &str, c: &Candidate) -> Result<String> {
-    let body = serde_json::to_string(c)?;
-    let check = line_check(header_line, &body);
-    Ok(format!("{}{CHECK_KEY}{check}\"}}\n", &body[..body.len() - 1]))
-}
-
-fn parse_candidate_line(header_line: &str, line: &str) -> std::result::Result<Candidate, String> {
-    let (head, tail) = line.rsplit_once(CHECK_KEY).ok_or("is not a candidate line of a sizing checkpoint")?;
-    let check = tail.strip_suffix("\"}").ok_or("is not a candidate line of a sizing checkpoint")?;
-    let body = format!("{head}}}");
-    if line_check(header_line, &body) != check {
-        return Err("does not match its check: it was edited, or it comes from another checkpoint".into());
-    }
-    serde_json::from_str(&body).map_err(|e| format!("is not a candidate: {e}"))
-}
-
-/// The finished candidates of the checkpoint `path` of this run (`fingerprint`), or why not.
+/// The finished candidates of the checkpoint `path` of this run (`fingerprint`), read with the
+/// library's reader ([`caisson::report::checkpoint::read_size`]), or why not.
 fn read_checkpoint(path: &Path, fingerprint: &str) -> Result<(String, Vec<Candidate>)> {
+    use caisson::report::checkpoint::{CheckpointError, LineError, LineFault, SIZE_FORMAT};
     let text = std::fs::read_to_string(path)
         .map_err(|e| input_err(format!("--resume: cannot read the checkpoint {}: {e}", path.display())))?;
-    let mut lines = text.split_inclusive('\n');
-    let header_line = lines.next().unwrap_or("").trim_end_matches('\n').to_string();
     let again = "run without --resume to start again";
-    let header: Header = serde_json::from_str(&header_line).map_err(|_| {
-        input_err(format!("--resume: {} does not start with a sizing checkpoint header; {again}", path.display()))
-    })?;
-    if header.caisson_size_checkpoint != CHECKPOINT_FORMAT || header.results_version != caisson::RESULTS_VERSION {
-        return Err(input_err(format!(
-            "--resume: {} is of checkpoint format {} and results version {} (this caisson: {CHECKPOINT_FORMAT} and {}); {again}",
+    match caisson::report::checkpoint::read_size(text.as_bytes(), fingerprint) {
+        Ok(cp) => Ok((cp.header_line, cp.candidates)),
+        Err(CheckpointError::Io(e)) => Err(anyhow::Error::new(e)),
+        Err(CheckpointError::NotAHeader) => Err(input_err(format!(
+            "--resume: {} does not start with a sizing checkpoint header; {again}",
+            path.display()
+        ))),
+        Err(CheckpointError::Format { format, .. }) => Err(input_err(format!(
+            "--resume: {} is of checkpoint format {format} (this caisson: {SIZE_FORMAT}); {again}",
             path.display(),
-            header.caisson_size_checkpoint,
-            header.results_version,
+        ))),
+        Err(CheckpointError::ResultsVersion { results_version, .. }) => Err(input_err(format!(
+            "--resume: {} is of results version {results_version} (this caisson: {}); {again}",
+            path.display(),
             caisson::RESULTS_VERSION
-        )));
-    }
-    if header.fingerprint != fingerprint {
-        return Err(input_err(format!(
+        ))),
+        Err(CheckpointError::Fingerprint { .. }) => Err(input_err(format!(
             "--resume: {} belongs to another sizing run (another scenario, [design] or [size]); {again}",
             path.display()
-        )));
-    }
-    let mut done: Vec<Candidate> = Vec::new();
-    for (k, line) in lines.enumerate() {
-        let Some(line) = line.strip_suffix('\n') else { break }; // a torn last line: cut away
-        let c = parse_candidate_line(&header_line, line)
-            .map_err(|why| input_err(format!("--resume: {} line {}: {why}", path.display(), k + 2)))?;
-        if done.iter().any(|d| d.width_m == c.width_m) {
-            return Err(input_err(format!(
-                "--resume: {} line {}: the width {} m appears twice",
-                path.display(),
-                k + 2,
-                c.width_m
-            )));
+        ))),
+        Err(CheckpointError::Line { line, fault }) => {
+            let why = match fault {
+                LineFault::Refused(LineError::Malformed) => "is not a candidate line of a sizing checkpoint".into(),
+                LineFault::Refused(LineError::NotARecord(e)) => format!("is not a candidate: {e}"),
+                LineFault::Repeats { what, .. } => format!("{what} appears twice"),
+                fault => fault.to_string(),
+            };
+            Err(input_err(format!("--resume: {} line {line}: {why}", path.display())))
         }
-        done.push(c);
     }
-    Ok((header_line, done))
+}
+
+/// A sizing error as the CLI reports it: an input error, the interruption (naming what is kept),
+/// a failed run with its width, or the checkpoint's write error.
+fn size_error(e: SizeError, checkpoint: Option<&Path>, write_error: Option<anyhow::Error>) -> anyhow::Error {
+    match e {
+        SizeError::Stopped { width_m } => anyhow::Error::new(crate::Interrupted(match checkpoint {
+            Some(path) => format!(
+                "interrupted (Ctrl-C) at the width {width_m} m; the finished widths are in {}: run again with --resume to complete",
+                path.display()
+            ),
+            None => "interrupted (Ctrl-C); nothing was kept (give --out DIR to keep the finished widths)".into(),
+        })),
+        SizeError::Run { width_m, source } => {
+            anyhow::Error::new(source).context(format!("the lives at the width {width_m} m"))
+        }
+        SizeError::Candidate(why) => write_error.unwrap_or_else(|| anyhow::anyhow!(why)),
+        e => input_err(e),
+    }
 }
 
 pub fn run(args: SizeArgs) -> Result<()> {
     let sc = scenario::load(&args.scenario).map_err(input_err)?;
-    let p = *sc.size_for("`caisson size`").map_err(input_err)?;
-    let design = sc.design_for("`caisson size`").map_err(input_err)?.clone();
-    if sc.caisson_spec().construction().is_none() {
-        return Err(input_err(
-            "`caisson size` varies the width, so the caisson's weight must follow it: give `[caisson]` its construction (wall_thickness_m, slab_thickness_m, fill_density_kg_per_m3, ...; docs/scenario.md) instead of `weight_in_water_kn`",
-        ));
-    }
+    let sizer = Sizer::new(&sc, "`caisson size`").map_err(input_err)?;
+    let p = sizer.params;
     check_out_dir(args.out.as_deref())?;
     // Held to the end: a second run into the same --out is refused at once.
     let _out_lock = args.out.as_deref().map(|d| crate::output::OutLock::acquire(d, "size")).transpose()?;
     // Every width of the grid must build (a width whose caisson floats is an input error); the
     // work is estimated on them as `design` estimates one width's lives, and refused over the
     // budget (docs/cli.md, Limits).
-    let mut grid = Vec::new();
-    for w in curve_widths(&p) {
-        let sw = at_width(&sc, w)?;
-        let case = sw.storm_case(design.screen).map_err(input_err)?;
-        let waves = sw.waves_for("`caisson size`").map_err(input_err)?;
-        let one_width = caisson::analysis::lifetime::DesignParams { lives: p.lives, ..design.clone() };
-        grid.push(caisson::analysis::work::design(&case, &one_width, waves));
-    }
-    let candidates = grid.len() + 2 * bisection_steps(&p, (p.range_m.1 - p.range_m.0) / (grid.len() - 1) as f64);
-    let note = crate::work::check("size", &caisson::analysis::work::size(&grid, candidates), &crate::work::SIZE)?;
+    let estimate = sizer.estimate("`caisson size`").map_err(input_err)?;
+    let note = crate::work::check("size", &estimate, &crate::work::SIZE)?;
     if args.resume && args.out.is_none() {
         return Err(input_err("--resume needs the checkpoint: give --out DIR (DIR/size_checkpoint.jsonl)"));
     }
-    let case = sc.storm_case(design.screen).map_err(input_err)?;
-    let fingerprint = caisson::report::fingerprint(&(design_fingerprint(&case, &design), &p));
+    let fingerprint = sizer.fingerprint().map_err(input_err)?;
     let checkpoint = args.out.as_ref().map(|d| d.join(CHECKPOINT));
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
@@ -153,18 +108,12 @@ pub fn run(args: SizeArgs) -> Result<()> {
         let (header_line, done) = if args.resume {
             read_checkpoint(path, &fingerprint)?
         } else {
-            let header = Header {
-                caisson_size_checkpoint: CHECKPOINT_FORMAT,
-                fingerprint: fingerprint.clone(),
-                caisson_version: caisson::VERSION.to_string(),
-                results_version: caisson::RESULTS_VERSION,
-            };
-            (serde_json::to_string(&header)?, Vec::new())
+            (SizeHeader::new(fingerprint.clone()).line(), Vec::new())
         };
         // The checkpoint rewritten whole (its header and the complete lines), then appended to.
         let mut text = format!("{header_line}\n");
         for c in &done {
-            text.push_str(&candidate_line(&header_line, c)?);
+            text.push_str(&candidate_line(&header_line, c));
         }
         write_atomic(path, text.as_bytes())?;
         let f = std::fs::OpenOptions::new()
@@ -175,48 +124,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
         finished = done;
     }
     let resumed = finished.len();
-    let writer = std::cell::RefCell::new(writer);
-    let grid = curve_widths(&p).len();
-    let estimate = grid + 2 * bisection_steps(&p, (p.range_m.1 - p.range_m.0) / (grid - 1) as f64);
-    let pb = progress((estimate * p.lives) as u64, "candidates", "lives");
-    let mut evaluate = |w: f64| -> Result<Candidate> {
-        if let Some(c) = finished.iter().find(|c| c.width_m == w) {
-            pb.inc(p.lives as u64);
-            return Ok(c.clone());
-        }
-        let sw = at_width(&sc, w)?;
-        let case = sw.storm_case(design.screen).map_err(input_err)?;
-        pb.set_message(format!("B = {w:.3} m"));
-        let indices: Vec<usize> = (0..p.lives).collect();
-        let on_life = |_: usize, _: &StormOutcome| {
-            pb.inc(1);
-            if crate::interrupt::requested() {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        };
-        let lives = with_threads(args.threads, || run_lives(&case, &design.life, design.seed, &indices, &on_life))?
-            .with_context(|| format!("the lives at the width {w} m"))?;
-        if lives.len() < p.lives {
-            return Err(anyhow::Error::new(crate::Interrupted(match &checkpoint {
-                Some(path) => format!(
-                    "interrupted (Ctrl-C) at the width {w} m; the finished widths are in {}: run again with --resume to complete",
-                    path.display()
-                ),
-                None => "interrupted (Ctrl-C); nothing was kept (give --out DIR to keep the finished widths)".into(),
-            })));
-        }
-        let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
-        let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, &design.failure_limits(w), &p.criteria);
-        if let Some((header_line, f)) = writer.borrow_mut().as_mut() {
-            let path = checkpoint.as_deref().expect("a checkpoint with a writer");
-            f.write_all(candidate_line(header_line, &c)?.as_bytes())
-                .and_then(|_| f.sync_data())
-                .with_context(|| format!("writing the checkpoint {}", path.display()))?;
-        }
-        Ok(c)
-    };
+    let pb = progress((sizer.candidates() * p.lives) as u64, "candidates", "lives");
     if !args.json {
         crate::sayln!(
             "Sizing the width over {} .. {} m: {} lives per candidate{}",
@@ -228,31 +136,44 @@ pub fn run(args: SizeArgs) -> Result<()> {
     }
     crate::interrupt::graceful();
     crate::work::say(note);
-    let sizing = size(&p, &mut evaluate)?;
-    pb.finish_and_clear();
-    // The deterministic width is cheap: it is searched from a quarter of the range's smallest
-    // width to twice its largest, so it shows even where it lies far from the widths the dynamic
-    // model needs.
-    let goda_range = (p.range_m.0 / 4.0, 2.0 * p.range_m.1);
-    let mut checks = |w: f64| at_width(&sc, w).ok().and_then(|s| goda_checks(&s));
-    let width = conventional_width(goda_range, GODA_TOLERANCE_M, &p.conventional, &mut checks);
-    let design_wave = DesignWave::of(sc.waves.as_ref().expect("a sizing scenario has [waves]"));
-    let goda = GodaWidth::new(design_wave, &p.conventional, width);
-    let extra = |c: &Candidate| {
-        let checks = at_width(&sc, c.width_m).ok().and_then(|s| goda_checks(&s));
-        (design.failure_limit_m(c.width_m), checks.map(|sf| ChecksAtWidth::new(c.width_m, &sf)))
+    // The library's driver; the CLI keeps the progress, Ctrl-C and the checkpoint's file.
+    let mut write_error: Option<anyhow::Error> = None;
+    let result = {
+        let mut width = |w: f64, reused: bool| {
+            if reused {
+                pb.inc(p.lives as u64);
+            } else {
+                pb.set_message(format!("B = {w:.3} m"));
+            }
+        };
+        let life = || {
+            pb.inc(1);
+            if crate::interrupt::requested() {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
+        let mut candidate = |c: &Candidate| -> std::result::Result<(), String> {
+            let Some((header_line, f)) = writer.as_mut() else { return Ok(()) };
+            let path = checkpoint.as_deref().expect("a checkpoint with a writer");
+            let written = f
+                .write_all(candidate_line(header_line, c).as_bytes())
+                .and_then(|_| f.sync_data())
+                .with_context(|| format!("writing the checkpoint {}", path.display()));
+            written.map_err(|e| {
+                let why = format!("{e:#}");
+                write_error = Some(e);
+                why
+            })
+        };
+        let hooks = Hooks { width: &mut width, life: &life, candidate: &mut candidate };
+        with_threads(args.threads, || sizer.run(&finished, hooks))?
     };
-    let mut report = SizeReport::new(&p, design.life.life_years, design.seed, &sizing, goda, &extra);
-    report.climate = caisson::report::design::ClimateChoices::of(&design.life);
-    report.warnings = structure_warnings(sc.structure());
-    report.warnings.extend(range_warnings(&report));
-    report.warnings.extend(goda_warnings(&report));
-    report.warnings.extend(candidate_life_warnings(&sizing.candidates, &report, &design));
-    // Absent values (a width beyond the range, an undefined safety factor) are `null`: check
-    // the report's numbers themselves.
-    crate::output::check_finite_fields(&report, "size").map_err(|e| anyhow::anyhow!("internal error: {e}"))?;
-    let json = serde_json::to_value(&report).context("serializing the results")?;
-    crate::output::print_warnings(&report.warnings);
+    let report = result.map_err(|e| size_error(e, checkpoint.as_deref(), write_error.take()))?;
+    pb.finish_and_clear();
+    let json = crate::output::report_json(&report, "size")?;
+    crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {
@@ -274,101 +195,6 @@ pub fn run(args: SizeArgs) -> Result<()> {
         }
     }
     Ok(())
-}
-
-/// Warnings when the range does not bracket the answer.
-fn range_warnings(r: &SizeReport) -> Vec<caisson::analysis::checks::Warning> {
-    let mut out = Vec::new();
-    for (name, req) in [("dynamic model", &r.dynamic), ("rigid block", &r.rigid_block)] {
-        let (code, message) = match req {
-            Required::AtLowerBound { width_m } => (
-                "size-at-lower-bound",
-                format!("the {name} meets the criterion already at the smallest width {width_m} m: lower `[size] range_m`'s first value to find the required width"),
-            ),
-            Required::NotInRange { largest_m } => (
-                "size-not-in-range",
-                format!("the {name} does not meet the criterion at the largest width {largest_m} m: raise `[size] range_m`'s second value"),
-            ),
-            Required::Found { .. } => continue,
-        };
-        out.push(caisson::analysis::checks::Warning {
-            code,
-            message,
-            numbers: [("range_low_m", r.range_m.0), ("range_high_m", r.range_m.1)].into_iter().collect(),
-        });
-    }
-    out
-}
-
-/// The life warnings of every candidate width (failed lives, large rotations, seaward lives: as
-/// `caisson design` gives them for one width), each message prefixed with its width; the required
-/// width's first, so that the text's summary of a code shows it.
-fn candidate_life_warnings(
-    candidates: &[Candidate],
-    r: &SizeReport,
-    design: &caisson::analysis::lifetime::DesignParams,
-) -> Vec<caisson::analysis::checks::Warning> {
-    let required = r.dynamic.width_m();
-    let mut order: Vec<&Candidate> = candidates.iter().collect();
-    order.sort_by_key(|c| Some(c.width_m) != required);
-    order
-        .into_iter()
-        .flat_map(|c| {
-            candidate_warnings(c, &design.failure_limits(c.width_m)).into_iter().map(move |mut w| {
-                let which = if Some(c.width_m) == required { ", the required width" } else { "" };
-                w.message = format!("at B = {:.2} m{which}: {}", c.width_m, w.message);
-                w.numbers.insert("width_m", c.width_m);
-                w
-            })
-        })
-        .collect()
-}
-
-/// Warnings of Goda's conventional design: its width outside the search, a heel pressure above the
-/// allowable value there, candidates that would overturn under the design wave.
-fn goda_warnings(r: &SizeReport) -> Vec<caisson::analysis::checks::Warning> {
-    use caisson::analysis::checks::Warning;
-    let g = &r.goda;
-    let mut out = Vec::new();
-    if let Reached::NotInRange { largest_m } = g.width.reached {
-        out.push(Warning {
-            code: "goda-width-not-in-range",
-            message: format!("no width up to {largest_m} m meets Goda's static checks under the design wave (H_D = {:.2} m): the site's design wave is beyond what this caisson's construction can hold; check `[waves]` and `[caisson]`", g.design_wave.design_height_m),
-            numbers: [("largest_width_m", largest_m), ("design_height_m", g.design_wave.design_height_m)].into_iter().collect(),
-        });
-    }
-    if let (true, Some(a)) = (g.width.heel_pressure_above_allowable, g.width.at_width) {
-        let p = a.heel_pressure_kpa;
-        out.push(Warning {
-            code: "heel-pressure-above-allowable",
-            message: format!(
-                "at Goda's width {:.2} m the heel pressure under the design wave is {}, above the allowable {} kPa (`[size] allowable_heel_pressure_kpa`): the mound needs a bearing-capacity check (or a footing); `[size] heel_pressure_governs = true` makes it a criterion of the width",
-                a.width_m,
-                p.map_or("undefined (the resultant leaves the base)".to_string(), |p| format!("{p:.0} kPa")),
-                g.allowable_heel_pressure_kpa
-            ),
-            numbers: [("width_m", a.width_m), ("heel_pressure_kpa", p.unwrap_or(f64::INFINITY)), ("allowable_kpa", g.allowable_heel_pressure_kpa)]
-                .into_iter()
-                .filter(|(_, v)| v.is_finite())
-                .collect(),
-        });
-    }
-    let tipping: Vec<&caisson::report::size::CandidateReport> =
-        r.candidates.iter().filter(|k| k.goda_overturning_safety_factor.is_some_and(|f| f < 1.0)).collect();
-    if let (Some(first), Some(last)) = (tipping.first(), tipping.last()) {
-        out.push(Warning {
-            code: "overturning-under-design-wave",
-            message: format!(
-                "{} candidate widths ({:.2} to {:.2} m) have Goda's overturning safety factor below 1 under the design wave (H_D = {:.2} m): they would tip about the heel, which the dynamic model does not follow; read their lives' rotation failures, and Goda's width",
-                tipping.len(),
-                first.width_m,
-                last.width_m,
-                g.design_wave.design_height_m
-            ),
-            numbers: [("candidates", tipping.len() as f64), ("largest_width_m", last.width_m)].into_iter().collect(),
-        });
-    }
-    out
 }
 
 fn reached_text(r: &Reached) -> String {

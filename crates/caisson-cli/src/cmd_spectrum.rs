@@ -62,14 +62,9 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     let pts = sweep(sc.structure(), base, &ratios, &|| pb.inc(1)).context("the spectrum sweep failed")?;
     pb.finish_and_clear();
     let model = sc.structure().model();
-    let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
-    let mut warnings = caisson::analysis::checks::structure_warnings(sc.structure());
-    if let Some(load) = &sc.load {
-        warnings.extend(caisson::analysis::checks::run_load_warnings(sc.structure(), load));
-    }
-    let report = SpectrumReport::new(model.natural_period_s(), &base, resistance_n, &pts, warnings);
+    let report = SpectrumReport::new(sc.structure(), &base, &pts);
     let json = report_json(&report, "spectrum")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {

@@ -2,7 +2,7 @@
 //! CSV and the seed's Figs. 12/14-style plots of one realization. Also the progress bar and the
 //! thread pool shared with `caisson campaign`.
 
-use crate::cmd_run::{write_plots, HistoryFiles};
+use crate::history_out::{write_plots, HistoryFiles};
 use crate::input_err;
 use crate::output::{pretty, progress, report_json, tidy_out_dir, write_atomic};
 use crate::plot::{Panel, Series};
@@ -197,7 +197,7 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
     pb.finish_and_clear();
     let report = TrainRunReport::new(case.structure, case.waves, &summary);
     let json = report_json(&report, "summary")?;
-    crate::output::print_warnings(&report.warnings);
+    crate::output::print_warning_lines(&report.warnings);
     if json_out {
         crate::sayln!("{}", pretty(&json)?);
     } else {

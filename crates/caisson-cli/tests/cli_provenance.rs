@@ -1,4 +1,5 @@
-//! Provenance: every JSON output records the tool version and the results version, and
+//! Provenance: every JSON output records the tool version and the results version (and every
+//! report of a run its `model`: the profile and its choices), and
 //! `caisson design --resume` refuses a checkpoint of another results version or of another
 //! scenario, saying which.
 
@@ -66,6 +67,19 @@ fn every_json_output_records_the_versions() {
         let out = caisson().args(args).assert().success().get_output().stdout.clone();
         let doc: Value = serde_json::from_slice(&out).unwrap_or_else(|e| panic!("{args:?}: {e}"));
         assert_eq!(versions(&doc), (caisson::VERSION.to_string(), caisson::RESULTS_VERSION as u64), "{args:?}");
+        // The model it ran with: the profile of each file (the bundled flume examples read the
+        // seed literally; the design and fragility examples take the default) and its choices.
+        if args[0] != "loads" {
+            let seed = args[1].contains("table5") || args[1].contains("pari_");
+            let want = if seed {
+                serde_json::json!({"profile": "seed-2011", "damping_mode": "total", "vertical_damping": "seed",
+                    "mass_matrix": "diagonal", "mu_static": 0.6, "mu_dynamic": 0.4})
+            } else {
+                serde_json::json!({"profile": "consistent", "damping_mode": "elastic", "vertical_damping": "springs",
+                    "mass_matrix": "coupled", "mu_static": 0.6, "mu_dynamic": 0.6})
+            };
+            assert_eq!(doc["model"], want, "{args:?}");
+        }
         checked += 1;
     }
     assert_eq!(checked, 7);

@@ -14,9 +14,6 @@ mod columns;
 mod loads_table;
 
 use caisson::analysis::campaign::run_campaign;
-use caisson::analysis::checks::{
-    life_warnings, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
-};
 use caisson::analysis::conventional::{static_check, DesignWave, StaticCheck};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
 use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormOutcome, LIFE_COLUMNS};
@@ -24,11 +21,13 @@ use caisson::analysis::run::{run as run_engine, run_observed, History};
 use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
 use caisson::analysis::work::{self, Advice, Budget, Histories, WorkEstimate};
+use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::dynamics::{Observer, StepView};
 use caisson::foundation::DampingMode;
 use caisson::loads::series::{ForceSeries, MAX_SAMPLES};
 use caisson::loads::{LoadSpec, WaveForce};
 use caisson::report::campaign::CampaignReport;
+use caisson::report::checkpoint::{read_design, CheckpointError, DesignCheckpoint, Merge, MergeError};
 use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::report::fragility::FragilityReport;
 use caisson::report::loads::LoadsReport;
@@ -209,21 +208,10 @@ fn read_scenario(py: Python<'_>, path: &str) -> PyResult<String> {
     py.detach(|| caisson::scenario::read_text(Path::new(path))).map_err(|e| lib_error(py, e, None))
 }
 
-/// JSON text of a report, refusing non-finite numbers as the CLI does.
+/// JSON text of a report by the library's one encoder (as the CLI prints it): a non-finite number
+/// is an internal error naming its path.
 fn report_json<T: serde::Serialize>(report: &T, what: &str) -> PyResult<String> {
-    let v = serde_json::to_value(report).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
-    fn finite(v: &serde_json::Value) -> bool {
-        match v {
-            serde_json::Value::Null => false,
-            serde_json::Value::Object(m) => m.values().all(finite),
-            serde_json::Value::Array(a) => a.iter().all(finite),
-            _ => true,
-        }
-    }
-    if !finite(&v) {
-        return Err(PyRuntimeError::new_err(format!("internal error: {what} has a non-finite number")));
-    }
-    Ok(v.to_string())
+    caisson::report::to_json_text(report, what).map_err(|e| PyRuntimeError::new_err(format!("internal error: {e}")))
 }
 
 /// The payload a driver unwinds with when Python asked it to stop ([`Ctl::tick`]): caught by
@@ -701,12 +689,7 @@ fn run_load<'py>(
     })?
     .map_err(run_error)?;
     let result = caisson::analysis::run::RunResult { summary, history: held };
-    let x = sc.foundation().spring_positions(sc.caisson().width_m);
-    let s = sc.structure();
-    let mut warnings = structure_warnings(s);
-    warnings.extend(run_load_warnings(s, load));
-    warnings.extend(response_warnings(s, &Response::from(&result.summary)));
-    let json = report_json(&RunReport::new(&result.summary, x, warnings), "summary")?;
+    let json = report_json(&RunReport::new(sc.structure(), load, &result.summary), "summary")?;
     let cols = match &result.history {
         Some(h) => Some(history_columns(py, h)?),
         None => None,
@@ -776,14 +759,7 @@ fn spectrum(
     let structure = sc.structure();
     let points = drive(py, threads, ratios.len(), progress, |ctl| sweep(structure, base, &ratios, &|| ctl.tick()))?
         .map_err(run_error)?;
-    let resistance_n = sc.foundation().mu_static * sc.caisson().weight_in_water_n;
-    let report = SpectrumReport::new(
-        structure.model().natural_period_s(),
-        &base,
-        resistance_n,
-        &points,
-        structure_warnings(structure),
-    );
+    let report = SpectrumReport::new(structure, &base, &points);
     report_json(&report, "spectrum")?; // refuses a non-finite number anywhere, as the CLI does
     let points = &report.points;
     let (names, cols) = columns::build(py, points.len(), &points[0], |table| -> Result<(), String> {
@@ -813,11 +789,10 @@ fn loads_report(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
     let sc = &sc.sc;
     let ws = sc.waves_for("`caisson loads`").map_err(|e| lib_error(py, e, None))?;
     let check = static_check(sc.structure(), ws).map_err(|e| regime_error(py, e))?;
-    let (w, mu) = (sc.caisson().weight_in_water_n, sc.foundation().mu_static);
-    let mut report = LoadsReport::new(ws, &check, w, mu);
-    report.warnings = structure_warnings(sc.structure());
-    report.warnings.extend(wave_load_warnings(sc.structure(), ws));
-    serde_json::to_string(&report).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    // Refused as `caisson loads` refuses it: an input error naming the number that is not finite.
+    let report = LoadsReport::of_structure(sc.structure(), ws, &check, None)
+        .map_err(|e| scenario_error(py, e.to_string(), None, Some(e.0.path.clone()), None))?;
+    report_json(&report, "loads")
 }
 
 fn regime_error(py: Python<'_>, e: caisson::loads::regime::RegimeError) -> PyErr {
@@ -1015,9 +990,16 @@ fn life_columns() -> Vec<&'static str> {
 }
 
 /// `design.json` text of the lives given as columns (every name of [`life_columns`], in life
-/// order): metres and radians as floats, counts as whole numbers.
+/// order): metres and radians as floats, counts as whole numbers; `life` their indices (each
+/// once, ascending). The lives are joined by the merge rules of `caisson merge`: lives 0..N with
+/// N the largest index + 1, every one given ([`Merge`]): a gap is refused (`ValueError`).
 #[pyfunction]
-fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDict>) -> PyResult<String> {
+fn design_statistics(
+    py: Python<'_>,
+    sc: &CoreScenario,
+    columns: Bound<'_, PyDict>,
+    life: Vec<usize>,
+) -> PyResult<String> {
     let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
     let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
     let mut rows: Vec<serde_json::Map<String, serde_json::Value>> = Vec::new();
@@ -1050,14 +1032,39 @@ fn design_statistics(py: Python<'_>, sc: &CoreScenario, columns: Bound<'_, PyDic
         .map(|r| serde_json::from_value(serde_json::Value::Object(r)))
         .collect::<Result<_, _>>()
         .map_err(|e| PyValueError::new_err(format!("a life's columns do not form an outcome: {e}")))?;
-    let failure = design.failure_limits(case.structure.caisson.width_m);
-    let mut report = DesignReport::new(design, case.rigid_block_mu, failure.sliding_m, &lives);
-    report.warnings = structure_warnings(case.structure);
-    report.warnings.extend(life_warnings(&lives, &failure, case.structure.caisson.width_m));
-    if let Some(ws) = &sc.sc.waves {
-        report.warnings.extend(wave_load_warnings(case.structure, ws));
+    if life.len() != lives.len() {
+        return Err(PyValueError::new_err(format!(
+            "`life` has {} values where the columns have {}",
+            life.len(),
+            lives.len()
+        )));
     }
+    let lives = merged(life, lives)?;
+    let report = DesignReport::new(design, &case, sc.sc.waves.as_ref(), &lives);
     report_json(&report, "design")
+}
+
+/// Lives (index, outcome) joined into lives 0..N, N the largest index + 1, by the merge rules of
+/// `caisson merge` ([`Merge`]), refused (`ValueError`) in the words of the Python API.
+fn merged(life: Vec<usize>, lives: Vec<StormOutcome>) -> PyResult<Vec<StormOutcome>> {
+    let n = life.iter().max().map_or(0, |m| m + 1);
+    let mut merge = Merge::new(n);
+    let refuse = |e: MergeError| {
+        PyValueError::new_err(match e {
+            MergeError::Missing { start, end, missing, gaps, .. } => {
+                let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
+                format!(
+                    "lives {start}..{end} are missing ({} lives{more}): the statistics of lives up to {} need every life 0..{n}, as `caisson merge` refuses a gap between shards; simulate them (`Design.simulate_lives(range({start}, {end}))`) and add them",
+                    end - start,
+                    n - 1
+                )
+            }
+            MergeError::Overlap { life, .. } => format!("life {life} appears more than once"),
+            MergeError::Beyond { life, lives, .. } => format!("life {life} is beyond the lives 0..{lives}"),
+        })
+    };
+    merge.add(None, life.into_iter().zip(lives)).map_err(refuse)?;
+    merge.finish().map_err(refuse)
 }
 
 /// The fingerprint of the design's lives (what every life depends on).
@@ -1066,6 +1073,157 @@ fn design_fingerprint_of(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> 
     let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
     let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
     Ok(design_fingerprint(&case, design))
+}
+
+const SIZE: Advice = Advice {
+    steps: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    waves: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    memory: "lower `[size] lives`",
+    disk: "",
+};
+
+/// A sizing error as Python raises it: the scenario's as `ScenarioError`, a failed run as
+/// `RunError`.
+fn size_error(py: Python<'_>, e: SizeError) -> PyErr {
+    match e {
+        SizeError::Scenario(e) => lib_error(py, e, None),
+        e @ SizeError::AtWidth { .. } => scenario_error(py, e.to_string(), None, None, None),
+        SizeError::Run { width_m, source } => {
+            run_error(format!("the lives at the width {width_m} m: {source}: {}", source.source))
+        }
+        e @ SizeError::NoConstruction(_) => scenario_error(py, e.to_string(), Some("[caisson]".into()), None, None),
+        e => PyRuntimeError::new_err(e.to_string()),
+    }
+}
+
+/// The scenario's sizing (`caisson size --json`): `size.json` text, by the library's driver.
+#[pyfunction]
+#[pyo3(signature = (sc, threads=1, progress=None))]
+fn size(py: Python<'_>, sc: &CoreScenario, threads: usize, progress: Option<Py<PyAny>>) -> PyResult<String> {
+    let sizer = Sizer::new(&sc.sc, "`caisson.size`").map_err(|e| size_error(py, e))?;
+    let estimate = py.detach(|| sizer.estimate("`caisson.size`")).map_err(|e| size_error(py, e))?;
+    check_work(py, "caisson.size", &estimate, &SIZE)?;
+    let total = sizer.candidates() * sizer.params.lives;
+    let report = drive(py, threads, total, progress, |ctl| {
+        let life = || {
+            ctl.count();
+            if ctl.cancelled() {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
+        let hooks = Hooks { width: &mut |_, _| {}, life: &life, candidate: &mut |_| Ok(()) };
+        sizer.run(&[], hooks)
+    })?
+    .map_err(|e| size_error(py, e))?;
+    report_json(&report, "size")
+}
+
+/// A checkpoint's refusal as a `ValueError` naming the file (and the line).
+fn checkpoint_error(name: &str, e: CheckpointError) -> PyErr {
+    use caisson::report::checkpoint::{LineError, LineFault};
+    let message = match e {
+        CheckpointError::Fingerprint { found, expected } => format!(
+            "{name} was written for a different scenario or options (fingerprint {found}, this design {expected}: the caisson, foundation, solver, waves, [design] life model or seed differ, or it was run with --brute-force)"
+        ),
+        CheckpointError::Line { line, fault: LineFault::Refused(LineError::Malformed | LineError::NotARecord(_)) } => {
+            format!("{name} line {line} is not a life line of a caisson design checkpoint")
+        }
+        CheckpointError::Format { format, caisson_version } => format!(
+            "{name} is of checkpoint format {format} (caisson {caisson_version}); this caisson reads format {}",
+            caisson::report::checkpoint::DESIGN_FORMAT
+        ),
+        CheckpointError::ResultsVersion { results_version, caisson_version } => format!(
+            "{name} holds results version {results_version} (caisson {caisson_version}); this caisson computes results version {}: its lives would not match",
+            caisson::RESULTS_VERSION
+        ),
+        e => format!("{name}: {e}"),
+    };
+    PyValueError::new_err(message)
+}
+
+/// The lives of the design checkpoint `data` (the bytes of the file `name`) of the scenario's
+/// `[design]`, read by the library's codec: the columns of [`design_lives`].
+fn read_design_lives(sc: &Scenario, name: &str, data: &[u8]) -> PyResult<DesignCheckpoint> {
+    let design = sc.design_for("Design").map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let case = sc.storm_case(design.screen).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let fingerprint = design_fingerprint(&case, design);
+    read_design(data, &|_| fingerprint.clone(), &|| {}).map_err(|e| checkpoint_error(name, e))
+}
+
+/// The lives of a `caisson design` checkpoint (`data`: the bytes of the file `name`) of the
+/// scenario's `[design]`: columns sorted by life as [`design_lives`] returns them. A torn last
+/// line is left out.
+#[pyfunction]
+fn read_design_checkpoint<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    name: &str,
+    data: &[u8],
+) -> PyResult<Bound<'py, PyDict>> {
+    let cp = py.detach(|| read_design_lives(&sc.sc, name, data))?;
+    let lives: Vec<(usize, StormOutcome)> = cp.lives.into_iter().collect();
+    lives_columns(py, &lives)
+}
+
+/// The shards `files` ((name, bytes) of each checkpoint) of the scenario's design joined into
+/// lives 0..`lives` by the rules of `caisson merge`: (`design.json` text, the lives' columns).
+#[pyfunction]
+fn merge_checkpoints<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    files: Vec<(String, Vec<u8>)>,
+    lives: usize,
+) -> PyResult<(String, Bound<'py, PyDict>)> {
+    let mut merge = Merge::new(lives);
+    let mut ranges: Vec<std::ops::Range<usize>> = Vec::new();
+    let text = |r: &std::ops::Range<usize>| format!("{}..{}", r.start, r.end);
+    for (name, data) in &files {
+        let cp = py.detach(|| read_design_lives(&sc.sc, name, data))?;
+        if cp.torn_bytes > 0 {
+            return Err(PyValueError::new_err(format!(
+                "shard {name} ends in a line cut short ({} bytes: the run stopped while writing it): complete the shard first (`caisson design --life-range {} --resume`)",
+                cp.torn_bytes,
+                text(&cp.header.range())
+            )));
+        }
+        ranges.push(cp.header.range());
+        merge.add(Some(cp.header.range()), cp.lives).map_err(|e| shard_error(&e, &files, &ranges, lives))?;
+    }
+    let all = merge.finish().map_err(|e| shard_error(&e, &files, &ranges, lives))?;
+    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
+    let design = DesignParams { lives, ..design.clone() };
+    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    let report = DesignReport::new(&design, &case, sc.sc.waves.as_ref(), &all);
+    let indexed: Vec<(usize, StormOutcome)> = all.into_iter().enumerate().collect();
+    Ok((report_json(&report, "design")?, lives_columns(py, &indexed)?))
+}
+
+/// A refusal of the merge rules naming the shards (by file) and the lives they were run for.
+fn shard_error(e: &MergeError, files: &[(String, Vec<u8>)], ranges: &[std::ops::Range<usize>], n: usize) -> PyErr {
+    let shard = |k: usize| format!("shard {} (lives {}..{})", files[k].0, ranges[k].start, ranges[k].end);
+    PyValueError::new_err(match *e {
+        MergeError::Beyond { shard: k, life, .. } => {
+            format!("{} holds life {life}, beyond the lives to merge, 0..{n} (the design's lives)", shard(k))
+        }
+        MergeError::Overlap { life, first, second } => format!(
+            "life {life} is in two shards: {} and {}; shards must not overlap: give each life to one shard",
+            shard(first),
+            shard(second)
+        ),
+        MergeError::Missing { start, end, missing, gaps, incomplete } => {
+            let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
+            let hint = match incomplete {
+                Some(k) => format!("{} is incomplete: complete it with --resume", shard(k)),
+                None => format!("run them (`caisson design --life-range {start}..{end}`) and merge that shard too"),
+            };
+            format!(
+                "lives {start}..{end} are in no shard ({} lives{more}; the merge needs lives 0..{n}): {hint}",
+                end - start
+            )
+        }
+    })
 }
 
 /// The scenario's `[fragility]`: `fragility.json` text (`name`: the scenario file's name).
@@ -1122,8 +1280,7 @@ fn _bench_run_s(py: Python<'_>, sc: &CoreScenario, repeats: usize) -> PyResult<f
         let t0 = std::time::Instant::now();
         for _ in 0..repeats.max(1) {
             let r = run_engine(sc.structure(), load, sc.duration_s, false).map_err(run_error)?;
-            let x = sc.foundation().spring_positions(sc.caisson().width_m);
-            std::hint::black_box(RunReport::new(&r.summary, x, Vec::new()));
+            std::hint::black_box(RunReport::new(sc.structure(), load, &r.summary));
         }
         Ok(t0.elapsed().as_secs_f64() / repeats.max(1) as f64)
     })
@@ -1176,6 +1333,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(life_columns, m)?)?;
     m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
     m.add_function(wrap_pyfunction!(fragility, m)?)?;
+    m.add_function(wrap_pyfunction!(size, m)?)?;
+    m.add_function(wrap_pyfunction!(read_design_checkpoint, m)?)?;
+    m.add_function(wrap_pyfunction!(merge_checkpoints, m)?)?;
     m.add_function(wrap_pyfunction!(fit_lognormal, m)?)?;
     m.add_function(wrap_pyfunction!(estimate, m)?)?;
     m.add_function(wrap_pyfunction!(read_scenario, m)?)?;

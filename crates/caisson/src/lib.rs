@@ -32,6 +32,7 @@
 //! ```
 
 pub mod analysis;
+pub mod drive;
 pub mod dynamics;
 pub mod foundation;
 pub mod loads;

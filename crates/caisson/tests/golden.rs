@@ -16,13 +16,11 @@
 
 mod support;
 
-use caisson::analysis::fragility::run_fragility;
-use caisson::analysis::lifetime::run_lives;
-use caisson::analysis::run::{run, History};
+use caisson::analysis::run::History;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
+use support::signature::Signature;
 
 type Series = BTreeMap<String, Vec<f64>>;
 
@@ -43,46 +41,32 @@ fn sampled(h: &History, out: &mut Series) {
     out.insert("reaction_x_n".into(), pick(&h.reaction_x_n));
 }
 
-fn history_for(sc: &Scenario, duration_s: f64) -> History {
-    let (c, f, s) = (sc.caisson(), sc.foundation(), sc.solver());
-    let samples = (duration_s / s.output_interval_s).ceil() as usize + 1;
-    History::new(s.output_interval_s, samples, f.spring_positions(c.width_m), c.weight_in_water_n, f.mu_static)
-}
-
-/// What the example computes, briefly (module docs).
+/// What the example computes, briefly (module docs; [`support::signature`]).
 fn signature(sc: &Scenario) -> Series {
     let mut out = Series::new();
-    if let Some(load) = &sc.load {
-        let r = run(sc.structure(), load, sc.duration_s, true).unwrap();
-        sampled(r.history.as_ref().unwrap(), &mut out);
-        out.insert("permanent_sliding_m".into(), vec![r.summary.permanent_sliding_m]);
-        out.insert("max_horizontal_reaction_n".into(), vec![r.summary.max_horizontal_reaction_n]);
-    } else if let Some(design) = &sc.design {
-        let case = sc.storm_case(design.screen).unwrap();
-        let lives = run_lives(&case, &design.life, design.seed, &[0, 1, 2], &|_, _| ControlFlow::Continue(())).unwrap();
-        assert_eq!(lives.len(), 3);
-        out.insert("sliding_m".into(), lives.iter().map(|(_, o)| o.sliding_m).collect());
-        out.insert("rigid_block_sliding_m".into(), lives.iter().map(|(_, o)| o.rigid_block_sliding_m).collect());
-        out.insert("waves".into(), lives.iter().map(|(_, o)| o.waves as f64).collect());
-        out.insert("simulated".into(), lives.iter().map(|(_, o)| o.simulated_waves as f64).collect());
-    } else if let Some(params) = &sc.fragility {
-        let case = sc.storm_case(true).unwrap();
-        let mut p = params.clone();
-        p.heights_m = vec![params.heights_m[0], *params.heights_m.last().unwrap()];
-        p.storms = 2;
-        let r = run_fragility(&case, &p, &|| {}).unwrap();
-        let storms = r.levels.iter().flat_map(|l| &l.storms);
-        out.insert("sliding_m".into(), storms.clone().map(|o| o.sliding_m).collect());
-        out.insert("rigid_block_sliding_m".into(), storms.clone().map(|o| o.rigid_block_sliding_m).collect());
-        out.insert("simulated".into(), storms.map(|o| o.simulated_waves as f64).collect());
-    } else {
-        let case = sc.train_case().unwrap();
-        let mut h = history_for(sc, case.duration_s());
-        let r = case.run(0, Some(&mut h)).unwrap();
-        sampled(&h, &mut out);
-        out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
-        out.insert("wave_rigid_block_sliding_m".into(), r.waves.iter().map(|w| w.rigid_block_sliding_m).collect());
-        out.insert("wave_height_m".into(), r.waves.iter().map(|w| w.record.height_m).collect());
+    match support::signature::signature(sc, true) {
+        Signature::Load(r) => {
+            sampled(r.history.as_ref().unwrap(), &mut out);
+            out.insert("permanent_sliding_m".into(), vec![r.summary.permanent_sliding_m]);
+            out.insert("max_horizontal_reaction_n".into(), vec![r.summary.max_horizontal_reaction_n]);
+        }
+        Signature::Lives(lives) => {
+            out.insert("sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
+            out.insert("rigid_block_sliding_m".into(), lives.iter().map(|o| o.rigid_block_sliding_m).collect());
+            out.insert("waves".into(), lives.iter().map(|o| o.waves as f64).collect());
+            out.insert("simulated".into(), lives.iter().map(|o| o.simulated_waves as f64).collect());
+        }
+        Signature::Storms(storms) => {
+            out.insert("sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
+            out.insert("rigid_block_sliding_m".into(), storms.iter().map(|o| o.rigid_block_sliding_m).collect());
+            out.insert("simulated".into(), storms.iter().map(|o| o.simulated_waves as f64).collect());
+        }
+        Signature::Train(r, h) => {
+            sampled(h.as_ref().unwrap(), &mut out);
+            out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
+            out.insert("wave_rigid_block_sliding_m".into(), r.waves.iter().map(|w| w.rigid_block_sliding_m).collect());
+            out.insert("wave_height_m".into(), r.waves.iter().map(|w| w.record.height_m).collect());
+        }
     }
     out
 }

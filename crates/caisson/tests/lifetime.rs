@@ -351,7 +351,7 @@ fn the_capped_expected_sliding_stays_below_the_failure_limit_where_the_uncapped_
         .into_iter()
         .map(|(_, o)| o)
         .collect();
-    let r = DesignReport::new(&d, st.rigid_block_mu, limits.sliding_m, &lives);
+    let r = DesignReport::statistics(&d, st.rigid_block_mu, limits.sliding_m, &lives);
     let s = &r.dynamic.sliding;
     let n = lives.len() as f64;
     let capped: f64 =

@@ -16,15 +16,13 @@
 
 mod support;
 
-use caisson::analysis::fragility::run_fragility;
-use caisson::analysis::lifetime::run_lives;
-use caisson::analysis::run::run;
+use support::signature::{signature, train_values, Signature};
+
 use caisson::dynamics::{Predictor, Simulation, SolverParams};
 use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use std::ops::ControlFlow;
 use std::path::Path;
 
 type Results = BTreeMap<String, Vec<f64>>;
@@ -39,34 +37,26 @@ fn with_predictor(sc: &Scenario, predictor: Predictor) -> Scenario {
 fn results(sc: &Scenario) -> (Results, Option<u64>) {
     let mut out = Results::new();
     let mut iterations = None;
-    if let Some(load) = &sc.load {
-        let r = run(sc.structure(), load, sc.duration_s, false).unwrap().summary;
-        out.insert("permanent_sliding_m".into(), vec![r.permanent_sliding_m]);
-        out.insert("max_horizontal_displacement_m".into(), vec![r.max_horizontal_displacement_m]);
-        out.insert("max_horizontal_reaction_n".into(), vec![r.max_horizontal_reaction_n]);
-        out.insert("final_rotation_rad".into(), vec![r.final_rotation_rad]);
-        iterations = Some(r.solver.newton_iterations);
-    } else if let Some(design) = &sc.design {
-        let case = sc.storm_case(design.screen).unwrap();
-        let lives = run_lives(&case, &design.life, design.seed, &[0, 1, 2], &|_, _| ControlFlow::Continue(())).unwrap();
-        out.insert("life_sliding_m".into(), lives.iter().map(|(_, o)| o.sliding_m).collect());
-        out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|(_, o)| o.max_storm_sliding_m).collect());
-    } else if let Some(params) = &sc.fragility {
-        let case = sc.storm_case(true).unwrap();
-        let mut p = params.clone();
-        p.heights_m = vec![params.heights_m[0], *params.heights_m.last().unwrap()];
-        p.storms = 2;
-        let r = run_fragility(&case, &p, &|| {}).unwrap();
-        out.insert("storm_sliding_m".into(), r.levels.iter().flat_map(|l| &l.storms).map(|o| o.sliding_m).collect());
-    } else {
-        let r = sc.train_case().unwrap().run(0, None).unwrap();
-        out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
-        out.insert(
-            "wave_max_horizontal_reaction_n".into(),
-            r.waves.iter().map(|w| w.max_horizontal_reaction_n).collect(),
-        );
-        out.insert("sliding_m".into(), vec![r.sliding_m]);
-        iterations = Some(r.solver.newton_iterations);
+    match signature(sc, false) {
+        Signature::Load(r) => {
+            let r = r.summary;
+            out.insert("permanent_sliding_m".into(), vec![r.permanent_sliding_m]);
+            out.insert("max_horizontal_displacement_m".into(), vec![r.max_horizontal_displacement_m]);
+            out.insert("max_horizontal_reaction_n".into(), vec![r.max_horizontal_reaction_n]);
+            out.insert("final_rotation_rad".into(), vec![r.final_rotation_rad]);
+            iterations = Some(r.solver.newton_iterations);
+        }
+        Signature::Lives(lives) => {
+            out.insert("life_sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
+            out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|o| o.max_storm_sliding_m).collect());
+        }
+        Signature::Storms(storms) => {
+            out.insert("storm_sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
+        }
+        Signature::Train(r, _) => {
+            train_values(&mut out, &r);
+            iterations = Some(r.solver.newton_iterations);
+        }
     }
     (out, iterations)
 }

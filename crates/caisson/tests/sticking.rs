@@ -21,15 +21,13 @@
 
 mod support;
 
-use caisson::analysis::fragility::run_fragility;
-use caisson::analysis::lifetime::run_lives;
-use caisson::analysis::run::run;
+use support::signature::{signature, train_values, Signature};
+
 use caisson::dynamics::{Simulation, SolverParams};
 use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use std::ops::ControlFlow;
 use std::path::Path;
 
 type Results = BTreeMap<String, Vec<f64>>;
@@ -46,46 +44,38 @@ fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
 fn results(sc: &Scenario) -> (Results, Work) {
     let mut out = Results::new();
     let mut work = None;
-    if let Some(load) = &sc.load {
-        let r = run(sc.structure(), load, sc.duration_s, false).unwrap().summary;
-        for (key, v) in [
-            ("permanent_sliding_m", r.permanent_sliding_m),
-            ("max_horizontal_displacement_m", r.max_horizontal_displacement_m),
-            ("max_rotation_rad", r.max_rotation_rad),
-            ("max_horizontal_reaction_n", r.max_horizontal_reaction_n),
-            ("max_spring_normal_n", r.max_spring_normal_n),
-            ("min_spring_normal_n", r.min_spring_normal_n),
-            ("max_spring_shear_n", r.max_spring_shear_n),
-            ("final_displacement_m", r.final_displacement_m),
-            ("final_rotation_rad", r.final_rotation_rad),
-            ("max_dashpot_moment_nm", r.max_dashpot_moment_nm),
-            ("slip_events", r.slip_events as f64),
-        ] {
-            out.insert(key.into(), vec![v]);
+    match signature(sc, false) {
+        Signature::Load(r) => {
+            let r = r.summary;
+            for (key, v) in [
+                ("permanent_sliding_m", r.permanent_sliding_m),
+                ("max_horizontal_displacement_m", r.max_horizontal_displacement_m),
+                ("max_rotation_rad", r.max_rotation_rad),
+                ("max_horizontal_reaction_n", r.max_horizontal_reaction_n),
+                ("max_spring_normal_n", r.max_spring_normal_n),
+                ("min_spring_normal_n", r.min_spring_normal_n),
+                ("max_spring_shear_n", r.max_spring_shear_n),
+                ("final_displacement_m", r.final_displacement_m),
+                ("final_rotation_rad", r.final_rotation_rad),
+                ("max_dashpot_moment_nm", r.max_dashpot_moment_nm),
+                ("slip_events", r.slip_events as f64),
+            ] {
+                out.insert(key.into(), vec![v]);
+            }
+            work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
         }
-        work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
-    } else if let Some(design) = &sc.design {
-        let case = sc.storm_case(design.screen).unwrap();
-        let lives = run_lives(&case, &design.life, design.seed, &[0, 1, 2], &|_, _| ControlFlow::Continue(())).unwrap();
-        out.insert("life_sliding_m".into(), lives.iter().map(|(_, o)| o.sliding_m).collect());
-        out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|(_, o)| o.max_storm_sliding_m).collect());
-        out.insert("life_simulated_waves".into(), lives.iter().map(|(_, o)| o.simulated_waves as f64).collect());
-    } else if let Some(params) = &sc.fragility {
-        let case = sc.storm_case(true).unwrap();
-        let mut p = params.clone();
-        p.heights_m = vec![params.heights_m[0], *params.heights_m.last().unwrap()];
-        p.storms = 2;
-        let r = run_fragility(&case, &p, &|| {}).unwrap();
-        out.insert("storm_sliding_m".into(), r.levels.iter().flat_map(|l| &l.storms).map(|o| o.sliding_m).collect());
-    } else {
-        let r = sc.train_case().unwrap().run(0, None).unwrap();
-        out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
-        out.insert(
-            "wave_max_horizontal_reaction_n".into(),
-            r.waves.iter().map(|w| w.max_horizontal_reaction_n).collect(),
-        );
-        out.insert("sliding_m".into(), vec![r.sliding_m]);
-        work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
+        Signature::Lives(lives) => {
+            out.insert("life_sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
+            out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|o| o.max_storm_sliding_m).collect());
+            out.insert("life_simulated_waves".into(), lives.iter().map(|o| o.simulated_waves as f64).collect());
+        }
+        Signature::Storms(storms) => {
+            out.insert("storm_sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
+        }
+        Signature::Train(r, _) => {
+            train_values(&mut out, &r);
+            work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
+        }
     }
     (out, work)
 }

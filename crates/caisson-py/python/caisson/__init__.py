@@ -534,7 +534,8 @@ class Design:
         ``caisson design --json`` as ``.report``, which it also reads as). The statistics of lives
         0 .. N − 1 are exactly those of ``caisson design`` with N lives. Raises ``ValueError``
         for a life given twice, a missing column (``life`` and those of ``lives.csv``), no lives,
-        a non-finite length or a count that is not a whole number ≥ 0."""
+        a non-finite length or a count that is not a whole number ≥ 0, and a gap (lives 0 .. N − 1 must all
+        be given, N − 1 the largest life given: the rule of ``caisson merge``)."""
         frames = [lives] if isinstance(lives, pd.DataFrame) else list(lives)
         need = ("life",) + _LIFE_COLUMNS
         for k, f in enumerate(frames):
@@ -573,9 +574,11 @@ class Design:
         if frame["life"].duplicated().any():
             dup = frame.loc[frame["life"].duplicated(), "life"].iloc[0]
             raise ValueError(f"life {dup} appears more than once")
+        life_sorted = np.sort(cols["life"].astype(np.uint64), kind="stable")
         order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
         cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
-        return DesignStatistics.of(json.loads(_core.design_statistics(self._scenario._core, cols)))
+        # Joined by `caisson merge`'s rules (in Rust): lives 0 .. N − 1, no gap.
+        return DesignStatistics.of(json.loads(_core.design_statistics(self._scenario._core, cols, life_sorted.tolist())))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
         """All lives at once: (:class:`DesignStatistics`, lives DataFrame)."""
@@ -667,6 +670,13 @@ def fit_lognormal(im: Any, k: Any, n: Any) -> dict:
 
 
 from . import loads, waves  # noqa: E402  (submodules use the names above)
+
+
+# Sizing, and the CLI's design checkpoints and shards: the library's driver, codec and merge rules
+# (module _size).
+from ._size import merge, read_checkpoint, resume, size  # noqa: E402
+
+__all__ += ["size", "read_checkpoint", "resume", "merge"]
 
 
 def __dir__() -> list:

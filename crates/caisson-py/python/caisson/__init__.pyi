@@ -100,3 +100,6 @@ class Fragility:
     def run(self, *, threads: int = ..., progress: Progress = ...) -> FragilityResult: ...
 
 def fit_lognormal(im: Any, k: Any, n: Any) -> dict: ...
+
+# Sizing, and the CLI's design checkpoints and shards (module _size, typed in its source).
+from ._size import merge as merge, read_checkpoint as read_checkpoint, resume as resume, size as size

@@ -32,6 +32,11 @@ pub struct Structure {
     pub caisson: Caisson,
     pub foundation: Foundation,
     pub solver: SolverParams,
+    /// The profile whose defaults built the caisson and the foundation (`[model] profile`),
+    /// recorded in the reports. Not serialized: the choices it made are in the caisson and the
+    /// foundation, so the fingerprint of what a run depends on stays that of the choices.
+    #[serde(skip)]
+    pub profile: crate::Profile,
 }
 
 impl Structure {

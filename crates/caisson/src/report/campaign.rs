@@ -1,7 +1,7 @@
 //! `caisson campaign`: `campaign.json` (keys in docs/campaign.md and docs/cli.md).
 
 use super::train::{describe_train, RealizationReport};
-use super::{kn, Provenance, SpreadReport};
+use super::{kn, ModelReport, Provenance, SpreadReport};
 use crate::analysis::campaign::{Campaign, ConditionResult};
 use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::train::realization_warnings;
@@ -68,6 +68,8 @@ pub struct CampaignWavesReport {
 pub struct CampaignReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub title: String,
     pub waves: CampaignWavesReport,
     pub damping_mode: DampingMode,
@@ -84,6 +86,7 @@ impl CampaignReport {
         let t = &first.waves.train;
         CampaignReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(&first.structure),
             title: c.title.clone(),
             waves: CampaignWavesReport {
                 description: describe_train(t, true),

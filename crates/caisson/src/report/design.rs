@@ -1,12 +1,13 @@
 //! `caisson design`: `design.json` (keys in docs/design.md).
 
-use super::{fingerprint, Provenance};
-use crate::analysis::checks::Warning;
+use super::{fingerprint, ModelReport, Provenance};
+use crate::analysis::checks::{life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, LifeParams,
     LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
+use crate::analysis::train::WaveSetup;
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
 use serde::Serialize;
@@ -262,6 +263,9 @@ pub fn direction_text(d: &WaveDirection) -> Option<String> {
 pub struct DesignReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]; absent in a table row).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub model: Option<ModelReport>,
     pub lives: usize,
     pub life_years: usize,
     pub seed: u64,
@@ -283,14 +287,32 @@ pub struct DesignReport {
     pub simulated_waves: u64,
     pub screened_waves: u64,
     pub screened_share: f64,
-    /// Plausibility warnings (filled by the caller).
+    /// Plausibility warnings of the structure, the lives and the waves ([`DesignReport::new`]).
     pub warnings: Vec<Warning>,
 }
 
 impl DesignReport {
-    /// The statistics of `lives` (every life of the run, in index order) of design `p`, with the
-    /// failure limit `failure_sliding_m` ([`DesignParams::failure_limit_m`]).
-    pub fn new(p: &DesignParams, rigid_block_mu: f64, failure_sliding_m: f64, lives: &[StormOutcome]) -> Self {
+    /// The report of `lives` (every life of the run, in index order) of design `p` on the storms
+    /// of `case` (and the scenario's `waves`): the statistics with the failure limits of the
+    /// caisson's width, and the warnings of the structure, the lives and the waves. What
+    /// `caisson design`, `caisson merge` and Python's `Design.statistics` report.
+    pub fn new(p: &DesignParams, case: &StormCase<'_>, waves: Option<&WaveSetup>, lives: &[StormOutcome]) -> Self {
+        let width_m = case.structure.caisson.width_m;
+        let failure = p.failure_limits(width_m);
+        let mut report = DesignReport::statistics(p, case.rigid_block_mu, failure.sliding_m, lives);
+        report.model = Some(ModelReport::from(case.structure));
+        report.warnings = structure_warnings(case.structure);
+        report.warnings.extend(life_warnings(lives, &failure, width_m));
+        if let Some(ws) = waves {
+            report.warnings.extend(wave_load_warnings(case.structure, ws));
+        }
+        report
+    }
+
+    /// The statistics alone (no warnings) of `lives` of design `p`, with the failure limit
+    /// `failure_sliding_m` ([`DesignParams::failure_limit_m`]): for a table of many designs
+    /// (the validation report) and tests.
+    pub fn statistics(p: &DesignParams, rigid_block_mu: f64, failure_sliding_m: f64, lives: &[StormOutcome]) -> Self {
         let years = p.life.life_years;
         let n = lives.len().max(1) as f64;
         let mean = |f: fn(&StormOutcome) -> f64| lives.iter().map(f).sum::<f64>() / n;
@@ -304,6 +326,7 @@ impl DesignReport {
         let screened: u64 = lives.iter().map(|l| l.screened_waves).sum();
         DesignReport {
             provenance: Provenance::CURRENT,
+            model: None,
             lives: lives.len(),
             life_years: years,
             seed: p.seed,
@@ -379,7 +402,7 @@ mod tests {
             life(1e-3, 1e-3, 0.0, 1e-3, 0.0),
             both,
         ];
-        let r = DesignReport::new(&p, 0.6, 5.0, &lives);
+        let r = DesignReport::statistics(&p, 0.6, 5.0, &lives);
         let d = &r.dynamic;
         let f = &d.sliding.failure;
         assert_eq!((r.failure_sliding_m, r.failure_rotation_rad, r.lives_end_at_failure), (5.0, 0.01, true));

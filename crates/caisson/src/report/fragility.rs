@@ -1,6 +1,6 @@
 //! `caisson fragility`: `fragility.json` (keys in docs/fragility.md).
 
-use super::Provenance;
+use super::{ModelReport, Provenance};
 use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{StormDuration, WaveDirection};
 use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
@@ -141,6 +141,8 @@ pub struct LimitFitReport {
 pub struct FragilityReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub scenario: String,
     pub period_s: f64,
     pub storm_duration_h: f64,
@@ -172,6 +174,7 @@ impl FragilityReport {
         let (h, t) = (waves.height_m(), waves.period_s());
         FragilityReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(structure),
             scenario: name.to_string(),
             period_s: p.period_s,
             storm_duration_h: p.storm_duration_s / 3600.0,

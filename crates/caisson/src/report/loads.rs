@@ -4,10 +4,11 @@
 //! of many waves of the Python package's `caisson.loads.evaluate` (tests/loads_columns.rs keeps
 //! it in step with the JSON: every key, in order, every value bit for bit).
 
-use super::{kn, Provenance};
-use crate::analysis::checks::Warning;
+use super::{kn, NotFinite, Provenance};
+use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::conventional::{DesignWaveRule, StaticCheck};
 use crate::analysis::train::WaveSetup;
+use crate::analysis::Structure;
 use crate::loads::regime::Regime;
 use crate::loads::risetime::RiseTimeModel;
 use serde::Serialize;
@@ -167,16 +168,43 @@ pub struct LoadsReport {
     pub safety: SafetyInfo,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub history: Option<HistoryInfo>,
-    /// Plausibility warnings of the structure (filled by the caller); left out when there is
-    /// none, so that a table of many waves' reports has a fixed set of numeric columns.
+    /// Plausibility warnings of the structure and of the waves ([`LoadsReport::of_structure`];
+    /// none in a row of a table, [`LoadsReport::new`]); left out when there is none, so that a table of many waves' reports has a fixed set of numeric columns.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<Warning>,
 }
 
+/// `caisson loads` refuses a report with a number that is not finite: the loads are closed forms
+/// of the scenario's numbers, so one that overflows is the input's (a huge weight or wave).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error(
+    "the scenario's loads are not finite numbers ({0}): the [caisson], [water] or [waves] numbers are too large or too small for the formulas"
+)]
+pub struct LoadsNotFinite(pub NotFinite);
+
 impl LoadsReport {
-    /// The report of Goda's static check `c` (the design wave of the scenario's waves, its loads
-    /// and safety factors) at the site of `waves`, for a caisson of weight in water
-    /// `weight_in_water_n` (total, N) and friction `mu`.
+    /// The report of `caisson loads` (and Python's `caisson.loads.report`): Goda's static check
+    /// `c` of the scenario's waves on `structure`, with the warnings of the structure and of the
+    /// waves and the generated `history`'s description; refused if a number is not finite.
+    pub fn of_structure(
+        structure: &Structure,
+        waves: &WaveSetup,
+        c: &StaticCheck,
+        history: Option<HistoryInfo>,
+    ) -> Result<Self, LoadsNotFinite> {
+        let (w, mu) = (structure.caisson.weight_in_water_n, structure.foundation.mu_static);
+        let mut report = LoadsReport::new(waves, c, w, mu);
+        report.warnings = structure_warnings(structure);
+        report.warnings.extend(wave_load_warnings(structure, waves));
+        report.history = history;
+        super::encode::check_finite(&report, "loads").map_err(LoadsNotFinite)?;
+        Ok(report)
+    }
+
+    /// One wave's row of a table of many (no warnings, no history, not checked for finite
+    /// numbers: the table's are checked as its columns): Goda's static check `c` (the design
+    /// wave of the scenario's waves, its loads and safety factors) at the site of `waves`, for a
+    /// caisson of weight in water `weight_in_water_n` (total, N) and friction `mu`.
     pub fn new(waves: &WaveSetup, c: &StaticCheck, weight_in_water_n: f64, mu: f64) -> Self {
         let (l, sf, dw) = (&c.loads, &c.safety, &c.design_wave);
         let site = &waves.model.site;

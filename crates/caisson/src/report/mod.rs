@@ -3,11 +3,17 @@
 //! `docs/fragility.md`. The CLI serializes them; the bindings build the same structs. Units are in
 //! the key names (forces in kN, pressures in kPa; the analyses themselves work in SI).
 //!
+//! Every report computes its own warnings in its constructor, and [`encode::to_json`] is the one
+//! way to JSON (refusing a non-finite number, naming its path): the CLI and the bindings only
+//! print what it returns.
+//!
 //! Every report carries its [`Provenance`]: the version of the tool that made it and the version
 //! of the results ([`crate::RESULTS_VERSION`]).
 
 pub mod campaign;
+pub mod checkpoint;
 pub mod design;
+pub mod encode;
 pub mod fragility;
 pub mod loads;
 pub mod run;
@@ -17,6 +23,11 @@ pub mod train;
 
 use crate::analysis::run::FoundationSummary;
 use crate::analysis::train::Spread;
+use crate::analysis::Structure;
+use crate::foundation::{DampingMode, VerticalDamping};
+use crate::structure::MassMatrix;
+use crate::Profile;
+pub use encode::{to_json, to_json_pretty, to_json_text, NotFinite};
 use serde::Serialize;
 
 /// The tool and results versions of an output.
@@ -37,6 +48,36 @@ impl Provenance {
 impl Default for Provenance {
     fn default() -> Self {
         Provenance::CURRENT
+    }
+}
+
+/// The model a report's numbers were computed with (the `model` object of every report): the
+/// profile (`[model] profile`) and the choices it made or the scenario's keys overrode. Two
+/// reports with the same `model` and results version came from the same equations.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ModelReport {
+    pub profile: Profile,
+    /// Where the horizontal foundation dashpot acts (`[foundation] damping_mode`).
+    pub damping_mode: DampingMode,
+    /// How the vertical and rotational dashpots are formed (`[foundation] vertical_damping`).
+    pub vertical_damping: VerticalDamping,
+    /// The rigid-body mass matrix (`[caisson] mass_matrix`).
+    pub mass_matrix: MassMatrix,
+    /// Static and dynamic friction coefficients of the base.
+    pub mu_static: f64,
+    pub mu_dynamic: f64,
+}
+
+impl From<&Structure> for ModelReport {
+    fn from(s: &Structure) -> Self {
+        ModelReport {
+            profile: s.profile,
+            damping_mode: s.foundation.damping_mode,
+            vertical_damping: s.foundation.vertical_damping,
+            mass_matrix: s.caisson.mass_matrix,
+            mu_static: s.foundation.mu_static,
+            mu_dynamic: s.foundation.mu_dynamic,
+        }
     }
 }
 

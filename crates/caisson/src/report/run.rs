@@ -1,8 +1,10 @@
 //! `caisson run` on a `[load]` scenario: `summary.json` (keys in docs/cli.md).
 
-use super::{kn, FoundationReport, Provenance};
-use crate::analysis::checks::Warning;
+use super::{kn, FoundationReport, ModelReport, Provenance};
+use crate::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response, Warning};
 use crate::analysis::run::RunSummary;
+use crate::analysis::Structure;
+use crate::loads::LoadSpec;
 use serde::Serialize;
 
 /// Solver statistics of a single run.
@@ -20,6 +22,8 @@ pub struct RunSolverReport {
 pub struct RunReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub permanent_sliding_m: f64,
     pub max_horizontal_displacement_m: f64,
     pub max_rotation_rad: f64,
@@ -42,10 +46,16 @@ pub struct RunReport {
 }
 
 impl RunReport {
-    /// The report of run `s` on springs at `spring_positions_m`, with its `warnings`.
-    pub fn new(s: &RunSummary, spring_positions_m: Vec<f64>, warnings: Vec<Warning>) -> Self {
+    /// The report of run `s` of `load` on `structure`, with the warnings of the structure, the
+    /// load and the response.
+    pub fn new(structure: &Structure, load: &LoadSpec, s: &RunSummary) -> Self {
+        let mut warnings = structure_warnings(structure);
+        warnings.extend(run_load_warnings(structure, load));
+        warnings.extend(response_warnings(structure, &Response::from(s)));
+        let spring_positions_m = structure.foundation.spring_positions(structure.caisson.width_m);
         RunReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(structure),
             permanent_sliding_m: s.permanent_sliding_m,
             max_horizontal_displacement_m: s.max_horizontal_displacement_m,
             max_rotation_rad: s.max_rotation_rad,

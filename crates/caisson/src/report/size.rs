@@ -1,9 +1,11 @@
 //! `caisson size`: `size.json` (keys in docs/size.md).
 
-use super::{kn, Provenance};
-use crate::analysis::checks::Warning;
+use super::{kn, ModelReport, Provenance};
+use crate::analysis::checks::{candidate_warnings, structure_warnings, Warning};
 use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
-use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Required, SizeParams, Sizing};
+use crate::analysis::lifetime::DesignParams;
+use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Reached, Required, SizeParams, Sizing};
+use crate::analysis::Structure;
 use serde::Serialize;
 
 /// One evaluated width (weights in kN).
@@ -56,6 +58,8 @@ impl GodaWidth {
 pub struct SizeReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     /// The variable sized.
     pub variable: &'static str,
     pub range_m: (f64, f64),
@@ -80,12 +84,14 @@ pub struct SizeReport {
 }
 
 impl SizeReport {
-    /// The report of `sizing`; `extra(width)` gives the failure limit (m) and Goda's static checks
-    /// at each candidate's width.
+    /// The report of `sizing` of `structure` (the scenario's caisson) over the lives of `design`,
+    /// with its warnings: the structure's, a range that does not bracket the answer, Goda's
+    /// design, and the life warnings of every candidate. `extra(width)` gives the failure limit
+    /// (m) and Goda's static checks at each candidate's width.
     pub fn new(
         p: &SizeParams,
-        life_years: usize,
-        seed: u64,
+        design: &DesignParams,
+        structure: &Structure,
         sizing: &Sizing,
         goda: GodaWidth,
         extra: &dyn Fn(&Candidate) -> (f64, Option<ChecksAtWidth>),
@@ -109,15 +115,16 @@ impl SizeReport {
                 }
             })
             .collect();
-        SizeReport {
+        let mut report = SizeReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(structure),
             variable: "width_m",
             range_m: p.range_m,
             criteria: p.criteria,
             lives_per_candidate: p.lives,
-            life_years,
-            seed,
-            climate: None,
+            life_years: design.life.life_years,
+            seed: design.seed,
+            climate: super::design::ClimateChoices::of(&design.life),
             tolerance_m: p.tolerance_m,
             dynamic: sizing.dynamic,
             rigid_block: sizing.rigid_block,
@@ -125,6 +132,101 @@ impl SizeReport {
             lives_simulated: sizing.candidates.iter().map(|c| c.lives).sum(),
             candidates,
             warnings: Vec::new(),
-        }
+        };
+        report.warnings = structure_warnings(structure);
+        report.warnings.extend(range_warnings(&report));
+        report.warnings.extend(goda_warnings(&report));
+        report.warnings.extend(candidate_life_warnings(&sizing.candidates, &report, design));
+        report
     }
+}
+
+/// Warnings when the range does not bracket the answer.
+fn range_warnings(r: &SizeReport) -> Vec<Warning> {
+    let mut out = Vec::new();
+    for (name, req) in [("dynamic model", &r.dynamic), ("rigid block", &r.rigid_block)] {
+        let (code, message) = match req {
+            Required::AtLowerBound { width_m } => (
+                "size-at-lower-bound",
+                format!("the {name} meets the criterion already at the smallest width {width_m} m: lower `[size] range_m`'s first value to find the required width"),
+            ),
+            Required::NotInRange { largest_m } => (
+                "size-not-in-range",
+                format!("the {name} does not meet the criterion at the largest width {largest_m} m: raise `[size] range_m`'s second value"),
+            ),
+            Required::Found { .. } => continue,
+        };
+        out.push(Warning {
+            code,
+            message,
+            numbers: [("range_low_m", r.range_m.0), ("range_high_m", r.range_m.1)].into_iter().collect(),
+        });
+    }
+    out
+}
+
+/// The life warnings of every candidate width (failed lives, large rotations, seaward lives: as
+/// `caisson design` gives them for one width), each message prefixed with its width; the required
+/// width's first, so that the text's summary of a code shows it.
+fn candidate_life_warnings(candidates: &[Candidate], r: &SizeReport, design: &DesignParams) -> Vec<Warning> {
+    let required = r.dynamic.width_m();
+    let mut order: Vec<&Candidate> = candidates.iter().collect();
+    order.sort_by_key(|c| Some(c.width_m) != required);
+    order
+        .into_iter()
+        .flat_map(|c| {
+            candidate_warnings(c, &design.failure_limits(c.width_m)).into_iter().map(move |mut w| {
+                let which = if Some(c.width_m) == required { ", the required width" } else { "" };
+                w.message = format!("at B = {:.2} m{which}: {}", c.width_m, w.message);
+                w.numbers.insert("width_m", c.width_m);
+                w
+            })
+        })
+        .collect()
+}
+
+/// Warnings of Goda's conventional design: its width outside the search, a heel pressure above the
+/// allowable value there, candidates that would overturn under the design wave.
+fn goda_warnings(r: &SizeReport) -> Vec<Warning> {
+    let g = &r.goda;
+    let mut out = Vec::new();
+    if let Reached::NotInRange { largest_m } = g.width.reached {
+        out.push(Warning {
+            code: "goda-width-not-in-range",
+            message: format!("no width up to {largest_m} m meets Goda's static checks under the design wave (H_D = {:.2} m): the site's design wave is beyond what this caisson's construction can hold; check `[waves]` and `[caisson]`", g.design_wave.design_height_m),
+            numbers: [("largest_width_m", largest_m), ("design_height_m", g.design_wave.design_height_m)].into_iter().collect(),
+        });
+    }
+    if let (true, Some(a)) = (g.width.heel_pressure_above_allowable, g.width.at_width) {
+        let p = a.heel_pressure_kpa;
+        out.push(Warning {
+            code: "heel-pressure-above-allowable",
+            message: format!(
+                "at Goda's width {:.2} m the heel pressure under the design wave is {}, above the allowable {} kPa (`[size] allowable_heel_pressure_kpa`): the mound needs a bearing-capacity check (or a footing); `[size] heel_pressure_governs = true` makes it a criterion of the width",
+                a.width_m,
+                p.map_or("undefined (the resultant leaves the base)".to_string(), |p| format!("{p:.0} kPa")),
+                g.allowable_heel_pressure_kpa
+            ),
+            numbers: [("width_m", a.width_m), ("heel_pressure_kpa", p.unwrap_or(f64::INFINITY)), ("allowable_kpa", g.allowable_heel_pressure_kpa)]
+                .into_iter()
+                .filter(|(_, v)| v.is_finite())
+                .collect(),
+        });
+    }
+    let tipping: Vec<&CandidateReport> =
+        r.candidates.iter().filter(|k| k.goda_overturning_safety_factor.is_some_and(|f| f < 1.0)).collect();
+    if let (Some(first), Some(last)) = (tipping.first(), tipping.last()) {
+        out.push(Warning {
+            code: "overturning-under-design-wave",
+            message: format!(
+                "{} candidate widths ({:.2} to {:.2} m) have Goda's overturning safety factor below 1 under the design wave (H_D = {:.2} m): they would tip about the heel, which the dynamic model does not follow; read their lives' rotation failures, and Goda's width",
+                tipping.len(),
+                first.width_m,
+                last.width_m,
+                g.design_wave.design_height_m
+            ),
+            numbers: [("candidates", tipping.len() as f64), ("largest_width_m", last.width_m)].into_iter().collect(),
+        });
+    }
+    out
 }

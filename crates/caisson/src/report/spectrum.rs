@@ -1,9 +1,11 @@
 //! `caisson spectrum`: `spectrum.json` (keys in docs/cli.md).
 
-use super::{kn, Provenance};
-use crate::analysis::checks::Warning;
+use super::{kn, ModelReport, Provenance};
+use crate::analysis::checks::{run_load_warnings, structure_warnings, Warning};
 use crate::analysis::spectrum::SpectrumPoint;
+use crate::analysis::Structure;
 use crate::loads::pulse::TrianglePulse;
+use crate::loads::LoadSpec;
 use serde::Serialize;
 
 /// One point of the spectrum.
@@ -39,28 +41,28 @@ impl From<&SpectrumPoint> for SpectrumPointReport {
 pub struct SpectrumReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub natural_period_s: f64,
     pub peak_horizontal_kn: f64,
     pub peak_uplift_kn: f64,
     pub static_sliding_resistance_kn: f64,
     pub points: Vec<SpectrumPointReport>,
-    /// Plausibility warnings of the structure.
+    /// Plausibility warnings of the structure and of the pulse.
     pub warnings: Vec<Warning>,
 }
 
 impl SpectrumReport {
-    /// The report of `points` swept with the pulse `base` on a caisson of natural period
-    /// `natural_period_s` and static sliding resistance μ_s W' (N).
-    pub fn new(
-        natural_period_s: f64,
-        base: &TrianglePulse,
-        resistance_n: f64,
-        points: &[SpectrumPoint],
-        warnings: Vec<Warning>,
-    ) -> Self {
+    /// The report of the sweep `points` of `base` (the scenario's triangle) on `structure`, with
+    /// the warnings of the structure and of the pulse's peak forces.
+    pub fn new(structure: &Structure, base: &TrianglePulse, points: &[SpectrumPoint]) -> Self {
+        let mut warnings = structure_warnings(structure);
+        warnings.extend(run_load_warnings(structure, &LoadSpec::Triangle(*base)));
+        let resistance_n = structure.foundation.mu_static * structure.caisson.weight_in_water_n;
         SpectrumReport {
             provenance: Provenance::CURRENT,
-            natural_period_s,
+            model: ModelReport::from(structure),
+            natural_period_s: structure.model().natural_period_s(),
             peak_horizontal_kn: kn(base.peak.fx_n),
             peak_uplift_kn: kn(base.peak.fy_n),
             static_sliding_resistance_kn: kn(resistance_n),

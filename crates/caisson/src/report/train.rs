@@ -1,6 +1,6 @@
 //! `caisson run` on a `[waves]` scenario: the wave-train `summary.json` (keys in docs/cli.md).
 
-use super::{kn, FoundationReport, Provenance, SpreadReport};
+use super::{kn, FoundationReport, ModelReport, Provenance, SpreadReport};
 use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::run::FoundationSummary;
 use crate::analysis::train::{realization_warnings, RealizationResult, TrainCase, TrainSummary, WaveSetup};
@@ -136,6 +136,8 @@ impl TrainSolverReport {
 pub struct TrainRunReport {
     #[serde(flatten)]
     pub provenance: Provenance,
+    /// The profile and model choices of the run ([`ModelReport`]).
+    pub model: ModelReport,
     pub sliding_m: SpreadReport,
     pub rigid_block_sliding_m: SpreadReport,
     pub rigid_block_mu: f64,
@@ -157,6 +159,7 @@ impl TrainRunReport {
         let f = FoundationSummary::new(&structure.caisson, &structure.foundation, &model);
         TrainRunReport {
             provenance: Provenance::CURRENT,
+            model: ModelReport::from(structure),
             sliding_m: SpreadReport::scaled(&s.sliding_m, 1.0),
             rigid_block_sliding_m: SpreadReport::scaled(&s.rigid_block_sliding_m, 1.0),
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),

@@ -631,6 +631,7 @@ impl Scenario {
         self.foundation_spec = foundation_spec;
         self.structure.caisson = caisson;
         self.structure.foundation = foundation;
+        self.structure.profile = profile;
         coherence::check_time_step(&self.structure)?;
         if let Some(d) = &self.design {
             coherence::check_floating(&self.structure.caisson, rho_w, d)?;

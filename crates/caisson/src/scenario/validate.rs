@@ -92,7 +92,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         water_density_kg_per_m3: rho_w,
         caisson_spec,
         foundation_spec,
-        structure: Structure { caisson, foundation, solver },
+        structure: Structure { caisson, foundation, solver, profile },
         load,
         duration_s,
         waves: wave_setup,

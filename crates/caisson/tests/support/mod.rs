@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod signature;
+
 use caisson::scenario::Scenario;
 use std::path::Path;
 

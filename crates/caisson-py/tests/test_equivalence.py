@@ -1,0 +1,79 @@
+"""Python ↔ CLI equivalence on absurd-but-valid input: the scenarios a front-end that assembles its
+own report would get wrong. Each pair must agree key for key and bit for bit (warnings included),
+or refuse the same way: a load that warns in `spectrum`, the loads on a soft foundation, a gap
+between shards of a design."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+import caisson
+from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml
+
+
+def heavy_triangle(tmp_path):
+    """examples/table5_triangle.toml with a peak force of 121 W': valid (below 10³ W'), but a
+    force in N written as kN would look like it, so every report of it warns `implausible-load`."""
+    text = (EXAMPLES / "table5_triangle.toml").read_text()
+    assert "peak_horizontal_kn = 12.0" in text
+    p = tmp_path / "heavy_triangle.toml"
+    p.write_text(text.replace("peak_horizontal_kn = 12.0", "peak_horizontal_kn = 1000.0"))
+    return p
+
+
+def codes(report: dict) -> list:
+    return [w["code"] for w in report["warnings"]]
+
+
+def test_spectrum_of_a_load_that_warns_has_the_cli_warnings(tmp_path):
+    p = heavy_triangle(tmp_path)
+    want = cli_json("spectrum", p, "--tr-over-t0", "0.1:2:3")
+    assert "implausible-load" in codes(want)
+    frame = caisson.spectrum(caisson.Scenario.from_toml(p), [p_["tr_over_t0"] for p_ in want["points"]])
+    head = {k: v for k, v in want.items() if k != "points"}
+    assert assert_same_json(dict(frame.attrs), head) >= 8
+    assert assert_same_json(frame.to_dict("records"), want["points"]) == 3 * 8
+
+
+def test_run_of_a_load_that_warns_has_the_cli_warnings(tmp_path):
+    p = heavy_triangle(tmp_path)
+    want = cli_json("run", p)
+    assert "implausible-load" in codes(want)
+    got = caisson.run(caisson.Scenario.from_toml(p), history=False).summary
+    assert assert_same_json(got, want) > 20
+
+
+def test_loads_on_a_soft_foundation_are_the_cli_loads_with_its_warnings(tmp_path):
+    # The design example on a foundation of E100 = 10 kPa (35 000 times softer): valid, and the
+    # structure's warnings (settlement, natural period) are in both reports.
+    sc = caisson.Scenario.from_toml(EXAMPLES / "design_breakwater.toml").replace(foundation={"e100_kpa": 10.0})
+    p = tmp_path / "soft.toml"
+    p.write_text(sc.to_toml())
+    want = cli_json("loads", p)
+    assert codes(want) == ["implausible-settlement", "implausible-natural-period"]
+    got = caisson.loads.report(caisson.Scenario.from_toml(p))
+    assert assert_same_json(got, want) > 50
+
+
+def test_design_statistics_refuse_a_gap_between_shards_as_caisson_merge_does(tmp_path):
+    p = short_design_toml(tmp_path, lives=12, years=5)
+    # Two CLI shards with a gap (lives 4..6 in none): merge refuses it.
+    for r in ("0..4", "6..12"):
+        cli("design", p, "--life-range", r, "--out", tmp_path / r)
+    refused = cli("merge", p, tmp_path / "0..4", tmp_path / "6..12", "--out", tmp_path / "m", check=False)
+    assert refused.returncode == 2 and "lives 4..6 are in no shard" in refused.stderr
+    # The same shards in Python: refused too, naming the same lives.
+    d = caisson.Design(caisson.Scenario.from_toml(p))
+    parts = [d.simulate_lives(range(0, 4)), d.simulate_lives(range(6, 12))]
+    with pytest.raises(ValueError, match=r"^lives 4\.\.6 are missing \(2 lives\)"):
+        d.statistics(parts)
+    # Filled, both join into what one run of 12 lives reports.
+    merged = cli("merge", p, tmp_path / "0..4", tmp_path / "6..12", tmp_path / "4..6", "--out", tmp_path / "m", check=False)
+    assert merged.returncode == 2  # the shard 4..6 is not run yet: no such checkpoint
+    cli("design", p, "--life-range", "4..6", "--out", tmp_path / "4..6")
+    cli("merge", p, tmp_path / "0..4", tmp_path / "6..12", tmp_path / "4..6", "--out", tmp_path / "m")
+    want = json.loads((tmp_path / "m" / "design.json").read_text())
+    got = d.statistics(parts + [d.simulate_lives(range(4, 6))])
+    assert assert_same_json(got, want) > 40

@@ -1,0 +1,163 @@
+//! The sizing driver of `caisson size` and Python's `caisson.size` (docs/size.md): a scenario with
+//! `[size]`, `[design]` and a caisson given by its construction in, a [`SizeReport`] out.
+//!
+//! For each width the search asks for ([`crate::analysis::sizing::size`]), the scenario is
+//! rebuilt at that width ([`Sizer::at_width`]: `Scenario::with_caisson` +
+//! `CaissonSpec::with_width_m`, the construction gives the weight, mass, centre of gravity and
+//! inertia), lives 0..N of the design's seed run with [`run_lives`] (common random numbers) and
+//! reduce to a [`Candidate`]. Goda's conventional width is searched from a quarter of the range's
+//! smallest width to twice its largest ([`conventional_width`] on [`static_check`] of the
+//! scenario at each width, under the design wave of its `[waves]`). The report computes its own
+//! warnings ([`SizeReport::new`]).
+//!
+//! The front-ends keep what is theirs through [`Hooks`]: the progress, stopping (Ctrl-C), and
+//! the checkpoint of the finished candidates (the CLI's file; its codec is
+//! [`crate::report::checkpoint`]): candidates read back from it are passed in `done` and reused,
+//! never run again.
+
+use crate::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave};
+use crate::analysis::lifetime::{run_lives, DesignParams, LifeFailed, StormOutcome};
+use crate::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, SizeParams};
+use crate::analysis::work::{self, WorkEstimate};
+use crate::loads::safety::SafetyFactors;
+use crate::report::design::design_fingerprint;
+use crate::report::size::{GodaWidth, SizeReport};
+use crate::scenario::{Scenario, ScenarioError};
+use std::ops::ControlFlow;
+
+/// Width tolerance of the deterministic (Goda) width, m.
+pub const GODA_TOLERANCE_M: f64 = 1e-3;
+
+/// Why a sizing run stops.
+#[derive(Debug, thiserror::Error)]
+pub enum SizeError {
+    /// The scenario has no `[size]`, `[design]` or `[waves]`, or its storms do not build.
+    #[error(transparent)]
+    Scenario(#[from] ScenarioError),
+    /// The caisson is given by its weight: it cannot follow the width.
+    #[error(
+        "{0} varies the width, so the caisson's weight must follow it: give `[caisson]` its construction (wall_thickness_m, slab_thickness_m, fill_density_kg_per_m3, ...; docs/scenario.md) instead of `weight_in_water_kn`"
+    )]
+    NoConstruction(String),
+    /// The scenario does not build at a width of the search (its caisson would float, ...).
+    #[error("at the width {width_m} m of the search: {source}")]
+    AtWidth { width_m: f64, source: ScenarioError },
+    /// A life at a width failed to run.
+    #[error("the lives at the width {width_m} m: {source}")]
+    Run { width_m: f64, source: LifeFailed },
+    /// [`Hooks::life`] asked to stop while the lives at `width_m` ran.
+    #[error("stopped at the width {width_m} m")]
+    Stopped { width_m: f64 },
+    /// [`Hooks::candidate`] refused a finished candidate (e.g. its checkpoint line could not be
+    /// written): its words.
+    #[error("{0}")]
+    Candidate(String),
+}
+
+/// What a front-end sees of a sizing run.
+pub struct Hooks<'h> {
+    /// A width's evaluation begins (from the calling thread); `true` if it comes from `done`.
+    pub width: &'h mut (dyn FnMut(f64, bool) + Send),
+    /// A life finished (from a worker thread); `Break` stops the run ([`SizeError::Stopped`]).
+    pub life: &'h (dyn Fn() -> ControlFlow<()> + Sync),
+    /// A newly evaluated candidate (not one of `done`); an error stops the run.
+    pub candidate: &'h mut (dyn FnMut(&Candidate) -> Result<(), String> + Send),
+}
+
+/// A sizing run of a scenario: its `[size]` and `[design]`, checked.
+pub struct Sizer<'a> {
+    sc: &'a Scenario,
+    pub params: SizeParams,
+    pub design: DesignParams,
+}
+
+impl<'a> Sizer<'a> {
+    /// The sizing of `sc` (`what` names the command in the error of a file without `[size]`,
+    /// `[design]` or a construction).
+    pub fn new(sc: &'a Scenario, what: &str) -> Result<Self, SizeError> {
+        let params = *sc.size_for(what)?;
+        let design = sc.design_for(what)?.clone();
+        if sc.caisson_spec().construction().is_none() {
+            return Err(SizeError::NoConstruction(what.to_string()));
+        }
+        Ok(Sizer { sc, params, design })
+    }
+
+    /// The scenario with the caisson `width_m` wide (its construction gives the weight).
+    pub fn at_width(&self, width_m: f64) -> Result<Scenario, SizeError> {
+        self.sc
+            .clone()
+            .with_caisson(|c| *c = c.with_width_m(width_m))
+            .map_err(|source| SizeError::AtWidth { width_m, source })
+    }
+
+    /// How many candidates the search evaluates at most: the grid and two bisections.
+    pub fn candidates(&self) -> usize {
+        let p = &self.params;
+        let grid = curve_widths(p).len();
+        grid + 2 * bisection_steps(p, (p.range_m.1 - p.range_m.0) / (grid - 1) as f64)
+    }
+
+    /// The work of the run, estimated on every width of the grid as a design run of one width's
+    /// lives (each must build: a width whose caisson floats is an input error).
+    pub fn estimate(&self, what: &str) -> Result<WorkEstimate, SizeError> {
+        let one_width = DesignParams { lives: self.params.lives, ..self.design.clone() };
+        let mut grid = Vec::new();
+        for w in curve_widths(&self.params) {
+            let sw = self.at_width(w)?;
+            let case = sw.storm_case(self.design.screen)?;
+            grid.push(work::design(&case, &one_width, sw.waves_for(what)?));
+        }
+        Ok(work::size(&grid, self.candidates()))
+    }
+
+    /// What every candidate depends on: the design's fingerprint and `[size]` (a checkpoint of
+    /// the candidates holds it).
+    pub fn fingerprint(&self) -> Result<String, SizeError> {
+        let case = self.sc.storm_case(self.design.screen)?;
+        Ok(crate::report::fingerprint(&(design_fingerprint(&case, &self.design), &self.params)))
+    }
+
+    /// Run the search (reusing the candidates `done`) and Goda's width: the report. Lives run on
+    /// rayon's current pool.
+    pub fn run(&self, done: &[Candidate], hooks: Hooks<'_>) -> Result<SizeReport, SizeError> {
+        let (p, design) = (&self.params, &self.design);
+        let Hooks { width, life, candidate: finished } = hooks;
+        let mut evaluate = |w: f64| -> Result<Candidate, SizeError> {
+            if let Some(c) = done.iter().find(|c| c.width_m == w) {
+                width(w, true);
+                return Ok(c.clone());
+            }
+            let sw = self.at_width(w)?;
+            let case = sw.storm_case(design.screen)?;
+            width(w, false);
+            let indices: Vec<usize> = (0..p.lives).collect();
+            let lives = run_lives(&case, &design.life, design.seed, &indices, &|_, _| life())
+                .map_err(|source| SizeError::Run { width_m: w, source })?;
+            if lives.len() < p.lives {
+                return Err(SizeError::Stopped { width_m: w });
+            }
+            let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
+            let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, &design.failure_limits(w), &p.criteria);
+            finished(&c).map_err(SizeError::Candidate)?;
+            Ok(c)
+        };
+        let sizing = size(p, &mut evaluate)?;
+        // The deterministic width is cheap: it is searched from a quarter of the range's smallest
+        // width to twice its largest, so it shows even where it lies far from the widths the
+        // dynamic model needs.
+        let goda_checks = |w: f64| -> Option<SafetyFactors> {
+            let s = self.at_width(w).ok()?;
+            static_check(s.structure(), s.waves.as_ref()?).ok().map(|c| c.safety)
+        };
+        let goda_range = (p.range_m.0 / 4.0, 2.0 * p.range_m.1);
+        let width_found = conventional_width(goda_range, GODA_TOLERANCE_M, &p.conventional, &mut |w| goda_checks(w));
+        let waves = self.sc.waves_for("sizing")?;
+        let goda = GodaWidth::new(DesignWave::of(waves), &p.conventional, width_found);
+        let extra = |c: &Candidate| {
+            let checks = goda_checks(c.width_m).map(|sf| ChecksAtWidth::new(c.width_m, &sf));
+            (design.failure_limit_m(c.width_m), checks)
+        };
+        Ok(SizeReport::new(p, design, self.sc.structure(), &sizing, goda, &extra))
+    }
+}

@@ -1,0 +1,62 @@
+//! The signature runner: what a bundled example computes, briefly, by the driver its tables call
+//! for (a `[load]` run, the first 3 lives of a `[design]`, 2 storms at the lowest and highest
+//! heights of a `[fragility]`, realization 0 of `[waves]` trains). tests/golden.rs,
+//! tests/predictor.rs and tests/sticking.rs each read what they compare from it.
+
+use caisson::analysis::fragility::run_fragility;
+use caisson::analysis::lifetime::{run_lives, StormOutcome};
+use caisson::analysis::run::{run, History, RunResult};
+use caisson::analysis::train::RealizationResult;
+use caisson::scenario::Scenario;
+use std::ops::ControlFlow;
+
+/// What an example computed.
+pub enum Signature {
+    /// A `[load]` run (its whole history if asked for).
+    Load(RunResult),
+    /// Lives 0, 1, 2 of a design.
+    Lives(Vec<StormOutcome>),
+    /// 2 storms at the lowest and 2 at the highest height of a fragility run.
+    Storms(Vec<StormOutcome>),
+    /// Realization 0 of the wave trains (and its history if asked for).
+    Train(RealizationResult, Option<History>),
+}
+
+/// An empty history of `sc` for a run of `duration_s`.
+pub fn history_for(sc: &Scenario, duration_s: f64) -> History {
+    let (c, f, s) = (sc.caisson(), sc.foundation(), sc.solver());
+    let samples = (duration_s / s.output_interval_s).ceil() as usize + 1;
+    History::new(s.output_interval_s, samples, f.spring_positions(c.width_m), c.weight_in_water_n, f.mu_static)
+}
+
+/// Run `sc` briefly (module docs), keeping the time history of a run or a train if `history`.
+pub fn signature(sc: &Scenario, history: bool) -> Signature {
+    if let Some(load) = &sc.load {
+        Signature::Load(run(sc.structure(), load, sc.duration_s, history).unwrap())
+    } else if let Some(design) = &sc.design {
+        let case = sc.storm_case(design.screen).unwrap();
+        let lives = run_lives(&case, &design.life, design.seed, &[0, 1, 2], &|_, _| ControlFlow::Continue(())).unwrap();
+        assert_eq!(lives.len(), 3);
+        Signature::Lives(lives.into_iter().map(|(_, o)| o).collect())
+    } else if let Some(params) = &sc.fragility {
+        let case = sc.storm_case(true).unwrap();
+        let mut p = params.clone();
+        p.heights_m = vec![params.heights_m[0], *params.heights_m.last().unwrap()];
+        p.storms = 2;
+        let r = run_fragility(&case, &p, &|| {}).unwrap();
+        Signature::Storms(r.levels.iter().flat_map(|l| l.storms.iter().copied()).collect())
+    } else {
+        let case = sc.train_case().unwrap();
+        let mut h = history.then(|| history_for(sc, case.duration_s()));
+        let r = case.run(0, h.as_mut().map(|h| h as &mut dyn caisson::dynamics::Observer)).unwrap();
+        Signature::Train(r, h)
+    }
+}
+
+/// The per-wave sliding and peak reaction and the total sliding of a train realization, as
+/// tests/predictor.rs and tests/sticking.rs compare them.
+pub fn train_values(out: &mut std::collections::BTreeMap<String, Vec<f64>>, r: &RealizationResult) {
+    out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
+    out.insert("wave_max_horizontal_reaction_n".into(), r.waves.iter().map(|w| w.max_horizontal_reaction_n).collect());
+    out.insert("sliding_m".into(), vec![r.sliding_m]);
+}
