@@ -75,5 +75,5 @@ def test_design_statistics_refuse_a_gap_between_shards_as_caisson_merge_does(tmp
     cli("design", p, "--life-range", "4..6", "--out", tmp_path / "4..6")
     cli("merge", p, tmp_path / "0..4", tmp_path / "6..12", tmp_path / "4..6", "--out", tmp_path / "m")
     want = json.loads((tmp_path / "m" / "design.json").read_text())
-    got = d.statistics(parts + [d.simulate_lives(range(4, 6))])
+    got = d.statistics(parts + [d.simulate_lives(range(4, 6))]).report
     assert assert_same_json(got, want) > 40

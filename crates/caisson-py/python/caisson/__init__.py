@@ -37,7 +37,7 @@ import pandas as pd
 
 from . import _core, _toml
 from ._core import FitError, RunError, ScenarioError
-from .results import DesignStatistics, FragilityResult, ModelStatistics, ResultWarning, RunResult
+from .results import DesignStatistics, FragilityResult, ModelStatistics, ResultWarning, RunResult, SizeResult
 
 __all__ = [
     "Scenario",
@@ -48,6 +48,7 @@ __all__ = [
     "DesignStatistics",
     "ModelStatistics",
     "ResultWarning",
+    "SizeResult",
     "run",
     "campaign",
     "spectrum",

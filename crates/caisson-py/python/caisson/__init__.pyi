@@ -11,6 +11,7 @@ from .results import (
     ModelStatistics as ModelStatistics,
     ResultWarning as ResultWarning,
     RunResult as RunResult,
+    SizeResult as SizeResult,
 )
 
 __version__: str

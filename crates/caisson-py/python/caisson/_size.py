@@ -16,7 +16,7 @@ from typing import Any, Callable, Optional, Sequence, Union
 import pandas as pd
 
 from . import _core
-from .results import DesignStatistics
+from .results import DesignStatistics, SizeResult
 
 Progress = Optional[Callable[[int, int], Any]]
 PathLike = Union[str, os.PathLike]
@@ -25,14 +25,14 @@ PathLike = Union[str, os.PathLike]
 MAX_CHECKPOINT_BYTES = 1 << 30
 
 
-def size(scenario, *, threads: int = 1, progress: Progress = None) -> dict:
+def size(scenario, *, threads: int = 1, progress: Progress = None) -> SizeResult:
     """The smallest caisson width that meets the scenario's ``[size]`` criterion over the lives of
-    its ``[design]`` (``caisson size``, docs/size.md): the dict of ``size.json``, key for key and
-    bit for bit, warnings included. The caisson must be given by its construction. Raises
+    its ``[design]`` (``caisson size``, docs/size.md): a :class:`SizeResult`, whose ``report`` is
+    the dict of ``size.json``, key for key and bit for bit, warnings included. The caisson must be given by its construction. Raises
     :class:`ScenarioError` for a scenario the CLI refuses (or over the work budget), and
     ``KeyboardInterrupt`` on Ctrl-C (nothing is kept: the CLI's ``--out`` keeps a checkpoint).
     ``progress(done, total)``: lives, ``total`` the most the search may run."""
-    return json.loads(_core.size(scenario._core, threads, progress))
+    return SizeResult.of(json.loads(_core.size(scenario._core, threads, progress)))
 
 
 def _checkpoint_bytes(path: PathLike) -> tuple:

@@ -17,7 +17,7 @@ from typing import Any, Iterator, Optional
 
 import pandas as pd
 
-__all__ = ["ResultWarning", "RunResult", "ModelStatistics", "DesignStatistics", "FragilityResult"]
+__all__ = ["ResultWarning", "RunResult", "ModelStatistics", "DesignStatistics", "FragilityResult", "SizeResult"]
 
 
 @dataclass(frozen=True)
@@ -237,3 +237,72 @@ class FragilityResult:
     storms: pd.DataFrame
     fits: pd.DataFrame
     warnings: tuple = ()
+
+
+@dataclass(frozen=True, eq=False)
+class SizeResult(Mapping):
+    """The results of :func:`caisson.size` (``caisson size --json``, docs/size.md). Widths in m.
+
+    - ``width_m``: the required width by the dynamic model (``None`` where the search found none
+      in the range: ``status`` says why); ``rigid_block_width_m``: the rigid block's;
+      ``goda_width_m``: Goda's conventional width (sliding and overturning safety factors under
+      the design wave H_max).
+    - ``status``, ``rigid_block_status``: ``"found"`` or why not (docs/size.md).
+    - ``candidates``: one row per width tried: ``width_m``, ``weight_in_water_kn``, and per model
+      (``dynamic_...``, ``rigid_block_...``) ``expected_sliding_m``, ``expected_sliding_se_m``,
+      ``expected_sliding_uncapped_m``, ``failure_probability`` (with
+      ``failure_by_sliding_probability``, ``failure_by_rotation_probability``),
+      ``exceedance_probability``, ``p50_m``, ``p95_m`` and ``meets``; Goda's safety factors and
+      heel pressure (``goda_sliding_safety_factor``, ``goda_overturning_safety_factor``,
+      ``goda_heel_pressure_kpa``).
+    - ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``size.json``,
+      which the object also reads as.
+    """
+
+    width_m: Optional[float]
+    rigid_block_width_m: Optional[float]
+    goda_width_m: Optional[float]
+    status: str
+    rigid_block_status: str
+    candidates: pd.DataFrame
+    warnings: tuple
+    report: dict
+
+    @staticmethod
+    def of(report: dict) -> "SizeResult":
+        rows = []
+        for c in report["candidates"]:
+            row = {k: v for k, v in c.items() if not isinstance(v, Mapping) and k not in ("dynamic_meets", "rigid_block_meets")}
+            for model in ("dynamic", "rigid_block"):
+                row.update({f"{model}_{k}": v for k, v in (c.get(model) or {}).items()})
+                row[f"{model}_meets"] = c.get(f"{model}_meets")
+            rows.append(row)
+        return SizeResult(
+            width_m=report["dynamic"].get("width_m"),
+            rigid_block_width_m=report["rigid_block"].get("width_m"),
+            goda_width_m=report["goda"].get("width_m"),
+            status=report["dynamic"]["status"],
+            rigid_block_status=report["rigid_block"]["status"],
+            candidates=pd.DataFrame(rows),
+            warnings=ResultWarning.all_of(report),
+            report=report,
+        )
+
+    def __getitem__(self, key: str) -> Any:
+        return self.report[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.report)
+
+    def __len__(self) -> int:
+        return len(self.report)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, SizeResult):
+            return self.report == other.report
+        return isinstance(other, Mapping) and self.report == dict(other)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"SizeResult(width_m={self.width_m}, rigid_block_width_m={self.rigid_block_width_m}, goda_width_m={self.goda_width_m})"
