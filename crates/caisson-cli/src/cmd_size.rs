@@ -8,7 +8,8 @@ use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, w
 use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::conventional::Governs;
-use caisson::analysis::sizing::{Candidate, Reached, Required};
+use caisson::analysis::conventional::Reached;
+use caisson::analysis::sizing::{Candidate, Required};
 use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::report::checkpoint::{candidate_line, SizeHeader};
 use caisson::report::size::{GodaWidth, SizeReport};
