@@ -10,7 +10,7 @@ use std::path::Path;
 
 /// The floor of every analysis module; a new module must be placed here (the test fails
 /// otherwise).
-const FLOORS: [(&str, u8); 17] = [
+const FLOORS: [(&str, u8); 18] = [
     // The model pieces: what every driver runs on.
     ("mod", 0), // Structure, Progress
     ("site", 0),
@@ -28,8 +28,9 @@ const FLOORS: [(&str, u8); 17] = [
     ("fragility", 1),
     ("conventional", 1),
     ("sizing", 1),
-    // The judgement: plausibility checks and work estimates.
+    // The judgement: plausibility checks, the seed's findings, work estimates.
     ("checks", 2),
+    ("findings", 2),
     ("work", 2),
 ];
 

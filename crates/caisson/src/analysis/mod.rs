@@ -7,8 +7,8 @@
 //!    [`climate`];
 //! 1. the drivers: [`run`], [`envelope`], [`spectrum`], [`train`], [`campaign`], [`lifetime`],
 //!    [`fragility`], [`conventional`], [`sizing`];
-//! 2. the judgement: [`checks`] (plausibility warnings of inputs and results) and [`work`] (work
-//!    estimates).
+//! 2. the judgement: [`checks`] (plausibility warnings of inputs and results), [`findings`] (the
+//!    seed's findings as criteria) and [`work`] (work estimates).
 //!
 //! Every driver takes typed parameters (a [`Structure`], loads, waves) and a progress callback
 //! called once per finished item (realization, point, life, storm); none prints or writes files.
@@ -22,6 +22,7 @@ pub mod climate;
 pub mod closed_form;
 pub mod conventional;
 pub mod envelope;
+pub mod findings;
 pub mod fragility;
 pub mod lifetime;
 pub mod limits;
