@@ -630,7 +630,7 @@ pub(crate) fn report_lives(
     design: &DesignParams,
     case: &StormCase<'_>,
     lives: &[StormOutcome],
-    waves: Option<&caisson::analysis::train::WaveSetup>,
+    waves: Option<&caisson::analysis::site::WaveSetup>,
     json: bool,
     out: Option<&Path>,
     keep: &[&Path],

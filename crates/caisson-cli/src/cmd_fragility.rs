@@ -12,7 +12,7 @@ use anyhow::{Context, Result};
 use caisson::analysis::fragility::{
     run_fragility, FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO,
 };
-use caisson::analysis::train::WaveSetup;
+use caisson::analysis::site::WaveSetup;
 use caisson::analysis::Structure;
 use caisson::report::fragility::FragilityReport;
 use caisson::scenario;

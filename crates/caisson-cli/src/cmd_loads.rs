@@ -12,7 +12,7 @@ use crate::output::{check_out_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
 use caisson::analysis::conventional::{static_check, DesignWaveRule, StaticCheck};
-use caisson::analysis::train::WaveSetup;
+use caisson::analysis::site::WaveSetup;
 use caisson::loads::history::{LoadComponent, WaveEvent, WaveTrain};
 use caisson::loads::model::{WaveLoads, WaveRecord};
 use caisson::loads::regime::Regime;

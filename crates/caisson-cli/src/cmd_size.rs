@@ -8,10 +8,11 @@ use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, w
 use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::conventional::Governs;
-use caisson::analysis::sizing::{Candidate, Reached, Required};
+use caisson::analysis::conventional::Reached;
+use caisson::analysis::sizing::{Candidate, Required};
 use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::report::checkpoint::{candidate_line, SizeHeader};
-use caisson::report::size::{GodaWidth, SizeReport};
+use caisson::report::size::{CandidateReport, GodaWidth, SizeReport};
 use caisson::scenario;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -331,60 +332,86 @@ fn size_text(r: &SizeReport) -> String {
     t
 }
 
+/// A number in a CSV cell as `{:e}` (every CSV of the CLI writes its numbers so); `None` is an
+/// empty cell.
+struct Sci(f64);
+
+impl serde::Serialize for Sci {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.collect_str(&format_args!("{:e}", self.0))
+    }
+}
+
+/// One row of candidates.csv: its columns are these fields' names, in this order (a candidate of
+/// size.json with each model's point flattened under its prefix).
+#[derive(serde::Serialize)]
+struct CandidateRow {
+    width_m: Sci,
+    weight_in_water_kn: Sci,
+    failure_sliding_m: Sci,
+    goda_sliding_safety_factor: Option<Sci>,
+    goda_overturning_safety_factor: Option<Sci>,
+    goda_heel_pressure_kpa: Option<Sci>,
+    dynamic_expected_sliding_m: Sci,
+    dynamic_expected_sliding_se_m: Sci,
+    dynamic_expected_sliding_uncapped_m: Sci,
+    dynamic_p50_m: Sci,
+    dynamic_p95_m: Sci,
+    dynamic_exceedance_probability: Sci,
+    dynamic_failure_probability: Sci,
+    dynamic_failure_by_sliding_probability: Sci,
+    dynamic_failure_by_rotation_probability: Sci,
+    rigid_block_expected_sliding_m: Sci,
+    rigid_block_expected_sliding_se_m: Sci,
+    rigid_block_expected_sliding_uncapped_m: Sci,
+    rigid_block_p50_m: Sci,
+    rigid_block_p95_m: Sci,
+    rigid_block_exceedance_probability: Sci,
+    rigid_block_failure_probability: Sci,
+    rigid_block_failure_by_sliding_probability: Sci,
+    rigid_block_failure_by_rotation_probability: Sci,
+    dynamic_meets: bool,
+    rigid_block_meets: bool,
+}
+
+impl From<&CandidateReport> for CandidateRow {
+    fn from(k: &CandidateReport) -> Self {
+        let (d, r) = (&k.dynamic, &k.rigid_block);
+        CandidateRow {
+            width_m: Sci(k.width_m),
+            weight_in_water_kn: Sci(k.weight_in_water_kn),
+            failure_sliding_m: Sci(k.failure_sliding_m),
+            goda_sliding_safety_factor: k.goda_sliding_safety_factor.map(Sci),
+            goda_overturning_safety_factor: k.goda_overturning_safety_factor.map(Sci),
+            goda_heel_pressure_kpa: k.goda_heel_pressure_kpa.map(Sci),
+            dynamic_expected_sliding_m: Sci(d.expected_sliding_m),
+            dynamic_expected_sliding_se_m: Sci(d.expected_sliding_se_m),
+            dynamic_expected_sliding_uncapped_m: Sci(d.expected_sliding_uncapped_m),
+            dynamic_p50_m: Sci(d.p50_m),
+            dynamic_p95_m: Sci(d.p95_m),
+            dynamic_exceedance_probability: Sci(d.exceedance_probability),
+            dynamic_failure_probability: Sci(d.failure_probability),
+            dynamic_failure_by_sliding_probability: Sci(d.failure_by_sliding_probability),
+            dynamic_failure_by_rotation_probability: Sci(d.failure_by_rotation_probability),
+            rigid_block_expected_sliding_m: Sci(r.expected_sliding_m),
+            rigid_block_expected_sliding_se_m: Sci(r.expected_sliding_se_m),
+            rigid_block_expected_sliding_uncapped_m: Sci(r.expected_sliding_uncapped_m),
+            rigid_block_p50_m: Sci(r.p50_m),
+            rigid_block_p95_m: Sci(r.p95_m),
+            rigid_block_exceedance_probability: Sci(r.exceedance_probability),
+            rigid_block_failure_probability: Sci(r.failure_probability),
+            rigid_block_failure_by_sliding_probability: Sci(r.failure_by_sliding_probability),
+            rigid_block_failure_by_rotation_probability: Sci(r.failure_by_rotation_probability),
+            dynamic_meets: k.dynamic_meets,
+            rigid_block_meets: k.rigid_block_meets,
+        }
+    }
+}
+
 fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    let model_cols = [
-        "expected_sliding_m",
-        "expected_sliding_se_m",
-        "expected_sliding_uncapped_m",
-        "p50_m",
-        "p95_m",
-        "exceedance_probability",
-        "failure_probability",
-        "failure_by_sliding_probability",
-        "failure_by_rotation_probability",
-    ];
-    let mut header = vec![
-        "width_m".to_string(),
-        "weight_in_water_kn".into(),
-        "failure_sliding_m".into(),
-        "goda_sliding_safety_factor".into(),
-        "goda_overturning_safety_factor".into(),
-        "goda_heel_pressure_kpa".into(),
-    ];
-    for m in ["dynamic", "rigid_block"] {
-        header.extend(model_cols.iter().map(|c| format!("{m}_{c}")));
-    }
-    header.extend(["dynamic_meets".to_string(), "rigid_block_meets".into()]);
-    w.write_record(&header)?;
     for k in &r.candidates {
-        let mut row = vec![
-            format!("{:e}", k.width_m),
-            format!("{:e}", k.weight_in_water_kn),
-            format!("{:e}", k.failure_sliding_m),
-            k.goda_sliding_safety_factor.map_or(String::new(), |v| format!("{v:e}")),
-            k.goda_overturning_safety_factor.map_or(String::new(), |v| format!("{v:e}")),
-            k.goda_heel_pressure_kpa.map_or(String::new(), |v| format!("{v:e}")),
-        ];
-        for p in [&k.dynamic, &k.rigid_block] {
-            row.extend(
-                [
-                    p.expected_sliding_m,
-                    p.expected_sliding_se_m,
-                    p.expected_sliding_uncapped_m,
-                    p.p50_m,
-                    p.p95_m,
-                    p.exceedance_probability,
-                    p.failure_probability,
-                    p.failure_by_sliding_probability,
-                    p.failure_by_rotation_probability,
-                ]
-                .iter()
-                .map(|v| format!("{v:e}")),
-            );
-        }
-        row.extend([k.dynamic_meets.to_string(), k.rigid_block_meets.to_string()]);
-        w.write_record(&row)?;
+        w.serialize(CandidateRow::from(k))?;
     }
     Ok(w.into_inner()?)
 }
@@ -394,7 +421,6 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
 /// width for both models, each with its limit, the required widths and Goda's width.
 fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     use caisson::analysis::sizing::ModelPoint;
-    use caisson::report::size::CandidateReport;
     // Below 0.1 mm the caisson has not slid to speak of, and a probability below 1e-4 is beyond
     // what a few thousand lives estimate: the axes start there (a zero is drawn at the floor).
     const FLOOR_M: f64 = 1e-4;

@@ -11,6 +11,7 @@ use crate::output::{ensure_dir, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::campaign::{run_campaign, ConditionResult};
+use caisson::analysis::findings::{self, Verdict};
 use caisson::analysis::lifetime::run_lives;
 use caisson::analysis::spectrum::{log_space, sweep, SpectrumPoint};
 use caisson::loads::generator::{HeightVariability, TrainKind};
@@ -90,98 +91,11 @@ fn campaign(text: &str, profile: Profile, nominal_heights: bool) -> Result<Vec<C
     run_campaign(&c.setups, &|| {}).context("a campaign failed")
 }
 
-/// Mean sliding (m) of the condition with height `h` and weight `w` (kN), if tested.
-fn mean_at(rs: &[ConditionResult], h: f64, w_kn: f64) -> Option<f64> {
-    rs.iter()
-        .find(|r| (r.condition.height_m - h).abs() < 1e-9 && (r.condition.weight_in_water_n / 1e3 - w_kn).abs() < 1e-9)
-        .map(|r| r.summary.sliding_m.mean)
-}
-
-fn sorted_unique(v: impl Iterator<Item = f64>) -> Vec<f64> {
-    let mut v: Vec<f64> = v.collect();
-    v.sort_by(f64::total_cmp);
-    v.dedup();
-    v
-}
-
-/// Sliding counts as "none" below this (m): 1 µm, far below any slide of interest and far above
-/// the elastic residue of a stuck caisson.
-const NO_SLIDE_M: f64 = 1e-6;
-
-/// For each fixed value of one variable, is the mean sliding monotonic in the other?
-/// `increasing`: along H for each W; otherwise decreasing along W for each H.
-fn monotonic(rs: &[ConditionResult], along_height: bool, increasing: bool) -> (bool, Vec<String>) {
-    let hs = sorted_unique(rs.iter().map(|r| r.condition.height_m));
-    let ws = sorted_unique(rs.iter().map(|r| r.condition.weight_in_water_n / 1e3));
-    let mut ok = true;
-    let mut bad = Vec::new();
-    let (outer, inner) = if along_height { (&ws, &hs) } else { (&hs, &ws) };
-    for &o in outer {
-        let seq: Vec<(f64, f64)> = inner
-            .iter()
-            .filter_map(|&i| {
-                let (h, w) = if along_height { (i, o) } else { (o, i) };
-                mean_at(rs, h, w).map(|m| (i, m))
-            })
-            .collect();
-        for pair in seq.windows(2) {
-            // A tolerance of 1 µm absorbs the elastic residue of conditions that do not slide.
-            let fine =
-                if increasing { pair[1].1 >= pair[0].1 - NO_SLIDE_M } else { pair[1].1 <= pair[0].1 + NO_SLIDE_M };
-            if !fine {
-                ok = false;
-                let what = if along_height {
-                    format!("W = {o} kN: H {} → {}", pair[0].0, pair[1].0)
-                } else {
-                    format!("H = {o} m: W {} → {}", pair[0].0, pair[1].0)
-                };
-                bad.push(format!("{what} gives {:.2} → {:.2} mm", pair[0].1 * 1e3, pair[1].1 * 1e3));
-            }
-        }
-    }
-    (ok, bad)
-}
-
-/// Breaking finding: for every weight tested at three or more heights, the largest mean sliding
-/// is at H = 0.524 or 0.569 m (not at the largest height) — sliding is not monotonic in H.
-fn peaks_mid_height(rs: &[ConditionResult]) -> (bool, Vec<String>) {
-    let ws = sorted_unique(rs.iter().map(|r| r.condition.weight_in_water_n / 1e3));
-    let mut ok = true;
-    let mut notes = Vec::new();
-    for w in ws {
-        let mut at: Vec<(f64, f64)> = rs
-            .iter()
-            .filter(|r| (r.condition.weight_in_water_n / 1e3 - w).abs() < 1e-9)
-            .map(|r| (r.condition.height_m, r.summary.sliding_m.mean))
-            .collect();
-        if at.len() < 3 {
-            continue;
-        }
-        at.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let best = at.iter().copied().fold((0.0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-        let mid = (0.52..0.57).contains(&best.0);
-        ok &= mid;
-        notes.push(format!("W = {w} kN: largest mean sliding {:.2} mm at H = {} m", best.1 * 1e3, best.0));
-    }
-    (ok, notes)
-}
-
-/// "The present model generally gives a safer estimate than Shimosako": dynamic mean ≥ rigid-block
-/// mean in at least two thirds of the conditions where either slides.
-fn safer_than_rigid_block(rs: &[ConditionResult]) -> (bool, String) {
-    let sliding: Vec<&ConditionResult> = rs
-        .iter()
-        .filter(|r| r.summary.sliding_m.mean > NO_SLIDE_M || r.summary.rigid_block_sliding_m.mean > NO_SLIDE_M)
-        .collect();
-    let safer = sliding.iter().filter(|r| r.summary.sliding_m.mean >= r.summary.rigid_block_sliding_m.mean).count();
-    (3 * safer >= 2 * sliding.len() && !sliding.is_empty(), format!("{safer} of {} sliding conditions", sliding.len()))
-}
-
 struct Finding {
     id: &'static str,
     text: &'static str,
     figure: String,
-    result: [(bool, String); 2],
+    result: [Verdict; 2],
 }
 
 fn mark(ok: bool) -> &'static str {
@@ -386,54 +300,10 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let ratios = log_space(0.05, 10.0, 25);
     let ssr = 0.6 * 8.24;
     let sl = sliding_spectra(&figs, &ratios, ssr)?;
-    let f1 = |m: usize| {
-        let worst = sl[m].1.iter().filter(|p| p.tr_over_t0 <= 0.1).map(|p| p.permanent_sliding_m).fold(0.0, f64::max);
-        (worst < NO_SLIDE_M, format!("largest slide for t_r/T0 ≤ 0.1: {:.4} mm", worst * 1e3))
-    };
-    let f2 = |m: usize| {
-        let pts = sl[m].0.iter().filter(|p| (0.5..=2.0).contains(&p.tr_over_t0));
-        let best = pts.clone().map(|p| p.permanent_sliding_m).fold(0.0, f64::max);
-        let amp = pts.map(|p| p.max_horizontal_reaction_n).fold(0.0, f64::max) / (0.9 * ssr * 1e3);
-        (best > NO_SLIDE_M, format!("largest slide for 0.5 ≤ t_r/T0 ≤ 2 at 0.9 μ_s W': {:.4} mm; largest effective reaction {:.3} × the load", best * 1e3, amp))
-    };
-    let f2b = |m: usize| {
-        let p = sl[m]
-            .1
-            .iter()
-            .filter(|p| (0.5..=2.0).contains(&p.tr_over_t0))
-            .max_by(|a, b| {
-                (a.permanent_sliding_m / a.shimosako_sliding_m)
-                    .total_cmp(&(b.permanent_sliding_m / b.shimosako_sliding_m))
-            })
-            .expect("points");
-        (
-            p.permanent_sliding_m > p.shimosako_sliding_m,
-            format!(
-                "at t_r/T0 = {:.2}: {:.4} mm vs Shimosako {:.4} mm",
-                p.tr_over_t0,
-                p.permanent_sliding_m * 1e3,
-                p.shimosako_sliding_m * 1e3
-            ),
-        )
-    };
-    // Judged on shoreward sliding: a caisson that ends seaward (rocking landings) has not slid
-    // less in the wave's direction, it has done something else.
-    let f3 = |m: usize| {
-        let pts: Vec<&SpectrumPoint> = sl[m].1.iter().filter(|p| p.tr_over_t0 >= 5.0).collect();
-        let ok = pts.iter().all(|p| (0.0..p.shimosako_sliding_m).contains(&p.permanent_sliding_m));
-        let seaward = pts.iter().filter(|p| p.permanent_sliding_m < 0.0).count();
-        let p = pts.last().expect("points");
-        (
-            ok,
-            format!(
-                "at t_r/T0 = {:.1}: {:.3} mm shoreward vs Shimosako {:.3} mm{}",
-                p.tr_over_t0,
-                p.permanent_sliding_m * 1e3,
-                p.shimosako_sliding_m * 1e3,
-                if seaward > 0 { format!("; {seaward} of {} points end seaward", pts.len()) } else { String::new() }
-            ),
-        )
-    };
+    let f1 = |m: usize| findings::no_slide_for_short_pulses(&sl[m].1);
+    let f2 = |m: usize| findings::slides_near_t0(&sl[m].0, 0.9 * ssr * 1e3);
+    let f2b = |m: usize| findings::more_than_shimosako_near_t0(&sl[m].1);
+    let f3 = |m: usize| findings::less_than_shimosako_for_long_pulses(&sl[m].1);
     let _ = writeln!(t, "## 3. Sliding under a triangular pulse (seed Figs. 7 right and 8)\n");
     let _ = writeln!(t, "Table 5 caisson (soil route, C = 598 kN·s/m), μ_s = μ_d = 0.6 so that the closed forms of docs/model.md §6.3 apply exactly, horizontal force at the still-water level, no uplift; peak 0.9 and 1.1 × the static sliding resistance μ_s W' = {ssr:.3} kN. Both dashpot placements (docs/model.md §10 item 30). The closed forms use the mass with the added mass.\n");
     let _ = writeln!(t, "![below](figures/validation_sliding_spectrum_below.svg)\n\n![above](figures/validation_sliding_spectrum_above.svg)\n");
@@ -443,7 +313,7 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     // 4-5. Campaigns.
     let (nb, br, nominal) = pari_campaigns(&figs)?;
 
-    let findings = vec![
+    let found = vec![
         Finding {
             id: "F1",
             text: "t_r/T0 ≪ 1: no sliding even for F_x,max > μ_s W' (§5.2, Figs. 7-8)",
@@ -473,65 +343,53 @@ pub fn run(args: ValidationArgs) -> Result<()> {
             id: "F5",
             text: "non-breaking: sliding grows with H for each W (Fig. 13)",
             figure: "validation_pari_nonbreaking_*_vs_height.svg".into(),
-            result: [0, 1].map(|m| {
-                let (ok, bad) = monotonic(&nb[m], true, true);
-                (ok, if ok { "every W".into() } else { bad.join("; ") })
-            }),
+            result: [0, 1].map(|m| findings::monotonic(&nb[m], true, true)),
         },
         Finding {
             id: "F6",
             text: "non-breaking: sliding falls with W for each H (Fig. 13)",
             figure: "validation_pari_nonbreaking_*.svg".into(),
-            result: [0, 1].map(|m| {
-                let (ok, bad) = monotonic(&nb[m], false, false);
-                (ok, if ok { "every H".into() } else { bad.join("; ") })
-            }),
+            result: [0, 1].map(|m| findings::monotonic(&nb[m], false, false)),
         },
         Finding {
             id: "F7",
             text: "breaking: sliding falls with W for each H (Fig. 15)",
             figure: "validation_pari_breaking_*.svg".into(),
-            result: [0, 1].map(|m| {
-                let (ok, bad) = monotonic(&br[m], false, false);
-                (ok, if ok { "every H".into() } else { bad.join("; ") })
-            }),
+            result: [0, 1].map(|m| findings::monotonic(&br[m], false, false)),
         },
         Finding {
             id: "F8",
             text: "breaking: sliding not monotonic in H, largest for H between 0.524 and 0.569 m (Fig. 15)",
             figure: "validation_pari_breaking_*_vs_height.svg".into(),
-            result: [0, 1].map(|m| {
-                let (ok, n) = peaks_mid_height(&br[m]);
-                (ok, n.join("; "))
-            }),
+            result: [0, 1].map(|m| findings::peaks_mid_height(&br[m])),
         },
         Finding {
             id: "F9",
             text: "the dynamic model generally gives more sliding (a safer estimate) than Shimosako's model (Fig. 13)",
             figure: "validation_pari_nonbreaking_*.svg".into(),
-            result: [0, 1].map(|m| safer_than_rigid_block(&nb[m])),
+            result: [0, 1].map(|m| findings::safer_than_rigid_block(&nb[m])),
         },
     ];
-    let score = |m: usize| findings.iter().filter(|f| f.result[m].0).count();
+    let score = |m: usize| found.iter().filter(|f| f.result[m].holds).count();
     let (st, se) = (score(0), score(1));
 
     let _ = writeln!(t, "## 4. The seed's findings, one by one\n");
-    let _ = writeln!(t, "Each finding is checked by a computed criterion (the code is `crates/caisson-cli/src/cmd_validation.rs`; \"no sliding\" means below {} µm). Campaign findings use the mean over the 10 realizations of the PARI examples (seed Tables 3 and 4, 20 % height variability); F8 is also shown with nominal heights in §6.\n", NO_SLIDE_M * 1e6);
+    let _ = writeln!(t, "Each finding is checked by a computed criterion (the code is `crates/caisson-cli/src/cmd_validation.rs`; \"no sliding\" means below {} µm). Campaign findings use the mean over the 10 realizations of the PARI examples (seed Tables 3 and 4, 20 % height variability); F8 is also shown with nominal heights in §6.\n", findings::NO_SLIDE_M * 1e6);
     let _ = writeln!(t, "| # | finding of the seed | figure | profile `seed-2011` | profile `consistent` (the default) |\n|---|---|---|---|---|");
-    for f in &findings {
+    for f in &found {
         let _ = writeln!(
             t,
             "| {} | {} | `{}` | {}: {} | {}: {} |",
             f.id,
             f.text,
             f.figure,
-            mark(f.result[0].0),
-            f.result[0].1,
-            mark(f.result[1].0),
-            f.result[1].1
+            mark(f.result[0].holds),
+            f.result[0].detail,
+            mark(f.result[1].holds),
+            f.result[1].detail
         );
     }
-    let _ = writeln!(t, "\nReproduced: **{st} of {}** with the seed's literal model (`seed-2011`), **{se} of {}** with the consistent one (`consistent`, the default). The default is not chosen by this count: it is the physically consistent reading of the paper (docs/model.md §10 item 30 and \"Profiles\"); `seed-2011` is kept to reproduce the paper.\n", findings.len(), findings.len());
+    let _ = writeln!(t, "\nReproduced: **{st} of {}** with the seed's literal model (`seed-2011`), **{se} of {}** with the consistent one (`consistent`, the default). The default is not chosen by this count: it is the physically consistent reading of the paper (docs/model.md §10 item 30 and \"Profiles\"); `seed-2011` is kept to reproduce the paper.\n", found.len(), found.len());
     // Magnitudes: the seed calls its prediction good for the lightest non-breaking caisson (W1 = 7.8 kN).
     let w1 = |m: usize| {
         nb[m]
@@ -557,8 +415,8 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let _ = writeln!(t, "## 6. The breaking-wave peak and the height variability\n");
     let _ = writeln!(t, "The impact of seed Eq. 30 is largest when the wave breaks at the wall and falls as H grows (docs/model.md §5.1: 15.3, 10.2, 6.6, 1.6 kN/m for H = 0.428 … 0.619 m), while its rise time grows, and for H ≥ 0.569 m F* < 1 makes the wave non-impulsive. The same campaign with every wave at its nominal height (`height_variability = \"none\"`):\n");
     for (i, (mode, _)) in MODES.iter().enumerate() {
-        let (ok, notes) = peaks_mid_height(&nominal[i]);
-        let _ = writeln!(t, "* `{mode}`: {} — {}", mark(ok), notes.join("; "));
+        let v = findings::peaks_mid_height(&nominal[i]);
+        let _ = writeln!(t, "* `{mode}`: {} — {}", mark(v.holds), v.detail);
     }
     let static_fail: Vec<String> = nominal[0]
         .iter()
@@ -584,7 +442,7 @@ pub fn run(args: ValidationArgs) -> Result<()> {
         path.display(),
         figs.display(),
         st,
-        findings.len(),
+        found.len(),
         se
     );
     Ok(())

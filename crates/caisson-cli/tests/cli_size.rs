@@ -213,3 +213,45 @@ fn a_resumed_sizing_run_reports_the_same() {
     let other = write(dir.path(), "other.toml", &size_text("expected_sliding_m = 0.3"));
     refused(&["size", other.to_str().unwrap(), "--out", out.to_str().unwrap(), "--resume"], &["another sizing run"]);
 }
+
+/// candidates.csv is size.json's candidates, flattened: a row per candidate, a column per number
+/// (a model's under its prefix: `dynamic_p95_m` is `dynamic.p95_m`), each cell the JSON value
+/// exactly (`{:e}` round-trips f64), an empty cell where the JSON has `null`.
+#[test]
+fn candidates_csv_is_the_json_candidates_flattened() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(dir.path(), "s.toml", &size_text("expected_sliding_m = 0.05"));
+    let out = dir.path().join("out");
+    let o = caisson().args(["size", f.to_str().unwrap(), "--out", out.to_str().unwrap()]).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: Value = serde_json::from_slice(&std::fs::read(out.join("size.json")).unwrap()).unwrap();
+    let cands = j["candidates"].as_array().unwrap();
+    let mut r = csv::Reader::from_path(out.join("candidates.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    // 6 of the width, 9 of each model, 2 verdicts.
+    assert_eq!(header.len(), 26, "{header:?}");
+    let (mut rows, mut cells, mut empty) = (0, 0, 0);
+    for (row, c) in r.records().map(Result::unwrap).zip(cands) {
+        for (name, cell) in header.iter().zip(row.iter()) {
+            let want = match name.split_once('_') {
+                Some((m @ "dynamic", rest)) if c.get(name).is_none() => &c[m][rest],
+                Some(("rigid", rest)) if c.get(name).is_none() => &c["rigid_block"][&rest["block_".len()..]],
+                _ => &c[name.as_str()],
+            };
+            match want {
+                Value::Null => {
+                    assert_eq!(cell, "", "{name}");
+                    empty += 1;
+                }
+                Value::Bool(b) => assert_eq!(cell, b.to_string(), "{name}"),
+                v => assert_eq!(cell.parse::<f64>().ok(), v.as_f64(), "{name}: {cell} vs {v}"),
+            }
+            cells += 1;
+        }
+        rows += 1;
+    }
+    assert_eq!((rows, cells), (cands.len(), 26 * cands.len()), "every cell checked");
+    // The heel pressure is undefined (null) at the narrow widths that would overturn (the resultant
+    // outside the base).
+    assert!(empty > 0, "an empty cell checked");
+}

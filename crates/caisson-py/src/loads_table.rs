@@ -10,7 +10,7 @@
 //! threads.
 
 use caisson::analysis::conventional::{DesignWave, StaticCheck};
-use caisson::analysis::train::WaveSetup;
+use caisson::analysis::site::WaveSetup;
 use caisson::report::loads::{ColumnSink, LoadsReport};
 use numpy::{PyArray2, PyArrayMethods};
 use pyo3::prelude::*;

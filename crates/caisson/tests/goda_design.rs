@@ -13,9 +13,8 @@
 mod support;
 
 use caisson::analysis::conventional::{
-    conventional_width, static_check, ConventionalCriteria, DesignWave, DesignWaveRule, Governs,
+    conventional_width, static_check, ConventionalCriteria, DesignWave, DesignWaveRule, Governs, Reached,
 };
-use caisson::analysis::sizing::Reached;
 use caisson::scenario::Scenario;
 use std::f64::consts::PI;
 

@@ -7,8 +7,8 @@
 
 mod support;
 
-use caisson::analysis::checks::LifeCounts;
 use caisson::analysis::closed_form::rigid_block_sliding_m;
+use caisson::analysis::lifetime::LifeCounts;
 use caisson::analysis::run::run;
 use caisson::analysis::sizing::{size, Candidate, Criteria, ModelPoint, Required, SizeParams};
 use caisson::scenario::Scenario;

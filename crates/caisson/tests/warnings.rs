@@ -4,11 +4,12 @@
 mod support;
 
 use caisson::analysis::checks::{
-    newmark_period_ratio, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings, Response,
-    FAILURE_FRACTION_OF_WIDTH,
+    newmark_period_ratio, response_warnings, run_load_warnings, structure_warnings, wave_load_warnings,
 };
 use caisson::analysis::conventional::static_check;
+use caisson::analysis::limits::FAILURE_FRACTION_OF_WIDTH;
 use caisson::analysis::run::run;
+use caisson::analysis::run::Response;
 use caisson::scenario::Scenario;
 use caisson::Profile;
 use support::{example, scenario};

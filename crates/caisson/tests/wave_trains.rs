@@ -10,7 +10,8 @@
 mod support;
 
 use caisson::analysis::campaign::{run_campaign, Campaign, Condition};
-use caisson::analysis::train::{RealizationResult, TrainCase, WaveSetup};
+use caisson::analysis::site::WaveSetup;
+use caisson::analysis::train::{RealizationResult, TrainCase};
 use caisson::dynamics::Stepping;
 use caisson::loads::generator::{realization_waves, RealizationWaves, TrainSpec};
 use caisson::loads::regime::{Regime, RegimeChoice};

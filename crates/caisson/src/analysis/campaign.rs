@@ -10,7 +10,8 @@
 //! [`crate::loads::generator`]). `progress` is called once per finished realization.
 
 use super::conventional::{DesignWave, StaticCheck};
-use super::train::{RealizationResult, TrainCase, TrainRunError, TrainSummary, WaveSetup};
+use super::site::WaveSetup;
+use super::train::{RealizationResult, TrainCase, TrainRunError, TrainSummary};
 use super::{Progress, Structure};
 use crate::loads::model::WaveLoads;
 use crate::loads::regime::RegimeChoice;

@@ -22,10 +22,13 @@
 //! | `large-rotation-lives` | a wave of a design life rotated the caisson beyond 0.01 rad | as `rocking`: the model does not follow overturning |
 //! | `seaward-lives` | a design life ends more than 1 cm seaward of its place | rocking landings, not the wave's push, moved it (docs/design.md) |
 
-use super::lifetime::{FailureLimits, StormOutcome};
-use super::run::RunSummary;
+use super::conventional::static_check;
+use super::lifetime::{FailureLimits, LifeCounts, StormOutcome};
+use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD};
+use super::run::Response;
+use super::site::WaveSetup;
 use super::sizing::Candidate;
-use super::train::WaveSetup;
+use super::train::{RealizationResult, TrainCase};
 use super::Structure;
 use crate::dynamics::Stepping;
 use crate::foundation::VerticalDamping;
@@ -69,10 +72,6 @@ pub const MAX_LOAD_OVER_WEIGHT: f64 = 1e3;
 /// H_max / H1/3 of the largest wave of an irregular train (Goda's design ratio, as the storms of
 /// [`super::fragility`]).
 const NOMINAL_HMAX_RATIO: f64 = super::conventional::HMAX_OVER_H13;
-/// Rotation beyond which the caisson is rocking, not vibrating, rad.
-pub const ROCKING_LIMIT_RAD: f64 = 0.01;
-/// Sliding beyond which the caisson has failed, as a fraction of the base width.
-pub const FAILURE_FRACTION_OF_WIDTH: f64 = 0.25;
 /// Sliding beyond this multiple of the base width is absurd (`sliding-beyond-width`).
 pub const ABSURD_SLIDING_OVER_WIDTH: f64 = 1.0;
 
@@ -232,32 +231,25 @@ pub fn run_load_warnings(s: &Structure, load: &LoadSpec) -> Vec<Warning> {
 /// [`load_warnings`] of the largest wave of `waves` ([`nominal_wave_peak`]).
 pub fn wave_load_warnings(s: &Structure, waves: &WaveSetup) -> Vec<Warning> {
     let mut out = nominal_wave_peak(waves).map_or_else(Vec::new, |p| load_warnings(s, p, LoadSource::Waves));
-    out.extend(super::conventional::design_wave_warnings(s, waves));
+    out.extend(design_wave_warnings(s, waves));
     out
 }
 
-/// What a run (or the worst of several) found, for [`response_warnings`].
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
-pub struct Response {
-    /// Permanent sliding (or the largest in magnitude), m.
-    pub sliding_m: f64,
-    pub slip_events: u64,
-    pub max_rotation_rad: f64,
-    pub max_dashpot_over_friction: f64,
-    pub max_dashpot_moment_nm: f64,
-    pub max_wave_moment_nm: f64,
-}
-
-impl From<&RunSummary> for Response {
-    fn from(r: &RunSummary) -> Self {
-        Response {
-            sliding_m: r.permanent_sliding_m,
-            slip_events: r.slip_events,
-            max_rotation_rad: r.max_rotation_rad,
-            max_dashpot_over_friction: r.max_dashpot_over_friction,
-            max_dashpot_moment_nm: r.max_dashpot_moment_nm,
-            max_wave_moment_nm: r.max_wave_moment_nm,
-        }
+/// Warnings of the static checks: an overturning safety factor below 1 under the design wave.
+pub fn design_wave_warnings(structure: &Structure, waves: &WaveSetup) -> Vec<Warning> {
+    let Ok(c) = static_check(structure, waves) else { return Vec::new() };
+    match c.safety.overturning {
+        Some(sf) if sf < 1.0 => vec![Warning {
+            code: "overturning-under-design-wave",
+            message: format!(
+                "Goda's overturning safety factor under the design wave (H_D = {:.2} m) is {sf:.2}: the caisson would tip about its heel, and the dynamic model does not follow overturning (its rotations are small, its foundation elastic); widen the caisson (Goda requires 1.2) before reading its sliding",
+                c.design_wave.design_height_m
+            ),
+            numbers: [("overturning_safety_factor", sf), ("design_height_m", c.design_wave.design_height_m)]
+                .into_iter()
+                .collect(),
+        }],
+        _ => Vec::new(),
     }
 }
 
@@ -334,53 +326,29 @@ pub fn response_warnings(s: &Structure, r: &Response) -> Vec<Warning> {
     out
 }
 
-/// Seaward end positions below this are reported (`seaward-lives`), m.
-pub const SEAWARD_REPORT_M: f64 = 0.01;
-
-/// What the life warnings need of a model's lives: a design run's lives reduce to it, and a
-/// sizing candidate keeps it ([`super::sizing::Candidate::life_counts`]).
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
-pub struct LifeCounts {
-    pub lives: usize,
-    /// Lives that failed (either mode), by sliding and by rotation (a life may count in both).
-    pub failed_lives: usize,
-    pub failed_by_sliding_lives: usize,
-    pub failed_by_rotation_lives: usize,
-    /// Lives with a wave that rotated the caisson beyond [`ROCKING_LIMIT_RAD`].
-    pub large_rotation_lives: usize,
-    /// Lives that ended more than [`SEAWARD_REPORT_M`] seaward of their place.
-    pub seaward_lives: usize,
-    /// The largest of those seaward distances, m (0 without such lives).
-    pub largest_seaward_sliding_m: f64,
-    /// E|S| of the lives as simulated (not capped at the failure limit), m.
-    pub expected_sliding_uncapped_m: f64,
-    /// E|S| of the rigid block (over the whole lives: it runs on after the dynamic model's
-    /// failure), m.
-    pub rigid_block_expected_sliding_m: f64,
-    /// The largest net sliding of a single storm, m.
-    pub max_storm_sliding_m: f64,
-}
-
-impl LifeCounts {
-    /// The counts of `lives` with the failure limits `failure`.
-    pub fn of(lives: &[StormOutcome], failure: &FailureLimits) -> Self {
-        let count = |f: &dyn Fn(&StormOutcome) -> bool| lives.iter().filter(|l| f(l)).count();
-        let seaward = |l: &StormOutcome| l.sliding_m < -SEAWARD_REPORT_M;
-        LifeCounts {
-            lives: lives.len(),
-            failed_lives: count(&|l| l.failed(failure)),
-            failed_by_sliding_lives: count(&|l| l.failed_by_sliding(failure)),
-            failed_by_rotation_lives: count(&|l| l.failed_by_rotation(failure)),
-            large_rotation_lives: count(&|l| l.large_rotation_waves > 0),
-            seaward_lives: count(&seaward),
-            largest_seaward_sliding_m: lives.iter().filter(|l| seaward(l)).map(|l| -l.sliding_m).fold(0.0, f64::max),
-            expected_sliding_uncapped_m: lives.iter().map(|l| l.sliding_m.abs()).sum::<f64>()
-                / lives.len().max(1) as f64,
-            rigid_block_expected_sliding_m: lives.iter().map(|l| l.rigid_block_sliding_m.abs()).sum::<f64>()
-                / lives.len().max(1) as f64,
-            max_storm_sliding_m: lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max),
+/// The plausibility warnings of realizations `rs` of `case`: each code once, from the first
+/// realization that raises it, with the count of realizations that do.
+pub fn realization_warnings(case: &TrainCase<'_>, rs: &[RealizationResult]) -> Vec<Warning> {
+    let mut out: Vec<(Warning, usize)> = Vec::new();
+    for r in rs {
+        for w in response_warnings(case.structure, &r.response) {
+            match out.iter_mut().find(|(x, _)| x.code == w.code) {
+                Some((_, n)) => *n += 1,
+                None => {
+                    let mut w = w;
+                    w.message = format!("realization {}: {}", r.index, w.message);
+                    out.push((w, 1));
+                }
+            }
         }
     }
+    out.into_iter()
+        .map(|(mut w, n)| {
+            w.message.push_str(&format!(" ({n} of {} realizations)", rs.len()));
+            w.numbers.insert("realizations", n as f64);
+            w
+        })
+        .collect()
 }
 
 /// Checks of a design run's lives with the failure limits `failure`, of a caisson of base width

@@ -31,9 +31,7 @@
 //! bearing-capacity check of the mound is needed, not simply a wider caisson: so the heel pressure
 //! is a criterion of the width only if asked ([`ConventionalCriteria::heel_pressure_governs`]).
 
-use super::checks::Warning;
-use super::sizing::{smallest_width_reaching, Reached};
-use super::train::WaveSetup;
+use super::site::WaveSetup;
 use super::Structure;
 use crate::loads::generator::TrainKind;
 use crate::loads::model::{WaveLoadModel, WaveLoads};
@@ -201,22 +199,52 @@ pub fn static_check(structure: &Structure, waves: &WaveSetup) -> Result<StaticCh
     StaticCheck::new(waves, DesignWave::of(waves), w, mu, waves.regime())
 }
 
-/// Warnings of the static checks: an overturning safety factor below 1 under the design wave.
-pub fn design_wave_warnings(structure: &Structure, waves: &WaveSetup) -> Vec<Warning> {
-    let Ok(c) = static_check(structure, waves) else { return Vec::new() };
-    match c.safety.overturning {
-        Some(sf) if sf < 1.0 => vec![Warning {
-            code: "overturning-under-design-wave",
-            message: format!(
-                "Goda's overturning safety factor under the design wave (H_D = {:.2} m) is {sf:.2}: the caisson would tip about its heel, and the dynamic model does not follow overturning (its rotations are small, its foundation elastic); widen the caisson (Goda requires 1.2) before reading its sliding",
-                c.design_wave.design_height_m
-            ),
-            numbers: [("overturning_safety_factor", sf), ("design_height_m", c.design_wave.design_height_m)]
-                .into_iter()
-                .collect(),
-        }],
-        _ => Vec::new(),
+/// Where a deterministic criterion is first reached in a range of widths.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "status", rename_all = "snake_case")]
+pub enum Reached {
+    /// At this width (to the tolerance; the upper end of the final bracket).
+    Found { width_m: f64 },
+    /// Already at the smallest width of the range.
+    AtLowerBound { width_m: f64 },
+    /// Not within the range.
+    NotInRange { largest_m: f64 },
+}
+
+impl Reached {
+    pub fn width_m(&self) -> Option<f64> {
+        match self {
+            Reached::Found { width_m } | Reached::AtLowerBound { width_m } => Some(*width_m),
+            Reached::NotInRange { .. } => None,
+        }
     }
+}
+
+/// The smallest width of `range_m` at which an increasing `f(width)` (e.g. Goda's sliding safety
+/// factor, `None` where undefined: taken as below) reaches `target`, by bisection to `tolerance_m`.
+pub fn smallest_width_reaching(
+    range_m: (f64, f64),
+    target: f64,
+    tolerance_m: f64,
+    f: &mut dyn FnMut(f64) -> Option<f64>,
+) -> Reached {
+    let reaches = |w: f64, f: &mut dyn FnMut(f64) -> Option<f64>| f(w).is_some_and(|v| v >= target);
+    let (mut a, mut b) = range_m;
+    if !reaches(b, f) {
+        return Reached::NotInRange { largest_m: b };
+    }
+    if reaches(a, f) {
+        return Reached::AtLowerBound { width_m: a };
+    }
+    while b - a > tolerance_m {
+        let mid = 0.5 * (a + b);
+        if reaches(mid, f) {
+            b = mid;
+        } else {
+            a = mid;
+        }
+    }
+    Reached::Found { width_m: b }
 }
 
 /// What Goda's conventional design requires of a width (module docs).
@@ -339,5 +367,20 @@ pub fn conventional_width(
         heel_pressure_only,
         at_width,
         heel_pressure_above_allowable,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// f(B) = B/10 reaches 1.2 at B = 12 m.
+    #[test]
+    fn the_smallest_width_reaching_a_safety_factor() {
+        let mut f = |b: f64| Some(b / 10.0);
+        let Reached::Found { width_m: w } = smallest_width_reaching((5.0, 30.0), 1.2, 1e-3, &mut f) else { panic!() };
+        assert!((12.0..=12.001).contains(&w), "{w}");
+        assert_eq!(smallest_width_reaching((5.0, 11.0), 1.2, 1e-3, &mut f), Reached::NotInRange { largest_m: 11.0 });
+        assert_eq!(smallest_width_reaching((13.0, 20.0), 1.2, 1e-3, &mut f), Reached::AtLowerBound { width_m: 13.0 });
     }
 }

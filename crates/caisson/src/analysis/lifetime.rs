@@ -21,7 +21,7 @@
 //! 6. per wave: the loads of [`crate::loads::model::WaveLoadModel`] (regime by the breaking
 //!    criterion) times the wave-force error; friction coefficients times the friction error;
 //!    the wave is run through the dynamic model from rest (static equilibrium) and its permanent
-//!    sliding added; the rigid block (Shimosako model, [`super::train::RigidBlock`]) beside it.
+//!    sliding added; the rigid block (Shimosako model, [`super::rigid::RigidBlock`]) beside it.
 //!
 //! Estimation errors are multipliers 1 + bias + COV·z, z standard normal truncated at ±k
 //! (Kim & Takayama 2003, doubly truncated; docs/model.md §6.4 step 4), drawn once per storm
@@ -100,8 +100,9 @@
 //! recomputed alone (checkpoint/resume).
 
 use super::climate::{Climate, StormModel};
+use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD, SEAWARD_REPORT_M};
+use super::rigid::RigidBlock;
 use super::run::permanent_sliding_m;
-use super::train::RigidBlock;
 use super::Structure;
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
 use crate::loads::generator::realization_rng;
@@ -466,10 +467,6 @@ impl StormOutcome {
     }
 }
 
-/// Rotation beyond which a wave counts as a large-rotation wave, rad (the plausibility warning
-/// `rocking` of [`super::checks`] uses the same limit).
-pub const ROCKING_LIMIT_RAD: f64 = super::checks::ROCKING_LIMIT_RAD;
-
 /// What a wave did besides sliding: the largest rotation and whether part of the base lifted.
 #[derive(Debug, Clone, Copy, Default)]
 struct WaveWatch {
@@ -801,14 +798,6 @@ pub struct DesignParams {
     pub continue_after_failure: bool,
 }
 
-/// The default failure limit as a fraction of the base width B: a caisson that has slid a
-/// quarter of its base off its place no longer stands on the levelled bedding the foundation
-/// model describes (its heel is over the mound's shoulder or berm). For prototype widths of
-/// 12-20 m this is 3-5 m, the order of the sliding graded "failure" in Takahashi's performance
-/// matrix (3 m; docs/model.md §6.4 step 8). An engineering choice, not a literature value: give
-/// `[design] failure_sliding_m` for the site.
-pub const FAILURE_FRACTION_OF_WIDTH: f64 = super::checks::FAILURE_FRACTION_OF_WIDTH;
-
 impl DesignParams {
     /// The failure limit for a caisson of base width `width_m`, m.
     pub fn failure_limit_m(&self, width_m: f64) -> f64 {
@@ -908,6 +897,52 @@ pub fn life_statistics(values: &[f64], thresholds_m: &[f64]) -> LifeStatistics {
             .iter()
             .map(|&t| (t, values.iter().filter(|&&v| v > t).count() as f64 / n.max(1) as f64))
             .collect(),
+    }
+}
+
+/// What the life warnings need of a model's lives: a design run's lives reduce to it, and a
+/// sizing candidate keeps it ([`super::sizing::Candidate::life_counts`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct LifeCounts {
+    pub lives: usize,
+    /// Lives that failed (either mode), by sliding and by rotation (a life may count in both).
+    pub failed_lives: usize,
+    pub failed_by_sliding_lives: usize,
+    pub failed_by_rotation_lives: usize,
+    /// Lives with a wave that rotated the caisson beyond [`ROCKING_LIMIT_RAD`].
+    pub large_rotation_lives: usize,
+    /// Lives that ended more than [`SEAWARD_REPORT_M`] seaward of their place.
+    pub seaward_lives: usize,
+    /// The largest of those seaward distances, m (0 without such lives).
+    pub largest_seaward_sliding_m: f64,
+    /// E|S| of the lives as simulated (not capped at the failure limit), m.
+    pub expected_sliding_uncapped_m: f64,
+    /// E|S| of the rigid block (over the whole lives: it runs on after the dynamic model's
+    /// failure), m.
+    pub rigid_block_expected_sliding_m: f64,
+    /// The largest net sliding of a single storm, m.
+    pub max_storm_sliding_m: f64,
+}
+
+impl LifeCounts {
+    /// The counts of `lives` with the failure limits `failure`.
+    pub fn of(lives: &[StormOutcome], failure: &FailureLimits) -> Self {
+        let count = |f: &dyn Fn(&StormOutcome) -> bool| lives.iter().filter(|l| f(l)).count();
+        let seaward = |l: &StormOutcome| l.sliding_m < -SEAWARD_REPORT_M;
+        LifeCounts {
+            lives: lives.len(),
+            failed_lives: count(&|l| l.failed(failure)),
+            failed_by_sliding_lives: count(&|l| l.failed_by_sliding(failure)),
+            failed_by_rotation_lives: count(&|l| l.failed_by_rotation(failure)),
+            large_rotation_lives: count(&|l| l.large_rotation_waves > 0),
+            seaward_lives: count(&seaward),
+            largest_seaward_sliding_m: lives.iter().filter(|l| seaward(l)).map(|l| -l.sliding_m).fold(0.0, f64::max),
+            expected_sliding_uncapped_m: lives.iter().map(|l| l.sliding_m.abs()).sum::<f64>()
+                / lives.len().max(1) as f64,
+            rigid_block_expected_sliding_m: lives.iter().map(|l| l.rigid_block_sliding_m.abs()).sum::<f64>()
+                / lives.len().max(1) as f64,
+            max_storm_sliding_m: lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max),
+        }
     }
 }
 

@@ -1,6 +1,15 @@
 //! Drivers: a single run, the shock spectrum, wave-train realizations and campaigns, the lifetime
 //! Monte Carlo of performance-based design and fragility curves.
 //!
+//! In three floors; a module names only modules of its floor or below, without a circle
+//! (ARCHITECTURE.md; tests/floors.rs):
+//! 0. the model pieces: [`Structure`] (here), [`site`], [`rigid`], [`limits`], [`closed_form`],
+//!    [`climate`];
+//! 1. the drivers: [`run`], [`envelope`], [`spectrum`], [`train`], [`campaign`], [`lifetime`],
+//!    [`fragility`], [`conventional`], [`sizing`];
+//! 2. the judgement: [`checks`] (plausibility warnings of inputs and results), [`findings`] (the
+//!    seed's findings as criteria) and [`work`] (work estimates).
+//!
 //! Every driver takes typed parameters (a [`Structure`], loads, waves) and a progress callback
 //! called once per finished item (realization, point, life, storm); none prints or writes files.
 //! Parallel drivers use rayon's current thread pool (the caller chooses it with
@@ -13,9 +22,13 @@ pub mod climate;
 pub mod closed_form;
 pub mod conventional;
 pub mod envelope;
+pub mod findings;
 pub mod fragility;
 pub mod lifetime;
+pub mod limits;
+pub mod rigid;
 pub mod run;
+pub mod site;
 pub mod sizing;
 pub mod spectrum;
 pub mod train;

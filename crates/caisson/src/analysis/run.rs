@@ -116,6 +116,32 @@ pub struct RunSummary {
     pub max_wave_moment_nm: f64,
 }
 
+/// What a run (or the worst of several) found, for the plausibility checks
+/// ([`super::checks::response_warnings`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct Response {
+    /// Permanent sliding (or the largest in magnitude), m.
+    pub sliding_m: f64,
+    pub slip_events: u64,
+    pub max_rotation_rad: f64,
+    pub max_dashpot_over_friction: f64,
+    pub max_dashpot_moment_nm: f64,
+    pub max_wave_moment_nm: f64,
+}
+
+impl From<&RunSummary> for Response {
+    fn from(r: &RunSummary) -> Self {
+        Response {
+            sliding_m: r.permanent_sliding_m,
+            slip_events: r.slip_events,
+            max_rotation_rad: r.max_rotation_rad,
+            max_dashpot_over_friction: r.max_dashpot_over_friction,
+            max_dashpot_moment_nm: r.max_dashpot_moment_nm,
+            max_wave_moment_nm: r.max_wave_moment_nm,
+        }
+    }
+}
+
 /// Peak tracker (observer). Allocation-free per step once `slip_times` has its capacity.
 #[derive(Debug, Clone)]
 pub struct Peaks {

@@ -35,9 +35,8 @@
 //! Φ(margin / SE) of the tightest criterion, the normal-approximation probability that the
 //! criterion is met.
 
-use super::checks::LifeCounts;
 use super::fragility::normal_cdf;
-use super::lifetime::{capped_statistics, life_statistics, FailureLimits, StormOutcome};
+use super::lifetime::{capped_statistics, life_statistics, FailureLimits, LifeCounts, StormOutcome};
 use serde::Serialize;
 
 /// One-sided 95 % normal quantile.
@@ -331,54 +330,6 @@ pub fn size<E>(p: &SizeParams, evaluate: &mut dyn FnMut(f64) -> Result<Candidate
     Ok(Sizing { candidates: done, dynamic: answers[0], rigid_block: answers[1] })
 }
 
-/// Where a deterministic criterion is first reached in a range of widths.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[serde(tag = "status", rename_all = "snake_case")]
-pub enum Reached {
-    /// At this width (to the tolerance; the upper end of the final bracket).
-    Found { width_m: f64 },
-    /// Already at the smallest width of the range.
-    AtLowerBound { width_m: f64 },
-    /// Not within the range.
-    NotInRange { largest_m: f64 },
-}
-
-impl Reached {
-    pub fn width_m(&self) -> Option<f64> {
-        match self {
-            Reached::Found { width_m } | Reached::AtLowerBound { width_m } => Some(*width_m),
-            Reached::NotInRange { .. } => None,
-        }
-    }
-}
-
-/// The smallest width of `range_m` at which an increasing `f(width)` (e.g. Goda's sliding safety
-/// factor, `None` where undefined: taken as below) reaches `target`, by bisection to `tolerance_m`.
-pub fn smallest_width_reaching(
-    range_m: (f64, f64),
-    target: f64,
-    tolerance_m: f64,
-    f: &mut dyn FnMut(f64) -> Option<f64>,
-) -> Reached {
-    let reaches = |w: f64, f: &mut dyn FnMut(f64) -> Option<f64>| f(w).is_some_and(|v| v >= target);
-    let (mut a, mut b) = range_m;
-    if !reaches(b, f) {
-        return Reached::NotInRange { largest_m: b };
-    }
-    if reaches(a, f) {
-        return Reached::AtLowerBound { width_m: a };
-    }
-    while b - a > tolerance_m {
-        let mid = 0.5 * (a + b);
-        if reaches(mid, f) {
-            b = mid;
-        } else {
-            a = mid;
-        }
-    }
-    Reached::Found { width_m: b }
-}
-
 /// The smallest evaluated width from which on the criterion holds at `z` standard errors (every
 /// larger candidate meets it too), or `None` if the largest does not.
 fn crossing(sorted: &[&Candidate], model: SizedModel, p: &SizeParams, z: f64) -> Option<f64> {
@@ -465,16 +416,6 @@ mod tests {
             assert!(width_m > last, "monotone in S_a");
             last = width_m;
         }
-    }
-
-    /// f(B) = B/10 reaches 1.2 at B = 12 m.
-    #[test]
-    fn the_smallest_width_reaching_a_safety_factor() {
-        let mut f = |b: f64| Some(b / 10.0);
-        let Reached::Found { width_m: w } = smallest_width_reaching((5.0, 30.0), 1.2, 1e-3, &mut f) else { panic!() };
-        assert!((12.0..=12.001).contains(&w), "{w}");
-        assert_eq!(smallest_width_reaching((5.0, 11.0), 1.2, 1e-3, &mut f), Reached::NotInRange { largest_m: 11.0 });
-        assert_eq!(smallest_width_reaching((13.0, 20.0), 1.2, 1e-3, &mut f), Reached::AtLowerBound { width_m: 13.0 });
     }
 
     #[test]

@@ -17,22 +17,17 @@
 //!   the velocity. The per-wave slides are summed (§6.3). A wave whose peak forces cannot reach
 //!   the static resistance (max P ≤ μ_s (W' − max U)) is skipped: it cannot slide the block.
 
-use super::checks::{response_warnings, Response, Warning};
-use super::run::{permanent_sliding_m, Both, Peaks};
+use super::rigid::RigidBlock;
+use super::run::{permanent_sliding_m, Both, Peaks, Response};
+use super::site::WaveSetup;
 use super::{Progress, Structure};
 use crate::dynamics::{Observer, Simulation, SolveError, SolverStats, StepView};
-use crate::foundation::Foundation;
-use crate::loads::generator::{realization_waves, TrainSpec};
-use crate::loads::history::WaveEvent;
-use crate::loads::model::{WaveLoadError, WaveLoadModel, WaveRecord};
-use crate::loads::regime::{RegimeChoice, RegimeError};
+use crate::loads::generator::realization_waves;
+use crate::loads::model::{WaveLoadError, WaveRecord};
+use crate::loads::regime::RegimeError;
 use crate::loads::LoadHistory;
-use crate::structure::Caisson;
 use rayon::prelude::*;
 use thiserror::Error;
-
-/// Added-mass coefficient of the rigid-block model (both faces, docs/model.md §6.3).
-pub const RIGID_BLOCK_ADDED_MASS_COEFF: f64 = 1.0855;
 
 /// Why a realization could not be run.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -77,91 +72,8 @@ pub struct RealizationResult {
     pub limited_waves: usize,
     pub waves: Vec<WaveOutcome>,
     pub solver: SolverStats,
-    /// What the plausibility checks need ([`super::checks::Response`]).
+    /// What the plausibility checks need ([`Response`]).
     pub response: Response,
-}
-
-/// The rigid-block model of one caisson (docs/model.md §6.3).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RigidBlock {
-    /// m_c + M_a, kg.
-    pub mass_kg: f64,
-    /// W', N.
-    pub weight_n: f64,
-    pub mu_static: f64,
-    pub mu_dynamic: f64,
-}
-
-impl RigidBlock {
-    /// M = m_c + 1.0855 ρ_w h'² l, one friction coefficient `mu`.
-    pub fn new(caisson: &Caisson, rho_w: f64, mu: f64) -> Self {
-        let added = RIGID_BLOCK_ADDED_MASS_COEFF * rho_w * caisson.base_depth_m.powi(2) * caisson.length_m;
-        RigidBlock {
-            mass_kg: caisson.mass_kg + added,
-            weight_n: caisson.weight_in_water_n,
-            mu_static: mu,
-            mu_dynamic: mu,
-        }
-    }
-
-    /// Shoreward slide of the block, from rest, under the load of one wave (module docs), m.
-    pub fn wave_sliding_m(&self, e: &WaveEvent) -> f64 {
-        let peak_p = e.impact.x.fx_n.max(e.quasi.x.fx_n);
-        let peak_u = e.impact.y.fy_n.max(e.quasi.y.fy_n).max(0.0);
-        if peak_p <= self.mu_static * (self.weight_n - peak_u) {
-            return 0.0;
-        }
-        let t = e.period_s;
-        let span = e.impulse.map_or(0.0, |i| i.duration_s.max(2.0 * i.rise_s));
-        let h_slow = t / 2000.0;
-        let h_fast = if span > 0.0 { (span / 200.0).min(h_slow) } else { h_slow };
-        let bps = e.breakpoints_local();
-        let force = |tau: f64| {
-            let w = e.at_local(tau);
-            (w.fx_n, w.fy_n)
-        };
-        let (mut tau, mut x, mut v) = (0.0f64, 0.0f64, 0.0f64);
-        let (mut p, mut u) = force(0.0);
-        let mut moving = p > self.mu_static * (self.weight_n - u);
-        while tau < t {
-            let mut h = if tau < span { h_fast } else { h_slow };
-            let next_bp = crate::loads::first_after(tau, &bps);
-            if next_bp < tau + h {
-                h = next_bp - tau;
-            }
-            h = h.min(t - tau);
-            if h <= 0.0 {
-                break;
-            }
-            let (p1, u1) = force(tau + h);
-            if moving {
-                let f0 = p - self.mu_dynamic * (self.weight_n - u);
-                let f1 = p1 - self.mu_dynamic * (self.weight_n - u1);
-                let v1 = v + 0.5 * h * (f0 + f1) / self.mass_kg;
-                if v1 <= 0.0 {
-                    // Stops inside the step: v linear in time.
-                    let s = if v > 0.0 { v / (v - v1) } else { 0.0 };
-                    x += 0.5 * v * s * h;
-                    v = 0.0;
-                    moving = false;
-                } else {
-                    x += 0.5 * (v + v1) * h;
-                    v = v1;
-                }
-            } else if p1 > self.mu_static * (self.weight_n - u1) {
-                moving = true;
-                v = 0.0;
-            }
-            tau += h;
-            p = p1;
-            u = u1;
-        }
-        // Still moving at the end of the wave (the load is then zero): decelerate at μ_d W'.
-        if moving && v > 0.0 {
-            x += 0.5 * self.mass_kg * v * v / (self.mu_dynamic * self.weight_n);
-        }
-        x
-    }
 }
 
 /// Tracks the peak reaction of the current wave beside the run's peaks.
@@ -181,35 +93,6 @@ impl<O: Observer + ?Sized> Observer for Three<'_, O> {
     fn observe(&mut self, s: &StepView<'_>) {
         self.0.observe(s);
         self.1.observe(s);
-    }
-}
-
-/// The waves of a site: its load model (with the regime choice), the trains, and the friction
-/// coefficient of the rigid-block reference.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
-pub struct WaveSetup {
-    pub model: WaveLoadModel,
-    pub train: TrainSpec,
-    /// μ of the rigid block; `None`: the foundation's μ_s.
-    pub rigid_block_mu: Option<f64>,
-}
-
-impl WaveSetup {
-    /// The nominal (regular) or significant (irregular) wave height, m.
-    pub fn height_m(&self) -> f64 {
-        self.train.height_m()
-    }
-    /// The wave period (T1/3 for irregular waves), s.
-    pub fn period_s(&self) -> f64 {
-        self.train.period_s
-    }
-    /// How the regime of each wave is chosen.
-    pub fn regime(&self) -> RegimeChoice {
-        self.model.options.regime
-    }
-    /// μ of the rigid-block reference on `foundation`.
-    pub fn rigid_block_mu(&self, foundation: &Foundation) -> f64 {
-        self.rigid_block_mu.unwrap_or(foundation.mu_static)
     }
 }
 
@@ -292,31 +175,6 @@ impl TrainCase<'_> {
     }
 }
 
-/// The plausibility warnings of realizations `rs` of `case`: each code once, from the first
-/// realization that raises it, with the count of realizations that do.
-pub fn realization_warnings(case: &TrainCase<'_>, rs: &[RealizationResult]) -> Vec<Warning> {
-    let mut out: Vec<(Warning, usize)> = Vec::new();
-    for r in rs {
-        for w in response_warnings(case.structure, &r.response) {
-            match out.iter_mut().find(|(x, _)| x.code == w.code) {
-                Some((_, n)) => *n += 1,
-                None => {
-                    let mut w = w;
-                    w.message = format!("realization {}: {}", r.index, w.message);
-                    out.push((w, 1));
-                }
-            }
-        }
-    }
-    out.into_iter()
-        .map(|(mut w, n)| {
-            w.message.push_str(&format!(" ({n} of {} realizations)", rs.len()));
-            w.numbers.insert("realizations", n as f64);
-            w
-        })
-        .collect()
-}
-
 /// Run every realization of `case` in parallel (module docs of [`super`]); `progress` is called
 /// once per finished realization.
 pub fn run_realizations(case: &TrainCase<'_>, progress: Progress<'_>) -> Result<TrainSummary, TrainRunError> {
@@ -382,36 +240,6 @@ impl TrainSummary {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::closed_form::rigid_block_sliding_m;
-    use crate::loads::history::LoadComponent;
-    use crate::loads::shapes::{Impulse, LoadShape};
-
-    /// A pure triangular impulse (Shimosako-Takahashi 1994 shape, no quasi-static or trough part)
-    /// against the rigid block reproduces the exact closed form of docs/model.md §6.3 in both regimes.
-    #[test]
-    fn rigid_block_matches_the_exact_triangle_closed_form() {
-        let (m, w, mu) = (1800.0, 8240.0, 0.6);
-        let block = RigidBlock { mass_kg: m, weight_n: w, mu_static: mu, mu_dynamic: mu };
-        for (peak_over_resistance, uplift) in [(1.3, 0.0), (1.5, 800.0), (2.5, 0.0), (4.0, 1500.0)] {
-            let tr = 0.05;
-            let fx = peak_over_resistance * mu * w;
-            let impact = LoadComponent::from_levers(fx, 0.5, uplift, 0.52, 0.78);
-            let e = WaveEvent::new(
-                0.0,
-                3.04,
-                LoadComponent::default(),
-                1.0,
-                LoadComponent::default(),
-                impact,
-                Some(Impulse { shape: LoadShape::ShimosakoTakahashi1994, rise_s: tr, duration_s: 2.0 * tr }),
-            );
-            let s = block.wave_sliding_m(&e);
-            let exact = rigid_block_sliding_m(fx + mu * uplift, mu * w, m, 2.0 * tr);
-            // Trapezoidal rule with 200 steps over the pulse and the start detected on the grid:
-            // second-order error of order (1/200)² relative, well inside 0.5 %.
-            assert!((s - exact).abs() <= 5e-3 * exact, "F/R = {peak_over_resistance}: {s} vs {exact}");
-        }
-    }
 
     #[test]
     fn spread_of_a_sample() {

@@ -3,8 +3,8 @@
 use super::train::{describe_train, RealizationReport};
 use super::{kn, ModelReport, Provenance, SpreadReport};
 use crate::analysis::campaign::{Campaign, ConditionResult};
+use crate::analysis::checks::realization_warnings;
 use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
-use crate::analysis::train::realization_warnings;
 use crate::foundation::DampingMode;
 use crate::loads::regime::{Regime, RegimeChoice};
 use serde::Serialize;

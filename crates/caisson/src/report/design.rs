@@ -7,7 +7,7 @@ use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, LifeParams,
     LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
-use crate::analysis::train::WaveSetup;
+use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
 use serde::Serialize;
@@ -162,7 +162,7 @@ pub struct DynamicStatistics {
     pub expected_max_excursion_m: f64,
     /// Waves (all lives) during which part of the base lifted off.
     pub rocking_waves: u64,
-    /// Waves (all lives) that rotated the caisson beyond 0.01 rad ([`crate::analysis::lifetime::ROCKING_LIMIT_RAD`]).
+    /// Waves (all lives) that rotated the caisson beyond 0.01 rad ([`crate::analysis::limits::ROCKING_LIMIT_RAD`]).
     pub large_rotation_waves: u64,
     /// Lives with a large-rotation wave: outside the model's validity (it does not follow
     /// overturning).

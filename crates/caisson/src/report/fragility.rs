@@ -5,7 +5,7 @@ use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warn
 use crate::analysis::climate::{StormDuration, WaveDirection};
 use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
-use crate::analysis::train::WaveSetup;
+use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use serde::Serialize;
 

@@ -7,7 +7,7 @@
 use super::{kn, NotFinite, Provenance};
 use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::conventional::{DesignWaveRule, StaticCheck};
-use crate::analysis::train::WaveSetup;
+use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use crate::loads::regime::Regime;
 use crate::loads::risetime::RiseTimeModel;

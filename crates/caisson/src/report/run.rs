@@ -1,7 +1,8 @@
 //! `caisson run` on a `[load]` scenario: `summary.json` (keys in docs/cli.md).
 
 use super::{kn, FoundationReport, ModelReport, Provenance};
-use crate::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Response, Warning};
+use crate::analysis::checks::{response_warnings, run_load_warnings, structure_warnings, Warning};
+use crate::analysis::run::Response;
 use crate::analysis::run::RunSummary;
 use crate::analysis::Structure;
 use crate::loads::LoadSpec;

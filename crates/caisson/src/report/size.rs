@@ -2,9 +2,10 @@
 
 use super::{kn, ModelReport, Provenance};
 use crate::analysis::checks::{candidate_warnings, structure_warnings, Warning};
+use crate::analysis::conventional::Reached;
 use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
 use crate::analysis::lifetime::DesignParams;
-use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Reached, Required, SizeParams, Sizing};
+use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Required, SizeParams, Sizing};
 use crate::analysis::Structure;
 use serde::Serialize;
 

@@ -1,9 +1,11 @@
 //! `caisson run` on a `[waves]` scenario: the wave-train `summary.json` (keys in docs/cli.md).
 
 use super::{kn, FoundationReport, ModelReport, Provenance, SpreadReport};
+use crate::analysis::checks::realization_warnings;
 use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::run::FoundationSummary;
-use crate::analysis::train::{realization_warnings, RealizationResult, TrainCase, TrainSummary, WaveSetup};
+use crate::analysis::site::WaveSetup;
+use crate::analysis::train::{RealizationResult, TrainCase, TrainSummary};
 use crate::analysis::Structure;
 use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
 use crate::loads::regime::{Regime, RegimeChoice};

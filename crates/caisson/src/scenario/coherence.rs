@@ -15,7 +15,7 @@
 use super::ScenarioError;
 use crate::analysis::checks::{nominal_wave_peak, LoadSource, MAX_LOAD_OVER_WEIGHT};
 use crate::analysis::lifetime::DesignParams;
-use crate::analysis::train::WaveSetup;
+use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use crate::dynamics::Stepping;
 use crate::loads::{LoadSpec, WaveForce};

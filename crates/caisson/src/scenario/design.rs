@@ -455,9 +455,9 @@ pub(super) fn direction(
 }
 
 /// A failure rotation limit (`key`), rad: in (0, [`MAX_FAILURE_ROTATION_RAD`]], default
-/// [`crate::analysis::checks::ROCKING_LIMIT_RAD`].
+/// [`crate::analysis::limits::ROCKING_LIMIT_RAD`].
 pub(super) fn failure_rotation(key: &str, v: Option<f64>) -> R<f64> {
-    v.map_or(Ok(crate::analysis::checks::ROCKING_LIMIT_RAD), |v| {
+    v.map_or(Ok(crate::analysis::limits::ROCKING_LIMIT_RAD), |v| {
         number(key, v, 0.0, MAX_FAILURE_ROTATION_RAD, true, "rad")
     })
 }

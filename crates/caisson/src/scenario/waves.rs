@@ -6,7 +6,7 @@
 //! h_c = `height_m − base_depth_m`, width B, alongshore length.
 
 use super::{ScenarioError, ScenarioFile};
-use crate::analysis::train::WaveSetup;
+use crate::analysis::site::WaveSetup;
 use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
 use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveSite};
 use crate::loads::regime::{Regime, RegimeChoice};
