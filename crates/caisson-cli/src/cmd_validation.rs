@@ -374,7 +374,7 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let (st, se) = (score(0), score(1));
 
     let _ = writeln!(t, "## 4. The seed's findings, one by one\n");
-    let _ = writeln!(t, "Each finding is checked by a computed criterion (the code is `crates/caisson-cli/src/cmd_validation.rs`; \"no sliding\" means below {} µm). Campaign findings use the mean over the 10 realizations of the PARI examples (seed Tables 3 and 4, 20 % height variability); F8 is also shown with nominal heights in §6.\n", findings::NO_SLIDE_M * 1e6);
+    let _ = writeln!(t, "Each finding is checked by a computed criterion (the criteria are `crates/caisson/src/analysis/findings.rs`, the report `crates/caisson-cli/src/cmd_validation.rs`; \"no sliding\" means below {} µm). Campaign findings use the mean over the 10 realizations of the PARI examples (seed Tables 3 and 4, 20 % height variability); F8 is also shown with nominal heights in §6.\n", findings::NO_SLIDE_M * 1e6);
     let _ = writeln!(t, "| # | finding of the seed | figure | profile `seed-2011` | profile `consistent` (the default) |\n|---|---|---|---|---|");
     for f in &found {
         let _ = writeln!(
