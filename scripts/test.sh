@@ -31,7 +31,15 @@ fi
 python -m pip install -q --disable-pip-version-check -r crates/caisson-py/requirements.txt \
     | { grep -v "^Requirement already satisfied" || true; }
 phase "Python package: maturin develop --release (builds the caisson extension into .venv)"
-(cd crates/caisson-py && maturin develop --release --quiet 2>&1 | { grep -v "^Requirement already satisfied" || true; })
+# Its build output is kept to itself unless it fails (then it is printed whole).
+maturin_log=$(mktemp)
+if ! (cd crates/caisson-py && maturin develop --release --quiet) >"$maturin_log" 2>&1; then
+    cat "$maturin_log" >&2
+    rm -f "$maturin_log"
+    echo "maturin develop failed (its output above)" >&2
+    exit 1
+fi
+rm -f "$maturin_log"
 
 phase "Rust tests: cargo test --release --workspace (unit, verification, golden, CLI, fuzz)"
 cargo test --release --workspace
