@@ -157,8 +157,31 @@ class ModelStatistics:
         )
 
 
+class _ReadsAsReport(Mapping):
+    """A typed result that also reads as the CLI's JSON report it keeps in ``report``: its keys,
+    items and ``==`` against that dict (or another result of its kind)."""
+
+    report: dict
+
+    def __getitem__(self, key: str) -> Any:
+        return self.report[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.report)
+
+    def __len__(self) -> int:
+        return len(self.report)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, _ReadsAsReport):
+            return type(self) is type(other) and self.report == other.report
+        return isinstance(other, Mapping) and self.report == dict(other)
+
+    __hash__ = None  # type: ignore[assignment]
+
+
 @dataclass(frozen=True, eq=False)
-class DesignStatistics(Mapping):
+class DesignStatistics(_ReadsAsReport):
     """The statistics of a design's lives (``caisson design --json``, docs/design.md):
     ``lives``, ``life_years``; ``dynamic`` and ``rigid_block``: :class:`ModelStatistics`;
     ``waves``, ``simulated_waves`` (the waves drawn and those run through the dynamic model);
@@ -189,22 +212,6 @@ class DesignStatistics(Mapping):
             warnings=ResultWarning.all_of(report),
             report=report,
         )
-
-    def __getitem__(self, key: str) -> Any:
-        return self.report[key]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self.report)
-
-    def __len__(self) -> int:
-        return len(self.report)
-
-    def __eq__(self, other: object) -> bool:
-        if isinstance(other, DesignStatistics):
-            return self.report == other.report
-        return isinstance(other, Mapping) and self.report == dict(other)
-
-    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         d = self.dynamic
@@ -240,7 +247,7 @@ class FragilityResult:
 
 
 @dataclass(frozen=True, eq=False)
-class SizeResult(Mapping):
+class SizeResult(_ReadsAsReport):
     """The results of :func:`caisson.size` (``caisson size --json``, docs/size.md). Widths in m.
 
     - ``width_m``: the required width by the dynamic model (``None`` where the search found none
@@ -287,22 +294,6 @@ class SizeResult(Mapping):
             warnings=ResultWarning.all_of(report),
             report=report,
         )
-
-    def __getitem__(self, key: str) -> Any:
-        return self.report[key]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self.report)
-
-    def __len__(self) -> int:
-        return len(self.report)
-
-    def __eq__(self, other: object) -> bool:
-        if isinstance(other, SizeResult):
-            return self.report == other.report
-        return isinstance(other, Mapping) and self.report == dict(other)
-
-    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         return f"SizeResult(width_m={self.width_m}, rigid_block_width_m={self.rigid_block_width_m}, goda_width_m={self.goda_width_m})"
