@@ -3,6 +3,7 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
+use crate::csv_rows::{to_csv, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
 use crate::plot::{Panel, Series};
@@ -332,16 +333,6 @@ fn size_text(r: &SizeReport) -> String {
     t
 }
 
-/// A number in a CSV cell as `{:e}` (every CSV of the CLI writes its numbers so); `None` is an
-/// empty cell.
-struct Sci(f64);
-
-impl serde::Serialize for Sci {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        s.collect_str(&format_args!("{:e}", self.0))
-    }
-}
-
 /// One row of candidates.csv: its columns are these fields' names, in this order (a candidate of
 /// size.json with each model's point flattened under its prefix).
 #[derive(serde::Serialize)]
@@ -409,11 +400,7 @@ impl From<&CandidateReport> for CandidateRow {
 }
 
 fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    for k in &r.candidates {
-        w.serialize(CandidateRow::from(k))?;
-    }
-    Ok(w.into_inner()?)
+    to_csv(r.candidates.iter().map(CandidateRow::from))
 }
 
 /// The design curve on logarithmic axes, one panel per criterion given: E|S| (with its 90 % band,
