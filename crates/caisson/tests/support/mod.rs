@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod signature;
+pub mod site;
 
 use caisson::scenario::Scenario;
 use std::path::Path;
