@@ -56,7 +56,7 @@ fn the_answer_does_not_depend_on_the_thread_count() {
     assert_eq!(at(lo)["dynamic_meets"], false);
     assert!(at(hi)["dynamic"]["expected_sliding_m"].as_f64().unwrap() <= 0.05);
     // Goda's conventional width under H_max (here Goda's breaking-limited 13.451 m,
-    // tests/goda_design.rs): both factors reach 1.2 there (sliding governs, 18.81 m, to 1 mm), and
+    // tests/verify_goda_design.rs): both factors reach 1.2 there (sliding governs, 18.81 m, to 1 mm), and
     // the heel pressure there is above the 500 kPa allowed.
     let g = &j["goda"];
     assert_eq!(g["status"], "found");
