@@ -626,7 +626,7 @@ impl Scenario {
         let foundation =
             foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
         if let Some(w) = self.waves.as_mut() {
-            waves::place_caisson(&mut w.model.site, &caisson);
+            crate::analysis::site::place_caisson(&mut w.model.site, &caisson);
         }
         self.caisson_spec = caisson_spec;
         self.foundation_spec = foundation_spec;

@@ -67,7 +67,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
     let foundation =
         foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
     let wave_setup = match f.waves {
-        Some(_) => Some(waves::validate_waves(f, &caisson)?),
+        Some(_) => Some(waves::validate_waves(f, &caisson, rho_w)?),
         None => None,
     };
     if let Some(w) = &wave_setup {
