@@ -136,17 +136,32 @@ const LOAD_KEYS: KeyMap = &[
     ("peak_horizontal_n", "peak_horizontal_kn", 1e3, "kN"),
     ("peak_uplift_n", "peak_uplift_kn", 1e3, "kN"),
     ("peak_moment_nm", "peak_horizontal_kn", 1e3, "kN"),
+    ("horizontal_lever_m", "horizontal_lever_m", 1.0, "m above the base, at most the caisson height"),
+    ("uplift_lever_m", "uplift_lever_m", 1.0, "m from the heel, at most the base width"),
 ];
 
 /// A parameter error reported under the key of `table` (e.g. `[caisson]`), in the key's unit.
 pub(crate) fn keyed(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
+    // Very large or small numbers in exponent form (1e160, not 160 digits).
+    let short = |v: f64| {
+        if v.is_finite() && v != 0.0 && !(1e-4..1e15).contains(&v.abs()) {
+            format!("{v:e}")
+        } else {
+            format!("{v}")
+        }
+    };
+    keyed_shown(table, map, e, short)
+}
+
+/// As [`keyed`], the value in the form a key's value is shown when read ([`fmt_value`]).
+pub(crate) fn keyed_as_read(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
+    keyed_shown(table, map, e, fmt_value)
+}
+
+fn keyed_shown(table: &str, map: KeyMap, e: ParamError, show: impl Fn(f64) -> String) -> ScenarioError {
     let (key, divisor, unit) =
         map.iter().find(|(q, ..)| *q == e.quantity).map(|(_, k, d, u)| (*k, *d, *u)).unwrap_or((e.quantity, 1.0, ""));
-    let v = e.value / divisor;
-    // Very large or small numbers in exponent form (1e160, not 160 digits).
-    let value =
-        if v.is_finite() && v != 0.0 && !(1e-4..1e15).contains(&v.abs()) { format!("{v:e}") } else { format!("{v}") };
-    ScenarioError::range(&format!("{table} {key}"), value, e.allowed.describe(1.0 / divisor, unit))
+    ScenarioError::range(&format!("{table} {key}"), show(e.value / divisor), e.allowed.describe(1.0 / divisor, unit))
 }
 
 /// The whole scenario file as written (units as in the keys).
