@@ -164,6 +164,21 @@ fn keyed_shown(table: &str, map: KeyMap, e: ParamError, show: impl Fn(f64) -> St
     ScenarioError::range(&format!("{table} {key}"), show(e.value / divisor), e.allowed.describe(1.0 / divisor, unit))
 }
 
+/// The keys of quantities over several tables: (quantity, `[table] key`, the key's unit), for
+/// quantities in SI that the file gives in the same unit.
+type NamedKeys = &'static [(&'static str, &'static str, &'static str)];
+
+/// A parameter error under its key of `keys`: a range with the value as a key's is read
+/// ([`fmt_value`]), a rule between quantities with the value as Rust writes it.
+pub(crate) fn keyed_in(keys: NamedKeys, e: ParamError) -> ScenarioError {
+    let (key, unit) = keys.iter().find(|(q, ..)| *q == e.quantity).map_or((e.quantity, ""), |(_, k, u)| (*k, *u));
+    let value = match e.allowed {
+        crate::Allowed::Rule(_) => e.value.to_string(),
+        _ => fmt_value(e.value),
+    };
+    ScenarioError::range(key, value, e.allowed.describe(1.0, unit))
+}
+
 /// The whole scenario file as written (units as in the keys).
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields)]

@@ -18,7 +18,6 @@ use crate::loads::risetime::{RiseTimeModel, RiseTimeParams};
 use crate::loads::shapes::LoadShape;
 use crate::structure::Caisson;
 use crate::waves::breaking::{BreakerCriterion, GODA_BREAKER_A, MCCOWAN_GAMMA};
-use crate::Allowed;
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
@@ -114,7 +113,7 @@ pub(super) fn seed_of(key: &str, v: Option<i64>) -> R<u64> {
 }
 
 /// The keys of the quantities of a [`WaveSetup`] (named as in their types) and their units.
-const WAVE_KEYS: &[(&str, &str, &str)] = &[
+const WAVE_KEYS: super::NamedKeys = &[
     ("rho_w", "[water] density_kg_per_m3", "kg/m³"),
     ("depth_at_toe_m", "[water] depth_at_toe_m", "m"),
     ("seabed_slope", "[water] seabed_slope", "tan θ, 0 for a flat bed"),
@@ -135,19 +134,10 @@ const WAVE_KEYS: &[(&str, &str, &str)] = &[
     ("rigid_block_mu", "[waves] rigid_block_mu", "-"),
 ];
 
-/// A refused wave setup under the keys of `[water]`, `[waves]` and `[caisson]`: a range shows
-/// its value in the file's short form, a rule between quantities as Rust writes the number.
+/// A refused wave setup under the keys of `[water]`, `[waves]` and `[caisson]`.
 fn keyed_waves(e: WaveParamError) -> ScenarioError {
     match e {
-        WaveParamError::Param(e) => {
-            let (key, unit) =
-                WAVE_KEYS.iter().find(|(q, ..)| *q == e.quantity).map_or((e.quantity, ""), |(_, k, u)| (*k, *u));
-            let value = match e.allowed {
-                Allowed::Rule(_) => e.value.to_string(),
-                _ => super::fmt_value(e.value),
-            };
-            ScenarioError::range(key, value, e.allowed.describe(1.0, unit))
-        }
+        WaveParamError::Param(e) => super::keyed_in(WAVE_KEYS, e),
         WaveParamError::WallDepth { depth_at_wall_m, depth_at_toe_m } => ScenarioError::range(
             "[water] depth_at_wall_m",
             super::fmt_value(depth_at_wall_m),
