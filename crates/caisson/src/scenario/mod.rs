@@ -730,32 +730,7 @@ impl Scenario {
         let w = self.waves_for("a design or fragility run")?;
         if let Some(d) = &self.design {
             // At high tide the caisson is more submerged: its weight in water must stay positive.
-            let c = &self.structure.caisson;
-            let per_m = self.water_density_kg_per_m3 * crate::G_M_PER_S2 * c.width_m * c.length_m;
-            let r = d.life.tidal_range_m;
-            let rise = d.life.climate.sea_level.max_rise_m(d.life.life_years);
-            if rise > 0.0 && c.weight_in_water_n - per_m * (r + rise) <= 0.0 {
-                return Err(ScenarioError::range(
-                    "[design] sea_level_rise_m",
-                    rise,
-                    format!(
-                        "at high tide with the sea-level rise the caisson's weight in water W' − ρ_w g B l (R + rise) = {:.1} kN is not positive: it would float; the tidal range and the rise together must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
-                        (c.weight_in_water_n - per_m * (r + rise)) / 1e3,
-                        c.weight_in_water_n / per_m
-                    ),
-                ));
-            }
-            if c.weight_in_water_n - per_m * r <= 0.0 {
-                return Err(ScenarioError::range(
-                    "[design] tidal_range_m",
-                    r,
-                    format!(
-                        "at high tide the caisson's weight in water W' − ρ_w g B l R = {:.1} kN is not positive: it would float; the tidal range must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
-                        (c.weight_in_water_n - per_m * r) / 1e3,
-                        c.weight_in_water_n / per_m
-                    ),
-                ));
-            }
+            coherence::check_high_water(&self.structure.caisson, self.water_density_kg_per_m3, d)?;
         }
         Ok(StormCase {
             structure: &self.structure,

@@ -3,7 +3,7 @@
 //!
 //! This file reads keys: what is missing, which keys go together, names of choices, whole numbers.
 //! The rules of the values are the types' own ([`WaveSetup::new`]: [`WaveSite::checked`],
-//! [`TrainSpec::checked`], [`WaveLoadOptions::checked`]); [`keyed_waves`] names a refusal's key.
+//! [`TrainSpec::checked`], [`WaveLoadOptions::checked`]); `keyed_waves` names a refusal's key.
 //!
 //! Every key, with unit, default and allowed range, is documented in `docs/waves.md`. The caisson
 //! geometry comes from `[caisson]`: base depth h' = `base_depth_m`, crest freeboard
