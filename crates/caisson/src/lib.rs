@@ -113,6 +113,8 @@ pub enum Allowed {
     Between { lo: f64, hi: f64 },
     /// A finite number > 0 and at most `hi`.
     PositiveUpTo { hi: f64 },
+    /// A finite number above `lo` (or at least `lo`, when `lo_open` is false) and at most `hi`.
+    Interval { lo: f64, hi: f64, lo_open: bool },
     /// A whole number from `lo` to `hi`.
     Count { lo: u64, hi: u64 },
     /// A rule in words (its numbers in SI units).
@@ -130,6 +132,10 @@ impl Allowed {
             Allowed::NonNegative => format!("must be a finite number ≥ 0{u}"),
             Allowed::Between { lo, hi } => format!("must be between {} and {}{u}", lo * scale, hi * scale),
             Allowed::PositiveUpTo { hi } => format!("must be a finite number > 0 and at most {}{u}", hi * scale),
+            Allowed::Interval { lo, hi, lo_open } => {
+                let low = if *lo_open { ">" } else { "≥" };
+                format!("must be a finite number {low} {} and ≤ {}{u}", lo * scale, hi * scale)
+            }
             Allowed::Count { lo, hi } => format!("must be a whole number from {lo} to {hi}"),
             Allowed::Rule(s) => s.clone(),
         }
@@ -179,6 +185,15 @@ pub(crate) mod check {
             Ok(v)
         } else {
             Err(fail(quantity, v, Allowed::PositiveUpTo { hi }))
+        }
+    }
+    /// A finite number in (lo, hi] (`lo_open`) or [lo, hi].
+    pub(crate) fn interval(quantity: &'static str, v: f64, lo: f64, hi: f64, lo_open: bool) -> Result<f64, ParamError> {
+        let above = if lo_open { v > lo } else { v >= lo };
+        if v.is_finite() && above && v <= hi {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::Interval { lo, hi, lo_open }))
         }
     }
     pub(crate) fn count(quantity: &'static str, v: usize, lo: u64, hi: u64) -> Result<usize, ParamError> {

@@ -181,6 +181,29 @@ pub fn nominal_wave_peak(waves: &WaveSetup) -> Option<WaveForce> {
     })
 }
 
+/// A load's peak above [`MAX_LOAD_OVER_WEIGHT`] × W' (refused by the scenario): the first of the
+/// peak |horizontal force| and |uplift| beyond it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OverWeight {
+    /// The uplift (else the horizontal force).
+    pub uplift: bool,
+    /// Its magnitude, N.
+    pub force_n: f64,
+    /// force / W'.
+    pub ratio: f64,
+}
+
+/// The peak |F_x| or |F_y| of `peak` above [`MAX_LOAD_OVER_WEIGHT`] times the weight in water
+/// `weight_in_water_n`, if any (the horizontal force first).
+pub fn over_weight(weight_in_water_n: f64, peak: WaveForce) -> Option<OverWeight> {
+    let w = weight_in_water_n;
+    [peak.fx_n.abs(), peak.fy_n.abs()]
+        .into_iter()
+        .enumerate()
+        .find(|&(_, f)| f > MAX_LOAD_OVER_WEIGHT * w)
+        .map(|(i, f)| OverWeight { uplift: i == 1, force_n: f, ratio: f / w })
+}
+
 /// What a load's peak is checked against: the scenario's keys to name in a message.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoadSource {

@@ -260,6 +260,18 @@ pub struct ConventionalCriteria {
     pub heel_pressure_governs: bool,
 }
 
+impl ConventionalCriteria {
+    /// The criteria if in range: each safety factor from 1 to 10, the allowable heel pressure
+    /// above 10 kPa and at most 10 MPa.
+    pub fn checked(self) -> Result<Self, crate::ParamError> {
+        use crate::check::interval;
+        interval("sliding_safety_factor", self.sliding_safety_factor, 1.0, 10.0, false)?;
+        interval("overturning_safety_factor", self.overturning_safety_factor, 1.0, 10.0, false)?;
+        interval("allowable_heel_pressure_pa", self.allowable_heel_pressure_pa, 1e4, 1e7, true)?;
+        Ok(self)
+    }
+}
+
 impl Default for ConventionalCriteria {
     fn default() -> Self {
         ConventionalCriteria {

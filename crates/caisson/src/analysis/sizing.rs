@@ -37,6 +37,7 @@
 
 use super::fragility::normal_cdf;
 use super::lifetime::{capped_statistics, life_statistics, FailureLimits, LifeCounts, StormOutcome};
+use crate::check::{count, interval};
 use serde::Serialize;
 
 /// One-sided 95 % normal quantile.
@@ -231,6 +232,54 @@ pub struct SizeParams {
     pub conventional: super::conventional::ConventionalCriteria,
 }
 
+/// Why a sizing's controls were refused: one quantity out of its range, or a range of widths
+/// that holds none.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SizeParamError {
+    #[error(transparent)]
+    Param(#[from] crate::ParamError),
+    #[error("range_m = [{lo_m}, {hi_m}]: the smallest width must be below the largest")]
+    EmptyRange { lo_m: f64, hi_m: f64 },
+}
+
+impl SizeParams {
+    /// The controls if in range: the widths above 0 and at most 1 km, the smallest below the
+    /// largest; the criteria ([`Criteria::checked`]); 1 to 10⁶ lives; 2 to 100 widths on the
+    /// design curve; the tolerance above a millionth of the range and at most the range; Goda's
+    /// criteria ([`super::conventional::ConventionalCriteria::checked`]).
+    pub fn checked(self) -> Result<Self, SizeParamError> {
+        let (lo, hi) = self.range_m;
+        interval("range_lo_m", lo, 0.0, 1000.0, true)?;
+        interval("range_hi_m", hi, 0.0, 1000.0, true)?;
+        if lo >= hi {
+            return Err(SizeParamError::EmptyRange { lo_m: lo, hi_m: hi });
+        }
+        self.criteria.checked()?;
+        count("lives", self.lives, 1, 1_000_000)?;
+        count("curve_points", self.curve_points, 2, 100)?;
+        interval("tolerance_m", self.tolerance_m, (hi - lo) * 1e-6, hi - lo, true)?;
+        self.conventional.checked()?;
+        Ok(self)
+    }
+}
+
+impl Criteria {
+    /// The criteria if in range: slidings above 0 and at most 1 km, probabilities from 0 to 1.
+    pub fn checked(self) -> Result<Self, crate::ParamError> {
+        if let Some(e) = self.exceedance {
+            interval("exceedance_sliding_m", e.sliding_m, 0.0, 1000.0, true)?;
+            interval("exceedance_probability", e.probability, 0.0, 1.0, false)?;
+        }
+        if let Some(s) = self.expected_sliding_m {
+            interval("expected_sliding_m", s, 0.0, 1000.0, true)?;
+        }
+        if let Some(p) = self.failure_probability {
+            interval("failure_probability", p, 0.0, 1.0, false)?;
+        }
+        Ok(self)
+    }
+}
+
 /// The answer for one model.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "status", rename_all = "snake_case")]
@@ -344,6 +393,60 @@ fn crossing(sorted: &[&Candidate], model: SizedModel, p: &SizeParams, z: f64) ->
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn params() -> SizeParams {
+        SizeParams {
+            range_m: (12.0, 30.0),
+            criteria: Criteria { expected_sliding_m: Some(0.1), ..Criteria::default() },
+            lives: 100,
+            tolerance_m: 0.25,
+            curve_points: 8,
+            conventional: super::super::conventional::ConventionalCriteria::default(),
+        }
+    }
+
+    #[test]
+    fn size_params_refuse_each_control_out_of_range_naming_it() {
+        assert_eq!(params().checked(), Ok(params()));
+        let named = |p: SizeParams| match p.checked() {
+            Err(SizeParamError::Param(e)) => e.quantity,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(named(SizeParams { range_m: (0.0, 30.0), ..params() }), "range_lo_m");
+        assert_eq!(named(SizeParams { range_m: (12.0, 1e4), ..params() }), "range_hi_m");
+        assert_eq!(named(SizeParams { lives: 0, ..params() }), "lives");
+        assert_eq!(named(SizeParams { curve_points: 1, ..params() }), "curve_points");
+        // The tolerance is above a millionth of the range (18 m) and at most the range.
+        assert_eq!(named(SizeParams { tolerance_m: 1e-6, ..params() }), "tolerance_m");
+        assert_eq!(named(SizeParams { tolerance_m: 18.5, ..params() }), "tolerance_m");
+        let criteria = |c: Criteria| named(SizeParams { criteria: c, ..params() });
+        assert_eq!(criteria(Criteria { expected_sliding_m: Some(-0.1), ..Criteria::default() }), "expected_sliding_m");
+        assert_eq!(criteria(Criteria { failure_probability: Some(1.5), ..Criteria::default() }), "failure_probability");
+        let exceedance = |sliding_m, probability| Criteria {
+            exceedance: Some(ExceedanceCriterion { sliding_m, probability }),
+            ..Criteria::default()
+        };
+        assert_eq!(criteria(exceedance(0.0, 0.1)), "exceedance_sliding_m");
+        assert_eq!(criteria(exceedance(0.5, f64::NAN)), "exceedance_probability");
+        let goda = |c| named(SizeParams { conventional: c, ..params() });
+        let d = params().conventional;
+        assert_eq!(
+            goda(super::super::conventional::ConventionalCriteria { sliding_safety_factor: 0.9, ..d }),
+            "sliding_safety_factor"
+        );
+        assert_eq!(
+            goda(super::super::conventional::ConventionalCriteria { overturning_safety_factor: 11.0, ..d }),
+            "overturning_safety_factor"
+        );
+        assert_eq!(
+            goda(super::super::conventional::ConventionalCriteria { allowable_heel_pressure_pa: 1e4, ..d }),
+            "allowable_heel_pressure_pa"
+        );
+        assert_eq!(
+            SizeParams { range_m: (30.0, 12.0), ..params() }.checked(),
+            Err(SizeParamError::EmptyRange { lo_m: 30.0, hi_m: 12.0 })
+        );
+    }
 
     fn point(mean: f64) -> ModelPoint {
         ModelPoint {

@@ -26,16 +26,19 @@
 //! every condition of a campaign (common random numbers: differences between conditions are not
 //! blurred by different draws).
 
-use super::model::{WaveLoadModel, WaveRecord};
+use super::model::{WaveLoadModel, WaveParamError, WaveRecord, MIN_LENGTH_M, MIN_PERIOD_S};
 use super::regime::{Regime, RegimeChoice, RegimeError};
 use super::risetime::LoadRng;
-use crate::check::rule;
+use crate::check::{count, interval, rule};
 use crate::waves::breaking::MICHE_STEEPNESS;
 use crate::waves::dispersion::deep_water_wavelength_m;
 use crate::waves::statistics::sample_rayleigh_m;
 use crate::ParamError;
 use rand::{Rng, SeedableRng};
 use rand_distr::StandardNormal;
+
+/// Most waves of all the realizations of a train together (`waves` × `realizations`).
+pub const MAX_TRAIN_WAVES: usize = 10_000_000;
 
 /// Variability of the individual heights of a regular-wave test.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -52,6 +55,32 @@ pub enum HeightVariability {
 impl Default for HeightVariability {
     fn default() -> Self {
         HeightVariability::Normal { cov: 0.2, truncation_sigmas: 2.0 }
+    }
+}
+
+impl HeightVariability {
+    /// The variability if in range: the fraction c (COV or half-width) from 0 to 0.9, the
+    /// truncation k from 0.5 to 10 standard deviations, and c k below 1 (a drawn height could
+    /// otherwise be zero or negative). Quantities are named as the scenario's keys.
+    pub fn checked(self) -> Result<Self, ParamError> {
+        match self {
+            HeightVariability::Normal { cov, truncation_sigmas } => {
+                interval("height_variability_fraction", cov, 0.0, 0.9, false)?;
+                interval("height_truncation_sigmas", truncation_sigmas, 0.5, 10.0, false)?;
+                if cov * truncation_sigmas >= 1.0 {
+                    return Err(rule(
+                        "height_variability_fraction",
+                        cov,
+                        format!("times height_truncation_sigmas = {truncation_sigmas} must be below 1, or a drawn height could be zero or negative"),
+                    ));
+                }
+            }
+            HeightVariability::Uniform { half_width } => {
+                interval("height_variability_fraction", half_width, 0.0, 0.9, false)?;
+            }
+            HeightVariability::None => {}
+        }
+        Ok(self)
     }
 }
 
@@ -85,6 +114,49 @@ impl TrainSpec {
             TrainKind::Regular { height_m, .. } => height_m,
             TrainKind::Irregular { significant_height_m } => significant_height_m,
         }
+    }
+
+    /// The spec if every quantity is in range: the period from [`MIN_PERIOD_S`] to 1000 s; the
+    /// height from [`MIN_LENGTH_M`] to 1000 m and below the deep-water breaking limit 0.142 L0;
+    /// 1 to 10⁶ waves and realizations, at most [`MAX_TRAIN_WAVES`] in all; the variability
+    /// ([`HeightVariability::checked`]).
+    pub fn checked(self) -> Result<Self, WaveParamError> {
+        self.checked_wave()?;
+        self.checked_counts()
+    }
+
+    /// The period and the height of the spec's waves ([`Self::checked`]).
+    pub(crate) fn checked_wave(&self) -> Result<(), ParamError> {
+        let period_s = interval("period_s", self.period_s, MIN_PERIOD_S, 1e3, false)?;
+        let quantity = match self.kind {
+            TrainKind::Regular { .. } => "height_m",
+            TrainKind::Irregular { .. } => "significant_height_m",
+        };
+        let height_m = interval(quantity, self.height_m(), MIN_LENGTH_M, 1e3, false)?;
+        let limit = MICHE_STEEPNESS * deep_water_wavelength_m(period_s);
+        if height_m >= limit {
+            return Err(rule(
+                quantity,
+                height_m,
+                format!("must be below the deep-water breaking limit 0.142 L0 = {limit:.4} m for period_s = {period_s} s (no wave is steeper)"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The counts and the height variability of the spec ([`Self::checked`]).
+    pub(crate) fn checked_counts(self) -> Result<Self, WaveParamError> {
+        let waves = count("waves", self.waves, 1, 1_000_000)?;
+        let realizations = count("realizations", self.realizations, 1, 1_000_000)?;
+        // Every wave of every realization is integrated and reported (a row of `waves.csv`, an
+        // object of the JSON): bounded in all, not only per realization.
+        if waves * realizations > MAX_TRAIN_WAVES {
+            return Err(WaveParamError::TooManyWaves { waves, realizations });
+        }
+        if let TrainKind::Regular { variability, .. } = self.kind {
+            variability.checked()?;
+        }
+        Ok(self)
     }
 
     /// The same spec with another nominal (regular) or significant (irregular) height `h` (m): a
@@ -210,5 +282,67 @@ mod tests {
         assert!(a.iter().all(|&x| x == a[0]));
         let b: u64 = realization_rng(1, 1).gen();
         assert_ne!(a[0], b);
+    }
+}
+
+#[cfg(test)]
+mod checks {
+    use super::*;
+
+    fn spec() -> TrainSpec {
+        let kind = TrainKind::Regular { height_m: 0.428, variability: HeightVariability::default() };
+        TrainSpec { kind, period_s: 3.04, waves: 15, realizations: 10, seed: 1 }
+    }
+
+    fn quantity(s: TrainSpec) -> &'static str {
+        match s.checked() {
+            Err(WaveParamError::Param(e)) => e.quantity,
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn a_train_refuses_each_quantity_out_of_range_naming_it() {
+        assert_eq!(spec().checked(), Ok(spec()));
+        assert_eq!(quantity(TrainSpec { period_s: 0.0, ..spec() }), "period_s");
+        assert_eq!(quantity(TrainSpec { waves: 0, ..spec() }), "waves");
+        assert_eq!(quantity(TrainSpec { realizations: 2_000_000, ..spec() }), "realizations");
+        assert_eq!(quantity(spec().with_kind_height(-1.0)), "height_m");
+        let irregular = TrainSpec { kind: TrainKind::Irregular { significant_height_m: 1e4 }, ..spec() };
+        assert_eq!(quantity(irregular), "significant_height_m");
+        // Steeper than 0.142 L0 (L0 = g T²/2π = 14.4 m at 3.04 s: the limit is 2.04 m).
+        let e = match spec().with_kind_height(2.1).checked() {
+            Err(WaveParamError::Param(e)) => e,
+            other => panic!("{other:?}"),
+        };
+        assert!(matches!(e.allowed, crate::Allowed::Rule(ref r) if r.contains("2.04")), "{e}");
+        assert_eq!(
+            TrainSpec { waves: 1000, realizations: 100_000, ..spec() }.checked(),
+            Err(WaveParamError::TooManyWaves { waves: 1000, realizations: 100_000 })
+        );
+    }
+
+    #[test]
+    fn a_height_variability_refuses_its_fraction_and_truncation_naming_them() {
+        let named = |v: HeightVariability| v.checked().unwrap_err().quantity;
+        assert_eq!(
+            named(HeightVariability::Normal { cov: 0.95, truncation_sigmas: 1.0 }),
+            "height_variability_fraction"
+        );
+        assert_eq!(named(HeightVariability::Normal { cov: 0.2, truncation_sigmas: 0.4 }), "height_truncation_sigmas");
+        assert_eq!(named(HeightVariability::Uniform { half_width: -0.1 }), "height_variability_fraction");
+        // c k = 0.6 × 2 ≥ 1: a drawn height could be negative.
+        let e = HeightVariability::Normal { cov: 0.6, truncation_sigmas: 2.0 }.checked().unwrap_err();
+        assert_eq!((e.quantity, e.value), ("height_variability_fraction", 0.6));
+        assert!(HeightVariability::None.checked().is_ok());
+    }
+
+    impl TrainSpec {
+        fn with_kind_height(mut self, h: f64) -> Self {
+            if let TrainKind::Regular { height_m, .. } = &mut self.kind {
+                *height_m = h;
+            }
+            self
+        }
     }
 }

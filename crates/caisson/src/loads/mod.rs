@@ -92,6 +92,25 @@ impl WaveForce {
         WaveForce { fx_n, fy_n, m_nm: fx_n * lever_m + fy_n * (uplift_from_heel_m - 0.5 * width_m) }
     }
 
+    /// The peak of a pulse on a caisson of height `height_m` and base width `width_m`, as
+    /// [`Self::from_levers`] if its parts hold: finite forces, the horizontal force's lever from
+    /// 0 to the caisson height and the uplift's from 0 to the base width (from the heel).
+    pub fn from_levers_on(
+        fx_n: f64,
+        lever_m: f64,
+        fy_n: f64,
+        uplift_from_heel_m: f64,
+        height_m: f64,
+        width_m: f64,
+    ) -> Result<Self, crate::ParamError> {
+        use crate::check::{between, finite};
+        let fx_n = finite("peak_horizontal_n", fx_n)?;
+        let fy_n = finite("peak_uplift_n", fy_n)?;
+        let lever_m = between("horizontal_lever_m", lever_m, 0.0, height_m)?;
+        let uplift_from_heel_m = between("uplift_lever_m", uplift_from_heel_m, 0.0, width_m)?;
+        Ok(Self::from_levers(fx_n, lever_m, fy_n, uplift_from_heel_m, width_m))
+    }
+
     pub fn scaled(self, k: f64) -> Self {
         WaveForce { fx_n: self.fx_n * k, fy_n: self.fy_n * k, m_nm: self.m_nm * k }
     }
@@ -137,4 +156,24 @@ impl<T: LoadHistory + ?Sized> LoadHistory for Box<T> {
 #[inline]
 pub(crate) fn first_after(t_s: f64, times: &[f64]) -> f64 {
     times.iter().copied().filter(|&b| b > t_s).fold(f64::INFINITY, f64::min)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::WaveForce;
+
+    #[test]
+    fn a_pulse_peak_refuses_non_finite_forces_and_levers_off_the_caisson_naming_them() {
+        // A caisson 2 m high with a 1 m base: the levers are at most 2 m and 1 m.
+        let at = |fx: f64, lever: f64, fy: f64, uplift: f64| WaveForce::from_levers_on(fx, lever, fy, uplift, 2.0, 1.0);
+        let named = |r: Result<WaveForce, crate::ParamError>| r.unwrap_err().quantity;
+        assert_eq!(named(at(f64::NAN, 1.0, 0.0, 0.5)), "peak_horizontal_n");
+        assert_eq!(named(at(1e3, 1.0, f64::INFINITY, 0.5)), "peak_uplift_n");
+        assert_eq!(named(at(1e3, 2.5, 0.0, 0.5)), "horizontal_lever_m");
+        assert_eq!(named(at(1e3, 1.0, 0.0, -0.1)), "uplift_lever_m");
+        // In range: M = F_x y_l + F_y (x_l − B/2) = 1000·1.5 + 400·(0.9 − 0.5) = 1660 N·m.
+        let f = at(1e3, 1.5, 400.0, 0.9).unwrap();
+        assert_eq!((f.fx_n, f.fy_n), (1e3, 400.0));
+        assert!((f.m_nm - 1660.0).abs() < 1e-9, "{}", f.m_nm);
+    }
 }

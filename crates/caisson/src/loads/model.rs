@@ -28,8 +28,10 @@ use super::safety::{safety_factors, SafetyFactors, SafetyInput};
 use super::sainflou::{SainflouInput, SainflouPeriod, SainflouResult};
 use super::shapes::{Impulse, LoadShape};
 use super::WaveForce;
+use crate::check::{interval, rule};
 use crate::waves::breaking::{miche_breaker_height_from_wavenumber_m, miche_breaker_height_m, BreakerCriterion};
 use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m, wavenumber};
+use crate::ParamError;
 use rand::Rng;
 use rand_distr::StandardNormal;
 use std::f64::consts::PI;
@@ -66,6 +68,66 @@ pub struct WaveSite {
     pub seabed_slope: f64,
     /// B_M, berm width, m (enables Takahashi's α_I).
     pub berm_width_m: Option<f64>,
+}
+
+/// The smallest water depth and wave height accepted, m: a millimetre, below any laboratory
+/// flume's waves; smaller values (5e-324 m) only drive the formulas to NaN or give safety
+/// factors of 1e100.
+pub const MIN_LENGTH_M: f64 = 1e-3;
+/// The shortest wave period accepted, s (capillary ripples are shorter; no wave that loads a
+/// caisson is).
+pub const MIN_PERIOD_S: f64 = 0.01;
+
+/// Why a wave site, its load options or its trains were refused: one quantity out of its range
+/// ([`ParamError`], named as in its type), or a rule between quantities, with their values (SI).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum WaveParamError {
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// d outside [[`MIN_LENGTH_M`], h_s]: the berm cannot be below the seabed.
+    #[error(
+        "depth_at_wall_m = {depth_at_wall_m}: must be from {MIN_LENGTH_M} m to depth_at_toe_m = {depth_at_toe_m} m"
+    )]
+    WallDepth { depth_at_wall_m: f64, depth_at_toe_m: f64 },
+    /// h' < d: the caisson base above the water depth in front of the wall.
+    #[error("base_depth_m = {base_depth_m}: must be at least depth_at_wall_m = {depth_at_wall_m} m")]
+    BaseAboveWall { base_depth_m: f64, depth_at_wall_m: f64 },
+    /// h' > h_s: the caisson base below the seabed at the toe.
+    #[error("base_depth_m = {base_depth_m}: must be at most depth_at_toe_m = {depth_at_toe_m} m")]
+    BaseBelowToe { base_depth_m: f64, depth_at_toe_m: f64 },
+    /// More than [`super::generator::MAX_TRAIN_WAVES`] waves in all the realizations together.
+    #[error("{waves} waves × {realizations} realizations: at most {} waves in all", super::generator::MAX_TRAIN_WAVES)]
+    TooManyWaves { waves: usize, realizations: usize },
+    /// A forced regime that contradicts the breaking criterion for the train's height.
+    #[error(transparent)]
+    Regime(#[from] RegimeError),
+}
+
+impl WaveSite {
+    /// The site if every quantity is in range (SI): ρ_w from 500 to 2000 kg/m³; h_s from
+    /// [`MIN_LENGTH_M`] to 10 km; d from [`MIN_LENGTH_M`] to h_s; the base depth h' from d to
+    /// h_s (the base sits on or in the mound, not below the seabed); tan θ from 0 to 0.5; a berm
+    /// width from 0 to 10 km. The caisson's own dimensions are its type's ([`crate::structure`]).
+    pub fn checked(self) -> Result<Self, WaveParamError> {
+        interval("rho_w", self.rho_w, 500.0, 2000.0, false)?;
+        let hs = interval("depth_at_toe_m", self.depth_at_toe_m, MIN_LENGTH_M, 1e4, false)?;
+        let d = self.depth_at_wall_m;
+        if !(d.is_finite() && d >= MIN_LENGTH_M && d <= hs) {
+            return Err(WaveParamError::WallDepth { depth_at_wall_m: d, depth_at_toe_m: hs });
+        }
+        let hp = self.base_depth_m;
+        if hp < d {
+            return Err(WaveParamError::BaseAboveWall { base_depth_m: hp, depth_at_wall_m: d });
+        }
+        if hp > hs {
+            return Err(WaveParamError::BaseBelowToe { base_depth_m: hp, depth_at_toe_m: hs });
+        }
+        interval("seabed_slope", self.seabed_slope, 0.0, 0.5, false)?;
+        if let Some(b) = self.berm_width_m {
+            interval("berm_width_m", b, 0.0, 1e4, false)?;
+        }
+        Ok(self)
+    }
 }
 
 /// Model options (defaults as in the seed / docs/model.md).
@@ -110,6 +172,36 @@ impl Default for WaveLoadOptions {
             angle_rad: 0.0,
             lambda: [1.0; 3],
         }
+    }
+}
+
+impl WaveLoadOptions {
+    /// The options with the wave angle β given in degrees: a finite number strictly between −90
+    /// and 90 (from the normal to the breakwater).
+    pub fn with_angle_deg(mut self, angle_deg: f64) -> Result<Self, ParamError> {
+        if !(angle_deg.is_finite() && angle_deg.abs() < 90.0) {
+            return Err(rule(
+                "angle_deg",
+                angle_deg,
+                "must be a finite number strictly between -90 and 90 (degrees from the normal to the breakwater)",
+            ));
+        }
+        self.angle_rad = angle_deg.to_radians();
+        Ok(self)
+    }
+
+    /// The options if every coefficient is in range: α_max in (0, 10], a_imp in [0, 10], both
+    /// α_qs in [0, 2], t_d/t_r in (1, 20], |β| below 90°.
+    pub fn checked(self) -> Result<Self, ParamError> {
+        interval("alpha_max", self.alpha_max, 0.0, 10.0, true)?;
+        interval("a_imp", self.a_imp, 0.0, 10.0, false)?;
+        interval("alpha_qs_nonbreaking", self.alpha_qs_nonbreaking, 0.0, 2.0, false)?;
+        interval("alpha_qs_breaking", self.alpha_qs_breaking, 0.0, 2.0, false)?;
+        interval("duration_ratio", self.duration_ratio, 1.0, 20.0, true)?;
+        if !(self.angle_rad.is_finite() && self.angle_rad.abs() < 0.5 * PI) {
+            return Err(rule("angle_rad", self.angle_rad, "must be a finite number strictly between -π/2 and π/2"));
+        }
+        Ok(self)
     }
 }
 
@@ -554,5 +646,68 @@ fn f_star(goda: &GodaResult, impact: &ImpactResult) -> f64 {
         impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m
     } else {
         0.0
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// The PARI flume of the seed's breaking tests (h_s 1.14 m, d 0.4 m, h' 0.8 m).
+    pub(crate) fn pari_site() -> WaveSite {
+        WaveSite {
+            rho_w: 1000.0,
+            depth_at_toe_m: 1.14,
+            depth_at_wall_m: 0.4,
+            base_depth_m: 0.8,
+            crest_freeboard_m: 0.32,
+            width_m: 0.78,
+            length_m: 1.0,
+            seabed_slope: 0.0,
+            berm_width_m: None,
+        }
+    }
+
+    #[test]
+    fn a_site_refuses_each_quantity_out_of_range_naming_it() {
+        let ok = pari_site();
+        assert_eq!(ok.checked(), Ok(ok));
+        let named = |site: WaveSite| match site.checked() {
+            Err(WaveParamError::Param(e)) => e.quantity,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(named(WaveSite { rho_w: 100.0, ..ok }), "rho_w");
+        assert_eq!(named(WaveSite { depth_at_toe_m: f64::NAN, ..ok }), "depth_at_toe_m");
+        assert_eq!(named(WaveSite { seabed_slope: -0.1, ..ok }), "seabed_slope");
+        assert_eq!(named(WaveSite { berm_width_m: Some(-1.0), ..ok }), "berm_width_m");
+        // The rules between depths carry both values.
+        assert_eq!(
+            WaveSite { depth_at_wall_m: 1.5, ..ok }.checked(),
+            Err(WaveParamError::WallDepth { depth_at_wall_m: 1.5, depth_at_toe_m: 1.14 })
+        );
+        assert_eq!(
+            WaveSite { base_depth_m: 0.3, ..ok }.checked(),
+            Err(WaveParamError::BaseAboveWall { base_depth_m: 0.3, depth_at_wall_m: 0.4 })
+        );
+        assert_eq!(
+            WaveSite { base_depth_m: 1.2, ..ok }.checked(),
+            Err(WaveParamError::BaseBelowToe { base_depth_m: 1.2, depth_at_toe_m: 1.14 })
+        );
+    }
+
+    #[test]
+    fn options_refuse_each_coefficient_out_of_range_naming_it() {
+        let d = WaveLoadOptions::default();
+        assert_eq!(d.checked(), Ok(d));
+        let named = |o: WaveLoadOptions| o.checked().unwrap_err().quantity;
+        assert_eq!(named(WaveLoadOptions { alpha_max: 0.0, ..d }), "alpha_max");
+        assert_eq!(named(WaveLoadOptions { a_imp: 11.0, ..d }), "a_imp");
+        assert_eq!(named(WaveLoadOptions { alpha_qs_nonbreaking: -0.1, ..d }), "alpha_qs_nonbreaking");
+        assert_eq!(named(WaveLoadOptions { alpha_qs_breaking: f64::INFINITY, ..d }), "alpha_qs_breaking");
+        assert_eq!(named(WaveLoadOptions { duration_ratio: 1.0, ..d }), "duration_ratio");
+        assert_eq!(named(WaveLoadOptions { angle_rad: 2.0, ..d }), "angle_rad");
+        let e = d.with_angle_deg(90.0).unwrap_err();
+        assert_eq!((e.quantity, e.value), ("angle_deg", 90.0));
+        assert_eq!(d.with_angle_deg(30.0).unwrap().angle_rad, 30f64.to_radians());
     }
 }

@@ -85,6 +85,9 @@ fn positive_list(key: &str, v: &[f64], unit: &str) -> R<()> {
     Ok(())
 }
 
+/// The conditions of a campaign with their places in the file (for messages).
+type Placed = Vec<(String, Condition)>;
+
 /// Validate `[campaign]`: its conditions (each condition's setup is checked by [`build`]).
 pub(super) fn validate_campaign(file: &ScenarioFile) -> R<CampaignSpec> {
     let c = file.campaign.as_ref().ok_or_else(|| {
@@ -105,78 +108,88 @@ pub(super) fn validate_campaign(file: &ScenarioFile) -> R<CampaignSpec> {
         Some(r) => regime_of("[waves] regime", r)?,
         None => RegimeChoice::Auto,
     };
-    let mut conditions = Vec::new();
-    match (&c.conditions, c.heights_m.is_some() || c.weights_in_water_kn.is_some() || c.regimes.is_some()) {
+    let conditions = match (
+        &c.conditions,
+        c.heights_m.is_some() || c.weights_in_water_kn.is_some() || c.regimes.is_some(),
+    ) {
         (Some(_), true) => return Err(ScenarioError::Conflict {
             message:
                 "`[campaign]` has both a grid (heights_m, weights_in_water_kn, regimes) and a conditions list; keep one"
                     .into(),
         }),
-        (Some(list), false) => {
-            if list.is_empty() {
-                return Err(ScenarioError::range("[campaign] conditions", "[]", "must list at least one condition"));
-            }
-            for (i, t) in list.iter().enumerate() {
-                let key = |k: &str| format!("[campaign] conditions[{i}].{k}");
-                let h = t
-                    .height_m
-                    .ok_or_else(|| ScenarioError::missing(&key("height_m"), "the wave height of this condition, m"))?;
-                let w = t.weight_in_water_kn.ok_or_else(|| {
-                    ScenarioError::missing(
-                        &key("weight_in_water_kn"),
-                        "the caisson weight in water of this condition, kN",
-                    )
-                })?;
-                positive_list(&key("height_m"), &[h], "m")?;
-                positive_list(&key("weight_in_water_kn"), &[w], "kN")?;
-                let regime = match &t.regime {
-                    Some(r) => regime_of(&key("regime"), r)?,
-                    None => default_regime,
-                };
-                conditions.push((
-                    format!("[campaign] conditions[{i}]"),
-                    Condition { height_m: h, weight_in_water_n: w * 1e3, regime },
-                ));
-            }
-        }
-        (None, _) => {
-            let hs = c.heights_m.as_ref().ok_or_else(|| {
-                ScenarioError::missing("[campaign] heights_m", "the wave heights of the grid, m (or a conditions list)")
-            })?;
-            let ws = c.weights_in_water_kn.as_ref().ok_or_else(|| {
-                ScenarioError::missing(
-                    "[campaign] weights_in_water_kn",
-                    "the caisson weights in water of the grid, kN (or a conditions list)",
-                )
-            })?;
-            positive_list("[campaign] heights_m", hs, "m")?;
-            positive_list("[campaign] weights_in_water_kn", ws, "kN")?;
-            let regimes = match &c.regimes {
-                Some(list) if list.is_empty() => {
-                    return Err(ScenarioError::range("[campaign] regimes", "[]", "must list at least one regime"))
-                }
-                Some(list) => list
-                    .iter()
-                    .enumerate()
-                    .map(|(i, r)| regime_of(&format!("[campaign] regimes[{i}]"), r))
-                    .collect::<R<Vec<_>>>()?,
-                None => vec![default_regime],
-            };
-            for (ri, r) in regimes.iter().enumerate() {
-                for (wi, w) in ws.iter().enumerate() {
-                    for (hi, h) in hs.iter().enumerate() {
-                        let key = format!("[campaign] (heights_m[{hi}], weights_in_water_kn[{wi}], regimes[{ri}]) ");
-                        conditions.push((key, Condition { height_m: *h, weight_in_water_n: w * 1e3, regime: *r }));
-                    }
-                }
-            }
-        }
-    }
+        (Some(list), false) => listed(list, default_regime)?,
+        (None, _) => grid(c, default_regime)?,
+    };
     if conditions.len() > 100_000 {
         return Err(ScenarioError::range("[campaign]", conditions.len(), "at most 100000 conditions"));
     }
     let (places, conditions) = conditions.into_iter().map(|(k, c)| (k.trim_end().to_string(), c)).unzip();
     Ok(CampaignSpec { title: c.title.clone(), conditions, places })
+}
+
+/// The conditions of a `[campaign] conditions` list, each with its regime or `default_regime`.
+fn listed(list: &[ConditionTable], default_regime: RegimeChoice) -> R<Placed> {
+    if list.is_empty() {
+        return Err(ScenarioError::range("[campaign] conditions", "[]", "must list at least one condition"));
+    }
+    let mut conditions = Vec::with_capacity(list.len());
+    for (i, t) in list.iter().enumerate() {
+        let key = |k: &str| format!("[campaign] conditions[{i}].{k}");
+        let h = t
+            .height_m
+            .ok_or_else(|| ScenarioError::missing(&key("height_m"), "the wave height of this condition, m"))?;
+        let w = t.weight_in_water_kn.ok_or_else(|| {
+            ScenarioError::missing(&key("weight_in_water_kn"), "the caisson weight in water of this condition, kN")
+        })?;
+        positive_list(&key("height_m"), &[h], "m")?;
+        positive_list(&key("weight_in_water_kn"), &[w], "kN")?;
+        let regime = match &t.regime {
+            Some(r) => regime_of(&key("regime"), r)?,
+            None => default_regime,
+        };
+        conditions.push((
+            format!("[campaign] conditions[{i}]"),
+            Condition { height_m: h, weight_in_water_n: w * 1e3, regime },
+        ));
+    }
+    Ok(conditions)
+}
+
+/// The conditions of the grid `heights_m` × `weights_in_water_kn` × `regimes` (default
+/// `default_regime`), heights fastest.
+fn grid(c: &CampaignTable, default_regime: RegimeChoice) -> R<Placed> {
+    let hs = c.heights_m.as_ref().ok_or_else(|| {
+        ScenarioError::missing("[campaign] heights_m", "the wave heights of the grid, m (or a conditions list)")
+    })?;
+    let ws = c.weights_in_water_kn.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[campaign] weights_in_water_kn",
+            "the caisson weights in water of the grid, kN (or a conditions list)",
+        )
+    })?;
+    positive_list("[campaign] heights_m", hs, "m")?;
+    positive_list("[campaign] weights_in_water_kn", ws, "kN")?;
+    let regimes = match &c.regimes {
+        Some(list) if list.is_empty() => {
+            return Err(ScenarioError::range("[campaign] regimes", "[]", "must list at least one regime"))
+        }
+        Some(list) => list
+            .iter()
+            .enumerate()
+            .map(|(i, r)| regime_of(&format!("[campaign] regimes[{i}]"), r))
+            .collect::<R<Vec<_>>>()?,
+        None => vec![default_regime],
+    };
+    let mut conditions = Vec::new();
+    for (ri, r) in regimes.iter().enumerate() {
+        for (wi, w) in ws.iter().enumerate() {
+            for (hi, h) in hs.iter().enumerate() {
+                let key = format!("[campaign] (heights_m[{hi}], weights_in_water_kn[{wi}], regimes[{ri}]) ");
+                conditions.push((key, Condition { height_m: *h, weight_in_water_n: w * 1e3, regime: *r }));
+            }
+        }
+    }
+    Ok(conditions)
 }
 
 /// The setup of every condition of the scenario's campaign: the scenario's caisson with the

@@ -1,6 +1,13 @@
 //! Checks of keys against each other that no single table can make: each refuses, naming the
 //! keys, what would give a wrong result without a sign or a run that cannot converge.
 //!
+//! The judgement is the library's, beside what it judges: the natural period of a
+//! [`Structure`], the load over the weight ([`over_weight`], with the limit and the warnings of
+//! [`crate::analysis::checks`]), the weight a rise of the water costs
+//! ([`Caisson::weight_lost_to_rise_n`]). What stays here is their words: each message names keys
+//! of several tables (`[solver]` and `[caisson]`, `[load]` and `[caisson]`, `[design]` and
+//! `[caisson]`) and the key to change, which only the scenario knows.
+//!
 //! * **Fixed steps longer than the natural period**: with `stepping = "fixed"`, `dt_s` at most
 //!   T0 = 2π √((m + m_hyd)/K_x). Newmark's average acceleration is stable at any step, but one
 //!   step per period lengthens the response's period 2.5 times and steps far beyond T0 (dt = 500
@@ -13,14 +20,13 @@
 //!   ρ_w g B l ζ (docs/model.md §6.4 step 3), so W' − ρ_w g B l R must stay positive.
 
 use super::ScenarioError;
-use crate::analysis::checks::{nominal_wave_peak, LoadSource, MAX_LOAD_OVER_WEIGHT};
+use crate::analysis::checks::{nominal_wave_peak, over_weight, LoadSource, OverWeight, MAX_LOAD_OVER_WEIGHT};
 use crate::analysis::lifetime::DesignParams;
 use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use crate::dynamics::Stepping;
-use crate::loads::{LoadSpec, WaveForce};
+use crate::loads::LoadSpec;
 use crate::structure::Caisson;
-use crate::G_M_PER_S2;
 
 type R<T> = Result<T, ScenarioError>;
 
@@ -41,17 +47,6 @@ pub(super) fn check_time_step(s: &Structure) -> R<()> {
     Ok(())
 }
 
-/// The first of the peak |horizontal force| and |uplift| of `peak` above
-/// [`MAX_LOAD_OVER_WEIGHT`] × W': (which, force, force / W').
-fn over_weight(caisson: &Caisson, peak: WaveForce) -> Option<(usize, f64, f64)> {
-    let w = caisson.weight_in_water_n;
-    [peak.fx_n.abs(), peak.fy_n.abs()]
-        .into_iter()
-        .enumerate()
-        .find(|&(_, f)| f > MAX_LOAD_OVER_WEIGHT * w)
-        .map(|(i, f)| (i, f, f / w))
-}
-
 /// The rule broken, in words.
 fn rule(caisson: &Caisson, ratio: f64, source: LoadSource) -> String {
     format!(
@@ -63,7 +58,11 @@ fn rule(caisson: &Caisson, ratio: f64, source: LoadSource) -> String {
 
 /// The peaks of a `[load]` against the weight (module docs).
 pub(super) fn check_load(caisson: &Caisson, load: &LoadSpec) -> R<()> {
-    let Some((i, force, ratio)) = over_weight(caisson, load.peak_abs()) else { return Ok(()) };
+    let Some(OverWeight { uplift, force_n: force, ratio }) = over_weight(caisson.weight_in_water_n, load.peak_abs())
+    else {
+        return Ok(());
+    };
+    let i = usize::from(uplift);
     let (key, value) = match load {
         LoadSpec::Series(_) => (
             "[load] file".to_string(),
@@ -77,7 +76,10 @@ pub(super) fn check_load(caisson: &Caisson, load: &LoadSpec) -> R<()> {
 /// The largest wave of `waves` against the weight (module docs).
 pub(super) fn check_waves(caisson: &Caisson, waves: &WaveSetup) -> R<()> {
     let Some(peak) = nominal_wave_peak(waves) else { return Ok(()) };
-    let Some((i, force, ratio)) = over_weight(caisson, peak) else { return Ok(()) };
+    let Some(OverWeight { uplift, force_n: force, ratio }) = over_weight(caisson.weight_in_water_n, peak) else {
+        return Ok(());
+    };
+    let i = usize::from(uplift);
     Err(ScenarioError::range(
         "[caisson] weight_in_water_kn",
         format!("{:e}", caisson.weight_in_water_n / 1e3),
@@ -95,7 +97,7 @@ pub(super) fn check_waves(caisson: &Caisson, waves: &WaveSetup) -> R<()> {
 pub(super) fn check_floating(caisson: &Caisson, rho_w: f64, design: &DesignParams) -> R<()> {
     let r = design.life.tidal_range_m;
     let rise = design.life.climate.sea_level.max_rise_m(design.life.life_years);
-    let lost = rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * (r + rise);
+    let lost = caisson.weight_lost_to_rise_n(rho_w, r + rise);
     let w = caisson.weight_in_water_n;
     if rise > 0.0 && w - lost <= 0.0 {
         return Err(ScenarioError::range(
@@ -124,9 +126,44 @@ pub(super) fn check_floating(caisson: &Caisson, rho_w: f64, design: &DesignParam
     Ok(())
 }
 
+/// A design caisson placed in the scenario without [`check_floating`] (its `design` set as a
+/// typed field) keeps a positive weight in water at the highest water: refused naming the
+/// `[design]` key that lifts it (module docs).
+pub(super) fn check_high_water(caisson: &Caisson, rho_w: f64, design: &DesignParams) -> R<()> {
+    let c = caisson;
+    let per_m = c.weight_lost_to_rise_n(rho_w, 1.0);
+    let r = design.life.tidal_range_m;
+    let rise = design.life.climate.sea_level.max_rise_m(design.life.life_years);
+    let left = |raise_m: f64| c.weight_in_water_n - c.weight_lost_to_rise_n(rho_w, raise_m);
+    if rise > 0.0 && left(r + rise) <= 0.0 {
+        return Err(ScenarioError::range(
+            "[design] sea_level_rise_m",
+            rise,
+            format!(
+                "at high tide with the sea-level rise the caisson's weight in water W' − ρ_w g B l (R + rise) = {:.1} kN is not positive: it would float; the tidal range and the rise together must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
+                left(r + rise) / 1e3,
+                c.weight_in_water_n / per_m
+            ),
+        ));
+    }
+    if left(r) <= 0.0 {
+        return Err(ScenarioError::range(
+            "[design] tidal_range_m",
+            r,
+            format!(
+                "at high tide the caisson's weight in water W' − ρ_w g B l R = {:.1} kN is not positive: it would float; the tidal range must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
+                left(r) / 1e3,
+                c.weight_in_water_n / per_m
+            ),
+        ));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::loads::WaveForce;
     use crate::scenario::Scenario;
     use std::path::Path;
 
@@ -144,5 +181,28 @@ mod tests {
         let e = check_waves(&light, waves).unwrap_err();
         assert_eq!(e.key(), Some("[caisson] weight_in_water_kn"), "{e}");
         assert!(e.to_string().contains("largest wave") && e.to_string().contains("at most 1e3 W'"), "{e}");
+    }
+
+    /// A design set on the scenario as a typed field skips the file's floating check; its storm
+    /// case refuses a tide that floats the caisson, naming the `[design]` key, and a load 1001 W'
+    /// high is over the weight while 1000 W' is not.
+    #[test]
+    fn a_design_whose_tide_floats_the_caisson_is_refused_and_loads_are_held_to_the_weight() {
+        let text = include_str!("../../../../examples/design_breakwater.toml");
+        let mut sc = Scenario::from_toml(text, Path::new("t.toml"), Path::new(".")).unwrap();
+        let (c, rho_w) = (*sc.caisson(), sc.water_density_kg_per_m3());
+        let mut d = sc.design.clone().unwrap();
+        assert!(check_high_water(&c, rho_w, &d).is_ok());
+        // The tidal range at which W' is gone: W' / (ρ_w g B l).
+        d.life.tidal_range_m = 1.01 * c.weight_in_water_n / c.weight_lost_to_rise_n(rho_w, 1.0);
+        sc.design = Some(d.clone());
+        let e = sc.storm_case(false).map(|_| ()).unwrap_err();
+        assert_eq!(e.key(), Some("[design] tidal_range_m"), "{e}");
+        assert_eq!(check_floating(&c, rho_w, &d).unwrap_err().key(), Some("[caisson] weight_in_water_kn"));
+        let w = c.weight_in_water_n;
+        let load = |fx_n: f64, fy_n: f64| WaveForce { fx_n, fy_n, m_nm: 0.0 };
+        assert_eq!(over_weight(w, load(1000.0 * w, -1000.0 * w)), None);
+        let up = over_weight(w, load(10.0, -1001.0 * w)).unwrap();
+        assert!(up.uplift && up.force_n == 1001.0 * w && (up.ratio - 1001.0).abs() < 1e-9, "{up:?}");
     }
 }

@@ -136,17 +136,47 @@ const LOAD_KEYS: KeyMap = &[
     ("peak_horizontal_n", "peak_horizontal_kn", 1e3, "kN"),
     ("peak_uplift_n", "peak_uplift_kn", 1e3, "kN"),
     ("peak_moment_nm", "peak_horizontal_kn", 1e3, "kN"),
+    ("horizontal_lever_m", "horizontal_lever_m", 1.0, "m above the base, at most the caisson height"),
+    ("uplift_lever_m", "uplift_lever_m", 1.0, "m from the heel, at most the base width"),
 ];
 
 /// A parameter error reported under the key of `table` (e.g. `[caisson]`), in the key's unit.
 pub(crate) fn keyed(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
+    // Very large or small numbers in exponent form (1e160, not 160 digits).
+    let short = |v: f64| {
+        if v.is_finite() && v != 0.0 && !(1e-4..1e15).contains(&v.abs()) {
+            format!("{v:e}")
+        } else {
+            format!("{v}")
+        }
+    };
+    keyed_shown(table, map, e, short)
+}
+
+/// As [`keyed`], the value in the form a key's value is shown when read ([`fmt_value`]).
+pub(crate) fn keyed_as_read(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
+    keyed_shown(table, map, e, fmt_value)
+}
+
+fn keyed_shown(table: &str, map: KeyMap, e: ParamError, show: impl Fn(f64) -> String) -> ScenarioError {
     let (key, divisor, unit) =
         map.iter().find(|(q, ..)| *q == e.quantity).map(|(_, k, d, u)| (*k, *d, *u)).unwrap_or((e.quantity, 1.0, ""));
-    let v = e.value / divisor;
-    // Very large or small numbers in exponent form (1e160, not 160 digits).
-    let value =
-        if v.is_finite() && v != 0.0 && !(1e-4..1e15).contains(&v.abs()) { format!("{v:e}") } else { format!("{v}") };
-    ScenarioError::range(&format!("{table} {key}"), value, e.allowed.describe(1.0 / divisor, unit))
+    ScenarioError::range(&format!("{table} {key}"), show(e.value / divisor), e.allowed.describe(1.0 / divisor, unit))
+}
+
+/// The keys of quantities over several tables: (quantity, `[table] key`, the key's unit), for
+/// quantities in SI that the file gives in the same unit.
+type NamedKeys = &'static [(&'static str, &'static str, &'static str)];
+
+/// A parameter error under its key of `keys`: a range with the value as a key's is read
+/// ([`fmt_value`]), a rule between quantities with the value as Rust writes it.
+pub(crate) fn keyed_in(keys: NamedKeys, e: ParamError) -> ScenarioError {
+    let (key, unit) = keys.iter().find(|(q, ..)| *q == e.quantity).map_or((e.quantity, ""), |(_, k, u)| (*k, *u));
+    let value = match e.allowed {
+        crate::Allowed::Rule(_) => e.value.to_string(),
+        _ => fmt_value(e.value),
+    };
+    ScenarioError::range(key, value, e.allowed.describe(1.0, unit))
 }
 
 /// The whole scenario file as written (units as in the keys).
@@ -626,7 +656,7 @@ impl Scenario {
         let foundation =
             foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
         if let Some(w) = self.waves.as_mut() {
-            waves::place_caisson(&mut w.model.site, &caisson);
+            crate::analysis::site::place_caisson(&mut w.model.site, &caisson);
         }
         self.caisson_spec = caisson_spec;
         self.foundation_spec = foundation_spec;
@@ -700,32 +730,7 @@ impl Scenario {
         let w = self.waves_for("a design or fragility run")?;
         if let Some(d) = &self.design {
             // At high tide the caisson is more submerged: its weight in water must stay positive.
-            let c = &self.structure.caisson;
-            let per_m = self.water_density_kg_per_m3 * crate::G_M_PER_S2 * c.width_m * c.length_m;
-            let r = d.life.tidal_range_m;
-            let rise = d.life.climate.sea_level.max_rise_m(d.life.life_years);
-            if rise > 0.0 && c.weight_in_water_n - per_m * (r + rise) <= 0.0 {
-                return Err(ScenarioError::range(
-                    "[design] sea_level_rise_m",
-                    rise,
-                    format!(
-                        "at high tide with the sea-level rise the caisson's weight in water W' − ρ_w g B l (R + rise) = {:.1} kN is not positive: it would float; the tidal range and the rise together must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
-                        (c.weight_in_water_n - per_m * (r + rise)) / 1e3,
-                        c.weight_in_water_n / per_m
-                    ),
-                ));
-            }
-            if c.weight_in_water_n - per_m * r <= 0.0 {
-                return Err(ScenarioError::range(
-                    "[design] tidal_range_m",
-                    r,
-                    format!(
-                        "at high tide the caisson's weight in water W' − ρ_w g B l R = {:.1} kN is not positive: it would float; the tidal range must stay below W'/(ρ_w g B l) = {:.3} m (or is `[caisson] weight_in_water_kn` too small?)",
-                        (c.weight_in_water_n - per_m * r) / 1e3,
-                        c.weight_in_water_n / per_m
-                    ),
-                ));
-            }
+            coherence::check_high_water(&self.structure.caisson, self.water_density_kg_per_m3, d)?;
         }
         Ok(StormCase {
             structure: &self.structure,

@@ -1,5 +1,6 @@
-//! `[size]`: the search of `caisson size` (docs/size.md), validated into [`SizeParams`]. The rest
-//! of the file is a design scenario (`[design]` gives the life model and the seed; `[size] lives`
+//! `[size]`: the search of `caisson size` (docs/size.md), read into [`SizeParams`], whose
+//! [`SizeParams::checked`] holds the rules of the values (the heel pressure, in kPa, is refused
+//! in the file's unit before it is converted). The rest of the file is a design scenario (`[design]` gives the life model and the seed; `[size] lives`
 //! the lives per candidate).
 
 use super::waves::number;
@@ -8,7 +9,7 @@ use crate::analysis::conventional::{
     ConventionalCriteria, DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA, DEFAULT_OVERTURNING_SAFETY_FACTOR,
     DEFAULT_SLIDING_SAFETY_FACTOR,
 };
-use crate::analysis::sizing::{Criteria, ExceedanceCriterion, SizeParams};
+use crate::analysis::sizing::{Criteria, ExceedanceCriterion, SizeParamError, SizeParams};
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
@@ -49,7 +50,35 @@ pub const DEFAULT_TOLERANCE_M: f64 = 0.25;
 /// Default grid of the design curve.
 pub const DEFAULT_CURVE_POINTS: usize = 8;
 
-/// Validate `[size]` (`design_lives`: `[design] lives`, the default lives per candidate).
+/// The keys of the quantities of [`SizeParams`] (named as in their types) and their units.
+const SIZE_KEYS: super::NamedKeys = &[
+    ("range_lo_m", "[size] range_m[0]", "m"),
+    ("range_hi_m", "[size] range_m[1]", "m"),
+    ("exceedance_sliding_m", "[size] exceedance_sliding_m", "m"),
+    ("exceedance_probability", "[size] exceedance_probability", "probability, 0 to 1"),
+    ("expected_sliding_m", "[size] expected_sliding_m", "m"),
+    ("failure_probability", "[size] failure_probability", "probability, 0 to 1"),
+    ("lives", "[size] lives", ""),
+    ("curve_points", "[size] curve_points", ""),
+    ("tolerance_m", "[size] tolerance_m", "m, above a millionth of the range"),
+    ("sliding_safety_factor", "[size] sliding_safety_factor", "a safety factor from 1 to 10"),
+    ("overturning_safety_factor", "[size] overturning_safety_factor", "a safety factor from 1 to 10"),
+];
+
+/// A refused [`SizeParams`] under its `[size]` key, the value as read.
+fn keyed_size(e: SizeParamError) -> ScenarioError {
+    match e {
+        SizeParamError::Param(e) => super::keyed_in(SIZE_KEYS, e),
+        SizeParamError::EmptyRange { lo_m, hi_m } => ScenarioError::range(
+            "[size] range_m",
+            format!("[{lo_m}, {hi_m}]"),
+            "the smallest width must be below the largest",
+        ),
+    }
+}
+
+/// Read `[size]` into [`SizeParams`] (`design_lives`: `[design] lives`, the default lives per
+/// candidate), which checks the values ([`SizeParams::checked`]).
 pub(super) fn validate_size(file: &ScenarioFile, design_lives: usize) -> R<SizeParams> {
     let t = file.size.as_ref().ok_or_else(|| ScenarioError::missing("[size]", "add a [size] table"))?;
     match t.variable.as_deref() {
@@ -61,33 +90,46 @@ pub(super) fn validate_size(file: &ScenarioFile, design_lives: usize) -> R<SizeP
     let range = t.range_m.as_deref().ok_or_else(|| {
         ScenarioError::missing("[size] range_m", "the smallest and largest width searched, m, e.g. [12.0, 30.0]")
     })?;
-    let (lo, hi) = match range {
-        [lo, hi] => (
-            number("[size] range_m[0]", *lo, 0.0, 1000.0, true, "m")?,
-            number("[size] range_m[1]", *hi, 0.0, 1000.0, true, "m")?,
-        ),
-        _ => {
-            return Err(ScenarioError::range(
-                "[size] range_m",
-                format!("{range:?}"),
-                "must be two widths [smallest, largest], m",
-            ))
-        }
-    };
-    if lo >= hi {
+    let &[lo, hi] = range else {
         return Err(ScenarioError::range(
             "[size] range_m",
-            format!("[{lo}, {hi}]"),
-            "the smallest width must be below the largest",
+            format!("{range:?}"),
+            "must be two widths [smallest, largest], m",
         ));
-    }
-    let probability = |key: &str, v: f64| number(&format!("[size] {key}"), v, 0.0, 1.0, false, "probability, 0 to 1");
+    };
+    let whole = |key: &str, v: Option<i64>, default: usize, lo: i64, hi: i64| match v {
+        None => Ok(default),
+        Some(n) if (lo..=hi).contains(&n) => Ok(n as usize),
+        Some(n) => {
+            Err(ScenarioError::range(&format!("[size] {key}"), n, format!("must be a whole number from {lo} to {hi}")))
+        }
+    };
+    let lives = whole("lives", t.lives, design_lives, 1, 1_000_000)?;
+    let curve_points = whole("curve_points", t.curve_points, DEFAULT_CURVE_POINTS, 2, 100)?;
+    let params = SizeParams {
+        range_m: (lo, hi),
+        criteria: criteria(t)?,
+        lives,
+        tolerance_m: t.tolerance_m.unwrap_or(DEFAULT_TOLERANCE_M),
+        curve_points,
+        conventional: ConventionalCriteria {
+            sliding_safety_factor: t.sliding_safety_factor.unwrap_or(DEFAULT_SLIDING_SAFETY_FACTOR),
+            overturning_safety_factor: t.overturning_safety_factor.unwrap_or(DEFAULT_OVERTURNING_SAFETY_FACTOR),
+            allowable_heel_pressure_pa: 1e3
+                * t.allowable_heel_pressure_kpa.map_or(Ok(DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA / 1e3), |v| {
+                    number("[size] allowable_heel_pressure_kpa", v, 10.0, 1e4, true, "kPa, from 10 to 10000")
+                })?,
+            heel_pressure_governs: t.heel_pressure_governs.unwrap_or(false),
+        },
+    };
+    params.checked().map_err(keyed_size)
+}
+
+/// The criteria of `[size]`: at least one; the exceedance's sliding and probability together.
+fn criteria(t: &SizeTable) -> R<Criteria> {
     let exceedance = match (t.exceedance_sliding_m, t.exceedance_probability) {
         (None, None) => None,
-        (Some(s), Some(p)) => Some(ExceedanceCriterion {
-            sliding_m: number("[size] exceedance_sliding_m", s, 0.0, 1000.0, true, "m")?,
-            probability: probability("exceedance_probability", p)?,
-        }),
+        (Some(sliding_m), Some(probability)) => Some(ExceedanceCriterion { sliding_m, probability }),
         (Some(_), None) => {
             return Err(ScenarioError::missing(
                 "[size] exceedance_probability",
@@ -98,51 +140,13 @@ pub(super) fn validate_size(file: &ScenarioFile, design_lives: usize) -> R<SizeP
             return Err(ScenarioError::missing("[size] exceedance_sliding_m", "the sliding S_lim of P(|S| > S_lim), m"))
         }
     };
-    let criteria = Criteria {
-        expected_sliding_m: t
-            .expected_sliding_m
-            .map(|v| number("[size] expected_sliding_m", v, 0.0, 1000.0, true, "m"))
-            .transpose()?,
-        exceedance,
-        failure_probability: t.failure_probability.map(|v| probability("failure_probability", v)).transpose()?,
-    };
+    let criteria =
+        Criteria { expected_sliding_m: t.expected_sliding_m, exceedance, failure_probability: t.failure_probability };
     if !criteria.any() {
         return Err(ScenarioError::missing(
             "[size] expected_sliding_m",
             "a criterion: expected_sliding_m, and/or exceedance_sliding_m with exceedance_probability, and/or failure_probability",
         ));
     }
-    let lives = match t.lives {
-        None => design_lives,
-        Some(n) if (1..=1_000_000).contains(&n) => n as usize,
-        Some(n) => return Err(ScenarioError::range("[size] lives", n, "must be a whole number from 1 to 1000000")),
-    };
-    let curve_points = match t.curve_points {
-        None => DEFAULT_CURVE_POINTS,
-        Some(n) if (2..=100).contains(&n) => n as usize,
-        Some(n) => return Err(ScenarioError::range("[size] curve_points", n, "must be a whole number from 2 to 100")),
-    };
-    let tolerance_m = match t.tolerance_m {
-        None => DEFAULT_TOLERANCE_M,
-        Some(v) => {
-            number("[size] tolerance_m", v, (hi - lo) * 1e-6, hi - lo, true, "m, above a millionth of the range")?
-        }
-    };
-    let factor = |key: &str, v: Option<f64>, default: f64| {
-        v.map_or(Ok(default), |v| number(&format!("[size] {key}"), v, 1.0, 10.0, false, "a safety factor from 1 to 10"))
-    };
-    let conventional = ConventionalCriteria {
-        sliding_safety_factor: factor("sliding_safety_factor", t.sliding_safety_factor, DEFAULT_SLIDING_SAFETY_FACTOR)?,
-        overturning_safety_factor: factor(
-            "overturning_safety_factor",
-            t.overturning_safety_factor,
-            DEFAULT_OVERTURNING_SAFETY_FACTOR,
-        )?,
-        allowable_heel_pressure_pa: 1e3
-            * t.allowable_heel_pressure_kpa.map_or(Ok(DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA / 1e3), |v| {
-                number("[size] allowable_heel_pressure_kpa", v, 10.0, 1e4, true, "kPa, from 10 to 10000")
-            })?,
-        heel_pressure_governs: t.heel_pressure_governs.unwrap_or(false),
-    };
-    Ok(SizeParams { range_m: (lo, hi), criteria, lives, tolerance_m, curve_points, conventional })
+    Ok(criteria)
 }

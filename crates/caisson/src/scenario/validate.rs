@@ -1,11 +1,13 @@
 //! Validation of a parsed [`ScenarioFile`] into a typed [`Scenario`]: the raw tables are read
 //! into the parameter types of the modules that own them (converted to SI), which check their
 //! own ranges; this module checks what only the file knows (missing keys, keys that do not go
-//! together) and names the key of every error.
+//! together, names of choices, whole numbers) and names the key of every error. A value given in
+//! kN or kPa is refused when not positive in the file's unit, before it is converted to SI (the
+//! types check their own, wider ranges after).
 
 use super::{
-    campaign, coherence, design, fragility, keyed, size, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
-    FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
+    campaign, coherence, design, fragility, keyed, keyed_as_read, size, waves, Scenario, ScenarioError, ScenarioFile,
+    CAISSON_KEYS, FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
 use crate::dynamics::{AdaptiveParams, SolverParams};
@@ -67,27 +69,15 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
     let foundation =
         foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
     let wave_setup = match f.waves {
-        Some(_) => Some(waves::validate_waves(f, &caisson)?),
+        Some(_) => Some(waves::validate_waves(f, &caisson, rho_w)?),
         None => None,
     };
     if let Some(w) = &wave_setup {
         coherence::check_waves(&caisson, w)?;
     }
-    let (load, default_duration) = match &f.load {
-        Some(_) => {
-            let (l, d) = validate_load(f, &caisson, base_dir)?;
-            coherence::check_load(&caisson, &l)?;
-            (Some(l), d)
-        }
-        // A wave-train scenario: its waves of its period (1 s without waves).
-        None => (None, wave_setup.as_ref().map_or(1.0, |w| w.train.waves as f64 * w.train.period_s)),
-    };
-    let duration_s = match f.load.as_ref().and_then(|l| l.duration_s) {
-        Some(v) => positive("[load] duration_s", v, "s")?,
-        None => default_duration,
-    };
+    let (load, duration_s) = load_and_duration(f, &caisson, wave_setup.as_ref(), base_dir)?;
     let solver = validate_solver(f, duration_s)?;
-    let mut sc = Scenario {
+    let sc = Scenario {
         profile,
         water_density_kg_per_m3: rho_w,
         caisson_spec,
@@ -103,6 +93,35 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         size: None,
     };
     coherence::check_time_step(&sc.structure)?;
+    with_studies(f, sc)
+}
+
+/// The `[load]` of the file (checked against the caisson) and the simulated time of a run:
+/// `[load] duration_s`, or the load's own (a wave-train scenario: its waves of its period; 1 s
+/// without waves).
+fn load_and_duration(
+    f: &ScenarioFile,
+    caisson: &Caisson,
+    waves: Option<&crate::analysis::site::WaveSetup>,
+    base_dir: &Path,
+) -> R<(Option<LoadSpec>, f64)> {
+    let (load, default_duration) = match &f.load {
+        Some(_) => {
+            let (l, d) = validate_load(f, caisson, base_dir)?;
+            coherence::check_load(caisson, &l)?;
+            (Some(l), d)
+        }
+        None => (None, waves.map_or(1.0, |w| w.train.waves as f64 * w.train.period_s)),
+    };
+    let duration_s = match f.load.as_ref().and_then(|l| l.duration_s) {
+        Some(v) => positive("[load] duration_s", v, "s")?,
+        None => default_duration,
+    };
+    Ok((load, duration_s))
+}
+
+/// The scenario with the studies of the file: `[campaign]`, `[design]`, `[fragility]`, `[size]`.
+fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
     if f.campaign.is_some() {
         if sc.caisson_spec.construction().is_some() {
             return Err(ScenarioError::Conflict {
@@ -115,7 +134,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
     }
     if f.design.is_some() {
         let d = design::validate_design(f)?;
-        coherence::check_floating(sc.caisson(), rho_w, &d)?;
+        coherence::check_floating(sc.caisson(), sc.water_density_kg_per_m3, &d)?;
         sc.design = Some(d);
     }
     if f.fragility.is_some() {
@@ -212,6 +231,65 @@ fn construction(c: &super::CaissonTable) -> R<Option<Construction>> {
     let Some(first) = keys.iter().find(|(_, given)| *given).map(|(k, _)| *k) else {
         return Ok(None);
     };
+    not_with_construction(c, first)?;
+    let required = |key: &str, v: Option<f64>, hint: &str| v.ok_or_else(|| ScenarioError::missing(key, hint));
+    let wall = required(
+        "[caisson] wall_thickness_m",
+        c.wall_thickness_m,
+        "the thickness of the outer walls, m, for a caisson given by its construction (or give `weight_in_water_kn` instead)",
+    )?;
+    let slab = required(
+        "[caisson] slab_thickness_m",
+        c.slab_thickness_m,
+        "the thickness of the base slab, m, for a caisson given by its construction (or give `weight_in_water_kn` instead)",
+    )?;
+    let (across, along, partition_thickness_m) = cells(c)?;
+    let d = Construction::new(wall, slab);
+    Ok(Some(Construction {
+        partition_thickness_m,
+        cells_across: across,
+        cells_along: along,
+        unit_length_m: c.unit_length_m,
+        cap_height_m: c.cap_height_m.unwrap_or(d.cap_height_m),
+        concrete_density_kg_per_m3: c.concrete_density_kg_per_m3.unwrap_or(d.concrete_density_kg_per_m3),
+        cap_density_kg_per_m3: c.cap_density_kg_per_m3.unwrap_or(d.cap_density_kg_per_m3),
+        fill_density_kg_per_m3: c.fill_density_kg_per_m3.unwrap_or(d.fill_density_kg_per_m3),
+        fill_density_above_water_kg_per_m3: c
+            .fill_density_above_water_kg_per_m3
+            .unwrap_or(d.fill_density_above_water_kg_per_m3),
+        ..d
+    }))
+}
+
+/// The cells of a construction (across, along; 1 by default) and the thickness of their
+/// partitions, m (given exactly when there is more than one cell).
+fn cells(c: &super::CaissonTable) -> R<(usize, usize, f64)> {
+    let count = |key: &str, v: Option<i64>| match v {
+        Some(n) => whole(&format!("[caisson] {key}"), n, 1, 100),
+        None => Ok(1),
+    };
+    let (across, along) = (count("cells_across", c.cells_across)?, count("cells_along", c.cells_along)?);
+    let partition_thickness_m = match (c.partition_thickness_m, across > 1 || along > 1) {
+        (Some(t), true) => t,
+        (None, true) => {
+            return Err(ScenarioError::missing(
+                "[caisson] partition_thickness_m",
+                format!("the thickness of the partition walls between the {across} × {along} cells, m"),
+            ))
+        }
+        (Some(_), false) => {
+            return Err(ScenarioError::Conflict {
+                message: "`[caisson] partition_thickness_m` is given but the caisson has one cell (`cells_across` = `cells_along` = 1): remove it, or give the number of cells".into(),
+            })
+        }
+        (None, false) => 0.0,
+    };
+    Ok((across, along, partition_thickness_m))
+}
+
+/// Refuse the keys of the weight route, and the keys the construction computes, beside a
+/// construction key (`first`, the first given).
+fn not_with_construction(c: &super::CaissonTable, first: &str) -> R<()> {
     for (key, given) in [("weight_in_water_kn", c.weight_in_water_kn.is_some()), ("mass_kg", c.mass_kg.is_some())] {
         if given {
             return Err(ScenarioError::Conflict {
@@ -230,52 +308,7 @@ fn construction(c: &super::CaissonTable) -> R<Option<Construction>> {
             });
         }
     }
-    let required = |key: &str, v: Option<f64>, hint: &str| v.ok_or_else(|| ScenarioError::missing(key, hint));
-    let wall = required(
-        "[caisson] wall_thickness_m",
-        c.wall_thickness_m,
-        "the thickness of the outer walls, m, for a caisson given by its construction (or give `weight_in_water_kn` instead)",
-    )?;
-    let slab = required(
-        "[caisson] slab_thickness_m",
-        c.slab_thickness_m,
-        "the thickness of the base slab, m, for a caisson given by its construction (or give `weight_in_water_kn` instead)",
-    )?;
-    let cells = |key: &str, v: Option<i64>| match v {
-        Some(n) => whole(&format!("[caisson] {key}"), n, 1, 100),
-        None => Ok(1),
-    };
-    let (across, along) = (cells("cells_across", c.cells_across)?, cells("cells_along", c.cells_along)?);
-    let partition_thickness_m = match (c.partition_thickness_m, across > 1 || along > 1) {
-        (Some(t), true) => t,
-        (None, true) => {
-            return Err(ScenarioError::missing(
-                "[caisson] partition_thickness_m",
-                format!("the thickness of the partition walls between the {across} × {along} cells, m"),
-            ))
-        }
-        (Some(_), false) => {
-            return Err(ScenarioError::Conflict {
-                message: "`[caisson] partition_thickness_m` is given but the caisson has one cell (`cells_across` = `cells_along` = 1): remove it, or give the number of cells".into(),
-            })
-        }
-        (None, false) => 0.0,
-    };
-    let d = Construction::new(wall, slab);
-    Ok(Some(Construction {
-        partition_thickness_m,
-        cells_across: across,
-        cells_along: along,
-        unit_length_m: c.unit_length_m,
-        cap_height_m: c.cap_height_m.unwrap_or(d.cap_height_m),
-        concrete_density_kg_per_m3: c.concrete_density_kg_per_m3.unwrap_or(d.concrete_density_kg_per_m3),
-        cap_density_kg_per_m3: c.cap_density_kg_per_m3.unwrap_or(d.cap_density_kg_per_m3),
-        fill_density_kg_per_m3: c.fill_density_kg_per_m3.unwrap_or(d.fill_density_kg_per_m3),
-        fill_density_above_water_kg_per_m3: c
-            .fill_density_above_water_kg_per_m3
-            .unwrap_or(d.fill_density_above_water_kg_per_m3),
-        ..d
-    }))
+    Ok(())
 }
 
 fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
@@ -290,33 +323,7 @@ fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
             Some(v) => positive(&format!("[foundation] {key}"), v, unit).map(|v| Some(v * 1e3)),
         }
     };
-    let soil = match t.e100_kpa {
-        Some(e) => Some(Soil {
-            e100_pa: positive("[foundation] e100_kpa", e, "kPa")? * 1e3,
-            poisson: t.poisson.unwrap_or(0.33),
-            density_kg_per_m3: t.density_kg_per_m3.unwrap_or(2300.0),
-            reference_stress_pa: match t.reference_stress_kpa {
-                Some(v) => positive("[foundation] reference_stress_kpa", v, "kPa")? * 1e3,
-                None => 1e5,
-            },
-        }),
-        None => {
-            for (key, v) in [
-                ("poisson", t.poisson),
-                ("density_kg_per_m3", t.density_kg_per_m3),
-                ("reference_stress_kpa", t.reference_stress_kpa),
-            ] {
-                if v.is_some() {
-                    return Err(ScenarioError::Conflict {
-                        message: format!(
-                            "`[foundation] {key}` is part of the soil route and needs `[foundation] e100_kpa`"
-                        ),
-                    });
-                }
-            }
-            None
-        }
-    };
+    let soil = soil(t)?;
     let spec = FoundationSpec {
         springs: match t.springs {
             Some(v) => whole("[foundation] springs", v, 2, 1000)?,
@@ -356,6 +363,43 @@ fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
             AddedMassSpec::Off
         },
     };
+    stiffness_or_soil(&spec)?;
+    Ok(spec)
+}
+
+/// The soil route of `[foundation]` (`e100_kpa` and its companions), if given.
+fn soil(t: &super::FoundationTable) -> R<Option<Soil>> {
+    Ok(match t.e100_kpa {
+        Some(e) => Some(Soil {
+            e100_pa: positive("[foundation] e100_kpa", e, "kPa")? * 1e3,
+            poisson: t.poisson.unwrap_or(0.33),
+            density_kg_per_m3: t.density_kg_per_m3.unwrap_or(2300.0),
+            reference_stress_pa: match t.reference_stress_kpa {
+                Some(v) => positive("[foundation] reference_stress_kpa", v, "kPa")? * 1e3,
+                None => 1e5,
+            },
+        }),
+        None => {
+            for (key, v) in [
+                ("poisson", t.poisson),
+                ("density_kg_per_m3", t.density_kg_per_m3),
+                ("reference_stress_kpa", t.reference_stress_kpa),
+            ] {
+                if v.is_some() {
+                    return Err(ScenarioError::Conflict {
+                        message: format!(
+                            "`[foundation] {key}` is part of the soil route and needs `[foundation] e100_kpa`"
+                        ),
+                    });
+                }
+            }
+            None
+        }
+    })
+}
+
+/// Without the soil, each of the stiffnesses and the damping must be given.
+fn stiffness_or_soil(spec: &FoundationSpec) -> R<()> {
     if spec.soil.is_none() {
         for (key, given) in [
             ("kx_kn_per_m", spec.kx_n_per_m),
@@ -370,18 +414,14 @@ fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
             }
         }
     }
-    Ok(spec)
+    Ok(())
 }
 
-fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec, f64)> {
-    let t = f.load.as_ref().expect("checked by caller");
-    let kind_name = t
-        .kind
-        .as_deref()
-        .ok_or_else(|| ScenarioError::missing("[load] kind", "one of \"triangle\", \"static\", \"series\""))?;
-    let kind = choice("[load] kind", kind_name, &[("triangle", 0), ("static", 1), ("series", 2)])?;
-    let relevant: &[&str] = match kind {
-        0 => &[
+/// The keys of each `[load] kind` (any other key given is refused).
+const LOAD_KINDS: [(&str, &[&str]); 3] = [
+    (
+        "triangle",
+        &[
             "peak_horizontal_kn",
             "rise_time_s",
             "peak_uplift_kn",
@@ -389,9 +429,51 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
             "uplift_lever_m",
             "start_time_s",
         ],
-        1 => &["peak_horizontal_kn", "ramp_time_s", "peak_uplift_kn", "horizontal_lever_m", "uplift_lever_m"],
-        _ => &["file"],
-    };
+    ),
+    ("static", &["peak_horizontal_kn", "ramp_time_s", "peak_uplift_kn", "horizontal_lever_m", "uplift_lever_m"]),
+    ("series", &["file"]),
+];
+
+/// `[load]`: its kind, the keys that go with it, and the load ([`TrianglePulse::new`],
+/// [`StaticRamp::new`], a [`ForceSeries`]) with its own duration, s.
+fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec, f64)> {
+    let t = f.load.as_ref().expect("checked by caller");
+    let kind_name = t
+        .kind
+        .as_deref()
+        .ok_or_else(|| ScenarioError::missing("[load] kind", "one of \"triangle\", \"static\", \"series\""))?;
+    let kinds: Vec<(&str, usize)> = LOAD_KINDS.iter().enumerate().map(|(i, (n, _))| (*n, i)).collect();
+    let kind = choice("[load] kind", kind_name, &kinds)?;
+    only_keys_of(t, kind_name, LOAD_KINDS[kind].1)?;
+    let load_err = |e| keyed("[load]", LOAD_KEYS, e);
+    Ok(match kind {
+        0 => {
+            let rise_s = t.rise_time_s.ok_or_else(|| {
+                ScenarioError::missing("[load] rise_time_s", "the rise time t_r of the triangular pulse, s")
+            })?;
+            let pulse = TrianglePulse::new(peak(t, c)?, rise_s, t.start_time_s.unwrap_or(0.0)).map_err(load_err)?;
+            (LoadSpec::Triangle(pulse), pulse.start_s + 2.0 * pulse.rise_s + 1.0)
+        }
+        1 => {
+            let ramp = StaticRamp::new(peak(t, c)?, t.ramp_time_s.unwrap_or(1.0)).map_err(load_err)?;
+            (LoadSpec::Static(ramp), ramp.ramp_s)
+        }
+        _ => {
+            let name = t.file.as_ref().ok_or_else(|| {
+                ScenarioError::missing("[load] file", "the CSV force series, relative to the scenario file")
+            })?;
+            let path = base_dir.join(name);
+            let text = read_series(&path).map_err(|message| ScenarioError::Series { path: path.clone(), message })?;
+            let series = ForceSeries::from_csv_str(&text, c.width_m)
+                .map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
+            let end = series.last_time_s();
+            (LoadSpec::Series(series), end)
+        }
+    })
+}
+
+/// Refuse a key of `[load]` that its kind (`kind_name`, whose keys are `relevant`) does not use.
+fn only_keys_of(t: &super::LoadTable, kind_name: &str, relevant: &[&str]) -> R<()> {
     let given = [
         ("peak_horizontal_kn", t.peak_horizontal_kn.is_some()),
         ("rise_time_s", t.rise_time_s.is_some()),
@@ -413,61 +495,20 @@ fn validate_load(f: &ScenarioFile, c: &Caisson, base_dir: &Path) -> R<(LoadSpec,
             });
         }
     }
-    let finite_kn = |key: &str, v: f64| {
-        if v.is_finite() {
-            Ok(v * 1e3)
-        } else {
-            Err(ScenarioError::range(key, super::fmt_value(v), "must be a finite number"))
-        }
-    };
-    let peak = || -> R<WaveForce> {
-        let fx = finite_kn(
-            "[load] peak_horizontal_kn",
-            t.peak_horizontal_kn.ok_or_else(|| {
-                ScenarioError::missing(
-                    "[load] peak_horizontal_kn",
-                    "the peak horizontal force, kN (positive shoreward)",
-                )
-            })?,
-        )?;
-        let fy = finite_kn("[load] peak_uplift_kn", t.peak_uplift_kn.unwrap_or(0.0))?;
-        let lever = match t.horizontal_lever_m {
-            Some(v) => {
-                within("[load] horizontal_lever_m", v, 0.0, c.height_m, "m above the base, at most the caisson height")?
-            }
-            None => c.base_depth_m,
-        };
-        let ulever = match t.uplift_lever_m {
-            Some(v) => within("[load] uplift_lever_m", v, 0.0, c.width_m, "m from the heel, at most the base width")?,
-            None => 2.0 * c.width_m / 3.0,
-        };
-        Ok(WaveForce::from_levers(fx, lever, fy, ulever, c.width_m))
-    };
-    let load_err = |e| keyed("[load]", LOAD_KEYS, e);
-    Ok(match kind {
-        0 => {
-            let rise_s = t.rise_time_s.ok_or_else(|| {
-                ScenarioError::missing("[load] rise_time_s", "the rise time t_r of the triangular pulse, s")
-            })?;
-            let pulse = TrianglePulse::new(peak()?, rise_s, t.start_time_s.unwrap_or(0.0)).map_err(load_err)?;
-            (LoadSpec::Triangle(pulse), pulse.start_s + 2.0 * pulse.rise_s + 1.0)
-        }
-        1 => {
-            let ramp = StaticRamp::new(peak()?, t.ramp_time_s.unwrap_or(1.0)).map_err(load_err)?;
-            (LoadSpec::Static(ramp), ramp.ramp_s)
-        }
-        _ => {
-            let name = t.file.as_ref().ok_or_else(|| {
-                ScenarioError::missing("[load] file", "the CSV force series, relative to the scenario file")
-            })?;
-            let path = base_dir.join(name);
-            let text = read_series(&path).map_err(|message| ScenarioError::Series { path: path.clone(), message })?;
-            let series = ForceSeries::from_csv_str(&text, c.width_m)
-                .map_err(|e| ScenarioError::Series { path: path.clone(), message: e.to_string() })?;
-            let end = series.last_time_s();
-            (LoadSpec::Series(series), end)
-        }
-    })
+    Ok(())
+}
+
+/// The peak of a pulse of `[load]` on caisson `c` ([`WaveForce::from_levers_on`]): the forces in
+/// kN, the levers by default at the base depth and two thirds of the width from the heel.
+fn peak(t: &super::LoadTable, c: &Caisson) -> R<WaveForce> {
+    let fx_kn = t.peak_horizontal_kn.ok_or_else(|| {
+        ScenarioError::missing("[load] peak_horizontal_kn", "the peak horizontal force, kN (positive shoreward)")
+    })?;
+    let fy_kn = t.peak_uplift_kn.unwrap_or(0.0);
+    let lever = t.horizontal_lever_m.unwrap_or(c.base_depth_m);
+    let uplift_lever = t.uplift_lever_m.unwrap_or(2.0 * c.width_m / 3.0);
+    WaveForce::from_levers_on(fx_kn * 1e3, lever, fy_kn * 1e3, uplift_lever, c.height_m, c.width_m)
+        .map_err(|e| keyed_as_read("[load]", LOAD_KEYS, e))
 }
 
 /// Largest force-series file read, bytes (a file that never ends, `/dev/zero`, is refused).

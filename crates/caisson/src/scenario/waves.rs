@@ -1,26 +1,26 @@
 //! `[waves]` (and the wave keys of `[water]`): the incident waves and the options of the wave-load
-//! models, validated into a [`WaveSetup`] (a [`WaveLoadModel`], the design wave and its trains).
+//! models, read into a [`WaveSetup`] (a [`WaveLoadModel`], the design wave and its trains).
+//!
+//! This file reads keys: what is missing, which keys go together, names of choices, whole numbers.
+//! The rules of the values are the types' own ([`WaveSetup::new`]: [`WaveSite::checked`],
+//! [`TrainSpec::checked`], [`WaveLoadOptions::checked`]); `keyed_waves` names a refusal's key.
 //!
 //! Every key, with unit, default and allowed range, is documented in `docs/waves.md`. The caisson
 //! geometry comes from `[caisson]`: base depth h' = `base_depth_m`, crest freeboard
 //! h_c = `height_m − base_depth_m`, width B, alongshore length.
 
 use super::{ScenarioError, ScenarioFile};
-use crate::analysis::site::WaveSetup;
+use crate::analysis::site::{place_caisson, WaveSetup};
 use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
-use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveSite};
+use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveParamError, WaveSite};
 use crate::loads::regime::{Regime, RegimeChoice};
 use crate::loads::risetime::{RiseTimeModel, RiseTimeParams};
 use crate::loads::shapes::LoadShape;
 use crate::structure::Caisson;
-use crate::waves::breaking::{BreakerCriterion, GODA_BREAKER_A, MCCOWAN_GAMMA, MICHE_STEEPNESS};
-use crate::waves::dispersion::deep_water_wavelength_m;
+use crate::waves::breaking::{BreakerCriterion, GODA_BREAKER_A, MCCOWAN_GAMMA};
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
-
-/// Most waves of all the realizations of a `[waves]` scenario together (`waves` × `realizations`).
-pub const MAX_TRAIN_WAVES: usize = 10_000_000;
 
 /// `[waves]` as written in the scenario file.
 #[derive(Debug, Clone, Deserialize, Default)]
@@ -73,22 +73,8 @@ pub struct WavesTable {
     pub rigid_block_mu: Option<f64>,
 }
 
-/// Put `caisson` at the site: the geometry the wave loads see (base depth, crest freeboard,
-/// width, length) follows the caisson.
-pub(crate) fn place_caisson(site: &mut WaveSite, caisson: &Caisson) {
-    site.base_depth_m = caisson.base_depth_m;
-    site.crest_freeboard_m = caisson.height_m - caisson.base_depth_m;
-    site.width_m = caisson.width_m;
-    site.length_m = caisson.length_m;
-}
-
-/// The smallest water depth and wave height accepted, m: a millimetre, below any laboratory
-/// flume's waves; smaller values (5e-324 m) only drive the formulas to NaN or give safety
-/// factors of 1e100.
-pub const MIN_LENGTH_M: f64 = 1e-3;
-/// The shortest wave period accepted, s (capillary ripples are shorter; no wave that loads a
-/// caisson is).
-pub const MIN_PERIOD_S: f64 = 0.01;
+pub use crate::loads::generator::MAX_TRAIN_WAVES;
+pub use crate::loads::model::{MIN_LENGTH_M, MIN_PERIOD_S};
 
 /// A finite number in (lo, hi] (`lo_open`) or [lo, hi], else a keyed range error.
 pub(super) fn number(key: &str, v: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
@@ -126,73 +112,103 @@ pub(super) fn seed_of(key: &str, v: Option<i64>) -> R<u64> {
     }
 }
 
-/// Validate `[water]` (depths, slope, berm) and `[waves]` against the validated caisson.
-pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSetup> {
-    let w = &file.water;
+/// The keys of the quantities of a [`WaveSetup`] (named as in their types) and their units.
+const WAVE_KEYS: super::NamedKeys = &[
+    ("rho_w", "[water] density_kg_per_m3", "kg/m³"),
+    ("depth_at_toe_m", "[water] depth_at_toe_m", "m"),
+    ("seabed_slope", "[water] seabed_slope", "tan θ, 0 for a flat bed"),
+    ("berm_width_m", "[water] berm_width_m", "m"),
+    ("period_s", "[waves] period_s", "s"),
+    ("height_m", "[waves] height_m", "m"),
+    ("significant_height_m", "[waves] significant_height_m", "m"),
+    ("angle_deg", "[waves] angle_deg", ""),
+    ("alpha_max", "[waves] alpha_max", "-"),
+    ("a_imp", "[waves] a_imp", "-"),
+    ("alpha_qs_nonbreaking", "[waves] alpha_qs_nonbreaking", "-"),
+    ("alpha_qs_breaking", "[waves] alpha_qs_breaking", "-"),
+    ("duration_ratio", "[waves] duration_ratio", "-"),
+    ("waves", "[waves] waves", ""),
+    ("realizations", "[waves] realizations", ""),
+    ("height_variability_fraction", "[waves] height_variability_fraction", "-"),
+    ("height_truncation_sigmas", "[waves] height_truncation_sigmas", "-"),
+    ("rigid_block_mu", "[waves] rigid_block_mu", "-"),
+];
+
+/// A refused wave setup under the keys of `[water]`, `[waves]` and `[caisson]`.
+fn keyed_waves(e: WaveParamError) -> ScenarioError {
+    match e {
+        WaveParamError::Param(e) => super::keyed_in(WAVE_KEYS, e),
+        WaveParamError::WallDepth { depth_at_wall_m, depth_at_toe_m } => ScenarioError::range(
+            "[water] depth_at_wall_m",
+            super::fmt_value(depth_at_wall_m),
+            format!("must be from {MIN_LENGTH_M} m (a laboratory flume's scale) to depth_at_toe_m = {depth_at_toe_m} m (the berm cannot be below the seabed)"),
+        ),
+        WaveParamError::BaseAboveWall { base_depth_m, depth_at_wall_m } => ScenarioError::range(
+            "[caisson] base_depth_m",
+            base_depth_m,
+            format!("must be at least [water] depth_at_wall_m = {depth_at_wall_m} m: the caisson base sits on or in the mound, not above the water depth in front of the wall"),
+        ),
+        WaveParamError::BaseBelowToe { base_depth_m, depth_at_toe_m } => ScenarioError::range(
+            "[caisson] base_depth_m",
+            base_depth_m,
+            format!("must be at most [water] depth_at_toe_m = {depth_at_toe_m} m: the base cannot be below the seabed at the toe"),
+        ),
+        WaveParamError::TooManyWaves { waves, realizations } => ScenarioError::range(
+            "[waves] realizations",
+            realizations,
+            format!("times [waves] waves = {waves} gives {} waves in all; at most {MAX_TRAIN_WAVES}", waves * realizations),
+        ),
+        WaveParamError::Regime(e) => ScenarioError::range(
+            "[waves] regime",
+            "\"non-breaking\"",
+            format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
+        ),
+    }
+}
+
+/// Read `[water]` (depths, slope, berm) and `[waves]` and build their [`WaveSetup`] at `caisson`
+/// (the validated caisson) in water of density `rho_w` (kg/m³, validated).
+pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson, rho_w: f64) -> R<WaveSetup> {
     let t = file.waves.as_ref().ok_or_else(|| {
         ScenarioError::missing("[waves]", "add a [waves] table with kind = \"regular\", height_m and period_s")
     })?;
-    let rho_w = match w.density_kg_per_m3 {
-        Some(v) => number("[water] density_kg_per_m3", v, 500.0, 2000.0, false, "kg/m³")?,
-        None => 1000.0,
-    };
-    let hs = number(
-        "[water] depth_at_toe_m",
-        required("[water] depth_at_toe_m", w.depth_at_toe_m, "h_s, the water depth at the toe of the mound, m")?,
-        MIN_LENGTH_M,
-        1e4,
-        false,
-        "m",
-    )?;
-    let d = required(
+    let mut site = site(&file.water, rho_w)?;
+    place_caisson(&mut site, caisson);
+    let train = train(t)?;
+    let options = options(t, site.seabed_slope)?;
+    WaveSetup::new(WaveLoadModel { site, options }, train, t.rigid_block_mu).map_err(keyed_waves)
+}
+
+/// The site of `[water]` (the caisson is placed on it after).
+fn site(w: &super::WaterTable, rho_w: f64) -> R<WaveSite> {
+    let depth_at_toe_m =
+        required("[water] depth_at_toe_m", w.depth_at_toe_m, "h_s, the water depth at the toe of the mound, m")?;
+    let depth_at_wall_m = required(
         "[water] depth_at_wall_m",
         w.depth_at_wall_m,
         "d, the water depth in front of the wall above the berm, m (= depth_at_toe_m without a mound)",
     )?;
-    if !(d.is_finite() && d >= MIN_LENGTH_M && d <= hs) {
-        return Err(ScenarioError::range(
-            "[water] depth_at_wall_m",
-            super::fmt_value(d),
-            format!("must be from {MIN_LENGTH_M} m (a laboratory flume's scale) to depth_at_toe_m = {hs} m (the berm cannot be below the seabed)"),
-        ));
-    }
-    let hp = caisson.base_depth_m;
-    if hp < d {
-        return Err(ScenarioError::range(
-            "[caisson] base_depth_m",
-            hp,
-            format!("must be at least [water] depth_at_wall_m = {d} m: the caisson base sits on or in the mound, not above the water depth in front of the wall"),
-        ));
-    }
-    if hp > hs {
-        return Err(ScenarioError::range(
-            "[caisson] base_depth_m",
-            hp,
-            format!("must be at most [water] depth_at_toe_m = {hs} m: the base cannot be below the seabed at the toe"),
-        ));
-    }
-    let slope = match w.seabed_slope {
-        Some(v) => number("[water] seabed_slope", v, 0.0, 0.5, false, "tan θ, 0 for a flat bed")?,
-        None => 0.0,
-    };
-    let berm = match w.berm_width_m {
-        Some(v) => Some(number("[water] berm_width_m", v, 0.0, 1e4, false, "m")?),
-        None => None,
-    };
+    Ok(WaveSite {
+        rho_w,
+        depth_at_toe_m,
+        depth_at_wall_m,
+        base_depth_m: 0.0,
+        crest_freeboard_m: 0.0,
+        width_m: 0.0,
+        length_m: 0.0,
+        seabed_slope: w.seabed_slope.unwrap_or(0.0),
+        berm_width_m: w.berm_width_m,
+    })
+}
 
+/// `[waves] kind` and the keys that go with it: the trains.
+fn train(t: &WavesTable) -> R<TrainSpec> {
     let irregular = pick("[waves] kind", Some(&t.kind), false, &[("regular", false), ("irregular", true)])?;
-    let period_s = number(
-        "[waves] period_s",
-        required("[waves] period_s", t.period_s, "the wave period T (T1/3 for irregular waves), s")?,
-        MIN_PERIOD_S,
-        1e3,
-        false,
-        "s",
-    )?;
+    let period_s = required("[waves] period_s", t.period_s, "the wave period T (T1/3 for irregular waves), s")?;
     let conflict = |key: &str, kind: &str| ScenarioError::Conflict {
         message: format!("`[waves] {key}` is not used with kind = \"{kind}\"; remove it"),
     };
-    let (height_key, height_m) = if irregular {
+    let kind = if irregular {
         for (key, given) in [
             ("height_m", t.height_m.is_some()),
             ("height_variability", t.height_variability.is_some()),
@@ -208,42 +224,50 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
             t.significant_height_m,
             "the significant wave height H1/3 at the toe, m",
         )?;
-        ("[waves] significant_height_m", number("[waves] significant_height_m", h, MIN_LENGTH_M, 1e3, false, "m")?)
+        TrainKind::Irregular { significant_height_m: h }
     } else {
         if t.significant_height_m.is_some() {
             return Err(conflict("significant_height_m", "regular"));
         }
-        (
-            "[waves] height_m",
-            number(
-                "[waves] height_m",
-                required("[waves] height_m", t.height_m, "the incident wave height H, m")?,
-                MIN_LENGTH_M,
-                1e3,
-                false,
-                "m",
-            )?,
-        )
+        let height_m = required("[waves] height_m", t.height_m, "the incident wave height H, m")?;
+        TrainKind::Regular { height_m, variability: variability(t)? }
     };
-    let l0 = deep_water_wavelength_m(period_s);
-    if height_m >= MICHE_STEEPNESS * l0 {
-        return Err(ScenarioError::range(
-            height_key,
-            height_m,
-            format!("must be below the deep-water breaking limit 0.142 L0 = {:.4} m for period_s = {period_s} s (no wave is steeper)", MICHE_STEEPNESS * l0),
-        ));
-    }
-    let angle_deg = match t.angle_deg {
-        Some(v) if v.is_finite() && v.abs() < 90.0 => v,
-        Some(v) => {
-            return Err(ScenarioError::range(
-                "[waves] angle_deg",
-                v,
-                "must be a finite number strictly between -90 and 90 (degrees from the normal to the breakwater)",
-            ))
+    let count = |key: &str, v: Option<i64>, default: usize| -> R<usize> {
+        match v {
+            None => Ok(default),
+            Some(n) if (1..=1_000_000).contains(&n) => Ok(n as usize),
+            Some(n) => Err(ScenarioError::range(key, n, "must be a whole number from 1 to 1000000")),
         }
-        None => 0.0,
     };
+    let waves = count("[waves] waves", t.waves, 15)?;
+    let realizations = count("[waves] realizations", t.realizations, 10)?;
+    let seed = seed_of("[waves] seed", t.seed)?;
+    Ok(TrainSpec { kind, period_s, waves, realizations, seed })
+}
+
+/// `[waves] height_variability` and its keys (regular waves).
+fn variability(t: &WavesTable) -> R<HeightVariability> {
+    let name = t.height_variability.as_ref();
+    let which = pick("[waves] height_variability", name, 0, &[("normal", 0), ("uniform", 1), ("none", 2)])?;
+    if which == 2 && (t.height_variability_fraction.is_some() || t.height_truncation_sigmas.is_some()) {
+        return Err(ScenarioError::Conflict { message: "`[waves] height_variability_fraction` and `height_truncation_sigmas` are not used with height_variability = \"none\"; remove them".into() });
+    }
+    if which == 1 && t.height_truncation_sigmas.is_some() {
+        return Err(ScenarioError::Conflict {
+            message: "`[waves] height_truncation_sigmas` is only used with height_variability = \"normal\"; remove it"
+                .into(),
+        });
+    }
+    let c = t.height_variability_fraction.unwrap_or(0.2);
+    Ok(match which {
+        0 => HeightVariability::Normal { cov: c, truncation_sigmas: t.height_truncation_sigmas.unwrap_or(2.0) },
+        1 => HeightVariability::Uniform { half_width: c },
+        _ => HeightVariability::None,
+    })
+}
+
+/// The options of the wave-load models (`slope`: the seabed's, for Goda's breaker criterion).
+fn options(t: &WavesTable, slope: f64) -> R<WaveLoadOptions> {
     let regime = pick(
         "[waves] regime",
         t.regime.as_ref(),
@@ -264,10 +288,6 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
             ("mccowan", BreakerCriterion::McCowan { gamma: MCCOWAN_GAMMA }),
         ],
     )?;
-    let d_opt = WaveLoadOptions::default();
-    let opt = |key: &str, v: Option<f64>, default: f64, lo: f64, hi: f64, lo_open: bool| -> R<f64> {
-        v.map_or(Ok(default), |v| number(&format!("[waves] {key}"), v, lo, hi, lo_open, "-"))
-    };
     let load_shape = pick("[waves] load_shape", t.load_shape.as_ref(), LoadShape::Seed, &LoadShape::ALL)?;
     if t.duration_ratio.is_some() && !load_shape.uses_duration() {
         return Err(ScenarioError::Conflict {
@@ -277,120 +297,34 @@ pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson) -> R<WaveSe
             ),
         });
     }
-    let options = WaveLoadOptions {
+    let rise_time_model = pick(
+        "[waves] rise_time_model",
+        t.rise_time_model.as_ref(),
+        RiseTimeModel::Median,
+        &[("median", RiseTimeModel::Median), ("literal", RiseTimeModel::Literal)],
+    )?;
+    let sainflou_depth = pick(
+        "[waves] sainflou_depth",
+        t.sainflou_depth.as_ref(),
+        SainflouDepth::Toe,
+        &[("toe", SainflouDepth::Toe), ("wall", SainflouDepth::Wall)],
+    )?;
+    let d = WaveLoadOptions::default();
+    WaveLoadOptions {
         regime,
         criterion,
-        alpha_max: opt("alpha_max", t.alpha_max, d_opt.alpha_max, 0.0, 10.0, true)?,
-        a_imp: opt("a_imp", t.a_imp, d_opt.a_imp, 0.0, 10.0, false)?,
-        alpha_qs_nonbreaking: opt(
-            "alpha_qs_nonbreaking",
-            t.alpha_qs_nonbreaking,
-            d_opt.alpha_qs_nonbreaking,
-            0.0,
-            2.0,
-            false,
-        )?,
-        alpha_qs_breaking: opt("alpha_qs_breaking", t.alpha_qs_breaking, d_opt.alpha_qs_breaking, 0.0, 2.0, false)?,
-        rise_time: RiseTimeParams {
-            model: pick(
-                "[waves] rise_time_model",
-                t.rise_time_model.as_ref(),
-                RiseTimeModel::Median,
-                &[("median", RiseTimeModel::Median), ("literal", RiseTimeModel::Literal)],
-            )?,
-            ..RiseTimeParams::default()
-        },
+        alpha_max: t.alpha_max.unwrap_or(d.alpha_max),
+        a_imp: t.a_imp.unwrap_or(d.a_imp),
+        alpha_qs_nonbreaking: t.alpha_qs_nonbreaking.unwrap_or(d.alpha_qs_nonbreaking),
+        alpha_qs_breaking: t.alpha_qs_breaking.unwrap_or(d.alpha_qs_breaking),
+        rise_time: RiseTimeParams { model: rise_time_model, ..RiseTimeParams::default() },
         load_shape,
-        duration_ratio: opt("duration_ratio", t.duration_ratio, d_opt.duration_ratio, 1.0, 20.0, true)?,
-        sainflou_depth: pick(
-            "[waves] sainflou_depth",
-            t.sainflou_depth.as_ref(),
-            SainflouDepth::Toe,
-            &[("toe", SainflouDepth::Toe), ("wall", SainflouDepth::Wall)],
-        )?,
-        angle_rad: angle_deg.to_radians(),
-        lambda: d_opt.lambda,
-    };
-    let mut site = WaveSite {
-        rho_w,
-        depth_at_toe_m: hs,
-        depth_at_wall_m: d,
-        base_depth_m: hp,
-        crest_freeboard_m: 0.0,
-        width_m: 0.0,
-        length_m: 0.0,
-        seabed_slope: slope,
-        berm_width_m: berm,
-    };
-    place_caisson(&mut site, caisson);
-    let model = WaveLoadModel { site, options };
-    let count = |key: &str, v: Option<i64>, default: usize| -> R<usize> {
-        match v {
-            None => Ok(default),
-            Some(n) if (1..=1_000_000).contains(&n) => Ok(n as usize),
-            Some(n) => Err(ScenarioError::range(key, n, "must be a whole number from 1 to 1000000")),
-        }
-    };
-    let waves = count("[waves] waves", t.waves, 15)?;
-    let realizations = count("[waves] realizations", t.realizations, 10)?;
-    // Every wave of every realization is integrated and reported (a row of `waves.csv`, an object
-    // of the JSON): bounded in all, not only per realization.
-    if waves * realizations > MAX_TRAIN_WAVES {
-        return Err(ScenarioError::range(
-            "[waves] realizations",
-            realizations,
-            format!(
-                "times [waves] waves = {waves} gives {} waves in all; at most {MAX_TRAIN_WAVES}",
-                waves * realizations
-            ),
-        ));
+        duration_ratio: t.duration_ratio.unwrap_or(d.duration_ratio),
+        sainflou_depth,
+        ..d
     }
-    let seed = seed_of("[waves] seed", t.seed)?;
-    let kind = if irregular {
-        TrainKind::Irregular { significant_height_m: height_m }
-    } else {
-        let name = t.height_variability.as_ref();
-        let which = pick("[waves] height_variability", name, 0, &[("normal", 0), ("uniform", 1), ("none", 2)])?;
-        if which == 2 && (t.height_variability_fraction.is_some() || t.height_truncation_sigmas.is_some()) {
-            return Err(ScenarioError::Conflict { message: "`[waves] height_variability_fraction` and `height_truncation_sigmas` are not used with height_variability = \"none\"; remove them".into() });
-        }
-        if which == 1 && t.height_truncation_sigmas.is_some() {
-            return Err(ScenarioError::Conflict {
-                message:
-                    "`[waves] height_truncation_sigmas` is only used with height_variability = \"normal\"; remove it"
-                        .into(),
-            });
-        }
-        let c = opt("height_variability_fraction", t.height_variability_fraction, 0.2, 0.0, 0.9, false)?;
-        let k = opt("height_truncation_sigmas", t.height_truncation_sigmas, 2.0, 0.5, 10.0, false)?;
-        let variability = match which {
-            0 => {
-                if c * k >= 1.0 {
-                    return Err(ScenarioError::range(
-                        "[waves] height_variability_fraction",
-                        c,
-                        format!("times height_truncation_sigmas = {k} must be below 1, or a drawn height could be zero or negative"),
-                    ));
-                }
-                HeightVariability::Normal { cov: c, truncation_sigmas: k }
-            }
-            1 => HeightVariability::Uniform { half_width: c },
-            _ => HeightVariability::None,
-        };
-        TrainKind::Regular { height_m, variability }
-    };
-    let train = TrainSpec { kind, period_s, waves, realizations, seed };
-    // A forced regime must agree with the breaking criterion (non-breaking above the limit).
-    model.evaluate(height_m, period_s).map_err(|e| {
-        ScenarioError::range(
-            "[waves] regime",
-            "\"non-breaking\"",
-            format!("is not allowed here: {e}; use \"breaking\" or \"auto\""),
-        )
-    })?;
-    let rigid_block_mu =
-        t.rigid_block_mu.map(|v| number("[waves] rigid_block_mu", v, 0.0, 2.0, true, "-")).transpose()?;
-    Ok(WaveSetup { model, train, rigid_block_mu })
+    .with_angle_deg(t.angle_deg.unwrap_or(0.0))
+    .map_err(|e| keyed_waves(e.into()))
 }
 
 #[cfg(test)]

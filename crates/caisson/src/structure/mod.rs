@@ -267,6 +267,13 @@ pub struct Caisson {
 }
 
 impl Caisson {
+    /// The weight in water the caisson loses when the water rises `rise_m` above the still
+    /// water level it was given at, ρ_w g B l rise, N (docs/model.md §6.4 step 3: a tide lowers
+    /// W' by the water it adds around the walls). W' minus this ≤ 0: the caisson floats.
+    pub fn weight_lost_to_rise_n(&self, rho_w: f64, rise_m: f64) -> f64 {
+        rho_w * G_M_PER_S2 * self.width_m * self.length_m * rise_m
+    }
+
     /// Mass of the water displaced by the caisson, kg: ρ_w B l min(h', height).
     pub fn displaced_water_kg(width_m: f64, length_m: f64, base_depth_m: f64, height_m: f64, rho_w: f64) -> f64 {
         rho_w * width_m * length_m * base_depth_m.min(height_m)
@@ -309,5 +316,27 @@ mod tests {
         let ig = Caisson::uniform_block_inertia_kg_m2(1464.0, 0.78, 1.12);
         assert!((ig - 227.3).abs() < 0.5, "{ig}");
         assert!((ig + 1464.0 * 0.56 * 0.56 - 686.0).abs() < 1.0);
+    }
+
+    #[test]
+    fn a_rise_of_the_water_costs_the_weight_of_the_water_it_adds_around_the_walls() {
+        // The PARI caisson (B 0.78 m, l 1 m) as a uniform block of 16.17 kN in water: 0.1 m of
+        // fresh water costs 1000 · 9.81 · 0.78 · 1.0 · 0.1 = 765.18 N (by hand, g as the crate's).
+        let c = CaissonSpec {
+            width_m: 0.78,
+            length_m: 1.0,
+            height_m: 1.12,
+            base_depth_m: 0.8,
+            mass: MassSpec::WeightInWater { weight_in_water_n: 16170.0 },
+            cog_height_m: None,
+            inertia_cog_kg_m2: None,
+            mass_matrix: None,
+        }
+        .build(1000.0, Profile::default())
+        .unwrap();
+        let by_hand = 1000.0 * G_M_PER_S2 * 0.78 * 1.0 * 0.1;
+        assert!((by_hand - 765.18).abs() < 0.1, "{by_hand}");
+        assert_eq!(c.weight_lost_to_rise_n(1000.0, 0.1), by_hand);
+        assert_eq!(c.weight_lost_to_rise_n(1000.0, 0.0), 0.0);
     }
 }
