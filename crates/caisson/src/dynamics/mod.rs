@@ -44,6 +44,12 @@
 //! pulsating load. A step that fails to converge is halved as in the fixed mode (at most
 //! `max_substep_levels` times in a row).
 //!
+//! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
+//! all-sticking state, a step of dt_max with no load breakpoint inside it is solved exactly
+//! (`exact`: the linear part by its matrix exponential, the shear's bilinear remainder and the
+//! load interpolated quadratically), and kept if every spring sticks at its end; otherwise the
+//! Newmark step is taken from the same state.
+//!
 //! **Events**: a converged step in which a spring that was in contact and sticking starts to
 //! slip is not committed if the onset falls inside it: the friction margin of that spring held
 //! sticking, g = κ N_i e_lim − |κ N_i e_i + c_d ė_i|, interpolated linearly between the step's
@@ -941,6 +947,16 @@ mod tests {
 
     /// The seed's Table 5 caisson on its Table 6 foundation with the given dashpot placements.
     pub(super) fn simulation(mode: DampingMode, vertical: VerticalDamping) -> Simulation {
+        simulation_with(mode, vertical, MassMatrix::Coupled, SolverParams::default())
+    }
+
+    /// [`simulation`] with the given mass matrix and solver controls.
+    pub(super) fn simulation_with(
+        mode: DampingMode,
+        vertical: VerticalDamping,
+        mass_matrix: MassMatrix,
+        solver: SolverParams,
+    ) -> Simulation {
         let caisson = CaissonSpec {
             width_m: 0.78,
             length_m: 1.0,
@@ -949,7 +965,7 @@ mod tests {
             mass: MassSpec::WeightInWater { weight_in_water_n: 8240.0 },
             cog_height_m: None,
             inertia_cog_kg_m2: None,
-            mass_matrix: Some(MassMatrix::Coupled),
+            mass_matrix: Some(mass_matrix),
         }
         .build(1000.0, crate::Profile::Consistent)
         .unwrap();
@@ -964,7 +980,7 @@ mod tests {
         }
         .build(&caisson, 1000.0, crate::Profile::Consistent)
         .unwrap();
-        Simulation::new(Model::new(&caisson, &foundation), SolverParams::default(), &WaveForceAt(WaveForce::ZERO))
+        Simulation::new(Model::new(&caisson, &foundation), solver, &WaveForceAt(WaveForce::ZERO))
     }
 
     struct WaveForceAt(WaveForce);
