@@ -32,9 +32,10 @@
 //! quadratic (the one that tends to the linear solution, as in `sticking`).
 //!
 //! The step is taken only from a committed all-sticking state, when no load breakpoint falls
-//! inside it, and kept only if every spring sticks at its end by the spring law's own test
-//! (`sticking`); otherwise the Newmark step is taken from the same state (which locates the
-//! onset of slip). Its end is committed as an all-sticking Newmark step would be.
+//! inside it, and kept only if every spring sticks at its end and in its middle (the cubic
+//! through the ends' displacements and velocities) by the spring law's own test (`sticking`);
+//! otherwise the Newmark step is taken from the same state (which locates the onset of slip).
+//! Its end is committed as an all-sticking Newmark step would be.
 
 use super::{Converged, Model, Simulation};
 use nalgebra::{Matrix3, SMatrix, Vector3};
@@ -243,8 +244,12 @@ impl Simulation {
         let acc = pr.minv * (g1 - pr.k_l * q1 - pr.c_l * v1);
         let u = [q1[0] + s1, q1[1], q1[2]];
         let v = [v1[0], v1[1], v1[2]];
-        // Every spring must stick at the end (the spring law's own test, which also records the
-        // sums of the commit and the base reaction).
+        // Every spring must stick in the middle of the step (the cubic through the ends'
+        // displacements and velocities) and at its end (the spring law's own test; the last one
+        // records the sums of the commit and the base reaction).
+        let um: [f64; 3] = std::array::from_fn(|i| 0.5 * (un[i] + u[i]) + 0.125 * h * (vn[i] - v[i]));
+        let vm: [f64; 3] = std::array::from_fn(|i| 1.5 * (u[i] - un[i]) / h - 0.25 * (vn[i] + v[i]));
+        self.sticking_force(um, vm, 0.5 * h)?;
         self.sticking_force(u, v, h)?;
         self.exact_prev = Some(Previous { t_end_s: self.state.t_s + h, r_start_n: r0, p_start: p0 });
         Some(Converged { u, v, a: [acc[0], acc[1], acc[2]], iterations: 0, residual: 0.0 })

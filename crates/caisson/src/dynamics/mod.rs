@@ -47,8 +47,8 @@
 //! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
 //! all-sticking state, a step of dt_max with no load breakpoint inside it is solved exactly
 //! (`exact`: the linear part by its matrix exponential, the shear's bilinear remainder and the
-//! load interpolated quadratically), and kept if every spring sticks at its end; otherwise the
-//! Newmark step is taken from the same state.
+//! load interpolated quadratically), and kept if every spring sticks at its end and in its
+//! middle; otherwise the Newmark step is taken from the same state.
 //!
 //! **Events**: a converged step in which a spring that was in contact and sticking starts to
 //! slip is not committed if the onset falls inside it: the friction margin of that spring held
