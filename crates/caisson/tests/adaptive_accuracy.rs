@@ -149,3 +149,24 @@ fn exact_sticking_phases_meet_the_newmark_steps() {
     assert!(exact_steps as f64 > 0.2 * steps as f64, "{exact_steps} exact of {steps} steps");
     assert!(steps < newmark_steps, "{steps} steps with the exact path, {newmark_steps} without");
 }
+
+/// The exact sticking steps belong to the default profile: a scenario under `seed-2011`, read
+/// so or switched to it, keeps Newmark's steps through its sticking phases (its numbers
+/// reproduce the paper), and switched back takes them again.
+#[test]
+fn exact_sticking_follows_the_profile() {
+    use caisson::Profile;
+    let design = support::example("design_breakwater.toml");
+    let seed = design.clone().with_profile(Profile::Seed2011).unwrap();
+    let back = seed.clone().with_profile(Profile::Consistent).unwrap();
+    let fifteen = support::example("fifteen_waves.toml");
+    let cases = [(&design, true), (&seed, false), (&back, true), (&fifteen, false)];
+    for (i, (sc, exact)) in cases.iter().enumerate() {
+        assert_eq!(sc.solver().exact_sticking, *exact, "case {i}");
+    }
+    // The design waves with the seed-2011 scenario's solver controls take no exact step; with
+    // the default one's they do.
+    let steps = |sc: &Scenario| support::design_waves(sc.solver()).iter().map(|(_, s)| s.exact_steps).sum::<u64>();
+    assert_eq!(steps(&seed), 0);
+    assert!(steps(&design) > 100, "{} exact steps", steps(&design));
+}

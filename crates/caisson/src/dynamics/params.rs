@@ -153,6 +153,13 @@ impl SolverParams {
         Ok(self)
     }
 
+    /// The numerics of `profile`: [`Self::exact_sticking`] on under `consistent`, off under
+    /// `seed-2011` (whose numbers reproduce the paper).
+    pub fn for_profile(mut self, profile: crate::Profile) -> Self {
+        self.exact_sticking = profile == crate::Profile::Consistent;
+        self
+    }
+
     /// Newmark γ from ½ to 1 and β from γ/2 to ½ (unconditionally stable).
     pub fn with_newmark(mut self, gamma: f64, beta: f64) -> Result<Self, ParamError> {
         self.gamma = between("gamma", gamma, 0.5, 1.0)?;

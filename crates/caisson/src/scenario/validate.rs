@@ -86,10 +86,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         Some(v) => positive("[load] duration_s", v, "s")?,
         None => default_duration,
     };
-    let mut solver = validate_solver(f, duration_s)?;
-    // The seed-2011 profile keeps the Newmark steps through sticking phases (its numbers
-    // reproduce the paper: dynamics::SolverParams::exact_sticking).
-    solver.exact_sticking = profile == Profile::Consistent;
+    let solver = validate_solver(f, duration_s)?.for_profile(profile);
     let mut sc = Scenario {
         profile,
         water_density_kg_per_m3: rho_w,
