@@ -23,9 +23,7 @@ mod support;
 
 use support::signature::{signature, train_values, Signature};
 
-use caisson::dynamics::{Simulation, SolverParams};
-use caisson::loads::history::WaveTrain;
-use caisson::loads::regime::RegimeChoice;
+use caisson::dynamics::SolverParams;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
 
@@ -35,7 +33,7 @@ type Results = BTreeMap<String, Vec<f64>>;
 type Work = Option<(u64, u64, u64)>;
 
 fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
-    sc.clone().with_solver(SolverParams { sticking_fast_path: on, ..sc.solver() }).unwrap()
+    sc.clone().with_solver(SolverParams { sticking_fast_path: on, exact_sticking: false, ..sc.solver() }).unwrap()
 }
 
 /// What an example computes (as in `equiv_predictor.rs`): a `[load]` run, realization 0 of the wave
@@ -145,22 +143,8 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
 #[test]
 fn the_design_waves_are_the_same_with_the_fast_path() {
     let sc = support::example("design_breakwater.toml");
-    let site = &sc.waves.as_ref().unwrap().model;
-    let period_s = 12.8;
-    let waves = |on: bool| {
-        let solver = SolverParams { sticking_fast_path: on, ..sc.solver() };
-        let mut out = Vec::new();
-        for h in [6.0, 8.0, 9.0, 10.0, 11.0, 11.5, 12.0, 12.5, 12.7, 12.79] {
-            let loads = site.evaluate_with(h, period_s, RegimeChoice::Auto).unwrap();
-            let train = WaveTrain::new(vec![site.event(&loads, None, 0.0)]).unwrap();
-            let mut sim = Simulation::new(sc.structure().model(), solver, &train);
-            let mut peaks = caisson::analysis::run::Peaks::default();
-            sim.run_until(period_s, &train, &mut peaks).unwrap();
-            let sliding = caisson::analysis::run::permanent_sliding_m(&sim);
-            out.push(([sliding, peaks.max_ux, peaks.max_theta, peaks.max_rx, peaks.max_shear, peaks.min_n], sim.stats));
-        }
-        out
-    };
+    let waves =
+        |on: bool| support::design_waves(SolverParams { sticking_fast_path: on, exact_sticking: false, ..sc.solver() });
     let (old, new) = (waves(false), waves(true));
     let (mut steps, mut attempts, mut sticking, mut sliding_waves) = (0, 0, 0, 0);
     let mut largest = 0.0f64;

@@ -80,3 +80,93 @@ fn fifteen_waves_adaptive_within_0_2_percent_of_fixed_steps() {
     assert!(fixed > 0.01, "it slides: {fixed} m");
     assert!((adaptive / fixed - 1.0).abs() <= 2e-3, "adaptive {adaptive} m, fixed {fixed} m");
 }
+
+/// The waves of the design example that reach the dynamic model (heights about its sliding
+/// threshold, from sticking throughout to sliding; as in `sticking.rs`), each from rest: at the
+/// example's own controls (tolerance 1e-6 m, dt_max 0.5 s) with the all-sticking phases solved
+/// exactly (`dynamics::exact`, the default), and by Newmark steps at the controls the example had
+/// before (dt_max 0.2 s), against a converged reference (Newmark, tolerance 1e-9 m, dt_max
+/// 0.02 s). Both within max(1 µm, 1 %) of the reference's sliding (measured: exact at most
+/// 4.9 µm, 0.52 %; Newmark 4.9 µm, 0.37 %), 1 % of its peak displacement and rotation (measured:
+/// exact 0.45 % and 0.09 %, Newmark 0.09 % and 0.13 %; the peaks are read at the steps' ends,
+/// 0.5 s apart in an exact phase), and 1e-3 W'/n of its smallest spring normal force (measured
+/// 8e-4 and 5e-4); the exact path takes a fifth of the steps or more (measured 25 %; the sliding
+/// waves step by Newmark while they slip) and fewer steps in all (measured 802 against 1 335).
+#[test]
+fn exact_sticking_phases_meet_the_newmark_steps() {
+    let sc = support::example("design_breakwater.toml");
+    let Stepping::Adaptive(controls) = sc.solver().stepping else { panic!("the example steps adaptively") };
+    let run = |exact: bool, p: AdaptiveParams| {
+        let solver = SolverParams { exact_sticking: exact, ..sc.solver() }.with_adaptive(p).unwrap();
+        // Sliding, peak u_x and θ, least N.
+        support::design_waves(solver).into_iter().map(|(v, s)| ([v[0], v[1], v[2], v[5]], s)).collect::<Vec<_>>()
+    };
+    let reference = run(false, AdaptiveParams { tolerance_m: 1e-9, dt_max_s: 0.02, ..controls });
+    // Newmark at the controls the example had before the exact steps (dt_max 0.2 s).
+    let (exact, newmark) = (run(true, controls), run(false, AdaptiveParams { dt_max_s: 0.2, ..controls }));
+    let n_bar = sc.structure().model().weight_n / 10.0;
+    let (mut checked, mut sliding_waves, mut exact_steps, mut steps, mut newmark_steps) = (0, 0, 0, 0, 0);
+    // Largest |sliding − reference| (m), relative peak u_x and θ, relative sliding: exact, Newmark.
+    let mut worst = [[0.0f64; 4]; 2];
+    let mut worst_n = [0.0f64; 2];
+    for (i, (r, (e, es))) in reference.iter().zip(&exact).enumerate() {
+        for (what, x) in [("exact", e), ("newmark", &newmark[i].0)] {
+            let r = r.0;
+            let within = |k: usize, bound: f64| (x[k] - r[k]).abs() <= bound;
+            assert!(
+                within(0, (1e-6f64).max(0.01 * r[0].abs())),
+                "wave {i}, {what}: sliding {} m, reference {} m",
+                x[0],
+                r[0]
+            );
+            assert!(within(1, 1e-2 * r[1].abs()), "wave {i}, {what}: peak u_x {} m, reference {} m", x[1], r[1]);
+            assert!(within(2, 1e-2 * r[2].abs()), "wave {i}, {what}: peak θ {} rad, reference {} rad", x[2], r[2]);
+            worst_n[usize::from(what == "newmark")] =
+                worst_n[usize::from(what == "newmark")].max((x[3] - r[3]).abs() / n_bar);
+            assert!(within(3, 1e-3 * n_bar), "wave {i}, {what}: least N {} N, reference {} N", x[3], r[3]);
+            let w = &mut worst[usize::from(what == "newmark")];
+            w[0] = w[0].max((x[0] - r[0]).abs());
+            w[1] = w[1].max((x[1] - r[1]).abs() / r[1].abs());
+            w[2] = w[2].max((x[2] - r[2]).abs() / r[2].abs());
+            if r[0].abs() > 0.0 {
+                w[3] = w[3].max((x[0] - r[0]).abs() / r[0].abs());
+            }
+            checked += 1;
+        }
+        sliding_waves += usize::from(r.0[0] > 1e-4);
+        exact_steps += es.exact_steps;
+        steps += es.steps;
+        newmark_steps += newmark[i].1.steps;
+        assert_eq!(newmark[i].1.exact_steps, 0, "the switch turns the exact path off");
+    }
+    println!(
+        "exact (sliding m, u_x, θ, sliding relative) {:?}, Newmark {:?}; {exact_steps} exact of {steps} steps, {newmark_steps} Newmark steps without",
+        worst[0], worst[1]
+    );
+    println!("least N: exact {:.2e} W'/n, Newmark {:.2e} W'/n", worst_n[0], worst_n[1]);
+    assert_eq!(checked, 20);
+    assert!((3..10).contains(&sliding_waves), "{sliding_waves} waves slide more than 0.1 mm");
+    assert!(exact_steps as f64 > 0.2 * steps as f64, "{exact_steps} exact of {steps} steps");
+    assert!(steps < newmark_steps, "{steps} steps with the exact path, {newmark_steps} without");
+}
+
+/// The exact sticking steps belong to the default profile: a scenario under `seed-2011`, read
+/// so or switched to it, keeps Newmark's steps through its sticking phases (its numbers
+/// reproduce the paper), and switched back takes them again.
+#[test]
+fn exact_sticking_follows_the_profile() {
+    use caisson::Profile;
+    let design = support::example("design_breakwater.toml");
+    let seed = design.clone().with_profile(Profile::Seed2011).unwrap();
+    let back = seed.clone().with_profile(Profile::Consistent).unwrap();
+    let fifteen = support::example("fifteen_waves.toml");
+    let cases = [(&design, true), (&seed, false), (&back, true), (&fifteen, false)];
+    for (i, (sc, exact)) in cases.iter().enumerate() {
+        assert_eq!(sc.solver().exact_sticking, *exact, "case {i}");
+    }
+    // The design waves with the seed-2011 scenario's solver controls take no exact step; with
+    // the default one's they do.
+    let steps = |sc: &Scenario| support::design_waves(sc.solver()).iter().map(|(_, s)| s.exact_steps).sum::<u64>();
+    assert_eq!(steps(&seed), 0);
+    assert!(steps(&design) > 100, "{} exact steps", steps(&design));
+}

@@ -44,6 +44,12 @@
 //! pulsating load. A step that fails to converge is halved as in the fixed mode (at most
 //! `max_substep_levels` times in a row).
 //!
+//! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
+//! all-sticking state, a step of dt_max with no load breakpoint inside it is solved exactly
+//! (`exact`: the linear part by its matrix exponential, the shear's bilinear remainder and the
+//! load interpolated quadratically), and kept if every spring sticks at its end and in its
+//! middle; otherwise the Newmark step is taken from the same state.
+//!
 //! **Events**: a converged step in which a spring that was in contact and sticking starts to
 //! slip is not committed if the onset falls inside it: the friction margin of that spring held
 //! sticking, g = κ N_i e_lim − |κ N_i e_i + c_d ė_i|, interpolated linearly between the step's
@@ -66,6 +72,7 @@
 //! unrolled (`solve3`, identical to the last bit). Splitting the single pass changed no result:
 //! every sum has its terms in the same order as before.
 
+mod exact;
 mod params;
 mod solve3;
 mod sticking;
@@ -332,6 +339,9 @@ pub struct SolverStats {
     /// reported (a measure of the engine's work, not a result).
     #[serde(skip)]
     pub sticking_iterates: u64,
+    /// All-sticking steps solved exactly (`exact`); not reported.
+    #[serde(skip)]
+    pub exact_steps: u64,
 }
 
 /// A running simulation: model, solver controls, committed state and scratch.
@@ -347,6 +357,16 @@ pub struct Simulation {
     h_next: f64,
     /// The all-sticking fast path's sums and scratch (`sticking`).
     fast: sticking::FastPath,
+    /// Adaptive stepping with [`SolverParams::exact_sticking`]: the propagators of an
+    /// all-sticking step of dt_max (`exact`).
+    exact: Option<exact::Propagator>,
+    /// The last committed step, if it was exact (its end and R at its start: `exact`).
+    exact_prev: Option<exact::Previous>,
+    /// An exact step is not tried again before this time after one that failed, s.
+    exact_retry_s: f64,
+    /// The load (gravity included) of the last step committed by the adaptive stepping, and its
+    /// time.
+    last_load: Option<(f64, Vector3<f64>)>,
 }
 
 struct Converged {
@@ -379,7 +399,14 @@ impl Simulation {
             gravity,
             h_next: solver.dt_s,
             fast: sticking::FastPath::new(n),
+            exact: None,
+            exact_prev: None,
+            exact_retry_s: f64::NEG_INFINITY,
+            last_load: None,
         };
+        if let (Stepping::Adaptive(p), true) = (solver.stepping, solver.exact_sticking && solver.sticking_fast_path) {
+            sim.exact = exact::Propagator::cached(&sim.model, p.dt_max_s);
+        }
         sim.reset(load);
         sim
     }
@@ -395,6 +422,9 @@ impl Simulation {
         self.state.springs.iter_mut().for_each(|s| *s = SpringState::default());
         self.h_next = self.solver.dt_s;
         self.fast.invalidate();
+        self.exact_prev = None;
+        self.exact_retry_s = f64::NEG_INFINITY;
+        self.last_load = None;
         let p0 = self.load_vector(load.at(0.0));
         // The general path: it leaves the springs' responses of the static equilibrium.
         let f = self.general_force(self.state.u, [0.0; 3], self.solver.dt_s);
@@ -771,13 +801,38 @@ impl Simulation {
         // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
         while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
             let t = self.state.t_s;
+            if t >= bp {
+                bp = load.next_breakpoint_s(t);
+            }
+            // From an all-sticking state, a step of dt_max solved exactly if no breakpoint falls
+            // inside it (`exact`); where a spring would slip or lift, the Newmark step instead.
+            if level == 0 && !at_event && self.fast.direct && t >= self.exact_retry_s {
+                if let Some(hx) = self.exact.as_ref().map(|e| e.h) {
+                    let t1 = t + hx;
+                    if t1 <= bp && t_end_s - t1 >= p.dt_min_s {
+                        // The load at the start: the committed step's, if it is known.
+                        let p0 = match self.last_load {
+                            Some((tl, p)) if tl == t => p,
+                            _ => self.load_vector(load.at(t)),
+                        };
+                        let third = match self.exact_load_before() {
+                            Some(pb) => exact::Third::Before(pb),
+                            None => exact::Third::Middle(self.load_vector(load.at(t + 0.5 * hx))),
+                        };
+                        let w1 = load.at(t1);
+                        if let Some(c) = self.exact_sticking_step(p0, self.load_vector(w1), third) {
+                            self.stats.exact_steps += 1;
+                            self.commit_observed(hx, c, t1, w1, obs);
+                            continue;
+                        }
+                        self.exact_retry_s = t1;
+                    }
+                }
+            }
             // After a Newton failure the halved step may go below dt_min.
             let planned =
                 if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
             let mut h = planned.min(t_end_s - t);
-            if t >= bp {
-                bp = load.next_breakpoint_s(t);
-            }
             if bp - t > p.dt_min_s && bp < t + h {
                 h = bp - t;
             }
@@ -814,22 +869,7 @@ impl Simulation {
                     if err > p.tolerance_m {
                         self.stats.forced_min_steps += 1;
                     }
-                    let it = c.iterations;
-                    self.commit(h, c);
-                    self.state.t_s = t1;
-                    if obs.observes() {
-                        if obs.reads_springs() {
-                            self.fill_sticking_responses();
-                        }
-                        obs.observe(&StepView {
-                            t_s: t1,
-                            state: &self.state,
-                            load: w,
-                            reaction: self.reaction(),
-                            springs: self.step_springs(),
-                            iterations: it,
-                        });
-                    }
+                    self.commit_observed(h, c, t1, w, obs);
                     let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
                     self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
                     level = 0;
@@ -850,6 +890,28 @@ impl Simulation {
             }
         }
         Ok(())
+    }
+
+    /// Commit the converged step `c` of length `h` ending at `t1` under the load `w`, and show it
+    /// to the observer.
+    fn commit_observed<O: Observer + ?Sized>(&mut self, h: f64, c: Converged, t1: f64, w: WaveForce, obs: &mut O) {
+        let it = c.iterations;
+        self.commit(h, c);
+        self.state.t_s = t1;
+        self.last_load = Some((t1, self.load_vector(w)));
+        if obs.observes() {
+            if obs.reads_springs() {
+                self.fill_sticking_responses();
+            }
+            obs.observe(&StepView {
+                t_s: t1,
+                state: &self.state,
+                load: w,
+                reaction: self.reaction(),
+                springs: self.step_springs(),
+                iterations: it,
+            });
+        }
     }
 
     /// Fixed steps of `solver.dt_s` to `t_end_s`.
@@ -885,6 +947,16 @@ mod tests {
 
     /// The seed's Table 5 caisson on its Table 6 foundation with the given dashpot placements.
     pub(super) fn simulation(mode: DampingMode, vertical: VerticalDamping) -> Simulation {
+        simulation_with(mode, vertical, MassMatrix::Coupled, SolverParams::default())
+    }
+
+    /// [`simulation`] with the given mass matrix and solver controls.
+    pub(super) fn simulation_with(
+        mode: DampingMode,
+        vertical: VerticalDamping,
+        mass_matrix: MassMatrix,
+        solver: SolverParams,
+    ) -> Simulation {
         let caisson = CaissonSpec {
             width_m: 0.78,
             length_m: 1.0,
@@ -893,7 +965,7 @@ mod tests {
             mass: MassSpec::WeightInWater { weight_in_water_n: 8240.0 },
             cog_height_m: None,
             inertia_cog_kg_m2: None,
-            mass_matrix: Some(MassMatrix::Coupled),
+            mass_matrix: Some(mass_matrix),
         }
         .build(1000.0, crate::Profile::Consistent)
         .unwrap();
@@ -908,7 +980,7 @@ mod tests {
         }
         .build(&caisson, 1000.0, crate::Profile::Consistent)
         .unwrap();
-        Simulation::new(Model::new(&caisson, &foundation), SolverParams::default(), &WaveForceAt(WaveForce::ZERO))
+        Simulation::new(Model::new(&caisson, &foundation), solver, &WaveForceAt(WaveForce::ZERO))
     }
 
     struct WaveForceAt(WaveForce);

@@ -73,6 +73,13 @@ pub struct SolverParams {
     /// result, so not reported.
     #[serde(skip)]
     pub sticking_fast_path: bool,
+    /// Adaptive stepping: advance an all-sticking phase by steps of dt_max solved exactly
+    /// (exponential integration of the linear part, `dynamics::exact`; docs/model.md §9.1), the
+    /// Newmark step taken only where a spring slips, lifts or the load has a breakpoint.
+    /// Default on; off under the `seed-2011` profile, whose numbers reproduce the paper. Needs
+    /// [`Self::sticking_fast_path`]. Part of the numerics of a results version, not reported.
+    #[serde(skip)]
+    pub exact_sticking: bool,
     /// Newton iterations allowed per (sub)step before the step is sub-stepped.
     pub max_iterations: usize,
     /// Times a failing step may be halved (2^levels sub-steps at most) before the run fails.
@@ -92,6 +99,7 @@ impl Default for SolverParams {
             beta: 0.25,
             predictor: Predictor::ConstantAcceleration,
             sticking_fast_path: true,
+            exact_sticking: true,
             max_iterations: 30,
             max_substep_levels: 8,
             tolerance: 1e-9,
@@ -143,6 +151,13 @@ impl SolverParams {
         between("error_tolerance_m", p.tolerance_m, 1e-12, 1e-3)?;
         self.stepping = Stepping::Adaptive(p);
         Ok(self)
+    }
+
+    /// The numerics of `profile`: [`Self::exact_sticking`] on under `consistent`, off under
+    /// `seed-2011` (whose numbers reproduce the paper).
+    pub fn for_profile(mut self, profile: crate::Profile) -> Self {
+        self.exact_sticking = profile == crate::Profile::Consistent;
+        self
     }
 
     /// Newmark γ from ½ to 1 and β from γ/2 to ½ (unconditionally stable).

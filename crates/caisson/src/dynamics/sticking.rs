@@ -321,6 +321,16 @@ impl Simulation {
         })
     }
 
+    /// The sums of the committed slip positions (refreshed if out of date): n, Σx_i, s_1, Σd_i
+    /// and Σx_i d_i (module docs), for the exact all-sticking step (`exact`).
+    pub(super) fn slip_sums(&mut self) -> [f64; 5] {
+        if !self.fast.valid {
+            self.refresh_fast_path();
+        }
+        let fs = &self.fast;
+        [fs.n, fs.sum_x, fs.s_ref_m, fs.sum_d, fs.sum_xd]
+    }
+
     /// Recompute the sums and slices of the committed slip positions.
     fn refresh_fast_path(&mut self) {
         let law = self.model.law;

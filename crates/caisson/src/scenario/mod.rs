@@ -592,6 +592,7 @@ impl Scenario {
     /// (the keys it gave stay), and everything is rebuilt.
     pub fn with_profile(mut self, profile: Profile) -> Result<Scenario, ScenarioError> {
         self.profile = profile;
+        self.structure.solver = self.structure.solver.for_profile(profile);
         let (c, f) = (self.caisson_spec, self.foundation_spec);
         self.rebuilt(c, f)
     }

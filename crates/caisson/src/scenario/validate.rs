@@ -76,7 +76,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         coherence::check_waves(&caisson, w)?;
     }
     let (load, duration_s) = load_and_duration(f, &caisson, wave_setup.as_ref(), base_dir)?;
-    let solver = validate_solver(f, duration_s)?;
+    let solver = validate_solver(f, duration_s)?.for_profile(profile);
     let sc = Scenario {
         profile,
         water_density_kg_per_m3: rho_w,

@@ -68,3 +68,27 @@ mu_dynamic = {mu}
 "#
     )
 }
+
+/// The waves of the design example (`design_breakwater.toml`, period 12.8 s) that reach its
+/// dynamic model, heights about its sliding threshold from sticking throughout to sliding and
+/// rocking, each run from rest as the lifetime run takes them with `solver`: per wave the
+/// permanent sliding, the peak u_x, θ, horizontal reaction and spring shear and the least spring
+/// normal force (tests/sticking.rs, tests/adaptive_accuracy.rs), and the solver's statistics.
+pub fn design_waves(solver: caisson::dynamics::SolverParams) -> Vec<([f64; 6], caisson::dynamics::SolverStats)> {
+    use caisson::analysis::run::{permanent_sliding_m, Peaks};
+    use caisson::loads::{history::WaveTrain, regime::RegimeChoice};
+    let sc = example("design_breakwater.toml");
+    let site = &sc.waves.as_ref().unwrap().model;
+    let period_s = 12.8;
+    let mut out = Vec::new();
+    for h in [6.0, 8.0, 9.0, 10.0, 11.0, 11.5, 12.0, 12.5, 12.7, 12.79] {
+        let loads = site.evaluate_with(h, period_s, RegimeChoice::Auto).unwrap();
+        let train = WaveTrain::new(vec![site.event(&loads, None, 0.0)]).unwrap();
+        let mut sim = caisson::dynamics::Simulation::new(sc.structure().model(), solver, &train);
+        let mut peaks = Peaks::default();
+        sim.run_until(period_s, &train, &mut peaks).unwrap();
+        let sliding = permanent_sliding_m(&sim);
+        out.push(([sliding, peaks.max_ux, peaks.max_theta, peaks.max_rx, peaks.max_shear, peaks.min_n], sim.stats));
+    }
+    out
+}
