@@ -73,7 +73,7 @@ mu_dynamic = {mu}
 /// dynamic model, heights about its sliding threshold from sticking throughout to sliding and
 /// rocking, each run from rest as the lifetime run takes them with `solver`: per wave the
 /// permanent sliding, the peak u_x, θ, horizontal reaction and spring shear and the least spring
-/// normal force (tests/sticking.rs, tests/adaptive_accuracy.rs), and the solver's statistics.
+/// normal force (tests/equiv_sticking_fast_path.rs, tests/verify_adaptive_accuracy.rs), and the solver's statistics.
 pub fn design_waves(solver: caisson::dynamics::SolverParams) -> Vec<([f64; 6], caisson::dynamics::SolverStats)> {
     use caisson::analysis::run::{permanent_sliding_m, Peaks};
     use caisson::loads::{history::WaveTrain, regime::RegimeChoice};
