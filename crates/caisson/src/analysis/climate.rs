@@ -47,6 +47,7 @@
 //! stay those of normal incidence (no refraction).
 
 use crate::loads::risetime::LoadRng;
+pub use crate::waves::periods::WavePeriods;
 use rand::Rng;
 use rand_distr::StandardNormal;
 use std::f64::consts::FRAC_PI_2;
@@ -58,6 +59,10 @@ pub struct Climate {
     pub duration: StormDuration,
     pub sea_level: SeaLevelRise,
     pub direction: WaveDirection,
+    /// The waves' periods: every wave at T1/3, or each its own ([`crate::waves::periods`]); not
+    /// serialized when every wave is at T1/3, so the fingerprints of the other choices stay.
+    #[serde(skip_serializing_if = "WavePeriods::is_significant")]
+    pub periods: WavePeriods,
 }
 
 impl Climate {

@@ -5,11 +5,13 @@
 
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
+use crate::analysis::climate::WavePeriods;
 use crate::analysis::climate::{
     Climate, SeaLevelRise, StormDuration, StormModel, WaveDirection, MAX_ANGLE_SPREAD_DEG, MAX_MEAN_ANGLE_DEG,
     MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR,
 };
 use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
+use crate::waves::periods::{DEFAULT_SPECTRAL_WIDTH, SPECTRAL_WIDTH_RANGE};
 use serde::Deserialize;
 
 /// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
@@ -78,6 +80,11 @@ pub struct DesignTable {
     pub storm_duration_model: Option<String>,
     /// Lognormal durations: the coefficient of variation.
     pub storm_duration_cov: Option<f64>,
+    /// `"significant"` (default: every wave at T1/3) or `"longuet-higgins"` (each wave's period
+    /// given its height).
+    pub wave_periods: Option<String>,
+    /// Longuet-Higgins periods: the spectral width ν.
+    pub period_spectral_width: Option<f64>,
 }
 
 /// The largest `[design] failure_rotation_rad` (and `[fragility]`'s), rad: 0.1 rad (5.7°) lifts
@@ -183,6 +190,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         duration: duration_model("[design]", &t.storm_duration_model, t.storm_duration_cov)?,
         sea_level: sea_level(t, life_years)?,
         direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
+        periods: wave_periods("[design]", &t.wave_periods, t.period_spectral_width)?,
     };
     let truncated = t.error_truncated.unwrap_or(true);
     if !truncated && t.error_truncation_sigmas.is_some() {
@@ -351,6 +359,32 @@ pub(super) fn duration_model(table: &str, model: &Option<String>, cov: Option<f6
             &format!("{table} storm_duration_model"),
             format!("\"{other}\""),
             "must be \"fixed\" or \"lognormal\"",
+        )),
+    }
+}
+
+/// The waves' periods of `table` (`[design]` or `[fragility]`): `wave_periods` and its spectral
+/// width (docs/design.md, "Climate").
+pub(super) fn wave_periods(table: &str, kind: &Option<String>, width: Option<f64>) -> R<WavePeriods> {
+    match kind.as_deref().unwrap_or("significant") {
+        "significant" => match width {
+            Some(_) => Err(ScenarioError::Conflict {
+                message: format!("`{table} period_spectral_width` is used only with wave_periods = \"longuet-higgins\"; remove it, or set wave_periods"),
+            }),
+            None => Ok(WavePeriods::Significant),
+        },
+        "longuet-higgins" => {
+            let [lo, hi] = SPECTRAL_WIDTH_RANGE;
+            let key = format!("{table} period_spectral_width");
+            let spectral_width = width.map_or(Ok(DEFAULT_SPECTRAL_WIDTH), |v| {
+                number(&key, v, lo, hi, false, "-; the spectral width ν of Longuet-Higgins 1983, e.g. 0.39 for a JONSWAP sea")
+            })?;
+            Ok(WavePeriods::LonguetHiggins { spectral_width })
+        }
+        other => Err(ScenarioError::range(
+            &format!("{table} wave_periods"),
+            format!("\"{other}\""),
+            "must be \"significant\" (every wave at T1/3) or \"longuet-higgins\" (each wave's period given its height)",
         )),
     }
 }
