@@ -45,6 +45,10 @@
 //! applies it unreduced to oblique waves (on the safe side: oblique breaking waves strike the wall
 //! along its length, not all at once). The breaking criterion and the surf-zone transformation
 //! stay those of normal incidence (no refraction).
+//!
+//! **Periods** ([`WavePeriods`], [`crate::waves::periods`]). Every wave at the storm's T1/3 (the
+//! default), or each wave's period given its height from the joint distribution of Longuet-Higgins
+//! (1983); drawn per wave from the storm's part of the stream ([`super::lifetime`]).
 
 use crate::loads::risetime::LoadRng;
 pub use crate::waves::periods::WavePeriods;

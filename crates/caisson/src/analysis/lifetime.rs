@@ -17,7 +17,8 @@
 //! 4. H1/3 and H_max at the structure by Goda's surf-zone formulas at the toe depth
 //!    ([`crate::waves::surf_zone`]), times the transformation error;
 //! 5. N Rayleigh heights of that H1/3, each limited to H_max (Goda's random-wave breaking), each
-//!    with a rise time from the seed's log-normal model;
+//!    with a rise time from the seed's log-normal model, each at T1/3 or at a period of its own
+//!    given its height ("Wave periods" below);
 //! 6. per wave: the loads of [`crate::loads::model::WaveLoadModel`] (regime by the breaking
 //!    criterion) times the wave-force error; friction coefficients times the friction error;
 //!    the wave is run through the dynamic model from rest (static equilibrium) and its permanent
@@ -55,6 +56,17 @@
 //! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
 //! totals to 1 µm per life, `tests/lifetime.rs`).
 //!
+//! **Wave periods** ([`StormInput::periods`], [`crate::waves::periods`]). By default every wave
+//! has the storm's T1/3. With Longuet-Higgins' periods each wave's period τ is drawn given its
+//! height (in 0.5-2.5 τ̄, τ̄ = 0.89 T1/3), and its loads, rise time, screen bound (Ψ at τ) and
+//! run (for τ) are those of τ. The loads are not monotone in the period, so the screen's grid is
+//! then over heights and periods: the 65 height nodes (and the breaker height) at each of 9
+//! period nodes uniform in u = 1 − τ̄/τ, each period node with its own Ψ and its own load-bound
+//! test of the row; a cell may slide if a node within one cell of it, in height or in period,
+//! may. The drawing's threshold is the lowest height that may slide at any period; each drawn
+//! wave draws its period, then is tested against its cell and on its own loads at its period
+//! (`tests/climate.rs` holds the screened and unscreened lives within 1 µm per life).
+//!
 //! **Drawing** ([`WaveDraws`]). A screened wave contributes nothing, so a storm draws only the
 //! waves that can pass the screen ([`WaveDraws::AboveThreshold`], the default). With h_t the
 //! lower edge of the lowest grid cell that may slide and q = P(H > h_t) = exp[−2 (h_t/H1/3)²]
@@ -89,10 +101,11 @@
 //! order: U for H0, four truncated normals for the errors, U for the tide phase (and, only for
 //! the climates that need them, the draws [`super::climate`] lists). The waves of
 //! storm y (counting from 0 over the life) come from the same stream at word (y + 1) · 2^40
-//! ([`STORM_WAVE_WORDS_LOG2`]; at most 6 words per wave, so a storm of up to 1.8e11 waves stays
-//! in its part): per drawn wave, U for its exceedance probability, one standard normal for the
-//! rise time, U for its place ([`WaveDraws::EveryWave`] and the screen off: per wave, U for the
-//! height and one standard normal for the rise time). So how many waves a storm draws (which
+//! ([`STORM_WAVE_WORDS_LOG2`]; about 6 words per wave, 8 with periods of their own, so a storm of
+//! up to 10¹¹ waves stays in its part): per drawn wave, U for its exceedance probability, one
+//! standard normal for the rise time, U for its place ([`WaveDraws::EveryWave`] and the screen
+//! off: per wave, U for the height and one standard normal for the rise time); then, with periods
+//! of their own, U for its period. So how many waves a storm draws (which
 //! depends on the caisson) never moves the numbers of the next storm: a life sees the same
 //! storms and the same largest waves on every caisson (common random numbers of `caisson size`,
 //! docs/size.md), and the same storms with either drawing.
