@@ -68,7 +68,12 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
     .flatten()
     .collect();
     if !climate.is_empty() {
-        let _ = writeln!(t, "climate: {} (the duration above is the mean)", climate.join("; "));
+        let mean = if p.duration == caisson::analysis::climate::StormDuration::Fixed {
+            ""
+        } else {
+            " (the duration above is the mean)"
+        };
+        let _ = writeln!(t, "climate: {}{mean}", climate.join("; "));
     }
     let (h13, period) = (s.waves.height_m(), s.waves.period_s());
     let check = caisson::report::fragility::goda_design_check(s.structure, s.waves, h13, period);
