@@ -655,6 +655,8 @@ struct StormScreen {
     node: [[bool; SCREEN_CELLS + 1]; PERIOD_CELLS + 1],
     /// Period nodes: 1 (every wave at T1/3) or `PERIOD_CELLS + 1`.
     periods: usize,
+    /// Whether any node may slide (none in a calm storm, or without the screen).
+    any: bool,
     dh: f64,
     /// τ̄, and u = 1 − τ̄/τ at the first period node and its step.
     mean_period_s: f64,
@@ -663,8 +665,9 @@ struct StormScreen {
 }
 
 impl StormScreen {
-    /// The grid of storm `s` on `site` (every node false without the screen).
-    fn new(st: &StormCase<'_>, s: &StormInput, site: &StormSite) -> Self {
+    /// The grid of storm `s` on `site` (every node false without the screen); `t13` are the
+    /// loads and the bound at the storm's T1/3 (the one period node of waves at T1/3).
+    fn new(st: &StormCase<'_>, s: &StormInput, site: &StormSite, t13: (&PeriodLoads<'_>, ScreenBound)) -> Self {
         let hmax = s.hmax_m.max(1e-6);
         let dh = hmax / SCREEN_CELLS as f64;
         let (periods, [u0, u1]) = match s.periods {
@@ -675,9 +678,14 @@ impl StormScreen {
         let du = (u1 - u0) / PERIOD_CELLS as f64;
         let mut node = [[false; SCREEN_CELLS + 1]; PERIOD_CELLS + 1];
         for (j, row) in node.iter_mut().enumerate().take(if st.screen { periods } else { 0 }) {
-            let period_s = if periods == 1 { s.period_s } else { mean_period_s / (1.0 - (u0 + j as f64 * du)) };
-            let loads_at = site.model.at_period(period_s);
-            let bound = site.bound(period_s);
+            let own;
+            let (loads_at, bound) = if periods == 1 {
+                t13
+            } else {
+                let period_s = mean_period_s / (1.0 - (u0 + j as f64 * du));
+                own = site.model.at_period(period_s);
+                (&own, site.bound(period_s))
+            };
             // At a period where even the bounds of the loads over all heights up to H_max cannot
             // slide or lift the caisson every node is false: the row is not needed.
             if loads_at.peak_bound(hmax).is_some_and(|b| !may_slide(&s.scaled(&b), &bound)) {
@@ -696,7 +704,8 @@ impl StormScreen {
                 row[(i + 1).min(SCREEN_CELLS)] |= flag;
             }
         }
-        StormScreen { node, periods, dh, mean_period_s, u0, du }
+        let any = node.iter().flatten().any(|&f| f);
+        StormScreen { node, periods, any, dh, mean_period_s, u0, du }
     }
 
     /// The period cells of the grid.
@@ -725,6 +734,9 @@ impl StormScreen {
 
     /// The lowest height cell that may slide at some period.
     fn lowest_cell(&self) -> Option<usize> {
+        if !self.any {
+            return None;
+        }
         (0..SCREEN_CELLS).find(|&c| (0..self.period_cells()).any(|j| self.cell_may_slide(c, j)))
     }
 }
@@ -821,20 +833,12 @@ fn storm_from(
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
     let site = StormSite::new(st, s);
-    let screen = StormScreen::new(st, s, &site);
+    // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
+    let (loads_t13, bound_t13) = (site.model.at_period(s.period_s), site.bound(s.period_s));
+    let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
     let StormScratch { train, waves } = scratch;
-    let mut run = WaveRun {
-        st,
-        s,
-        site: &site,
-        loads_t13: site.model.at_period(s.period_s),
-        bound_t13: site.bound(s.period_s),
-        start_m,
-        ended: failed,
-        sim: None,
-        train,
-    };
+    let mut run = WaveRun { st, s, site: &site, loads_t13, bound_t13, start_m, ended: failed, sim: None, train };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
         draw_above_threshold(s, &screen, rng, waves, &mut run, &mut out)?;
     } else {
