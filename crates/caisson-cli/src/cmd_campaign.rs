@@ -3,6 +3,7 @@
 //! manner of the seed's Figs. 13 and 15.
 
 use crate::cli::CampaignArgs;
+use crate::csv_rows::{to_csv, Plain, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, panels_scaled, Panel, Scales, Series};
@@ -66,44 +67,50 @@ pub fn table_text(c: &Campaign, results: &[ConditionResult]) -> String {
     t
 }
 
-fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "condition",
-        "height_m",
-        "weight_in_water_kn",
-        "regime",
-        "nominal_regime",
-        "sliding_safety_factor",
-        "sliding_mean_m",
-        "sliding_min_m",
-        "sliding_max_m",
-        "rigid_block_mean_m",
-        "rigid_block_min_m",
-        "rigid_block_max_m",
-        "max_horizontal_reaction_mean_kn",
-        "slip_events_mean",
-    ])?;
-    for (i, r) in results.iter().enumerate() {
+/// One row of campaign.csv: its columns are these fields' names, in this order.
+#[derive(serde::Serialize)]
+struct ConditionRow {
+    condition: usize,
+    height_m: Plain,
+    weight_in_water_kn: Plain,
+    regime: &'static str,
+    nominal_regime: &'static str,
+    sliding_safety_factor: Option<Plain>,
+    sliding_mean_m: Sci,
+    sliding_min_m: Sci,
+    sliding_max_m: Sci,
+    rigid_block_mean_m: Sci,
+    rigid_block_min_m: Sci,
+    rigid_block_max_m: Sci,
+    max_horizontal_reaction_mean_kn: Plain,
+    slip_events_mean: Plain,
+}
+
+impl ConditionRow {
+    /// Condition `i` (from 0) of the campaign; numbered from 1 in the file, as in the table.
+    fn of(i: usize, r: &ConditionResult) -> Self {
         let s = &r.summary;
-        w.write_record(&[
-            (i + 1).to_string(),
-            r.condition.height_m.to_string(),
-            (r.condition.weight_in_water_n / 1e3).to_string(),
-            r.condition.regime.name().to_string(),
-            r.nominal.regime.regime.name().to_string(),
-            r.safety.sliding.map_or(String::new(), |v| format!("{v}")),
-            format!("{:e}", s.sliding_m.mean),
-            format!("{:e}", s.sliding_m.min),
-            format!("{:e}", s.sliding_m.max),
-            format!("{:e}", s.rigid_block_sliding_m.mean),
-            format!("{:e}", s.rigid_block_sliding_m.min),
-            format!("{:e}", s.rigid_block_sliding_m.max),
-            format!("{}", s.max_horizontal_reaction_n.mean / 1e3),
-            format!("{}", s.slip_events.mean),
-        ])?;
+        ConditionRow {
+            condition: i + 1,
+            height_m: Plain(r.condition.height_m),
+            weight_in_water_kn: Plain(r.condition.weight_in_water_n / 1e3),
+            regime: r.condition.regime.name(),
+            nominal_regime: r.nominal.regime.regime.name(),
+            sliding_safety_factor: r.safety.sliding.map(Plain),
+            sliding_mean_m: Sci(s.sliding_m.mean),
+            sliding_min_m: Sci(s.sliding_m.min),
+            sliding_max_m: Sci(s.sliding_m.max),
+            rigid_block_mean_m: Sci(s.rigid_block_sliding_m.mean),
+            rigid_block_min_m: Sci(s.rigid_block_sliding_m.min),
+            rigid_block_max_m: Sci(s.rigid_block_sliding_m.max),
+            max_horizontal_reaction_mean_kn: Plain(s.max_horizontal_reaction_n.mean / 1e3),
+            slip_events_mean: Plain(s.slip_events.mean),
+        }
     }
-    Ok(w.into_inner()?)
+}
+
+fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
+    to_csv(results.iter().enumerate().map(|(i, r)| ConditionRow::of(i, r)))
 }
 
 /// The seed's Figs. 13/15: total sliding per condition, the conditions numbered as in the table

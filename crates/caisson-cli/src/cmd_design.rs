@@ -766,7 +766,7 @@ fn design_text(r: &DesignReport) -> String {
     let _ = writeln!(t, "  expected largest excursion     {:>10.4} m", d.expected_max_excursion_m);
     let _ = writeln!(
         t,
-        "  lives ending seaward {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
+        "  lives ending seaward (any amount) {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
         d.seaward_lives, d.rocking_waves, d.large_rotation_waves, d.large_rotation_lives
     );
     t

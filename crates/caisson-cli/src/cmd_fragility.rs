@@ -5,6 +5,7 @@
 //! with their fitted curves.
 
 use crate::cli::FragilityArgs;
+use crate::csv_rows::{to_csv, Plain, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels, Panel, Series};
@@ -136,50 +137,49 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
     t
 }
 
+/// One row of fragility.csv, a (height, limit) pair: its columns are these fields' names, in
+/// this order.
+#[derive(serde::Serialize)]
+struct LevelRow {
+    significant_height_m: Plain,
+    hmax_m: Plain,
+    storms: usize,
+    limit_m: Plain,
+    dynamic_count: u64,
+    dynamic_probability: Plain,
+    dynamic_fitted_probability: Option<Plain>,
+    rigid_block_count: u64,
+    rigid_block_probability: Plain,
+    rigid_block_fitted_probability: Option<Plain>,
+    mean_sliding_m: Sci,
+    mean_rigid_block_sliding_m: Sci,
+    screened_share: Plain,
+    rotation_failures: u64,
+}
+
 /// One row per (height, limit): the counts, the probabilities and the fitted probabilities.
 fn fragility_csv(s: &Setup<'_>, r: &FragilityResult) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "significant_height_m",
-        "hmax_m",
-        "storms",
-        "limit_m",
-        "dynamic_count",
-        "dynamic_probability",
-        "dynamic_fitted_probability",
-        "rigid_block_count",
-        "rigid_block_probability",
-        "rigid_block_fitted_probability",
-        "mean_sliding_m",
-        "mean_rigid_block_sliding_m",
-        "screened_share",
-        "rotation_failures",
-    ])?;
-    for l in &r.levels {
+    let rows = r.levels.iter().flat_map(|l| {
         let n = l.storms.len() as f64;
-        for (j, f) in r.fits.iter().enumerate() {
-            let fitted = |x: &Result<LognormalFit, FitFailure>| {
-                x.as_ref().map_or(String::new(), |x| format!("{}", x.probability(l.h13_m)))
-            };
-            w.write_record(&[
-                l.h13_m.to_string(),
-                l.hmax_m.to_string(),
-                l.storms.len().to_string(),
-                s.params.limits_m[j].to_string(),
-                l.dynamic_exceedances[j].to_string(),
-                format!("{}", l.dynamic_exceedances[j] as f64 / n),
-                fitted(&f.dynamic),
-                l.rigid_block_exceedances[j].to_string(),
-                format!("{}", l.rigid_block_exceedances[j] as f64 / n),
-                fitted(&f.rigid_block),
-                format!("{:e}", l.mean_sliding_m()),
-                format!("{:e}", l.mean_rigid_block_sliding_m()),
-                format!("{}", l.screened_share()),
-                l.rotation_failures.to_string(),
-            ])?;
-        }
-    }
-    Ok(w.into_inner()?)
+        let fitted = |x: &Result<LognormalFit, FitFailure>| x.as_ref().ok().map(|x| Plain(x.probability(l.h13_m)));
+        r.fits.iter().enumerate().map(move |(j, f)| LevelRow {
+            significant_height_m: Plain(l.h13_m),
+            hmax_m: Plain(l.hmax_m),
+            storms: l.storms.len(),
+            limit_m: Plain(s.params.limits_m[j]),
+            dynamic_count: l.dynamic_exceedances[j],
+            dynamic_probability: Plain(l.dynamic_exceedances[j] as f64 / n),
+            dynamic_fitted_probability: fitted(&f.dynamic),
+            rigid_block_count: l.rigid_block_exceedances[j],
+            rigid_block_probability: Plain(l.rigid_block_exceedances[j] as f64 / n),
+            rigid_block_fitted_probability: fitted(&f.rigid_block),
+            mean_sliding_m: Sci(l.mean_sliding_m()),
+            mean_rigid_block_sliding_m: Sci(l.mean_rigid_block_sliding_m()),
+            screened_share: Plain(l.screened_share()),
+            rotation_failures: l.rotation_failures,
+        })
+    });
+    to_csv(rows)
 }
 
 /// One panel per limit, both models on it (the engineer compares them): the storm shares as

@@ -11,10 +11,10 @@ use crate::input_err;
 use crate::output::{check_out_dir, pretty, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
-use caisson::analysis::conventional::{static_check, DesignWaveRule, StaticCheck};
+use caisson::analysis::conventional::{static_check, DesignWave, DesignWaveRule, StaticCheck};
 use caisson::analysis::site::WaveSetup;
 use caisson::loads::history::{LoadComponent, WaveEvent, WaveTrain};
-use caisson::loads::model::{WaveLoads, WaveRecord};
+use caisson::loads::model::{WaveLoadOptions, WaveLoads, WaveRecord};
 use caisson::loads::regime::Regime;
 use caisson::loads::risetime::{load_rng, RiseTimeModel};
 use caisson::loads::shapes::LoadShape;
@@ -101,11 +101,28 @@ fn opt(v: Option<f64>, digits: usize) -> String {
 
 /// The human-readable report.
 pub fn loads_text(sc: &Scenario, ws: &WaveSetup, c: &StaticCheck) -> String {
-    let (l, sf, dw) = (&c.loads, &c.safety, &c.design_wave);
+    let mut t = String::new();
+    wave_lines(&mut t, ws, &c.loads, &c.design_wave);
+    let _ = writeln!(t);
+    pressure_lines(&mut t, &c.loads, &ws.model.options);
+    let _ = writeln!(t);
+    let (site, sf) = (&ws.model.site, &c.safety);
+    let _ = writeln!(
+        t,
+        "Safety (Goda loads under H_D, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa\n  (Goda 2000: both safety factors ≥ 1.2; heel pressure ≤ about 500 kPa on a rubble mound)",
+        sc.foundation().mu_static,
+        sc.caisson().weight_in_water_n / 1e3 / site.length_m,
+        opt(sf.sliding, 3),
+        opt(sf.overturning, 3),
+        opt(sf.heel_pressure_pa.map(|p| p / 1e3), 3)
+    );
+    t
+}
+
+/// The site, the design wave, the wave and its regime.
+fn wave_lines(t: &mut String, ws: &WaveSetup, l: &WaveLoads, dw: &DesignWave) {
     let site = &ws.model.site;
     let o = &ws.model.options;
-    let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
-    let mut t = String::new();
     let _ = writeln!(t, "Site     h_s = {:.3} m at the toe, d = {:.3} m at the wall, base h' = {:.3} m, crest h_c = {:.3} m, B = {:.3} m, l = {:.3} m",
         site.depth_at_toe_m, site.depth_at_wall_m, site.base_depth_m, site.crest_freeboard_m, site.width_m, site.length_m);
     match (dw.rule, dw.significant_height_m) {
@@ -152,7 +169,12 @@ pub fn loads_text(sc: &Scenario, ws: &WaveSetup, c: &StaticCheck) -> String {
         o.criterion.name(),
         l.regime.breaker_height_at_wall_m
     );
-    let _ = writeln!(t);
+}
+
+/// The pressures and forces of Goda, Sainflou and the impact, and the rise time.
+fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions) {
+    let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
+    let breaking = l.regime.regime == Regime::Breaking;
     let _ = writeln!(
         t,
         "Goda (per metre)          α1 = {:.4}  α2 = {:.4}  α3 = {:.4}  α* = {:.4}{}",
@@ -217,17 +239,6 @@ pub fn loads_text(sc: &Scenario, ws: &WaveSetup, c: &StaticCheck) -> String {
             let _ = writeln!(t, "  F* = {:.4} ≤ 1: non-impulsive (pulsating loads only)", l.f_star);
         }
     }
-    let _ = writeln!(t);
-    let _ = writeln!(
-        t,
-        "Safety (Goda loads under H_D, μ = {}, W' = {:.3} kN/m)   sliding {}   overturning {}   heel pressure {} kPa\n  (Goda 2000: both safety factors ≥ 1.2; heel pressure ≤ about 500 kPa on a rubble mound)",
-        sc.foundation().mu_static,
-        sc.caisson().weight_in_water_n / 1e3 / site.length_m,
-        opt(sf.sliding, 3),
-        opt(sf.overturning, 3),
-        opt(sf.heel_pressure_pa.map(|p| p / 1e3), 3)
-    );
-    t
 }
 
 /// Sample times of one wave: a uniform grid of T/400 plus 80 points over the impulse and its

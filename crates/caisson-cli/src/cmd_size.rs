@@ -3,6 +3,7 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
+use crate::csv_rows::{to_csv, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
 use crate::plot::{Panel, Series};
@@ -103,27 +104,13 @@ pub fn run(args: SizeArgs) -> Result<()> {
         ensure_dir(dir)?;
     }
     let _lock = checkpoint.as_deref().map(|c| crate::cmd_design::CheckpointLock::acquire(c, "size")).transpose()?;
-    let mut finished: Vec<Candidate> = Vec::new();
-    let mut writer: Option<(String, std::fs::File)> = None;
-    if let Some(path) = &checkpoint {
-        let (header_line, done) = if args.resume {
-            read_checkpoint(path, &fingerprint)?
-        } else {
-            (SizeHeader::new(fingerprint.clone()).line(), Vec::new())
-        };
-        // The checkpoint rewritten whole (its header and the complete lines), then appended to.
-        let mut text = format!("{header_line}\n");
-        for c in &done {
-            text.push_str(&candidate_line(&header_line, c));
+    let (mut writer, finished) = match &checkpoint {
+        Some(path) => {
+            let (w, done) = open_checkpoint(path, args.resume, &fingerprint)?;
+            (Some(w), done)
         }
-        write_atomic(path, text.as_bytes())?;
-        let f = std::fs::OpenOptions::new()
-            .append(true)
-            .open(path)
-            .with_context(|| format!("opening the checkpoint {}", path.display()))?;
-        writer = Some((header_line, f));
-        finished = done;
-    }
+        None => (None, Vec::new()),
+    };
     let resumed = finished.len();
     let pb = progress((sizer.candidates() * p.lives) as u64, "candidates", "lives");
     if !args.json {
@@ -181,13 +168,8 @@ pub fn run(args: SizeArgs) -> Result<()> {
         crate::say!("{}", size_text(&report));
     }
     if let Some(dir) = &args.out {
-        let _set = crate::output::OutSet::open(dir);
-        write_atomic(&dir.join("size.json"), pretty(&json)?.as_bytes())?;
-        write_atomic(&dir.join("candidates.csv"), &candidates_csv(&report)?)?;
         let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("size");
-        plot(dir, title, &report)?;
-        let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-        crate::output::tidy_out_dir(dir, "size", &keep)?;
+        export(dir, title, &report, &json, checkpoint.as_deref())?;
         if !args.json {
             crate::sayln!(
                 "\nWrote size.json, candidates.csv, design_curve.svg (and size_checkpoint.jsonl) to {}",
@@ -195,6 +177,44 @@ pub fn run(args: SizeArgs) -> Result<()> {
             );
         }
     }
+    Ok(())
+}
+
+/// The checkpoint at `path` for this run: read back on `resume` (its header and finished
+/// candidates), else a new header; rewritten whole (the header and the complete lines) and
+/// opened for appending.
+fn open_checkpoint(path: &Path, resume: bool, fingerprint: &str) -> Result<((String, std::fs::File), Vec<Candidate>)> {
+    let (header_line, done) = if resume {
+        read_checkpoint(path, fingerprint)?
+    } else {
+        (SizeHeader::new(fingerprint.to_string()).line(), Vec::new())
+    };
+    let mut text = format!("{header_line}\n");
+    for c in &done {
+        text.push_str(&candidate_line(&header_line, c));
+    }
+    write_atomic(path, text.as_bytes())?;
+    let f = std::fs::OpenOptions::new()
+        .append(true)
+        .open(path)
+        .with_context(|| format!("opening the checkpoint {}", path.display()))?;
+    Ok(((header_line, f), done))
+}
+
+/// size.json, candidates.csv and design_curve.svg into `dir`, as one set; the checkpoint kept.
+fn export(
+    dir: &Path,
+    title: &str,
+    report: &SizeReport,
+    json: &serde_json::Value,
+    checkpoint: Option<&Path>,
+) -> Result<()> {
+    let _set = crate::output::OutSet::open(dir);
+    write_atomic(&dir.join("size.json"), pretty(json)?.as_bytes())?;
+    write_atomic(&dir.join("candidates.csv"), &candidates_csv(report)?)?;
+    plot(dir, title, report)?;
+    let keep: Vec<&Path> = checkpoint.into_iter().collect();
+    crate::output::tidy_out_dir(dir, "size", &keep)?;
     Ok(())
 }
 
@@ -332,16 +352,6 @@ fn size_text(r: &SizeReport) -> String {
     t
 }
 
-/// A number in a CSV cell as `{:e}` (every CSV of the CLI writes its numbers so); `None` is an
-/// empty cell.
-struct Sci(f64);
-
-impl serde::Serialize for Sci {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        s.collect_str(&format_args!("{:e}", self.0))
-    }
-}
-
 /// One row of candidates.csv: its columns are these fields' names, in this order (a candidate of
 /// size.json with each model's point flattened under its prefix).
 #[derive(serde::Serialize)]
@@ -409,11 +419,7 @@ impl From<&CandidateReport> for CandidateRow {
 }
 
 fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    for k in &r.candidates {
-        w.serialize(CandidateRow::from(k))?;
-    }
-    Ok(w.into_inner()?)
+    to_csv(r.candidates.iter().map(CandidateRow::from))
 }
 
 /// The design curve on logarithmic axes, one panel per criterion given: E|S| (with its 90 % band,

@@ -2,6 +2,7 @@
 //! spectrum of the scenario's caisson under its triangular pulse (seed §5.2, Figs. 7-8).
 
 use crate::cli::SpectrumArgs;
+use crate::csv_rows::{to_csv, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, pretty, progress, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
@@ -103,33 +104,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     }
     if let Some(dir) = &args.out {
         let _set = crate::output::OutSet::open(dir);
-        let mut w = csv::Writer::from_writer(Vec::new());
-        w.write_record([
-            "tr_over_t0",
-            "rise_time_s",
-            "psi",
-            "psi_closed_form",
-            "permanent_sliding_m",
-            "shimosako_sliding_m",
-            "rigid_block_sliding_m",
-            "max_horizontal_reaction_kn",
-        ])?;
-        for p in &pts {
-            w.write_record(
-                [
-                    p.tr_over_t0,
-                    p.rise_time_s,
-                    p.psi,
-                    p.psi_closed_form,
-                    p.permanent_sliding_m,
-                    p.shimosako_sliding_m,
-                    p.rigid_block_sliding_m,
-                    p.max_horizontal_reaction_n / 1e3,
-                ]
-                .map(|v| format!("{v:e}")),
-            )?;
-        }
-        write_atomic(&dir.join("spectrum.csv"), &w.into_inner()?)?;
+        write_atomic(&dir.join("spectrum.csv"), &to_csv(pts.iter().map(SpectrumRow::from))?)?;
         write_atomic(&dir.join("spectrum.json"), pretty(&json)?.as_bytes())?;
         let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
         panels(
@@ -160,4 +135,33 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// One row of spectrum.csv, a point of the sweep: its columns are these fields' names, in this
+/// order.
+#[derive(serde::Serialize)]
+struct SpectrumRow {
+    tr_over_t0: Sci,
+    rise_time_s: Sci,
+    psi: Sci,
+    psi_closed_form: Sci,
+    permanent_sliding_m: Sci,
+    shimosako_sliding_m: Sci,
+    rigid_block_sliding_m: Sci,
+    max_horizontal_reaction_kn: Sci,
+}
+
+impl From<&SpectrumPoint> for SpectrumRow {
+    fn from(p: &SpectrumPoint) -> Self {
+        SpectrumRow {
+            tr_over_t0: Sci(p.tr_over_t0),
+            rise_time_s: Sci(p.rise_time_s),
+            psi: Sci(p.psi),
+            psi_closed_form: Sci(p.psi_closed_form),
+            permanent_sliding_m: Sci(p.permanent_sliding_m),
+            shimosako_sliding_m: Sci(p.shimosako_sliding_m),
+            rigid_block_sliding_m: Sci(p.rigid_block_sliding_m),
+            max_horizontal_reaction_kn: Sci(p.max_horizontal_reaction_n / 1e3),
+        }
+    }
 }

@@ -300,10 +300,6 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     let ratios = log_space(0.05, 10.0, 25);
     let ssr = 0.6 * 8.24;
     let sl = sliding_spectra(&figs, &ratios, ssr)?;
-    let f1 = |m: usize| findings::no_slide_for_short_pulses(&sl[m].1);
-    let f2 = |m: usize| findings::slides_near_t0(&sl[m].0, 0.9 * ssr * 1e3);
-    let f2b = |m: usize| findings::more_than_shimosako_near_t0(&sl[m].1);
-    let f3 = |m: usize| findings::less_than_shimosako_for_long_pulses(&sl[m].1);
     let _ = writeln!(t, "## 3. Sliding under a triangular pulse (seed Figs. 7 right and 8)\n");
     let _ = writeln!(t, "Table 5 caisson (soil route, C = 598 kN·s/m), μ_s = μ_d = 0.6 so that the closed forms of docs/model.md §6.3 apply exactly, horizontal force at the still-water level, no uplift; peak 0.9 and 1.1 × the static sliding resistance μ_s W' = {ssr:.3} kN. Both dashpot placements (docs/model.md §10 item 30). The closed forms use the mass with the added mass.\n");
     let _ = writeln!(t, "![below](figures/validation_sliding_spectrum_below.svg)\n\n![above](figures/validation_sliding_spectrum_above.svg)\n");
@@ -312,8 +308,41 @@ pub fn run(args: ValidationArgs) -> Result<()> {
 
     // 4-5. Campaigns.
     let (nb, br, nominal) = pari_campaigns(&figs)?;
+    let found = seed_findings(&sl, ssr, &nb, &br);
+    let (st, se) = findings_section(&mut t, &found);
+    magnitudes(&mut t, &nb);
+    campaigns_section(&mut t, &nb, &br);
+    breaking_peak_section(&mut t, &nominal);
+    why_profiles_differ(&mut t)?;
+    let _ = writeln!(t, "{CHOICES}");
+    let path = out.join("validation.md");
+    write_atomic(&path, t.as_bytes())?;
+    crate::output::tidy_out_dir(&out, "validation", &[])?;
+    crate::sayln!(
+        "Wrote {} and its figures in {} ({} of {} findings reproduced with seed-2011, {} with consistent)",
+        path.display(),
+        figs.display(),
+        st,
+        found.len(),
+        se
+    );
+    Ok(())
+}
 
-    let found = vec![
+/// The seed's findings F1-F9, each judged under both profiles ([`MODES`]) by its criterion in
+/// `analysis::findings`: F1-F4 on the sliding spectra `sl` (static resistance `ssr`, kN), F5-F9
+/// on the PARI campaigns.
+fn seed_findings(
+    sl: &[SlidingSpectra],
+    ssr: f64,
+    nb: &[Vec<ConditionResult>],
+    br: &[Vec<ConditionResult>],
+) -> Vec<Finding> {
+    let f1 = |m: usize| findings::no_slide_for_short_pulses(&sl[m].1);
+    let f2 = |m: usize| findings::slides_near_t0(&sl[m].0, 0.9 * ssr * 1e3);
+    let f2b = |m: usize| findings::more_than_shimosako_near_t0(&sl[m].1);
+    let f3 = |m: usize| findings::less_than_shimosako_for_long_pulses(&sl[m].1);
+    vec![
         Finding {
             id: "F1",
             text: "t_r/T0 ≪ 1: no sliding even for F_x,max > μ_s W' (§5.2, Figs. 7-8)",
@@ -369,14 +398,19 @@ pub fn run(args: ValidationArgs) -> Result<()> {
             figure: "validation_pari_nonbreaking_*.svg".into(),
             result: [0, 1].map(|m| findings::safer_than_rigid_block(&nb[m])),
         },
-    ];
+    ]
+}
+
+/// §4: the findings' table and the count reproduced per profile, returned (seed-2011,
+/// consistent).
+fn findings_section(t: &mut String, found: &[Finding]) -> (usize, usize) {
     let score = |m: usize| found.iter().filter(|f| f.result[m].holds).count();
     let (st, se) = (score(0), score(1));
 
     let _ = writeln!(t, "## 4. The seed's findings, one by one\n");
     let _ = writeln!(t, "Each finding is checked by a computed criterion (the criteria are `crates/caisson/src/analysis/findings.rs`, the report `crates/caisson-cli/src/cmd_validation.rs`; \"no sliding\" means below {} µm). Campaign findings use the mean over the 10 realizations of the PARI examples (seed Tables 3 and 4, 20 % height variability); F8 is also shown with nominal heights in §6.\n", findings::NO_SLIDE_M * 1e6);
     let _ = writeln!(t, "| # | finding of the seed | figure | profile `seed-2011` | profile `consistent` (the default) |\n|---|---|---|---|---|");
-    for f in &found {
+    for f in found {
         let _ = writeln!(
             t,
             "| {} | {} | `{}` | {}: {} | {}: {} |",
@@ -390,7 +424,12 @@ pub fn run(args: ValidationArgs) -> Result<()> {
         );
     }
     let _ = writeln!(t, "\nReproduced: **{st} of {}** with the seed's literal model (`seed-2011`), **{se} of {}** with the consistent one (`consistent`, the default). The default is not chosen by this count: it is the physically consistent reading of the paper (docs/model.md §10 item 30 and \"Profiles\"); `seed-2011` is kept to reproduce the paper.\n", found.len(), found.len());
-    // Magnitudes: the seed calls its prediction good for the lightest non-breaking caisson (W1 = 7.8 kN).
+    (st, se)
+}
+
+/// §4's last paragraph: the magnitudes of the lightest non-breaking caisson's sliding.
+fn magnitudes(t: &mut String, nb: &[Vec<ConditionResult>]) {
+    // the seed calls its prediction good for the lightest non-breaking caisson (W1 = 7.8 kN).
     let w1 = |m: usize| {
         nb[m]
             .iter()
@@ -400,18 +439,25 @@ pub fn run(args: ValidationArgs) -> Result<()> {
     };
     let _ = writeln!(t, "Magnitudes. The seed finds its model's total sliding close to the measurements for the lightest non-breaking caisson (W1 = 7.8 kN, Fig. 13). The largest mean total sliding of the W1 tests is **{:.1} mm** with `seed-2011` and **{:.0} mm** ({:.1} caisson widths in 15 waves) with `consistent`: without a dashpot on the total velocity only friction resists a sliding caisson, and the Goda pulsating loads of these tests, whose static sliding safety factor is below 1, then push it as far as they push the rigid block (§5), which a flume test of a 0.78 m caisson does not show. The seed's small slides rest on its dashpot. F2 fails with both profiles because the seed's damping (C = 598 kN·s/m, ζ ≈ 0.65, docs/model.md §8.2 item 10) leaves almost no dynamic amplification of a pulse near t_r ≈ T0; the seed's Fig. 7 was probably computed with another damping (its Fig. 6 caption gives D = 1.7e2 kN·s/m).\n",
         w1(0) * 1e3, w1(1) * 1e3, w1(1) / 0.78);
+}
 
+/// §5: the PARI campaigns' figures and tables per profile.
+fn campaigns_section(t: &mut String, nb: &[Vec<ConditionResult>], br: &[Vec<ConditionResult>]) {
     let _ = writeln!(t, "## 5. PARI campaigns (seed Figs. 13 and 15)\n");
     let _ = writeln!(t, "`examples/pari_nonbreaking_campaign.toml` and `examples/pari_breaking_campaign.toml`: 15 conditions each, 10 realizations of 15 regular waves (T = 3.04 s) whose heights vary about the nominal one (normal, COV 0.2, truncated at ±2σ, docs/model.md §10 item 26), regime by Miche at the wall, rise times from the log-normal model (median reading). The rigid block is the Shimosako model with μ = 0.6 (`[waves] rigid_block_mu`). The measured sliding of the PARI tests is shown in the seed's figures only and is not available as numbers, so the comparison with experiment is qualitative (findings above).\n");
-    for (name, set) in [("non-breaking (d = 0.8 m)", &nb), ("breaking (d = 0.4 m)", &br)] {
+    for (name, set) in [("non-breaking (d = 0.8 m)", nb), ("breaking (d = 0.4 m)", br)] {
         for (i, (mode, _)) in MODES.iter().enumerate() {
             let stem = if name.starts_with("non") { "nonbreaking" } else { "breaking" };
             let _ = writeln!(t, "### {name}, profile `{mode}`\n");
             let _ = writeln!(t, "![{stem} {mode}](figures/validation_pari_{stem}_{mode}.svg)\n\n![{stem} {mode} against H](figures/validation_pari_{stem}_{mode}_vs_height.svg)\n");
-            campaign_table(&mut t, &set[i]);
+            campaign_table(t, &set[i]);
             let _ = writeln!(t);
         }
     }
+}
+
+/// §6: the breaking campaign at nominal heights, and why the seed's peak needs them.
+fn breaking_peak_section(t: &mut String, nominal: &[Vec<ConditionResult>]) {
     let _ = writeln!(t, "## 6. The breaking-wave peak and the height variability\n");
     let _ = writeln!(t, "The impact of seed Eq. 30 is largest when the wave breaks at the wall and falls as H grows (docs/model.md §5.1: 15.3, 10.2, 6.6, 1.6 kN/m for H = 0.428 … 0.619 m), while its rise time grows, and for H ≥ 0.569 m F* < 1 makes the wave non-impulsive. The same campaign with every wave at its nominal height (`height_variability = \"none\"`):\n");
     for (i, (mode, _)) in MODES.iter().enumerate() {
@@ -432,20 +478,6 @@ pub fn run(args: ValidationArgs) -> Result<()> {
         .collect();
     let _ = writeln!(t, "\nWhere the peak is not at 0.524-0.569 m, the largest test's Goda quasi-static load alone exceeds the static resistance (Goda sliding safety factor below 1: {}; α_qs = 1 in Eq. 31 as written, docs/model.md §10 item 17), and its long pulsating push outweighs the impacts of the smaller waves. With 20 % height variability the highest waves of the 0.569 and 0.619 m tests do the same in every weight, so the campaign means grow with H (§5). The seed's peak therefore rests on the impacts dominating, which in this model needs the nominal heights and a static safety factor above 1 for the pulsating part.\n\n![nominal heights, seed-2011](figures/validation_pari_breaking_nominal_seed-2011_vs_height.svg)\n",
         if static_fail.is_empty() { "none".to_string() } else { static_fail.join(", ") });
-    why_profiles_differ(&mut t)?;
-    let _ = writeln!(t, "{CHOICES}");
-    let path = out.join("validation.md");
-    write_atomic(&path, t.as_bytes())?;
-    crate::output::tidy_out_dir(&out, "validation", &[])?;
-    crate::sayln!(
-        "Wrote {} and its figures in {} ({} of {} findings reproduced with seed-2011, {} with consistent)",
-        path.display(),
-        figs.display(),
-        st,
-        found.len(),
-        se
-    );
-    Ok(())
 }
 
 /// §7: the prototype case and the design example under both profiles, with the rigid block.

@@ -14,6 +14,7 @@ mod cmd_run;
 mod cmd_size;
 mod cmd_spectrum;
 mod cmd_validation;
+mod csv_rows;
 mod history_out;
 mod output;
 mod plot;

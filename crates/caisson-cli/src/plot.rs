@@ -232,6 +232,18 @@ fn fixed(decimals: usize, v: f64) -> String {
 /// The number of tick labels plotters' mesh draws on an axis at most (its default).
 const MESH_LABELS: usize = 11;
 
+/// A tick label of a logarithmic axis: the tick to 10 significant digits (plotters' ticks such as
+/// 10.000000000000002 are decades and their multiples), in the shortest text that reads back as
+/// it: "10", "0.5", "0.001"; below 10⁻³ and from 10⁵ in exponent form ("1e-4", "2e5").
+fn log_label(v: &f64) -> String {
+    let r: f64 = format!("{:.9e}", v).parse().unwrap_or(*v);
+    if r != 0.0 && (r.abs() < 1e-3 || r.abs() >= 1e5) {
+        format!("{r:e}")
+    } else {
+        format!("{r}")
+    }
+}
+
 /// A tick label of a count: the whole number, or nothing between whole numbers.
 fn whole(x: &f64) -> String {
     if (x - x.round()).abs() < 1e-9 {
@@ -259,10 +271,14 @@ where
     let y_fixed = move |y: &f64| fixed(dy, *y);
     if look.integer_x {
         mesh.x_label_formatter(&whole);
-    } else if !look.log_x {
+    } else if look.log_x {
+        mesh.x_label_formatter(&log_label);
+    } else {
         mesh.x_label_formatter(&x_fixed);
     }
-    if !look.log_y {
+    if look.log_y {
+        mesh.y_label_formatter(&log_label);
+    } else {
         mesh.y_label_formatter(&y_fixed);
     }
     mesh.draw().map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -489,6 +505,31 @@ mod tests {
         assert_eq!(tick_decimals((-1000.0, 6500.0)), 0);
         assert_eq!(tick_decimals((-0.04, 0.16)), 2);
         assert_eq!((fixed(1, -1e-17), fixed(1, -0.06), fixed(0, -3.0)), ("0.0".into(), "-0.1".into(), "-3".into()));
+    }
+
+    /// Logarithmic tick labels: every multiple m·10^k (m = 1..9, k = -8..8), also off by plotters'
+    /// rounding (a relative 1e-15), is labelled by the text of m·10^k itself: it reads back as the
+    /// tick within 1e-12 relative and never ends in ".0".
+    #[test]
+    fn log_tick_labels_are_short_and_exact() {
+        let mut checked = 0;
+        for k in -8..=8 {
+            for m in 1..=9 {
+                let tick = m as f64 * 10f64.powi(k);
+                for noisy in [tick, tick * (1.0 + 1e-15), tick * (1.0 - 1e-15)] {
+                    let label = log_label(&noisy);
+                    let back: f64 = label.parse().unwrap();
+                    assert!((back - tick).abs() <= 1e-12 * tick, "{noisy} labelled {label}");
+                    assert!(!label.ends_with(".0") && label.len() <= 6, "{noisy} labelled {label}");
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 17 * 9 * 3);
+        // By hand: the labels an engineer reads on the design curve and the exceedance plot.
+        let labels: Vec<String> =
+            [10.000000000000002, 1.0, 0.001, 1e-4, 2e5, 0.30000000000000004, 50.0].iter().map(log_label).collect();
+        assert_eq!(labels, ["10", "1", "0.001", "1e-4", "2e5", "0.3", "50"]);
     }
 
     /// A long line keeps at most two points per bucket plus its ends, its extremes and its

@@ -2,6 +2,7 @@
 //! CSV and the seed's Figs. 12/14-style plots of one realization. Also the progress bar and the
 //! thread pool shared with `caisson campaign`.
 
+use crate::csv_rows::{to_csv, Plain, Sci};
 use crate::history_out::{write_plots, HistoryFiles};
 use crate::input_err;
 use crate::output::{pretty, progress, report_json, tidy_out_dir, write_atomic};
@@ -97,63 +98,61 @@ fn summary_text(case: &TrainCase<'_>, s: &TrainSummary) -> String {
     t
 }
 
+/// One row of realizations.csv: its columns are these fields' names, in this order.
+#[derive(serde::Serialize)]
+struct RealizationRow {
+    realization: usize,
+    sliding_m: Sci,
+    rigid_block_sliding_m: Sci,
+    max_horizontal_reaction_kn: Plain,
+    slip_events: u64,
+    breaking_waves: usize,
+    limited_waves: usize,
+    steps: u64,
+}
+
 fn realizations_csv(s: &TrainSummary) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "realization",
-        "sliding_m",
-        "rigid_block_sliding_m",
-        "max_horizontal_reaction_kn",
-        "slip_events",
-        "breaking_waves",
-        "limited_waves",
-        "steps",
-    ])?;
-    for r in &s.realizations {
-        let breaking = r.waves.iter().filter(|w| w.record.regime == Regime::Breaking).count();
-        w.write_record(&[
-            r.index.to_string(),
-            format!("{:e}", r.sliding_m),
-            format!("{:e}", r.rigid_block_sliding_m),
-            format!("{}", r.max_horizontal_reaction_n / 1e3),
-            r.slip_events.to_string(),
-            breaking.to_string(),
-            r.limited_waves.to_string(),
-            r.solver.steps.to_string(),
-        ])?;
-    }
-    Ok(w.into_inner()?)
+    to_csv(s.realizations.iter().map(|r| RealizationRow {
+        realization: r.index,
+        sliding_m: Sci(r.sliding_m),
+        rigid_block_sliding_m: Sci(r.rigid_block_sliding_m),
+        max_horizontal_reaction_kn: Plain(r.max_horizontal_reaction_n / 1e3),
+        slip_events: r.slip_events,
+        breaking_waves: r.waves.iter().filter(|w| w.record.regime == Regime::Breaking).count(),
+        limited_waves: r.limited_waves,
+        steps: r.solver.steps,
+    }))
+}
+
+/// One row of waves.csv (a wave of a realization): its columns are these fields' names, in
+/// this order.
+#[derive(serde::Serialize)]
+struct WaveRow {
+    realization: usize,
+    wave: usize,
+    start_s: Plain,
+    height_m: Plain,
+    regime: &'static str,
+    rise_time_s: Option<Plain>,
+    sliding_m: Sci,
+    rigid_block_sliding_m: Sci,
+    max_horizontal_reaction_kn: Plain,
 }
 
 fn waves_csv(s: &TrainSummary) -> Result<Vec<u8>> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "realization",
-        "wave",
-        "start_s",
-        "height_m",
-        "regime",
-        "rise_time_s",
-        "sliding_m",
-        "rigid_block_sliding_m",
-        "max_horizontal_reaction_kn",
-    ])?;
-    for r in &s.realizations {
-        for (j, x) in r.waves.iter().enumerate() {
-            w.write_record(&[
-                r.index.to_string(),
-                j.to_string(),
-                format!("{}", x.start_s),
-                format!("{}", x.record.height_m),
-                x.record.regime.name().to_string(),
-                x.record.rise_time_s.map_or(String::new(), |v| format!("{v}")),
-                format!("{:e}", x.sliding_m),
-                format!("{:e}", x.rigid_block_sliding_m),
-                format!("{}", x.max_horizontal_reaction_n / 1e3),
-            ])?;
-        }
-    }
-    Ok(w.into_inner()?)
+    to_csv(s.realizations.iter().flat_map(|r| {
+        r.waves.iter().enumerate().map(|(j, x)| WaveRow {
+            realization: r.index,
+            wave: j,
+            start_s: Plain(x.start_s),
+            height_m: Plain(x.record.height_m),
+            regime: x.record.regime.name(),
+            rise_time_s: x.record.rise_time_s.map(Plain),
+            sliding_m: Sci(x.sliding_m),
+            rigid_block_sliding_m: Sci(x.rigid_block_sliding_m),
+            max_horizontal_reaction_kn: Plain(x.max_horizontal_reaction_n / 1e3),
+        })
+    }))
 }
 
 /// Cumulative sliding after each wave, every realization (dynamic) and the rigid block's mean.

@@ -11,7 +11,7 @@ fn caisson() -> assert_cmd::Command {
     support::caisson_within(120)
 }
 
-/// The small design (`tests/data/small_design.toml`, seed 3) with `lives` lives and `extra`.
+/// The small design (`crates/caisson/tests/data/small_design.toml`, seed 3) with `lives` lives and `extra`.
 fn design_text(lives: usize, extra: &str) -> String {
     support::design_text(lives, 3, extra)
 }

@@ -2,9 +2,11 @@
 //! wave height, thread-count determinism, the output files, the shipped example, and keyed errors
 //! for `[fragility]` (exit code 2, `Error:` naming the key, nothing written).
 
-use assert_cmd::Command;
+mod support;
+
 use serde_json::Value;
-use std::path::{Path, PathBuf};
+use std::path::Path;
+use support::{caisson, site, write};
 
 /// The prototype caisson of examples/fragility.toml made lighter (W' = 5000 kN/m instead of
 /// 6200: Goda's static sliding safety factor about 0.85 once the waves reach the breaking limit
@@ -14,55 +16,21 @@ use std::path::{Path, PathBuf};
 /// in the transition. The probabilities then rise from 0 to 1 with H1/3 by far more than the
 /// sampling noise of 8 storms (seeds 1-6 all give non-decreasing counts), so the test does not
 /// depend on a lucky seed.
-const BASE: &str = r#"
-[caisson]
-width_m = 20.0
-length_m = 1.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 5000.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-damping_mode = "elastic"
-vertical_damping = "springs"
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[fragility]
-significant_heights_m = [3.0, 6.0, 9.0, 12.0, 15.0]
-storms = 8
-limits_m = [0.05, 0.2]
-storm_duration_h = 0.1
-seed = 1
-"#;
-
-fn caisson() -> Command {
-    Command::cargo_bin("caisson").expect("the caisson binary is built")
+fn base() -> String {
+    let site = site::without(site::SMALL_DESIGN, "design", &[]);
+    let site = site::with(&site, "caisson", "weight_in_water_kn = 5000.0");
+    site::with(
+        &site,
+        "fragility",
+        "significant_heights_m = [3.0, 6.0, 9.0, 12.0, 15.0]\nstorms = 8\nlimits_m = [0.05, 0.2]\nstorm_duration_h = 0.1\nseed = 1",
+    )
 }
 
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-/// BASE with one exact piece of text replaced (panics if it is not there).
+/// `base()` with one exact piece of text replaced (panics if it is not there).
 fn edit(from: &str, to: &str) -> String {
-    assert!(BASE.contains(from), "test bug: `{from}` is not in the base file");
-    BASE.replacen(from, to, 1)
+    let base = base();
+    assert!(base.contains(from), "test bug: `{from}` is not in the base file");
+    base.replacen(from, to, 1)
 }
 
 fn run_json(dir: &Path, text: &str, threads: &str) -> (String, Value) {
@@ -83,7 +51,7 @@ fn finite(v: &Value, what: &str) -> f64 {
 #[test]
 fn json_contract_and_probabilities_rising_with_height() {
     let dir = tempfile::tempdir().unwrap();
-    let (_, v) = run_json(dir.path(), BASE, "0");
+    let (_, v) = run_json(dir.path(), &base(), "0");
     for key in ["period_s", "storm_duration_h", "hmax_ratio", "rigid_block_mu"] {
         finite(&v[key], key);
     }
@@ -182,15 +150,15 @@ fn json_contract_and_probabilities_rising_with_height() {
 #[test]
 fn results_do_not_depend_on_the_thread_count() {
     let dir = tempfile::tempdir().unwrap();
-    let (one, _) = run_json(dir.path(), BASE, "1");
-    let (two, _) = run_json(dir.path(), BASE, "2");
+    let (one, _) = run_json(dir.path(), &base(), "1");
+    let (two, _) = run_json(dir.path(), &base(), "2");
     assert_eq!(one, two);
 }
 
 #[test]
 fn out_writes_json_csv_and_svg() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "fragility.toml", BASE);
+    let f = write(dir.path(), "fragility.toml", &base());
     let out = dir.path().join("out");
     let o = caisson().args(["fragility", f.to_str().unwrap(), "--out", out.to_str().unwrap()]).output().unwrap();
     assert!(o.status.success(), "stderr:\n{}", String::from_utf8_lossy(&o.stderr));
@@ -266,7 +234,7 @@ fn bad_inputs_name_their_key_and_write_nothing() {
     bad(&edit("storm_duration_h = 0.1", "storm_duration_h = 0.1\nperiod_s = nan"), "[fragility] period_s");
     bad(&edit("seed = 1", "seed = -1"), "[fragility] seed");
     bad(&edit("seed = 1", "seed = 1\nscreen = false"), "screen");
-    bad(&BASE[..BASE.find("[fragility]").unwrap()], "[fragility]");
+    bad(&base()[..base().find("[fragility]").unwrap()], "[fragility]");
     bad(
         &edit("kind = \"irregular\"\nsignificant_height_m = 7.5", "kind = \"regular\"\nheight_m = 7.5"),
         "[waves] kind",

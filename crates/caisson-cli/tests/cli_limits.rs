@@ -209,7 +209,7 @@ fn strip_keys(text: &str, table: &str, keys: &[&str], keep: usize) -> String {
 
 #[test]
 fn dt_s_1e156_with_a_rise_time_of_5e158_is_refused() {
-    // Found by tests/fuzz_scenarios.rs: the run started, with times of 1e155 s, and failed with a
+    // Found by tests/cli_fuzz_scenarios.rs: the run started, with times of 1e155 s, and failed with a
     // Newton-Raphson message (exit 1) instead of naming the key.
     let dir = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string(example("table5_triangle.toml")).unwrap();
@@ -402,7 +402,7 @@ fn a_long_design_run_says_its_estimate() {
     assert!(!String::from_utf8_lossy(&o.stderr).contains("Estimated work"));
 }
 
-/// Found by tests/fuzz_scenarios.rs: the PARI breaking campaign on 1000 springs was estimated at
+/// Found by tests/cli_fuzz_scenarios.rs: the PARI breaking campaign on 1000 springs was estimated at
 /// its 1.5e6 steps and took over 20 s where the estimate said 1.5 s: a step's cost grows with the
 /// springs. A step on n springs counts (n + 10)/20 steps on 10 (50.5 for 1000), so the same
 /// campaign with 100 realizations of 10 000 waves (1e10 steps) is refused on 1000 springs.

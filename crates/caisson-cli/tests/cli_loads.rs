@@ -192,7 +192,7 @@ fn bad_inputs_give_a_keyed_error_and_exit_code_2() {
 
 /// An irregular sea's static check is Goda's design wave H_max, not H1/3 (docs/model.md §1.3): on
 /// the sizing example (H1/3 = 7.5 m at the toe) the JSON says the true kind, the rule and the
-/// height (13.451 m, tests/goda_design.rs), and the text shows the design-wave line.
+/// height (13.451 m, tests/verify_goda_design.rs), and the text shows the design-wave line.
 #[test]
 fn an_irregular_sea_is_checked_under_its_hmax() {
     let j = loads_json("examples/size_breakwater.toml");

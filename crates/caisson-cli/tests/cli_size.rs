@@ -4,58 +4,21 @@
 mod support;
 
 use serde_json::Value;
-use support::{caisson, refused, write};
+use support::{caisson, refused, site, write};
 
 /// A prototype caisson given by its construction (its weight follows its width) under short,
 /// heavy storms, so that a life takes milliseconds and the answer lies inside the range.
 fn size_text(criterion: &str) -> String {
-    format!(
-        r#"[caisson]
-width_m = 20.0
-length_m = 1.0
-unit_length_m = 20.0
-height_m = 24.5
-base_depth_m = 17.5
-wall_thickness_m = 0.5
-slab_thickness_m = 0.8
-partition_thickness_m = 0.2
-cells_across = 4
-cells_along = 4
-cap_height_m = 2.0
-[foundation]
-mu_static = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.2
-error_tolerance_m = 1e-6
-[design]
-life_years = 5
-lives = 12
-seed = 3
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.2
-tidal_range_m = 2.0
-[size]
-range_m = [8.0, 30.0]
-{criterion}
-tolerance_m = 0.5
-curve_points = 4
-"#
-    )
+    let text = site::without(site::SMALL_DESIGN, "caisson", &["weight_in_water_kn"]);
+    let text = site::with(
+        &text,
+        "caisson",
+        "unit_length_m = 20.0\nwall_thickness_m = 0.5\nslab_thickness_m = 0.8\npartition_thickness_m = 0.2\n\
+         cells_across = 4\ncells_along = 4\ncap_height_m = 2.0",
+    );
+    let text = site::without(&text, "foundation", &["mu_dynamic", "damping_mode", "vertical_damping"]);
+    let text = site::with(&text, "solver", "dt_max_s = 0.2");
+    site::with(&text, "size", &format!("range_m = [8.0, 30.0]\n{criterion}\ntolerance_m = 0.5\ncurve_points = 4"))
 }
 
 fn sized(dir: &std::path::Path, criterion: &str, threads: &str) -> (Vec<u8>, Value) {
@@ -93,7 +56,7 @@ fn the_answer_does_not_depend_on_the_thread_count() {
     assert_eq!(at(lo)["dynamic_meets"], false);
     assert!(at(hi)["dynamic"]["expected_sliding_m"].as_f64().unwrap() <= 0.05);
     // Goda's conventional width under H_max (here Goda's breaking-limited 13.451 m,
-    // tests/goda_design.rs): both factors reach 1.2 there (sliding governs, 18.81 m, to 1 mm), and
+    // tests/verify_goda_design.rs): both factors reach 1.2 there (sliding governs, 18.81 m, to 1 mm), and
     // the heel pressure there is above the 500 kPa allowed.
     let g = &j["goda"];
     assert_eq!(g["status"], "found");

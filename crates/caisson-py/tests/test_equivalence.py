@@ -1,13 +1,15 @@
 """Python ↔ CLI equivalence on absurd-but-valid input: the scenarios a front-end that assembles its
 own report would get wrong. Each pair must agree key for key and bit for bit (warnings included),
 or refuse the same way: a load that warns in `spectrum`, the loads on a soft foundation, a gap
-between shards of a design."""
+between shards of a design, sizing candidates whose Goda check has no value."""
 
 from __future__ import annotations
 
 import json
 
 import pytest
+
+import math
 
 import caisson
 from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml
@@ -77,3 +79,33 @@ def test_design_statistics_refuse_a_gap_between_shards_as_caisson_merge_does(tmp
     want = json.loads((tmp_path / "m" / "design.json").read_text())
     got = d.statistics(parts + [d.simulate_lives(range(4, 6))]).report
     assert assert_same_json(got, want) > 40
+
+
+def test_size_candidates_without_a_goda_value_are_the_clis_nulls_and_empty_cells(tmp_path):
+    # The sizing example searched down to 3 m: the narrow candidates tip about the heel under the
+    # design wave (Goda's overturning safety factor below 1), so their heel pressure does not exist
+    # (no resultant inside the base): `null` in size.json, an empty cell in candidates.csv, and in
+    # Python None in the report and NaN in the frame. A front-end that turned it into a number (an
+    # infinity, a 0) or dropped the candidate would drift here.
+    sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml").replace(
+        design={"life_years": 5, "storm_duration_h": 0.2, "storm_location_m": 7.5, "storm_scale_m": 1.5},
+        size={"lives": 12, "curve_points": 4, "tolerance_m": 0.5, "range_m": [3.0, 30.0]},
+    )
+    p = tmp_path / "size_narrow.toml"
+    p.write_text(sc.to_toml())
+    out = tmp_path / "out"
+    cli("size", p, "--out", out)
+    want = json.loads((out / "size.json").read_text())
+    tipping = [c["width_m"] for c in want["candidates"] if c["goda_heel_pressure_kpa"] is None]
+    assert len(tipping) >= 3 and min(tipping) == 3.0
+    assert all(c["goda_overturning_safety_factor"] < 1.0 for c in want["candidates"] if c["width_m"] in tipping)
+    got = caisson.size(caisson.Scenario.from_toml(p))
+    assert assert_same_json(got.report, want) > 100
+    frame = got.candidates
+    nan_widths = [w for w, v in zip(frame["width_m"], frame["goda_heel_pressure_kpa"]) if math.isnan(v)]
+    assert nan_widths == tipping
+    rows = (out / "candidates.csv").read_text().splitlines()
+    header = rows[0].split(",")
+    col = header.index("goda_heel_pressure_kpa")
+    empty = [float(r.split(",")[0]) for r in rows[1:] if r.split(",")[col] == ""]
+    assert empty == tipping

@@ -191,7 +191,7 @@ def test_surf_zone_heights_are_goda_s_and_broadcast():
 
 def test_an_irregular_sea_is_checked_under_its_hmax():
     """Python's loads, like ``caisson loads``, check an irregular sea under Goda's H_max (13.451 m
-    for the sizing example's H1/3 = 7.5 m, tests/goda_design.rs), not under H1/3."""
+    for the sizing example's H1/3 = 7.5 m, tests/verify_goda_design.rs), not under H1/3."""
     sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml")
     r = caisson.loads.report(sc)
     assert r["wave"]["kind"] == "irregular"

@@ -18,10 +18,10 @@ LIVES = 12
 # Out of order and of unequal sizes: 0..5, 5..9, 9..12.
 RANGES = [(5, 9), (0, 5), (9, 12)]
 
-# The small design of the CLI's design tests (crates/caisson-cli/tests/data/small_design.toml: 12
+# The small design of the CLI's design tests (crates/caisson/tests/data/small_design.toml: 12
 # lives of 5 years, about 0.1 s), with a failure limit of 2 mm so that most lives fail: the merged
 # design.json has warnings.
-DESIGN = (ROOT / "crates/caisson-cli/tests/data/small_design.toml").read_text() + "failure_sliding_m = 0.002\n"
+DESIGN = (ROOT / "crates/caisson/tests/data/small_design.toml").read_text() + "failure_sliding_m = 0.002\n"
 assert f"\nlives = {LIVES}\n" in DESIGN and DESIGN.rstrip().endswith("failure_sliding_m = 0.002")
 
 

@@ -31,18 +31,15 @@ pub fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
-/// The small design of `tests/data/small_design.toml` (also read by the Python shard tests; a
-/// life takes milliseconds) with `lives` lives, `seed`, and the lines `extra` added to its
-/// `[design]` table.
+/// The prototype site shared with the core crate's tests (`crates/caisson/tests/support/site.rs`).
+#[path = "../../../caisson/tests/support/site.rs"]
+pub mod site;
+
+/// The small design ([`site::SMALL_DESIGN`], `crates/caisson/tests/data/small_design.toml`, also
+/// read by the Python shard tests; a life takes milliseconds) with `lives` lives, `seed`, and the
+/// lines `extra` added at its end (in its `[design]` table, or tables of their own).
 pub fn design_text(lives: usize, seed: u64, extra: &str) -> String {
-    const TEXT: &str = include_str!("../data/small_design.toml");
-    let (lives_line, seed_line) = ("\nlives = 12\n", "\nseed = 3\n");
-    assert!(TEXT.contains(lives_line) && TEXT.contains(seed_line) && TEXT.ends_with('\n'));
-    let text = TEXT.replacen(lives_line, &format!("\nlives = {lives}\n"), 1).replacen(
-        seed_line,
-        &format!("\nseed = {seed}\n"),
-        1,
-    );
+    let text = site::with(site::SMALL_DESIGN, "design", &format!("lives = {lives}\nseed = {seed}"));
     format!("{text}{extra}\n")
 }
 

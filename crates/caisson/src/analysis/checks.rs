@@ -24,7 +24,7 @@
 
 use super::conventional::static_check;
 use super::lifetime::{FailureLimits, LifeCounts, StormOutcome};
-use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD};
+use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD, SEAWARD_REPORT_M};
 use super::run::Response;
 use super::site::WaveSetup;
 use super::sizing::Candidate;
@@ -426,13 +426,14 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         out.push(Warning::new(
             "seaward-lives",
             format!(
-                "{} of {} lives ended seaward of their place (up to {:.3} m): the wave pushes shoreward, so these displacements come from the caisson rocking and landing (docs/design.md); the statistics use the magnitude |S|",
+                "{} of {} lives ended more than {SEAWARD_REPORT_M} m seaward of their place (up to {:.3} m): the wave pushes shoreward, so these displacements come from the caisson rocking and landing (docs/design.md); the statistics use the magnitude |S|",
                 c.seaward_lives, c.lives, c.largest_seaward_sliding_m
             ),
             &[
                 ("seaward_lives", c.seaward_lives as f64),
                 ("lives", n),
                 ("largest_seaward_sliding_m", c.largest_seaward_sliding_m),
+                ("seaward_threshold_m", SEAWARD_REPORT_M),
             ],
         ));
     }

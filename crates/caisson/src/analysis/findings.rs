@@ -1,6 +1,6 @@
 //! The seed's qualitative findings as computed criteria: the pass/fail rules and their thresholds,
 //! once, for the validation report (`caisson validation`, docs/validation.md §4) and the tests
-//! that keep the reproduced findings true (tests/findings.rs). The seed is Cuomo, Lupoi, Shimosako
+//! that keep the reproduced findings true (tests/verify_findings.rs). The seed is Cuomo, Lupoi, Shimosako
 //! & Takahashi (2011), §5.2 and §6, Figs. 7-8, 13 and 15.
 //!
 //! | # | finding | criterion |

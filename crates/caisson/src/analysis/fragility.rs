@@ -697,7 +697,7 @@ mod tests {
         assert!(s.hmax_m <= 7.2 && s.hmax_m > 7.0, "H_max at H1/3 = 4 m: {}", s.hmax_m);
         // Inside the surf zone the storm's waves stop at Goda's breaking-limited H_max: at
         // H1/3 = 7.5 m, T = 12.8 s on the example's site (h = 20 m, tan θ = 1/100) it is the
-        // 13.451 m of the hand calculation in tests/goda_design.rs, not 1.8 × 7.5 = 13.5 m; at
+        // 13.451 m of the hand calculation in tests/verify_goda_design.rs, not 1.8 × 7.5 = 13.5 m; at
         // 11 m it stays below the 20 m depth (1.8 × 11 = 19.8 m).
         let p128 = FragilityParams { period_s: 12.8, ..p.clone() };
         assert!((p128.storm_input(model, 7.5).hmax_m - 13.451).abs() < 1e-3, "{:?}", p128.storm_input(model, 7.5));

@@ -38,7 +38,7 @@
 //! **or** if the seaward spring can lift off, (6 M_eff/B) f ≥ W' − U_eff: a rocking caisson
 //! ratchets shoreward by millimetres as its lifted springs re-contact, well below the sliding
 //! resistance (without this condition a full run differed from the screened one by 1 %,
-//! `tests/lifetime.rs`). M_eff is the moment about the base centre amplified like the forces, its
+//! `tests/equiv_lifetime.rs`). M_eff is the moment about the base centre amplified like the forces, its
 //! pulsating part with the longer of T0 and the rocking period T_θ = 2π (m_θ/K_θ)^½ (K_θ = Σ k_y
 //! x_i²) in Ψ. f is the lift-off factor of the springs ([`Model::lift_off_factor`]): n equal
 //! springs at x_i carry N_i = V/n + M x_i/Σx_j² statically, so the outermost one lifts at (6 M/B) ·
@@ -54,7 +54,7 @@
 //! wall). The friction used is the smaller of μ_s and the rigid block's μ, so a screened wave
 //! slides neither model. The share of waves screened is reported; `screen = false`
 //! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
-//! totals to 1 µm per life, `tests/lifetime.rs`).
+//! totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
 //! **Wave periods** ([`StormInput::periods`], [`crate::waves::periods`]). By default every wave
 //! has the storm's T1/3. With Longuet-Higgins' periods each wave's period τ is drawn given its
@@ -80,7 +80,7 @@
 //! i.i.d. sequence), each limited to H_max and tested as before, against its cell (the flags
 //! need not be monotone in the height) and then by its own loads. The screened count stays
 //! N − simulated. Every per-life output has the distribution it had when all N waves were drawn
-//! and tested ([`WaveDraws::EveryWave`]); the numbers differ within sampling noise (`tests/lifetime.rs`
+//! and tested ([`WaveDraws::EveryWave`]); the numbers differ within sampling noise (`tests/equiv_lifetime.rs`
 //! holds the design example's statistics of both drawings within a few standard errors).
 //!
 //! **Failure** ([`FailureLimits`], docs/design.md "Failure"). A life fails when the caisson's

@@ -2,7 +2,7 @@
 //! Monte Carlo of performance-based design and fragility curves.
 //!
 //! In three floors; a module names only modules of its floor or below, without a circle
-//! (ARCHITECTURE.md; tests/floors.rs):
+//! (ARCHITECTURE.md; tests/contract_floors.rs):
 //! 0. the model pieces: [`Structure`] (here), [`site`], [`rigid`], [`limits`], [`closed_form`],
 //!    [`climate`];
 //! 1. the drivers: [`run`], [`envelope`], [`spectrum`], [`train`], [`campaign`], [`lifetime`],

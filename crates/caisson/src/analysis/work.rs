@@ -34,7 +34,7 @@
 //! share of N τ̄ ([`simulated_period_ratio`]). The screen pilot runs the waves' own periods.
 //!
 //! Every estimate is deterministic (the pilots use the run's first random streams), so a run is
-//! refused or accepted the same way every time. It is an estimate, not a bound (tests/work.rs):
+//! refused or accepted the same way every time. It is an estimate, not a bound (tests/verify_work_estimates.rs):
 //! the steps of the wave-train and campaign examples within 15 % (measured 1-2 %), the waves of
 //! the design example within 3 % and its screened share within a factor of 3 (measured 1.15: the
 //! rare large storms that pass most waves may or may not be among the pilot's 128), the

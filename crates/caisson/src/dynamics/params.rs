@@ -69,7 +69,7 @@ pub struct SolverParams {
     /// and sticks, and solve an all-sticking step directly (docs/model.md §9.1; default on).
     /// Off, every iterate goes spring by spring and every step by Newton: the same model,
     /// results within the Newton tolerance's reach (1e-6 of a value at most on the examples,
-    /// `crates/caisson/tests/sticking.rs`); the switch exists for that comparison. Not a
+    /// `crates/caisson/tests/equiv_sticking_fast_path.rs`); the switch exists for that comparison. Not a
     /// result, so not reported.
     #[serde(skip)]
     pub sticking_fast_path: bool,

@@ -46,7 +46,7 @@
 //! records the sums of the commit and the reaction) and its residual meets the Newton tolerance;
 //! otherwise the caller iterates. Newton would stop anywhere inside that tolerance; this lands
 //! on the root (to rounding), which is why the fast path now moves results within the
-//! tolerance's reach rather than to rounding (`crates/caisson/tests/sticking.rs`).
+//! tolerance's reach rather than to rounding (`crates/caisson/tests/equiv_sticking_fast_path.rs`).
 //!
 //! [`SpringLaw::sticks`]: crate::foundation::SpringLaw::sticks
 

@@ -1,7 +1,7 @@
 //! `caisson loads`: `loads.json` (keys in docs/waves.md). Per metre of breakwater; kN, kPa, m.
 //!
 //! [`LoadsReport::columns`] hands the same values, without serde, to a [`ColumnSink`]: the table
-//! of many waves of the Python package's `caisson.loads.evaluate` (tests/loads_columns.rs keeps
+//! of many waves of the Python package's `caisson.loads.evaluate` (tests/equiv_loads_columns.rs keeps
 //! it in step with the JSON: every key, in order, every value bit for bit).
 
 use super::{kn, NotFinite, Provenance};

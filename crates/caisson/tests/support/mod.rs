@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod signature;
+pub mod site;
 
 use caisson::scenario::Scenario;
 use std::path::Path;
@@ -9,6 +10,18 @@ use std::path::Path;
 /// A scenario from TOML text (relative files are taken from the current directory).
 pub fn scenario(text: &str) -> Scenario {
     Scenario::from_toml(text, Path::new("test.toml"), Path::new(".")).expect("a valid test scenario")
+}
+
+/// The bundled examples (`examples/*.toml`), sorted by name.
+pub fn example_paths() -> Vec<std::path::PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut examples: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    examples.sort();
+    examples
 }
 
 /// A bundled example, validated (its relative files are taken from `examples/`).
@@ -35,7 +48,7 @@ density_kg_per_m3 = 2300
 
 /// The seed's Table 5 caisson (0.78 m wide, W' `weight_kn`) on a foundation 100 × stiffer than
 /// Table 6, undamped, with μ_s = μ_d = `mu`: under a force through its base centre it is the
-/// rigid block of docs/model.md §6.3 (tests/verification.rs, tests/sizing.rs). `width_m` replaces
+/// rigid block of docs/model.md §6.3 (tests/verify_engine.rs, tests/verify_sizing.rs). `width_m` replaces
 /// the width.
 pub fn rigid_block_caisson(width_m: f64, weight_kn: f64, mu: f64) -> String {
     format!(

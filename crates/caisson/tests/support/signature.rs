@@ -1,7 +1,7 @@
 //! The signature runner: what a bundled example computes, briefly, by the driver its tables call
 //! for (a `[load]` run, the first 3 lives of a `[design]`, 2 storms at the lowest and highest
-//! heights of a `[fragility]`, realization 0 of `[waves]` trains). tests/golden.rs,
-//! tests/predictor.rs and tests/sticking.rs each read what they compare from it.
+//! heights of a `[fragility]`, realization 0 of `[waves]` trains). tests/regress_golden.rs,
+//! tests/equiv_predictor.rs and tests/equiv_sticking_fast_path.rs each read what they compare from it.
 
 use caisson::analysis::fragility::run_fragility;
 use caisson::analysis::lifetime::{run_lives, StormOutcome};
@@ -54,7 +54,7 @@ pub fn signature(sc: &Scenario, history: bool) -> Signature {
 }
 
 /// The per-wave sliding and peak reaction and the total sliding of a train realization, as
-/// tests/predictor.rs and tests/sticking.rs compare them.
+/// tests/equiv_predictor.rs and tests/equiv_sticking_fast_path.rs compare them.
 pub fn train_values(out: &mut std::collections::BTreeMap<String, Vec<f64>>, r: &RealizationResult) {
     out.insert("wave_sliding_m".into(), r.waves.iter().map(|w| w.sliding_m).collect());
     out.insert("wave_max_horizontal_reaction_n".into(), r.waves.iter().map(|w| w.max_horizontal_reaction_n).collect());

@@ -23,7 +23,6 @@ use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use std::path::Path;
 
 type Results = BTreeMap<String, Vec<f64>>;
 
@@ -31,7 +30,7 @@ fn with_predictor(sc: &Scenario, predictor: Predictor) -> Scenario {
     sc.clone().with_solver(SolverParams { predictor, ..sc.solver() }).unwrap()
 }
 
-/// What an example computes (as in `golden.rs`, without the time histories): a `[load]` run,
+/// What an example computes (as in `regress_golden.rs`, without the time histories): a `[load]` run,
 /// realization 0 of the wave trains, the first 3 lives of a design, 2 storms of a fragility run;
 /// and the Newton iterations where the driver reports them.
 fn results(sc: &Scenario) -> (Results, Option<u64>) {
@@ -63,13 +62,7 @@ fn results(sc: &Scenario) -> (Results, Option<u64>) {
 
 #[test]
 fn the_predictor_moves_no_example_beyond_the_newton_and_step_tolerances() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
-    let mut examples: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    examples.sort();
+    let examples = support::example_paths();
     let (mut compared, mut largest) = (0, (0.0f64, String::new()));
     let (mut before_iterations, mut after_iterations) = (0, 0);
     for path in &examples {

@@ -60,7 +60,7 @@ fn runs(text: &str) -> f64 {
     r.summary.permanent_sliding_m
 }
 
-/// Found by tests/fuzz_scenarios.rs (its `known_open` class of `[caisson]` sizes): `width_m =
+/// Found by tests/cli_fuzz_scenarios.rs (its `known_open` class of `[caisson]` sizes): `width_m =
 /// 7.8e-7` under the Table 5 caisson 1.12 m tall passed validation and failed to converge (exit
 /// 1). A caisson is at least 1/100 as wide as tall and every size at least 1 mm; at the bounds it
 /// runs.
@@ -83,7 +83,7 @@ fn width_7_8e_7_length_5e_324_and_a_post_100_times_taller_than_wide_are_refused(
     runs(&edited(&table5, &[("length_m = 1.0", "length_m = 0.001")]));
 }
 
-/// Found by tests/fuzz_scenarios.rs (`known_open`, `[load]` peaks and the weight moved by 10^4 or
+/// Found by tests/cli_fuzz_scenarios.rs (`known_open`, `[load]` peaks and the weight moved by 10^4 or
 /// more): `peak_horizontal_kn = 1.2e7` on the 8.24 kN Table 5 caisson, `peak_uplift_kn = 2e12`,
 /// or `weight_in_water_kn = 8.24e-6` under its 12 kN pulse passed validation and failed to
 /// converge (exit 1). A peak force is at most 1e3 W' (12 000 kN, a force in N in the kN key, is
@@ -115,7 +115,7 @@ fn peak_horizontal_1_2e7_kn_uplift_2e12_kn_or_weight_8_24e_6_kn_under_the_table5
     assert_eq!(e.key(), Some("[load] file"), "{e}");
 }
 
-/// Found by tests/fuzz_scenarios.rs (`known_open`, the weight moved by 10^4 or more in the wave
+/// Found by tests/cli_fuzz_scenarios.rs (`known_open`, the weight moved by 10^4 or more in the wave
 /// examples): `weight_in_water_kn = 1.617e-5` under the PARI breaking wave passed validation and
 /// the first wave failed to converge. The nominal wave's force is held against the weight as a
 /// `[load]`'s is; in a campaign, each condition's.
@@ -136,7 +136,7 @@ fn weight_1_617e_5_kn_under_the_pari_breaking_wave_is_refused() {
     assert!(e.to_string().contains("[campaign]") && e.to_string().contains("of water the caisson displaces"), "{e}");
 }
 
-/// Found by tests/fuzz_scenarios.rs (`known_open`, a fixed dt_s far above T0): the fifteen-wave
+/// Found by tests/cli_fuzz_scenarios.rs (`known_open`, a fixed dt_s far above T0): the fifteen-wave
 /// series with `e100_kpa = 3.5e7` (T0 = 2.1 ms) and fixed steps of `dt_s = 1` failed to converge
 /// at t = 13.5 s (exit 1). Fixed steps are at most T0; just below, the run converges.
 #[test]
@@ -152,7 +152,7 @@ fn fixed_dt_1_s_on_the_fifteen_waves_with_e100_3_5e7_kpa_is_refused_above_the_na
         .expect("adaptive steps are not bounded by T0");
 }
 
-/// Found by tests/fuzz_scenarios.rs (`known_open`, design caissons that float at high tide):
+/// Found by tests/cli_fuzz_scenarios.rs (`known_open`, design caissons that float at high tide):
 /// the design example with `length_m = 100` (the weight in water a total of 5500 kN) loses
 /// 40 400 kN at the highest tide of 2 m; its lives failed with a Newton message (exit 1).
 #[test]
@@ -181,7 +181,7 @@ fn design_caisson_100_m_long_that_floats_at_high_tide_is_refused() {
     assert!(Scenario::from_toml(DESIGN, Path::new("t.toml"), Path::new(".")).is_ok());
 }
 
-/// Found by tests/fuzz_scenarios.rs once its exclusions were gone: the PARI non-breaking campaign
+/// Found by tests/cli_fuzz_scenarios.rs once its exclusions were gone: the PARI non-breaking campaign
 /// with `length_m = 1e4` (its weights in water totals of 7.8-8.9 kN over 10 km, its waves 3700
 /// times that) passed validation, ran its first wave, and failed to converge in a later one (exit
 /// 1); so did `length_m = 3000` (1100 W'). Refused above 1000 W', every condition's largest wave

@@ -260,7 +260,7 @@ fn the_storm_angle_acts_through_goda_beta() {
 
 /// The work estimate of the climate example (peaks over threshold, 3 storms a year; oblique
 /// waves; the sea rising) counts the storms a year: its waves against those of the first 100
-/// lives (3 % allowed, as for the design example, tests/work.rs), its screened share against
+/// lives (3 % allowed, as for the design example, tests/verify_work_estimates.rs), its screened share against
 /// theirs within a factor of 3.
 #[test]
 fn the_work_estimate_counts_the_storms_of_a_pot_climate() {

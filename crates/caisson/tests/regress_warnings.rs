@@ -132,7 +132,7 @@ fn newmark_period_ratio_matches_an_integrated_oscillator() {
 }
 
 /// A peak force over 100 W' (1200 kN on the 8.24 kN caisson: 146 W') is flagged, naming the key and
-/// the unit to check (12 000 kN, a force in N in the kN key, is refused: tests/absurd_inputs.rs);
+/// the unit to check (12 000 kN, a force in N in the kN key, is refused: tests/regress_absurd_inputs.rs);
 /// 12 kN is not.
 #[test]
 fn a_load_over_100_times_the_weight_is_flagged() {

@@ -14,11 +14,11 @@
 //! Size: `CAISSON_FUZZ_CASES` (default 8000) in-process cases and `CAISSON_FUZZ_BIN_CASES`
 //! (default 80) binary cases; CI runs the defaults (20 to 30 s on 2 cores). To search longer:
 //! `CAISSON_FUZZ_CASES=100000 CAISSON_FUZZ_BIN_CASES=2000 cargo test --release -p caisson-cli
-//! --test fuzz_scenarios -- --nocapture` (CONTRIBUTING.md). A failure is shrunk by proptest to
+//! --test cli_fuzz_scenarios -- --nocapture` (CONTRIBUTING.md). A failure is shrunk by proptest to
 //! a minimal mutation list and printed with the scenario text and the seed. The cases come from
 //! a fixed seed, so the suite checks the same cases on every run and cannot fail by chance; a
 //! longer search sets `CAISSON_FUZZ_SEED=N` (any u64) to explore other cases, and a finding
-//! becomes a named regression test (`crates/caisson/tests/findings.rs`).
+//! becomes a named regression test (`crates/caisson/tests/verify_findings.rs`).
 //!
 //! Work-size keys (`duration_s`, `dt_s`, counts such as `waves`, `realizations`, `lives`) are
 //! mutated like the others: before a binary case runs, its work is estimated in process as the

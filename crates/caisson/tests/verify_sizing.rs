@@ -25,7 +25,7 @@ const RISE_S: f64 = 0.1;
 const ENGINE_REL: f64 = 0.01;
 const ENGINE_ABS_M: f64 = 1e-6;
 
-/// The caisson of width `b` m on the stiff, undamped foundation of tests/verification.rs
+/// The caisson of width `b` m on the stiff, undamped foundation of tests/verify_engine.rs
 /// (`rigid_block_sliding_matches_closed_form`), the pulse through the base centre.
 fn at_width(b: f64) -> Scenario {
     let caisson = support::rigid_block_caisson(b, WEIGHT_PER_WIDTH_KN_PER_M * b, MU);
@@ -82,7 +82,7 @@ fn point(s: f64) -> ModelPoint {
 }
 
 /// The engine's slide is within 1 % + 1 µm of the closed form (the stick-slip transitions
-/// resolved to dt, tests/verification.rs, and the elastic compliance: the springs' stick limit
+/// resolved to dt, tests/verify_engine.rs, and the elastic compliance: the springs' stick limit
 /// e_s = μ W'/K_x is at most 0.6 µm here), so the width it gives lies between the exact widths
 /// of (S_a + 1 µm)·1.01 and (S_a − 1 µm)/1.01, plus the search's tolerance (the answer is the upper
 /// end of a bracket narrower than it). The rigid-block column carries the closed form itself,

@@ -14,7 +14,7 @@
 //! limit, a spring at its friction cap) could take another branch; none does on these cases
 //! (identical step counts, asserted). Measured: at most 1.9e-7 of the largest value of a
 //! quantity on the examples (the sliding of a fragility storm of 2 h), 5e-9 on the design waves
-//! (`cargo test --release --test sticking -- --nocapture` prints it). Tolerance: 1e-6 of the
+//! (`cargo test --release --test equiv_sticking_fast_path -- --nocapture` prints it). Tolerance: 1e-6 of the
 //! largest value of each quantity plus 1e-12 (m, N) for quantities near zero, five times the
 //! measured difference and three orders below the adaptive stepper's own accuracy (0.15 % on the
 //! design example, BENCHMARKS.md).
@@ -28,7 +28,6 @@ use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use std::path::Path;
 
 type Results = BTreeMap<String, Vec<f64>>;
 
@@ -39,7 +38,7 @@ fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
     sc.clone().with_solver(SolverParams { sticking_fast_path: on, ..sc.solver() }).unwrap()
 }
 
-/// What an example computes (as in `predictor.rs`): a `[load]` run, realization 0 of the wave
+/// What an example computes (as in `equiv_predictor.rs`): a `[load]` run, realization 0 of the wave
 /// trains, the first 3 lives of a design, 2 storms of a fragility run.
 fn results(sc: &Scenario) -> (Results, Work) {
     let mut out = Results::new();
@@ -103,13 +102,7 @@ fn compare(name: &str, old: &Results, new: &Results, largest: &mut (f64, String)
 
 #[test]
 fn the_fast_path_moves_no_example_beyond_rounding() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
-    let mut examples: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    examples.sort();
+    let examples = support::example_paths();
     let (mut compared, mut largest) = (0, (0.0f64, String::new()));
     let (mut iterations, mut sticking) = (0, 0);
     for path in &examples {

@@ -12,21 +12,17 @@
 //! identical numbers (`scripts/same-numbers.sh`); the allowance is for another platform's libm
 //! and floating-point contraction. A change of the model, of a default or of a random stream
 //! moves these numbers by far more, and must bump `RESULTS_VERSION` and re-bless:
-//! `CAISSON_BLESS=1 cargo test --release -p caisson --test golden`.
+//! `CAISSON_BLESS=1 cargo test --release -p caisson --test regress_golden`.
 
 mod support;
 
 use caisson::analysis::run::History;
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use support::signature::Signature;
 
 type Series = BTreeMap<String, Vec<f64>>;
-
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
 
 /// 41 samples of a history, evenly spaced in sample index.
 fn sampled(h: &History, out: &mut Series) {
@@ -89,12 +85,7 @@ fn compare(name: &str, got: &Series, want: &Series) -> usize {
 #[test]
 fn every_example_matches_its_golden_results() {
     let bless = std::env::var_os("CAISSON_BLESS").is_some();
-    let mut examples: Vec<PathBuf> = std::fs::read_dir(examples_dir())
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    examples.sort();
+    let examples = support::example_paths();
     let mut checked = 0;
     for path in &examples {
         let name = path.file_stem().unwrap().to_str().unwrap().to_string();

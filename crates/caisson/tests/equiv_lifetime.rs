@@ -6,55 +6,23 @@ mod support;
 
 use caisson::analysis::lifetime::{run_lives, simulate_life, FailureLimits, StormCase, StormOutcome, WaveDraws};
 use std::ops::ControlFlow;
-use support::scenario;
+use support::{scenario, site};
 
-const DESIGN: &str = r#"
-[caisson]
-width_m = 20.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 4500.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-damping_mode = "elastic"
-vertical_damping = "springs"
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_s = 1e-3
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[design]
-life_years = 3
-lives = 4
-seed = 11
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.15
-tidal_range_m = 2.0
-"#;
+/// The shared small design (`support::site`) with 4 lives of 3 years, seed 11, storm peaks of
+/// 0.15 h.
+fn design() -> String {
+    site::with(site::SMALL_DESIGN, "design", "life_years = 3\nlives = 4\nseed = 11\nstorm_duration_h = 0.15")
+}
 
-/// The four lives of `DESIGN`, every wave drawn (the screen, if on, tested wave by wave).
+/// The four lives of `design()`, every wave drawn (the screen, if on, tested wave by wave).
 fn lives(screen: bool) -> Vec<StormOutcome> {
     lives_drawn(screen, WaveDraws::EveryWave)
 }
 
-/// The four lives of `DESIGN`, run to their end (`failure: None`: the tests that use them
+/// The four lives of `design()`, run to their end (`failure: None`: the tests that use them
 /// compare both models, or the screen, over whole lives; one life slides beyond B/4).
 fn lives_drawn(screen: bool, draws: WaveDraws) -> Vec<StormOutcome> {
-    let sc = scenario(DESIGN);
+    let sc = scenario(&design());
     let d = sc.design.clone().unwrap();
     let st = StormCase { rigid_block_mu: 0.6, draws, failure: None, ..sc.storm_case(screen).unwrap() };
     let lives: Vec<StormOutcome> = (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect();
@@ -110,7 +78,7 @@ fn the_dynamic_model_follows_the_rigid_block_for_long_pushes() {
 /// thread count they run in, and stops starting lives when the callback says so.
 #[test]
 fn run_lives_is_ordered_and_stoppable() {
-    let sc = scenario(DESIGN);
+    let sc = scenario(&design());
     let d = sc.design.clone().unwrap();
     let st = sc.storm_case(true).unwrap();
     let one_by_one: Vec<(usize, StormOutcome)> =
@@ -225,7 +193,7 @@ fn drawing_only_the_waves_above_the_threshold_keeps_the_statistics() {
 #[test]
 fn a_storms_draws_do_not_move_the_next_storms_numbers() {
     let light = lives_drawn(true, WaveDraws::AboveThreshold);
-    let sc = scenario(&DESIGN.replace("weight_in_water_kn = 4500.0", "weight_in_water_kn = 5500.0"));
+    let sc = scenario(&design().replace("weight_in_water_kn = 4500.0", "weight_in_water_kn = 5500.0"));
     let d = sc.design.clone().unwrap();
     let st = StormCase { rigid_block_mu: 0.6, ..sc.storm_case(true).unwrap() };
     let heavy: Vec<StormOutcome> = (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect();
@@ -336,7 +304,7 @@ fn a_caisson_that_overturns_under_its_design_wave_fails_by_rotation() {
 #[test]
 fn the_capped_expected_sliding_stays_below_the_failure_limit_where_the_uncapped_one_does_not() {
     use caisson::report::design::DesignReport;
-    let text = DESIGN
+    let text = design()
         .replace("weight_in_water_kn = 4500.0", "weight_in_water_kn = 3000.0")
         .replace("tidal_range_m = 2.0", "tidal_range_m = 2.0\nfailure_sliding_m = 0.05\ncontinue_after_failure = true");
     let sc = scenario(&text);
