@@ -308,26 +308,13 @@ fn default_climate_leaves_the_fingerprint_unchanged() {
     assert_ne!(fp(&sc, &d), fp(&climate, &c));
 }
 
-/// A `[design]` whose storms slide `CALM`'s caisson (that of tests/lifetime.rs: 4 lives of 3
-/// storms of 0.15 h near H1/3 = 7.5 m at T1/3 ≈ 12.7 s, a 2 m tide).
-const SLIDING_DESIGN: &str = r#"[design]
-life_years = 3
-lives = 4
-seed = 11
-storm_distribution = "weibull"
-storm_scale_m = 1.5
-storm_shape = 1.4
-storm_location_m = 7.5
-storm_duration_h = 0.15
-tidal_range_m = 2.0
-"#;
-
-/// The four lives of `CALM`'s caisson under `SLIDING_DESIGN` with `extra` keys in `[design]`, run to their end, every wave
-/// drawn ([`WaveDraws::EveryWave`]: the screened and unscreened runs draw the same waves and
-/// periods) or only those above the screen's threshold.
+/// The four lives of the shared test site (`support::site`, whose storms slide its caisson: 3
+/// storms of 0.15 h near H1/3 = 7.5 m, as tests/equiv_lifetime.rs) with `extra` keys in
+/// `[design]`, run to their end, every wave drawn ([`WaveDraws::EveryWave`]: the screened and
+/// unscreened runs draw the same waves and periods) or only those above the screen's threshold.
 fn sliding_lives(extra: &str, screen: bool, draws: WaveDraws) -> Vec<StormOutcome> {
-    let site = &CALM[..CALM.find("[design]").unwrap()];
-    let sc = scenario(&format!("{site}{SLIDING_DESIGN}{extra}\n"));
+    let keys = format!("life_years = 3\nlives = 4\nseed = 11\nstorm_duration_h = 0.15\n{extra}");
+    let sc = scenario(&support::site::with(support::site::SMALL_DESIGN, "design", &keys));
     let d = sc.design.clone().unwrap();
     let st = StormCase { rigid_block_mu: 0.6, draws, failure: None, ..sc.storm_case(screen).unwrap() };
     (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect()
@@ -336,7 +323,7 @@ fn sliding_lives(extra: &str, screen: bool, draws: WaveDraws) -> Vec<StormOutcom
 /// With wave-by-wave periods (Longuet-Higgins, ν = 0.39) the screen (its grid over heights and
 /// periods, then each wave's own loads at its own period) skips only waves that slide neither
 /// model: on the same waves and periods, the screened and unscreened lives agree, the rigid block
-/// to rounding and the dynamic model to 1 µm per life (as tests/lifetime.rs holds for periods at
+/// to rounding and the dynamic model to 1 µm per life (as tests/equiv_lifetime.rs holds for periods at
 /// T1/3). The run must screen waves and slide, and the periods must move the lives (against every
 /// wave at T1/3, the same storms slide differently).
 #[test]

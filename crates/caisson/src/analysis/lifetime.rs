@@ -65,7 +65,7 @@
 //! test of the row; a cell may slide if a node within one cell of it, in height or in period,
 //! may. The drawing's threshold is the lowest height that may slide at any period; each drawn
 //! wave draws its period, then is tested against its cell and on its own loads at its period
-//! (`tests/climate.rs` holds the screened and unscreened lives within 1 µm per life).
+//! (`tests/verify_climate.rs` holds the screened and unscreened lives within 1 µm per life).
 //!
 //! **Drawing** ([`WaveDraws`]). A screened wave contributes nothing, so a storm draws only the
 //! waves that can pass the screen ([`WaveDraws::AboveThreshold`], the default). With h_t the
