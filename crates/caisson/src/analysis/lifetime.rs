@@ -126,7 +126,7 @@ use crate::loads::risetime::LoadRng;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
 use crate::waves::surf_zone::goda_surf_zone;
-use crate::G_M_PER_S2;
+use crate::{check, ParamError, G_M_PER_S2};
 use rand::Rng;
 use rand_distr::StandardNormal;
 use rayon::prelude::*;
@@ -156,6 +156,21 @@ impl StormDistribution {
         }
     }
 
+    /// Peaks over threshold of this fitted distribution ([`StormModel::PeaksOverThreshold`]):
+    /// refused naming `threshold_m` where the distribution leaves no room above the threshold
+    /// (1 − F(threshold) < 10⁻⁹: its exceedances could not be drawn). (The ranges of the rate and
+    /// the threshold are the scenario's keys'.)
+    pub fn peaks_over_threshold(&self, rate_per_year: f64, threshold_m: f64) -> Result<StormModel, ParamError> {
+        if 1.0 - self.cdf(threshold_m) < 1e-9 {
+            return Err(check::rule(
+                "threshold_m",
+                threshold_m,
+                "must be a height the storm distribution exceeds (1 − F(threshold) ≥ 1e-9): lower it, or check the distribution's parameters",
+            ));
+        }
+        Ok(StormModel::PeaksOverThreshold { rate_per_year, threshold_m })
+    }
+
     /// F(h), the probability of a height at most `h_m`.
     pub fn cdf(&self, h_m: f64) -> f64 {
         match *self {
@@ -183,6 +198,22 @@ pub struct ErrorModel {
 
 impl ErrorModel {
     pub const NONE: ErrorModel = ErrorModel { bias: 0.0, cov: 0.0, truncation_sigmas: Some(2.0) };
+
+    /// An error model whose multiplier stays positive: truncated at ±k, 1 + bias − k·cov > 0
+    /// (the lowest multiplier it can draw); refused naming `cov` otherwise. (The ranges of the
+    /// bias, the COV and k are the scenario's keys'.)
+    pub fn new(bias: f64, cov: f64, truncation_sigmas: Option<f64>) -> Result<Self, ParamError> {
+        if let Some(k) = truncation_sigmas {
+            if 1.0 + bias - k * cov <= 0.0 {
+                return Err(check::rule(
+                    "cov",
+                    cov,
+                    format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive"),
+                ));
+            }
+        }
+        Ok(ErrorModel { bias, cov, truncation_sigmas })
+    }
 
     fn draw(&self, rng: &mut LoadRng) -> f64 {
         let z = loop {
@@ -1165,6 +1196,23 @@ mod tests {
             checked += 1;
         }
         assert_eq!(checked, 2);
+    }
+
+    /// The constructors' rules by hand: a truncated error of bias −0.09 reaches 1 − 0.09 − 2 · 0.455
+    /// = 0 at COV 0.455 (refused, naming the COV), untruncated it is allowed; a Weibull of B = 7.5 m,
+    /// A = 1.5 m, k = 1.4 is exceeded at 10 m (1 − F = exp(−(2.5/1.5)^1.4) = 0.106) but not at 90 m.
+    #[test]
+    fn constructors_refuse_what_cannot_be_drawn() {
+        let e = ErrorModel::new(-0.09, 0.455, Some(2.0)).unwrap_err();
+        assert_eq!((e.quantity, e.value), ("cov", 0.455));
+        assert!(ErrorModel::new(-0.09, 0.45, Some(2.0)).is_ok() && ErrorModel::new(-0.09, 0.9, None).is_ok());
+        let w = StormDistribution::Weibull { scale_m: 1.5, shape: 1.4, location_m: 7.5 };
+        assert_eq!(
+            w.peaks_over_threshold(3.0, 10.0),
+            Ok(StormModel::PeaksOverThreshold { rate_per_year: 3.0, threshold_m: 10.0 })
+        );
+        assert!((1.0 - w.cdf(10.0) - (-(2.5f64 / 1.5).powf(1.4)).exp()).abs() < 1e-15);
+        assert_eq!(w.peaks_over_threshold(3.0, 90.0).unwrap_err().quantity, "threshold_m");
     }
 
     /// Limit 1 m; lives |S| 0.1, 0.5 (failed by rotation), 3 (failed by sliding), 0.2: the

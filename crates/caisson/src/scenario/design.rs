@@ -11,7 +11,7 @@ use crate::analysis::climate::{
     MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR,
 };
 use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
-use crate::waves::periods::{DEFAULT_SPECTRAL_WIDTH, SPECTRAL_WIDTH_RANGE};
+use crate::waves::periods::DEFAULT_SPECTRAL_WIDTH;
 use serde::Deserialize;
 
 /// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
@@ -106,6 +106,12 @@ fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
             Err(ScenarioError::range(&format!("[design] {key}"), n, format!("must be a whole number from 1 to {hi}")))
         }
     }
+}
+
+/// A rule of a parameter type's constructor ([`crate::ParamError`]) under the file's `key`, with
+/// its words (the rules' values are in the keys' units).
+fn rule(key: &str, e: crate::ParamError) -> ScenarioError {
+    ScenarioError::range(key, e.value, e.allowed.describe(1.0, ""))
 }
 
 fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
@@ -203,14 +209,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
         let bias = num(&format!("{name}_bias"), bias, def.bias, -0.9, 1.0, false, "fraction")?;
         let cov = num(&format!("{name}_cov"), cov, def.cov, 0.0, 1.0, false, "fraction")?;
-        if truncated && 1.0 + bias - k * cov <= 0.0 {
-            return Err(ScenarioError::range(
-                &format!("[design] {name}_cov"),
-                cov,
-                format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive"),
-            ));
-        }
-        Ok(ErrorModel { bias, cov, truncation_sigmas: truncated.then_some(k) })
+        ErrorModel::new(bias, cov, truncated.then_some(k)).map_err(|e| rule(&format!("[design] {name}_cov"), e))
     };
     let wave_force = err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?;
     let impact_force = match (t.impact_force_bias, t.impact_force_cov) {
@@ -322,15 +321,7 @@ fn storm_model(t: &DesignTable, dist: &StormDistribution) -> R<StormModel> {
                 false,
                 "m",
             )?;
-            // The fitted distribution must leave room above the threshold.
-            if 1.0 - dist.cdf(threshold_m) < 1e-9 {
-                return Err(ScenarioError::range(
-                    "[design] storm_threshold_m",
-                    threshold_m,
-                    "must be a height the storm distribution exceeds (1 − F(threshold) ≥ 1e-9): lower it, or check the distribution's parameters",
-                ));
-            }
-            Ok(StormModel::PeaksOverThreshold { rate_per_year, threshold_m })
+            dist.peaks_over_threshold(rate_per_year, threshold_m).map_err(|e| rule("[design] storm_threshold_m", e))
         }
         other => Err(ScenarioError::range(
             "[design] storm_model",
@@ -373,14 +364,8 @@ pub(super) fn wave_periods(table: &str, kind: &Option<String>, width: Option<f64
             }),
             None => Ok(WavePeriods::Significant),
         },
-        "longuet-higgins" => {
-            let [lo, hi] = SPECTRAL_WIDTH_RANGE;
-            let key = format!("{table} period_spectral_width");
-            let spectral_width = width.map_or(Ok(DEFAULT_SPECTRAL_WIDTH), |v| {
-                number(&key, v, lo, hi, false, "-; the spectral width ν of Longuet-Higgins 1983, e.g. 0.39 for a JONSWAP sea")
-            })?;
-            Ok(WavePeriods::LonguetHiggins { spectral_width })
-        }
+        "longuet-higgins" => WavePeriods::longuet_higgins(width.unwrap_or(DEFAULT_SPECTRAL_WIDTH))
+            .map_err(|e| rule(&format!("{table} period_spectral_width"), e)),
         other => Err(ScenarioError::range(
             &format!("{table} wave_periods"),
             format!("\"{other}\""),

@@ -64,6 +64,15 @@ pub const DEFAULT_SPECTRAL_WIDTH: f64 = 0.39;
 pub const SPECTRAL_WIDTH_RANGE: [f64; 2] = [0.05, 0.6];
 
 impl WavePeriods {
+    /// Longuet-Higgins' periods of spectral width ν = `spectral_width`, in
+    /// [`SPECTRAL_WIDTH_RANGE`] (refused naming `spectral_width` otherwise: the spectral width of
+    /// a wind sea, 0.39 for JONSWAP with γ = 3.3; the density is derived for narrow spectra).
+    pub fn longuet_higgins(spectral_width: f64) -> Result<Self, crate::ParamError> {
+        let [lo, hi] = SPECTRAL_WIDTH_RANGE;
+        crate::check::between("spectral_width", spectral_width, lo, hi)?;
+        Ok(WavePeriods::LonguetHiggins { spectral_width })
+    }
+
     /// Whether every wave has the storm's T1/3 (the default).
     pub fn is_significant(&self) -> bool {
         *self == WavePeriods::Significant
@@ -197,6 +206,18 @@ mod tests {
             checked += 1;
         }
         assert_eq!(checked, 2);
+    }
+
+    /// The constructor keeps ν within 0.05-0.6 (and refuses NaN), naming it.
+    #[test]
+    fn the_spectral_width_is_checked() {
+        assert_eq!(WavePeriods::longuet_higgins(0.39), Ok(WavePeriods::LonguetHiggins { spectral_width: 0.39 }));
+        let mut refused = 0;
+        for nu in [0.0, 0.049, 0.61, f64::NAN] {
+            assert_eq!(WavePeriods::longuet_higgins(nu).unwrap_err().quantity, "spectral_width");
+            refused += 1;
+        }
+        assert_eq!(refused, 4);
     }
 
     /// The default draws nothing from `v` and returns T1/3; the range of a storm of T1/3 = 10 s
