@@ -60,13 +60,21 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
     );
     let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to Goda's design-wave H_max of each height ({HMAX_RATIO} H1/3, or the breaking limit at the toe where lower), no tide or estimation errors; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
-    let climate: Vec<String> =
-        [caisson::report::design::duration_text(&p.duration), caisson::report::design::direction_text(&p.direction)]
-            .into_iter()
-            .flatten()
-            .collect();
+    let climate: Vec<String> = [
+        caisson::report::design::duration_text(&p.duration),
+        caisson::report::design::direction_text(&p.direction),
+        caisson::report::design::periods_text(&p.periods),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
     if !climate.is_empty() {
-        let _ = writeln!(t, "climate: {} (the duration above is the mean)", climate.join("; "));
+        let mean = if p.duration == caisson::analysis::climate::StormDuration::Fixed {
+            ""
+        } else {
+            " (the duration above is the mean)"
+        };
+        let _ = writeln!(t, "climate: {}{mean}", climate.join("; "));
     }
     let (h13, period) = (s.waves.height_m(), s.waves.period_s());
     let check = caisson::report::fragility::goda_design_check(s.structure, s.waves, h13, period);

@@ -13,7 +13,7 @@ fn caisson() -> assert_cmd::Command {
 }
 
 /// Every climate key of `[design]`, out of range or in conflict, and the key the error must name.
-const BAD_DESIGN: [(&str, &str); 27] = [
+const BAD_DESIGN: [(&str, &str); 31] = [
     ("storm_model = \"pot\"", "[design] storm_model"),
     ("storm_model = \"peaks-over-threshold\"\nstorm_threshold_m = 7.0", "[design] storm_rate_per_year"),
     ("storm_model = \"peaks-over-threshold\"\nstorm_rate_per_year = 2.0", "[design] storm_threshold_m"),
@@ -57,6 +57,10 @@ const BAD_DESIGN: [(&str, &str); 27] = [
         "wave_direction = \"normal\"\nwave_direction_spread_deg = 10.0\nwave_direction_mean_deg = 80.0",
         "[design] wave_direction_mean_deg",
     ),
+    ("wave_periods = \"rayleigh\"", "[design] wave_periods"),
+    ("wave_periods = \"longuet-higgins\"\nperiod_spectral_width = 0.8", "[design] period_spectral_width"),
+    ("wave_periods = \"longuet-higgins\"\nperiod_spectral_width = 0.0", "[design] period_spectral_width"),
+    ("period_spectral_width = 0.4", "[design] period_spectral_width"),
 ];
 
 #[test]
@@ -82,6 +86,16 @@ fn bad_climate_keys_are_named_by_design_and_size() {
         ),
     );
     support::refused(&["size", support::s(&f)], &["[design] wave_direction_spread_deg"]);
+    let f = write(
+        dir.path(),
+        "size.toml",
+        &support::design_text(
+            2,
+            3,
+            "wave_periods = \"longuet-higgins\"\nperiod_spectral_width = 0.01\n[size]\nrange_m = [15.0, 25.0]\nexpected_sliding_m = 0.3",
+        ),
+    );
+    support::refused(&["size", support::s(&f)], &["[design] period_spectral_width"]);
 }
 
 /// The fragility example with `extra` in `[fragility]` (its last table).
@@ -99,12 +113,14 @@ fn bad_fragility_climate_keys_are_named() {
         ("wave_direction = \"uniform\"\nwave_direction_spread_deg = 0.0", "[fragility] wave_direction_spread_deg"),
         ("wave_direction_mean_deg = 20.0", "[fragility] wave_direction_mean_deg"),
         ("storm_model = \"peaks-over-threshold\"", "storm_model"),
+        ("wave_periods = \"longuet-higgins\"\nperiod_spectral_width = 0.7", "[fragility] period_spectral_width"),
+        ("wave_periods = \"jonswap\"", "[fragility] wave_periods"),
     ];
     for (extra, key) in cases {
         let f = write(dir.path(), "bad.toml", &fragility_text(extra));
         support::refused(&["fragility", support::s(&f)], &[key]);
     }
-    assert_eq!(cases.len(), 5);
+    assert_eq!(cases.len(), 7);
 }
 
 /// A design run with every climate choice records them in `design.json` and says them in its
@@ -115,7 +131,8 @@ fn a_climate_is_recorded_in_the_report() {
     let extra = "storm_model = \"peaks-over-threshold\"\nstorm_rate_per_year = 1.5\nstorm_threshold_m = 7.5\n\
                  storm_duration_model = \"lognormal\"\nstorm_duration_cov = 0.4\n\
                  wave_direction = \"uniform\"\nwave_direction_mean_deg = 20.0\nwave_direction_spread_deg = 10.0\n\
-                 sea_level_rise_m = 0.3\nerror_scope = \"life\"\nimpact_force_cov = 0.2";
+                 sea_level_rise_m = 0.3\nerror_scope = \"life\"\nimpact_force_cov = 0.2\n\
+                 wave_periods = \"longuet-higgins\"\nperiod_spectral_width = 0.45";
     let f = write(dir.path(), "c.toml", &support::design_text(3, 3, extra));
     let o = caisson().args(["design", f.to_str().unwrap(), "--json"]).assert().success().get_output().clone();
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
@@ -131,11 +148,14 @@ fn a_climate_is_recorded_in_the_report() {
     assert_eq!(c["error_scope"], "life");
     assert_eq!(c["errors_truncated"], true);
     assert_eq!(c["impact_force_error"]["cov"], 0.2);
+    assert_eq!(c["wave_periods"], serde_json::json!({"kind": "longuet-higgins", "spectral_width": 0.45}));
     let text = caisson().args(["design", f.to_str().unwrap()]).assert().success().get_output().stdout.clone();
     let text = String::from_utf8_lossy(&text);
     assert!(text.contains("climate: peaks over threshold, 1.5 storms a year (Poisson) above H0 = 7.5 m"), "{text}");
     assert!(
-        text.contains("sea level rising 0.3 m over 5 years") && text.contains("errors drawn once per life"),
+        text.contains("sea level rising 0.3 m over 5 years")
+            && text.contains("errors drawn once per life")
+            && text.contains("wave-by-wave periods given the heights (Longuet-Higgins 1983, spectral width ν = 0.45)"),
         "{text}"
     );
     let plain = write(dir.path(), "p.toml", &support::design_text(2, 3, ""));

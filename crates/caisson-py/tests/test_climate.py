@@ -42,6 +42,8 @@ def test_climate_keys_change_the_lives_and_the_defaults_do_not():
         ("design", {"wave_direction": "uniform", "wave_direction_spread_deg": 90.0}, "[design] wave_direction_spread_deg"),
         ("design", {"error_scope": "year"}, "[design] error_scope"),
         ("design", {"impact_force_cov": -0.1}, "[design] impact_force_cov"),
+        ("design", {"wave_periods": "longuet-higgins", "period_spectral_width": 0.9}, "[design] period_spectral_width"),
+        ("design", {"wave_periods": "individual"}, "[design] wave_periods"),
     ],
 )
 def test_climate_keys_out_of_range_are_refused_naming_them(table, keys, named):
@@ -73,3 +75,27 @@ def test_fragility_directions_through_python_are_the_cli(tmp_path):
     assert want["wave_direction"]["kind"] == "uniform"
     with pytest.raises(caisson.ScenarioError, match=r"\[fragility\] wave_direction_spread_deg"):
         caisson.Fragility(sc.replace(fragility={"wave_direction_spread_deg": 0.0})).run()
+
+
+def test_wave_by_wave_periods_through_python_are_the_cli(tmp_path):
+    """`[design] wave_periods` through Python: the CLI's design.json, its record, and lives that
+    differ from those at T1/3 (same storms, so the same waves; these short lives slide nothing,
+    but the simulated waves rotate the caisson differently); `[fragility]` refuses a spectral
+    width out of range naming it."""
+    sc = caisson.Scenario.from_toml(EXAMPLES / "design_breakwater.toml").replace(design={"life_years": 5})
+    lh = sc.replace(design={"wave_periods": "longuet-higgins"})
+    p = tmp_path / "periods.toml"
+    p.write_text(lh.to_toml())
+    want = cli_json("design", p, "--lives", "8")
+    stats, lives = caisson.Design(caisson.Scenario.from_toml(p), lives=8).run(threads=2)
+    assert stats == want
+    assert want["climate"]["wave_periods"] == {"kind": "longuet-higgins", "spectral_width": 0.39}
+    base = caisson.Design(sc, lives=8).simulate_lives()
+    assert (lives["waves"].to_numpy() == base["waves"].to_numpy()).all()
+    assert lives["simulated_waves"].sum() > 0
+    assert not lives["max_rotation_rad"].equals(base["max_rotation_rad"])
+    fragility = caisson.Scenario.from_toml(EXAMPLES / "fragility.toml").replace(
+        fragility={"wave_periods": "longuet-higgins", "period_spectral_width": 0.01}
+    )
+    with pytest.raises(caisson.ScenarioError, match=r"\[fragility\] period_spectral_width"):
+        caisson.Fragility(fragility).run()

@@ -23,6 +23,7 @@ fn bench(c: &mut Criterion) {
         h13_m: 4.0,
         hmax_m: 7.2,
         period_s: 10.0,
+        periods: Default::default(),
         waves: 720,
         tide_m: 1.0,
         angle_rad: 0.0,

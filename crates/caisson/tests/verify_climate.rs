@@ -3,7 +3,7 @@
 
 mod support;
 
-use caisson::analysis::lifetime::{simulate_life, simulate_storm, StormCase, StormInput, StormOutcome};
+use caisson::analysis::lifetime::{simulate_life, simulate_storm, StormCase, StormInput, StormOutcome, WaveDraws};
 use caisson::loads::generator::realization_rng;
 use caisson::scenario::Scenario;
 use support::scenario;
@@ -184,6 +184,7 @@ fn the_impact_factor_scales_the_impulsive_component() {
             h13_m: 9.0,
             hmax_m: 13.45,
             period_s: 12.8,
+            periods: Default::default(),
             waves: 300,
             tide_m: 0.0,
             angle_rad: 0.0,
@@ -238,6 +239,7 @@ fn the_storm_angle_acts_through_goda_beta() {
             h13_m: 9.0,
             hmax_m: 13.45,
             period_s: 12.8,
+            periods: Default::default(),
             waves: 300,
             tide_m: 0.0,
             angle_rad: deg.to_radians(),
@@ -304,4 +306,74 @@ fn default_climate_leaves_the_fingerprint_unchanged() {
         caisson::report::design::design_fingerprint(&s.storm_case(true).unwrap(), p)
     };
     assert_ne!(fp(&sc, &d), fp(&climate, &c));
+}
+
+/// The four lives of the shared test site (`support::site`, whose storms slide its caisson: 3
+/// storms of 0.15 h near H1/3 = 7.5 m, as tests/equiv_lifetime.rs) with `extra` keys in
+/// `[design]`, run to their end, every wave drawn ([`WaveDraws::EveryWave`]: the screened and
+/// unscreened runs draw the same waves and periods) or only those above the screen's threshold.
+fn sliding_lives(extra: &str, screen: bool, draws: WaveDraws) -> Vec<StormOutcome> {
+    let keys = format!("life_years = 3\nlives = 4\nseed = 11\nstorm_duration_h = 0.15\n{extra}");
+    let sc = scenario(&support::site::with(support::site::SMALL_DESIGN, "design", &keys));
+    let d = sc.design.clone().unwrap();
+    let st = StormCase { rigid_block_mu: 0.6, draws, failure: None, ..sc.storm_case(screen).unwrap() };
+    (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect()
+}
+
+/// With wave-by-wave periods (Longuet-Higgins, ν = 0.39) the screen (its grid over heights and
+/// periods, then each wave's own loads at its own period) skips only waves that slide neither
+/// model: on the same waves and periods, the screened and unscreened lives agree, the rigid block
+/// to rounding and the dynamic model to 1 µm per life (as tests/equiv_lifetime.rs holds for periods at
+/// T1/3). The run must screen waves and slide, and the periods must move the lives (against every
+/// wave at T1/3, the same storms slide differently).
+#[test]
+fn the_screen_keeps_the_lives_with_wave_by_wave_periods() {
+    let lh = "wave_periods = \"longuet-higgins\"";
+    let with = sliding_lives(lh, true, WaveDraws::EveryWave);
+    let without = sliding_lives(lh, false, WaveDraws::EveryWave);
+    let t13 = sliding_lives("", true, WaveDraws::EveryWave);
+    assert_eq!((with.len(), without.len()), (4, 4));
+    let (mut screened, mut sliding, mut moved) = (0, 0.0, 0);
+    for ((a, b), c) in with.iter().zip(&without).zip(&t13) {
+        assert_eq!((a.waves, b.screened_waves), (b.waves, 0), "the same waves, none screened without the screen");
+        assert_eq!(a.waves, c.waves, "the same storms with either period model");
+        screened += a.screened_waves;
+        sliding += b.sliding_m;
+        moved += usize::from((a.sliding_m - c.sliding_m).abs() > 1e-4);
+        assert!(
+            (a.rigid_block_sliding_m - b.rigid_block_sliding_m).abs() <= 1e-12 * b.rigid_block_sliding_m.abs().max(1.0),
+            "rigid block {a:?} vs {b:?}"
+        );
+        assert!((a.sliding_m - b.sliding_m).abs() <= 1e-6, "dynamic {} vs {} m", a.sliding_m, b.sliding_m);
+    }
+    assert!(screened > 0 && sliding > 0.01, "the test must screen waves and slide ({screened} screened, {sliding} m)");
+    assert!(moved > 0, "the periods must change a life");
+}
+
+/// The work estimate of the climate example with wave-by-wave periods: its screened share within
+/// a factor of 3 of that of the first 40 lives (as for its periods at T1/3, above), its simulated
+/// time that share of the storms' waves at the mean period τ̄ = 0.89 T1/3 (the high waves'
+/// period), and its basis says so.
+#[test]
+fn the_work_estimate_runs_the_wave_by_wave_periods() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/design_climate.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let text = text.replace("sea_level_rise_m = 0.5", "sea_level_rise_m = 0.5\nwave_periods = \"longuet-higgins\"");
+    let sc = scenario(&text);
+    let d = sc.design.clone().unwrap();
+    assert!(!d.life.climate.periods.is_significant());
+    let case = sc.storm_case(true).unwrap();
+    let e = caisson::analysis::work::design(&case, &d, sc.waves.as_ref().unwrap());
+    let lives: Vec<usize> = (0..40).collect();
+    let r = caisson::analysis::lifetime::run_lives(&case, &d.life, d.seed, &lives, &|_, _| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .unwrap();
+    let (waves, simulated) = r.iter().fold((0u64, 0u64), |(w, s), (_, o)| (w + o.waves, s + o.simulated_waves));
+    let real = simulated as f64 / waves as f64;
+    assert!((1.0 / 3.0..3.0).contains(&(e.simulated_share / real)), "share {} against {real}", e.simulated_share);
+    let storms = d.lives as f64 * 100.0 * 3.0;
+    let at_t13 = storms * d.life.storm_duration_s * e.simulated_share;
+    assert!((e.simulated_s / at_t13 - 0.89).abs() < 1e-12, "{} s against {at_t13} s at T1/3", e.simulated_s);
+    assert!(e.basis.contains("wave-by-wave periods"), "{}", e.basis);
 }

@@ -45,8 +45,13 @@
 //! applies it unreduced to oblique waves (on the safe side: oblique breaking waves strike the wall
 //! along its length, not all at once). The breaking criterion and the surf-zone transformation
 //! stay those of normal incidence (no refraction).
+//!
+//! **Periods** ([`WavePeriods`], [`crate::waves::periods`]). Every wave at the storm's T1/3 (the
+//! default), or each wave's period given its height from the joint distribution of Longuet-Higgins
+//! (1983); drawn per wave from the storm's part of the stream ([`super::lifetime`]).
 
 use crate::loads::risetime::LoadRng;
+pub use crate::waves::periods::WavePeriods;
 use rand::Rng;
 use rand_distr::StandardNormal;
 use std::f64::consts::FRAC_PI_2;
@@ -58,6 +63,10 @@ pub struct Climate {
     pub duration: StormDuration,
     pub sea_level: SeaLevelRise,
     pub direction: WaveDirection,
+    /// The waves' periods: every wave at T1/3, or each its own ([`crate::waves::periods`]); not
+    /// serialized when every wave is at T1/3, so the fingerprints of the other choices stay.
+    #[serde(skip_serializing_if = "WavePeriods::is_significant")]
+    pub periods: WavePeriods,
 }
 
 impl Climate {

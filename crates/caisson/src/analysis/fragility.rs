@@ -79,15 +79,16 @@
 //! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
 //! same relative accuracy.
 
-use super::climate::{StormDuration, WaveDirection};
+use super::climate::{StormDuration, WaveDirection, WavePeriods};
 use super::conventional::DesignWave;
 use super::lifetime::{simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
 use crate::loads::model::WaveLoadModel;
 use crate::loads::risetime::LoadRng;
+/// Φ, φ and erfc live with the other distributions of the waves; named here as before.
+pub use crate::waves::statistics::{erfc, normal_cdf, normal_pdf};
 use rand::SeedableRng;
 use rayon::prelude::*;
-use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use thiserror::Error;
 
 /// H_max / H1/3 of a storm (Goda's design ratio).
@@ -111,44 +112,6 @@ const BETA_MIN: f64 = 1e-4;
 const LN_MEDIAN_MARGIN: f64 = 5.0;
 /// Clamp of p and 1 − p in the likelihood.
 const P_CLAMP: f64 = 1e-12;
-
-/// Coefficients of the Chebyshev fit of `erfcc` (Numerical Recipes, §6.2), lowest order first.
-const ERFCC: [f64; 10] = [
-    -1.265_512_23,
-    1.000_023_68,
-    0.374_091_96,
-    0.096_784_18,
-    -0.186_288_06,
-    0.278_868_07,
-    -1.135_203_98,
-    1.488_515_87,
-    -0.822_152_23,
-    0.170_872_77,
-];
-
-/// erfc(x), Numerical Recipes `erfcc`: erfc(|x|) = t exp(−x² + Σ c_k t^k), t = 1/(1 + |x|/2)
-/// (fractional error < 1.2e-7 for all x), and erfc(−x) = 2 − erfc(x).
-pub fn erfc(x: f64) -> f64 {
-    let z = x.abs();
-    let t = 1.0 / (1.0 + 0.5 * z);
-    let poly = ERFCC.iter().rev().fold(0.0, |acc, &c| acc * t + c);
-    let r = t * (-z * z + poly).exp();
-    if x >= 0.0 {
-        r
-    } else {
-        2.0 - r
-    }
-}
-
-/// The standard normal CDF Φ(z) = erfc(−z/√2)/2 (relative error < 1.2e-7, tails included).
-pub fn normal_cdf(z: f64) -> f64 {
-    0.5 * erfc(-z * FRAC_1_SQRT_2)
-}
-
-/// The standard normal density φ(z).
-pub fn normal_pdf(z: f64) -> f64 {
-    (-0.5 * z * z).exp() / (2.0 * PI).sqrt()
-}
 
 /// A fitted lognormal fragility curve P(IM) = Φ((ln IM − ln θ)/β).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -350,6 +313,10 @@ pub struct FragilityParams {
     /// wave directions (module docs, "Climate").
     pub duration: StormDuration,
     pub direction: WaveDirection,
+    /// The waves' periods (module docs, "Climate"): every wave at `period_s` (T1/3), or each
+    /// its own given its height.
+    #[serde(skip_serializing_if = "WavePeriods::is_significant")]
+    pub periods: WavePeriods,
 }
 
 impl FragilityParams {
@@ -365,6 +332,7 @@ impl FragilityParams {
             h13_m,
             hmax_m: DesignWave::irregular(model, h13_m, self.period_s).design_height_m,
             period_s: self.period_s,
+            periods: self.periods,
             waves: self.waves_per_storm(),
             tide_m: 0.0,
             angle_rad: 0.0,
@@ -532,31 +500,6 @@ mod tests {
     use crate::loads::risetime::load_rng;
     use rand::Rng;
 
-    #[test]
-    fn normal_cdf_matches_tables() {
-        // Abramowitz & Stegun Table 26.1 / standard values.
-        let cases = [
-            (0.0, 0.5),
-            (1.0, 0.841_344_746),
-            (-1.0, 0.158_655_254),
-            (-2.0, 0.022_750_132),
-            (1.96, 0.975_002_105),
-            (3.0, 0.998_650_102),
-            (-3.0, 0.001_349_898),
-            (-5.0, 2.866_515_72e-7),
-            (-8.0, 6.220_960_57e-16),
-        ];
-        for (z, want) in cases {
-            let got = normal_cdf(z);
-            assert!(((got - want) / want).abs() < 2e-7, "Φ({z}) = {got}, want {want}");
-        }
-        for z in [-6.0, -2.5, -0.3, 0.7, 4.0] {
-            assert!((normal_cdf(z) + normal_cdf(-z) - 1.0).abs() < 1e-15);
-        }
-        assert!((erfc(0.0) - 1.0).abs() < 2e-7);
-        assert!((erfc(0.5) - 0.479_500_122).abs() < 1e-7);
-    }
-
     fn exact_counts(im: &[f64], median: f64, beta: f64, n: u64) -> Vec<u64> {
         im.iter().map(|&x| (n as f64 * normal_cdf((x / median).ln() / beta)).round() as u64).collect()
     }
@@ -711,6 +654,7 @@ mod tests {
             limits_m: vec![0.1],
             storm_duration_s: 7200.0,
             period_s: 11.0,
+            periods: WavePeriods::Significant,
             seed: 1,
             failure_rotation_rad: 0.01,
             duration: StormDuration::Lognormal { cov: 0.5 },
@@ -737,6 +681,7 @@ mod tests {
             limits_m: vec![0.1],
             storm_duration_s: 7200.0,
             period_s: 11.0,
+            periods: WavePeriods::Significant,
             seed: 1,
             failure_rotation_rad: 0.01,
             duration: StormDuration::Fixed,

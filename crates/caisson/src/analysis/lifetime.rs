@@ -17,7 +17,8 @@
 //! 4. H1/3 and H_max at the structure by Goda's surf-zone formulas at the toe depth
 //!    ([`crate::waves::surf_zone`]), times the transformation error;
 //! 5. N Rayleigh heights of that H1/3, each limited to H_max (Goda's random-wave breaking), each
-//!    with a rise time from the seed's log-normal model;
+//!    with a rise time from the seed's log-normal model, each at T1/3 or at a period of its own
+//!    given its height ("Wave periods" below);
 //! 6. per wave: the loads of [`crate::loads::model::WaveLoadModel`] (regime by the breaking
 //!    criterion) times the wave-force error; friction coefficients times the friction error;
 //!    the wave is run through the dynamic model from rest (static equilibrium) and its permanent
@@ -55,6 +56,17 @@
 //! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
 //! totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
+//! **Wave periods** ([`StormInput::periods`], [`crate::waves::periods`]). By default every wave
+//! has the storm's T1/3. With Longuet-Higgins' periods each wave's period τ is drawn given its
+//! height (in 0.5-2.5 τ̄, τ̄ = 0.89 T1/3), and its loads, rise time, screen bound (Ψ at τ) and
+//! run (for τ) are those of τ. The loads are not monotone in the period, so the screen's grid is
+//! then over heights and periods: the 65 height nodes (and the breaker height) at each of 9
+//! period nodes uniform in u = 1 − τ̄/τ, each period node with its own Ψ and its own load-bound
+//! test of the row; a cell may slide if a node within one cell of it, in height or in period,
+//! may. The drawing's threshold is the lowest height that may slide at any period; each drawn
+//! wave draws its period, then is tested against its cell and on its own loads at its period
+//! (`tests/verify_climate.rs` holds the screened and unscreened lives within 1 µm per life).
+//!
 //! **Drawing** ([`WaveDraws`]). A screened wave contributes nothing, so a storm draws only the
 //! waves that can pass the screen ([`WaveDraws::AboveThreshold`], the default). With h_t the
 //! lower edge of the lowest grid cell that may slide and q = P(H > h_t) = exp[−2 (h_t/H1/3)²]
@@ -89,10 +101,11 @@
 //! order: U for H0, four truncated normals for the errors, U for the tide phase (and, only for
 //! the climates that need them, the draws [`super::climate`] lists). The waves of
 //! storm y (counting from 0 over the life) come from the same stream at word (y + 1) · 2^40
-//! ([`STORM_WAVE_WORDS_LOG2`]; at most 6 words per wave, so a storm of up to 1.8e11 waves stays
-//! in its part): per drawn wave, U for its exceedance probability, one standard normal for the
-//! rise time, U for its place ([`WaveDraws::EveryWave`] and the screen off: per wave, U for the
-//! height and one standard normal for the rise time). So how many waves a storm draws (which
+//! ([`STORM_WAVE_WORDS_LOG2`]; about 6 words per wave, 8 with periods of their own, so a storm of
+//! up to 10¹¹ waves stays in its part): per drawn wave, U for its exceedance probability, one
+//! standard normal for the rise time, U for its place ([`WaveDraws::EveryWave`] and the screen
+//! off: per wave, U for the height and one standard normal for the rise time); then, with periods
+//! of their own, U for its period. So how many waves a storm draws (which
 //! depends on the caisson) never moves the numbers of the next storm: a life sees the same
 //! storms and the same largest waves on every caisson (common random numbers of `caisson size`,
 //! docs/size.md), and the same storms with either drawing.
@@ -107,12 +120,13 @@ use super::Structure;
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
-use crate::loads::model::{PeakComponents, WaveLoadModel, WaveLoads};
+use crate::loads::model::{PeakComponents, PeriodLoads, WaveLoadModel};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
+use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
 use crate::waves::surf_zone::goda_surf_zone;
-use crate::G_M_PER_S2;
+use crate::{check, ParamError, G_M_PER_S2};
 use rand::Rng;
 use rand_distr::StandardNormal;
 use rayon::prelude::*;
@@ -142,6 +156,21 @@ impl StormDistribution {
         }
     }
 
+    /// Peaks over threshold of this fitted distribution ([`StormModel::PeaksOverThreshold`]):
+    /// refused naming `threshold_m` where the distribution leaves no room above the threshold
+    /// (1 − F(threshold) < 10⁻⁹: its exceedances could not be drawn). (The ranges of the rate and
+    /// the threshold are the scenario's keys'.)
+    pub fn peaks_over_threshold(&self, rate_per_year: f64, threshold_m: f64) -> Result<StormModel, ParamError> {
+        if 1.0 - self.cdf(threshold_m) < 1e-9 {
+            return Err(check::rule(
+                "threshold_m",
+                threshold_m,
+                "must be a height the storm distribution exceeds (1 − F(threshold) ≥ 1e-9): lower it, or check the distribution's parameters",
+            ));
+        }
+        Ok(StormModel::PeaksOverThreshold { rate_per_year, threshold_m })
+    }
+
     /// F(h), the probability of a height at most `h_m`.
     pub fn cdf(&self, h_m: f64) -> f64 {
         match *self {
@@ -169,6 +198,22 @@ pub struct ErrorModel {
 
 impl ErrorModel {
     pub const NONE: ErrorModel = ErrorModel { bias: 0.0, cov: 0.0, truncation_sigmas: Some(2.0) };
+
+    /// An error model whose multiplier stays positive: truncated at ±k, 1 + bias − k·cov > 0
+    /// (the lowest multiplier it can draw); refused naming `cov` otherwise. (The ranges of the
+    /// bias, the COV and k are the scenario's keys'.)
+    pub fn new(bias: f64, cov: f64, truncation_sigmas: Option<f64>) -> Result<Self, ParamError> {
+        if let Some(k) = truncation_sigmas {
+            if 1.0 + bias - k * cov <= 0.0 {
+                return Err(check::rule(
+                    "cov",
+                    cov,
+                    format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive"),
+                ));
+            }
+        }
+        Ok(ErrorModel { bias, cov, truncation_sigmas })
+    }
 
     fn draw(&self, rng: &mut LoadRng) -> f64 {
         let z = loop {
@@ -353,7 +398,10 @@ pub struct StormInput {
     pub h13_m: f64,
     /// Largest individual height (breaking limit), m.
     pub hmax_m: f64,
+    /// T1/3, s: every wave's period, or the scale of their distribution (`periods`).
     pub period_s: f64,
+    /// How the waves' periods are drawn (module docs, "Wave periods").
+    pub periods: WavePeriods,
     pub waves: usize,
     /// Water level above still water (the tide and the sea-level rise), m.
     pub tide_m: f64,
@@ -490,10 +538,13 @@ impl Observer for WaveWatch {
 
 /// Dynamic amplification bound on impulsive components (module docs).
 pub const PSI_IMPULSE: f64 = 2.0;
-/// Cells of the per-storm screen grid.
+/// Cells of the per-storm screen grid over the heights.
 const SCREEN_CELLS: usize = 64;
+/// Cells of the per-storm screen grid over the periods, when the waves have periods of their own
+/// (module docs, "Wave periods"): uniform in u = 1 − τ̄/τ over the periods drawn.
+const PERIOD_CELLS: usize = 8;
 
-/// The screen's amplifications and resistance for one storm (module docs).
+/// The screen's amplifications and resistance at one wave period (module docs).
 #[derive(Debug, Clone, Copy)]
 struct ScreenBound {
     /// Ψ_q on the pulsating horizontal and vertical components.
@@ -529,12 +580,13 @@ struct StormScratch {
 }
 
 /// A wave drawn above the screen's threshold: its place in the storm (a uniform on [0, 1): the
-/// drawn waves run in this order), its height (clamped) and its rise-time deviate.
+/// drawn waves run in this order), its height (clamped), its rise-time deviate and its period.
 #[derive(Debug, Clone, Copy)]
 struct DrawnWave {
     place: f64,
     height_m: f64,
     deviate: f64,
+    period_s: f64,
 }
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
@@ -553,6 +605,253 @@ pub enum StormError {
     Wave { height_m: f64, period_s: f64, source: TrainError },
 }
 
+/// The site and the caisson at a storm's water level (module docs, step 3), with its friction
+/// error: both models and what the screen's bound needs of them.
+struct StormSite {
+    model: WaveLoadModel,
+    block: RigidBlock,
+    dyn_model: Model,
+    /// T0 of the horizontal mode, and the longer of T0 and the rocking period, s.
+    t0_s: f64,
+    t_moment_s: f64,
+    weight_n: f64,
+    mu: f64,
+    width_m: f64,
+}
+
+impl StormSite {
+    fn new(st: &StormCase<'_>, s: &StormInput) -> Self {
+        let mut model = *st.model;
+        model.site.depth_at_toe_m += s.tide_m;
+        model.site.depth_at_wall_m += s.tide_m;
+        model.site.base_depth_m += s.tide_m;
+        model.site.crest_freeboard_m = (model.site.crest_freeboard_m - s.tide_m).max(0.0);
+        model.options.angle_rad = s.angle_rad;
+        let mut caisson = st.structure.caisson;
+        caisson.base_depth_m += s.tide_m;
+        caisson.weight_in_water_n -= model.site.rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * s.tide_m;
+        let mut foundation = st.structure.foundation.clone();
+        foundation.mu_static *= s.friction_factor;
+        foundation.mu_dynamic *= s.friction_factor;
+        let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
+        let dyn_model = Model::new(&caisson, &foundation);
+        let t0_s = dyn_model.natural_period_s();
+        StormSite {
+            t_moment_s: t0_s.max(dyn_model.rocking_period_s()),
+            t0_s,
+            weight_n: caisson.weight_in_water_n,
+            mu: foundation.mu_static.min(block.mu_static),
+            width_m: caisson.width_m,
+            model,
+            block,
+            dyn_model,
+        }
+    }
+
+    /// The screen's bound for a wave of period `period_s`: Ψ = 1 + T/(π t_q), t_q = T_w/4.
+    fn bound(&self, period_s: f64) -> ScreenBound {
+        let ramp = |t0: f64| 1.0 + t0 / (PI * 0.25 * period_s);
+        ScreenBound {
+            psi_q: ramp(self.t0_s),
+            psi_m: ramp(self.t_moment_s),
+            weight_n: self.weight_n,
+            mu: self.mu,
+            width_m: self.width_m,
+            lift_factor: self.dyn_model.lift_off_factor(),
+        }
+    }
+}
+
+impl StormInput {
+    /// Peak components times the storm's force errors.
+    fn scaled(&self, p: &PeakComponents) -> PeakComponents {
+        PeakComponents { quasi: p.quasi.scaled(self.force_factor), impact: p.impact.scaled(self.impact_factor) }
+    }
+
+    /// The period of a wave of height `height_m` (module docs, "Wave periods"): T1/3 (nothing
+    /// drawn), or from one uniform of `rng`.
+    fn wave_period_s(&self, height_m: f64, rng: &mut LoadRng) -> f64 {
+        match self.periods {
+            WavePeriods::Significant => self.period_s,
+            p => p.period_s(height_m, self.h13_m, self.period_s, rng.gen()),
+        }
+    }
+}
+
+/// The screen's grid of one storm (module docs, "The screen"): whether a wave may slide or lift
+/// the caisson, at the nodes of a grid over the heights [0, H_max] (plus the breaker height at the
+/// wall) and, for waves with periods of their own, over the storm's periods.
+struct StormScreen {
+    /// `node[j][i]`: at period node j, height i · dh.
+    node: [[bool; SCREEN_CELLS + 1]; PERIOD_CELLS + 1],
+    /// Period nodes: 1 (every wave at T1/3) or `PERIOD_CELLS + 1`.
+    periods: usize,
+    /// Whether any node may slide (none in a calm storm, or without the screen).
+    any: bool,
+    dh: f64,
+    /// τ̄, and u = 1 − τ̄/τ at the first period node and its step.
+    mean_period_s: f64,
+    u0: f64,
+    du: f64,
+}
+
+impl StormScreen {
+    /// The grid of storm `s` on `site` (every node false without the screen); `t13` are the
+    /// loads and the bound at the storm's T1/3 (the one period node of waves at T1/3).
+    fn new(st: &StormCase<'_>, s: &StormInput, site: &StormSite, t13: (&PeriodLoads<'_>, ScreenBound)) -> Self {
+        let hmax = s.hmax_m.max(1e-6);
+        let dh = hmax / SCREEN_CELLS as f64;
+        let (periods, [u0, u1]) = match s.periods {
+            WavePeriods::Significant => (1, [0.0, 0.0]),
+            WavePeriods::LonguetHiggins { .. } => (PERIOD_CELLS + 1, periods::u_range()),
+        };
+        let mean_period_s = periods::MEAN_PERIOD_RATIO * s.period_s;
+        let du = (u1 - u0) / PERIOD_CELLS as f64;
+        let mut node = [[false; SCREEN_CELLS + 1]; PERIOD_CELLS + 1];
+        for (j, row) in node.iter_mut().enumerate().take(if st.screen { periods } else { 0 }) {
+            let own;
+            let (loads_at, bound) = if periods == 1 {
+                t13
+            } else {
+                let period_s = mean_period_s / (1.0 - (u0 + j as f64 * du));
+                own = site.model.at_period(period_s);
+                (&own, site.bound(period_s))
+            };
+            // At a period where even the bounds of the loads over all heights up to H_max cannot
+            // slide or lift the caisson every node is false: the row is not needed.
+            if loads_at.peak_bound(hmax).is_some_and(|b| !may_slide(&s.scaled(&b), &bound)) {
+                continue;
+            }
+            let node_may_slide =
+                |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&s.scaled(&p), &bound));
+            for (i, flag) in row.iter_mut().enumerate() {
+                *flag = node_may_slide((i as f64 * dh).max(1e-3 * hmax));
+            }
+            let hbr = loads_at.breaker_height_at_wall_m();
+            if hbr < hmax {
+                let i = (hbr / dh) as usize;
+                let flag = node_may_slide(hbr);
+                row[i] |= flag;
+                row[(i + 1).min(SCREEN_CELLS)] |= flag;
+            }
+        }
+        let any = node.iter().flatten().any(|&f| f);
+        StormScreen { node, periods, any, dh, mean_period_s, u0, du }
+    }
+
+    /// The period cells of the grid.
+    fn period_cells(&self) -> usize {
+        (self.periods - 1).max(1)
+    }
+
+    /// Cell (c, j) = [c dh, (c + 1) dh] × [period node j, j + 1] may slide if a node within one
+    /// cell of it may, in both directions.
+    fn cell_may_slide(&self, c: usize, j: usize) -> bool {
+        self.node[j.saturating_sub(1)..=(j + 2).min(self.periods - 1)]
+            .iter()
+            .any(|row| row[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f))
+    }
+
+    /// Whether the cell of a wave of height `h` and period `period_s` may slide.
+    fn may_slide_at(&self, h: f64, period_s: f64) -> bool {
+        let c = ((h / self.dh) as usize).min(SCREEN_CELLS - 1);
+        let j = if self.periods == 1 {
+            0
+        } else {
+            (((1.0 - self.mean_period_s / period_s - self.u0) / self.du).max(0.0) as usize).min(PERIOD_CELLS - 1)
+        };
+        self.cell_may_slide(c, j)
+    }
+
+    /// The lowest height cell that may slide at some period.
+    fn lowest_cell(&self) -> Option<usize> {
+        if !self.any {
+            return None;
+        }
+        (0..SCREEN_CELLS).find(|&c| (0..self.period_cells()).any(|j| self.cell_may_slide(c, j)))
+    }
+}
+
+/// One wave through both models (module docs, step 6): its loads at its own period tested against
+/// the screen's bound at that period, then the rigid block, then the dynamic model unless the
+/// life has ended at failure.
+struct WaveRun<'a> {
+    st: &'a StormCase<'a>,
+    s: &'a StormInput,
+    site: &'a StormSite,
+    /// The loads and the screen's bound at the storm's T1/3 (every wave's period by default).
+    loads_t13: PeriodLoads<'a>,
+    bound_t13: ScreenBound,
+    start_m: f64,
+    /// Whether the dynamic model's life has ended at failure (module docs, "Failure").
+    ended: bool,
+    sim: Option<Simulation>,
+    train: &'a mut WaveTrain,
+}
+
+impl WaveRun<'_> {
+    /// Wave of height `h` (clamped), rise-time deviate `z` and period `period_s`.
+    fn run(&mut self, h: f64, z: f64, period_s: f64, out: &mut StormOutcome) -> Result<(), StormError> {
+        let (st, s, site) = (self.st, self.s, self.site);
+        let own;
+        let (loads_at, bound) = if s.periods.is_significant() {
+            (&self.loads_t13, self.bound_t13)
+        } else {
+            own = site.model.at_period(period_s);
+            (&own, site.bound(period_s))
+        };
+        // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
+        let loads = match loads_at.evaluate_with(h, site.model.options.regime) {
+            Ok(l) => l,
+            Err(_) => loads_at.evaluate_with(h, RegimeChoice::Auto).expect("the automatic regime always applies"),
+        };
+        let e = site.model.event(&loads, loads.rise_time.map(|d| d.at_deviate(z)), 0.0);
+        let event = WaveEvent {
+            quasi: e.quasi.scaled(s.force_factor),
+            trough: e.trough.scaled(s.force_factor),
+            impact: e.impact.scaled(s.impact_factor),
+            ..e
+        };
+        // The grid's neighbours are a margin for the heights (and periods) between its nodes; the
+        // wave's own loads decide.
+        if st.screen && !may_slide(&PeakComponents { quasi: event.quasi, impact: event.impact }, &bound) {
+            out.screened_waves += 1;
+            return Ok(());
+        }
+        out.rigid_block_sliding_m += site.block.wave_sliding_m(&event);
+        if self.ended {
+            // The dynamic model's life has ended at failure: the wave is not run through it.
+            out.screened_waves += 1;
+            return Ok(());
+        }
+        let train = &mut *self.train;
+        train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s, source })?;
+        let sim = match self.sim.as_mut() {
+            Some(x) => {
+                x.reset(&*train);
+                x
+            }
+            None => self.sim.insert(Simulation::new(site.dyn_model.clone(), st.structure.solver, &*train)),
+        };
+        let mut watch = WaveWatch::default();
+        sim.run_until(period_s, &*train, &mut watch)?;
+        let slide = permanent_sliding_m(sim);
+        out.sliding_m += slide;
+        if slide >= 0.0 {
+            out.shoreward_sliding_m += slide;
+        } else {
+            out.seaward_sliding_m -= slide;
+        }
+        out.max_excursion_m = out.max_excursion_m.max((self.start_m + out.sliding_m).abs());
+        out.simulated_waves += 1;
+        out.rocking_waves += u64::from(watch.lifted);
+        out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
+        out.max_rotation_rad = out.max_rotation_rad.max(watch.max_rotation_rad);
+        self.ended = st.failure.is_some_and(|f| out.failed(&f));
+        Ok(())
+    }
+}
+
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
 /// (for the life's largest excursion), `failed`: in a life that has failed already (module
 /// docs, "Failure": only the rigid block runs).
@@ -564,169 +863,83 @@ fn storm_from(
     failed: bool,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
-    // The site and the caisson at this water level.
-    let mut model = *st.model;
-    model.site.depth_at_toe_m += s.tide_m;
-    model.site.depth_at_wall_m += s.tide_m;
-    model.site.base_depth_m += s.tide_m;
-    model.site.crest_freeboard_m = (model.site.crest_freeboard_m - s.tide_m).max(0.0);
-    model.options.angle_rad = s.angle_rad;
-    let mut caisson = st.structure.caisson;
-    caisson.base_depth_m += s.tide_m;
-    caisson.weight_in_water_n -= model.site.rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * s.tide_m;
-    let mut foundation = st.structure.foundation.clone();
-    foundation.mu_static *= s.friction_factor;
-    foundation.mu_dynamic *= s.friction_factor;
-    let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
-    let dyn_model = Model::new(&caisson, &foundation);
-    let ramp = |t0: f64| 1.0 + t0 / (PI * 0.25 * s.period_s);
-    let t0 = dyn_model.natural_period_s();
-    let bound = ScreenBound {
-        psi_q: ramp(t0),
-        psi_m: ramp(t0.max(dyn_model.rocking_period_s())),
-        weight_n: caisson.weight_in_water_n,
-        mu: foundation.mu_static.min(block.mu_static),
-        width_m: caisson.width_m,
-        lift_factor: dyn_model.lift_off_factor(),
-    };
-    let event_of = |loads: &WaveLoads, rise: Option<f64>| {
-        let e = model.event(loads, rise, 0.0);
-        WaveEvent {
-            quasi: e.quasi.scaled(s.force_factor),
-            trough: e.trough.scaled(s.force_factor),
-            impact: e.impact.scaled(s.impact_factor),
-            ..e
-        }
-    };
-    let scaled = |p: &PeakComponents| PeakComponents {
-        quasi: p.quasi.scaled(s.force_factor),
-        impact: p.impact.scaled(s.impact_factor),
-    };
-    // The loads at this storm's period: the dispersion solves and breaker heights once.
-    let loads_at = model.at_period(s.period_s);
-    let node_may_slide =
-        |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&scaled(&p), &bound));
-    // Screen grid over [0, H_max] (+ the breaker height at the wall as an extra node).
-    let hmax = s.hmax_m.max(1e-6);
-    let dh = hmax / SCREEN_CELLS as f64;
-    let mut node = [false; SCREEN_CELLS + 1];
-    // A storm in which even the bounds of the loads over all heights cannot slide or lift the
-    // caisson has every node false: the grid is not needed.
-    let calm = || loads_at.peak_bound(hmax).is_some_and(|b| !may_slide(&scaled(&b), &bound));
-    if st.screen && !calm() {
-        for (i, flag) in node.iter_mut().enumerate() {
-            *flag = node_may_slide((i as f64 * dh).max(1e-3 * hmax));
-        }
-        let hbr = loads_at.breaker_height_at_wall_m();
-        if hbr < hmax {
-            let j = (hbr / dh) as usize;
-            let flag = node_may_slide(hbr);
-            node[j] |= flag;
-            node[(j + 1).min(SCREEN_CELLS)] |= flag;
-        }
-    }
-    // Cell c = [c dh, (c + 1) dh] may slide if a node within one cell of it may.
-    let cell_may_slide = |c: usize| node[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f);
-    let cell_of = |h: f64| ((h / dh) as usize).min(SCREEN_CELLS - 1);
-    let low_m = 1e-3 * s.h13_m.max(1e-6);
+    let site = StormSite::new(st, s);
+    // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
+    let (loads_t13, bound_t13) = (site.model.at_period(s.period_s), site.bound(s.period_s));
+    let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
-    let mut sim: Option<Simulation> = None;
     let StormScratch { train, waves } = scratch;
-    // Whether the dynamic model's life has ended at failure (module docs, "Failure").
-    let mut ended = failed;
-    // One wave of height h (clamped) and rise-time deviate z through both models.
-    let mut run_wave = |h: f64, z: f64, out: &mut StormOutcome| -> Result<(), StormError> {
-        // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
-        let loads = match loads_at.evaluate_with(h, model.options.regime) {
-            Ok(l) => l,
-            Err(_) => loads_at.evaluate_with(h, RegimeChoice::Auto).expect("the automatic regime always applies"),
-        };
-        let event = event_of(&loads, loads.rise_time.map(|d| d.at_deviate(z)));
-        // The grid's neighbours are a margin for the heights between its nodes; the wave's own
-        // loads decide.
-        if st.screen && !may_slide(&PeakComponents { quasi: event.quasi, impact: event.impact }, &bound) {
-            out.screened_waves += 1;
-            return Ok(());
-        }
-        out.rigid_block_sliding_m += block.wave_sliding_m(&event);
-        if ended {
-            // The dynamic model's life has ended at failure: the wave is not run through it.
-            out.screened_waves += 1;
-            return Ok(());
-        }
-        train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s: s.period_s, source })?;
-        let sim = match sim.as_mut() {
-            Some(x) => {
-                x.reset(&*train);
-                x
-            }
-            None => sim.insert(Simulation::new(dyn_model.clone(), st.structure.solver, &*train)),
-        };
-        let mut watch = WaveWatch::default();
-        sim.run_until(s.period_s, &*train, &mut watch)?;
-        let slide = permanent_sliding_m(sim);
-        out.sliding_m += slide;
-        if slide >= 0.0 {
-            out.shoreward_sliding_m += slide;
-        } else {
-            out.seaward_sliding_m -= slide;
-        }
-        out.max_excursion_m = out.max_excursion_m.max((start_m + out.sliding_m).abs());
-        out.simulated_waves += 1;
-        out.rocking_waves += u64::from(watch.lifted);
-        out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
-        out.max_rotation_rad = out.max_rotation_rad.max(watch.max_rotation_rad);
-        ended = st.failure.is_some_and(|f| out.failed(&f));
-        Ok(())
-    };
+    let mut run = WaveRun { st, s, site: &site, loads_t13, bound_t13, start_m, ended: failed, sim: None, train };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
-        // Only the waves at or above the lowest cell that may slide (module docs, "Drawing").
-        let Some(lowest) = (0..SCREEN_CELLS).find(|&c| cell_may_slide(c)) else {
-            out.screened_waves = out.waves;
-            out.max_storm_sliding_m = 0.0;
-            return Ok(out);
-        };
-        // A shade below the cell's lower edge, so that rounding in `cell_of` cannot put a wave
-        // below the threshold into the cell; with the clamp at low_m above it, every wave.
-        let threshold_m = lowest as f64 * dh * (1.0 - 1e-9);
-        let all = threshold_m <= low_m;
-        let q = rayleigh_exceedance(threshold_m, s.h13_m);
-        let mut sample = DescendingRayleigh::new(out.waves);
-        waves.clear();
-        while let Some(e) = sample.next_exceedance(rng) {
-            if !all && e >= q {
-                break;
-            }
-            // E = 0 (a uniform of exactly 0): an unbounded height, limited to H_max.
-            let h = if e > 0.0 { rayleigh_quantile_m(e, s.h13_m) } else { hmax };
-            let z: f64 = rng.sample(StandardNormal);
-            let place: f64 = rng.gen();
-            waves.push(DrawnWave { place, height_m: h.clamp(low_m, hmax), deviate: z });
-        }
-        // The drawn waves in the order they arrive in the storm.
-        waves.sort_unstable_by(|a, b| a.place.total_cmp(&b.place));
-        out.screened_waves = out.waves - waves.len() as u64;
-        for w in waves.iter() {
-            if cell_may_slide(cell_of(w.height_m)) {
-                run_wave(w.height_m, w.deviate, &mut out)?;
-            } else {
-                out.screened_waves += 1;
-            }
-        }
+        draw_above_threshold(s, &screen, rng, waves, &mut run, &mut out)?;
     } else {
         // Every wave (the screen tested wave by wave, or off).
+        let (low_m, hmax) = height_limits(s);
         for _ in 0..s.waves {
             let h = sample_rayleigh_m(s.h13_m, rng).clamp(low_m, hmax);
             let z: f64 = rng.sample(StandardNormal);
-            if st.screen && !cell_may_slide(cell_of(h)) {
+            let period_s = s.wave_period_s(h, rng);
+            if st.screen && !screen.may_slide_at(h, period_s) {
                 out.screened_waves += 1;
                 continue;
             }
-            run_wave(h, z, &mut out)?;
+            run.run(h, z, period_s, &mut out)?;
         }
     }
     out.max_storm_sliding_m = out.sliding_m;
     Ok(out)
+}
+
+/// The smallest and largest height of a storm's waves, m: a thousandth of H1/3, and H_max.
+fn height_limits(s: &StormInput) -> (f64, f64) {
+    (1e-3 * s.h13_m.max(1e-6), s.hmax_m.max(1e-6))
+}
+
+/// The waves at or above the lowest cell that may slide, largest first (module docs,
+/// "Drawing"), each run in the order of its place in the storm if its cell may slide.
+fn draw_above_threshold(
+    s: &StormInput,
+    screen: &StormScreen,
+    rng: &mut LoadRng,
+    waves: &mut Vec<DrawnWave>,
+    run: &mut WaveRun<'_>,
+    out: &mut StormOutcome,
+) -> Result<(), StormError> {
+    let Some(lowest) = screen.lowest_cell() else {
+        out.screened_waves = out.waves;
+        return Ok(());
+    };
+    let (low_m, hmax) = height_limits(s);
+    // A shade below the cell's lower edge, so that rounding in the cell of a height cannot put a
+    // wave below the threshold into the cell; with the clamp at low_m above it, every wave.
+    let threshold_m = lowest as f64 * screen.dh * (1.0 - 1e-9);
+    let all = threshold_m <= low_m;
+    let q = rayleigh_exceedance(threshold_m, s.h13_m);
+    let mut sample = DescendingRayleigh::new(out.waves);
+    waves.clear();
+    while let Some(e) = sample.next_exceedance(rng) {
+        if !all && e >= q {
+            break;
+        }
+        // E = 0 (a uniform of exactly 0): an unbounded height, limited to H_max.
+        let h = if e > 0.0 { rayleigh_quantile_m(e, s.h13_m) } else { hmax };
+        let z: f64 = rng.sample(StandardNormal);
+        let place: f64 = rng.gen();
+        let height_m = h.clamp(low_m, hmax);
+        let period_s = s.wave_period_s(height_m, rng);
+        waves.push(DrawnWave { place, height_m, deviate: z, period_s });
+    }
+    // The drawn waves in the order they arrive in the storm.
+    waves.sort_unstable_by(|a, b| a.place.total_cmp(&b.place));
+    out.screened_waves = out.waves - waves.len() as u64;
+    for w in waves.iter() {
+        if screen.may_slide_at(w.height_m, w.period_s) {
+            run.run(w.height_m, w.deviate, w.period_s, out)?;
+        } else {
+            out.screened_waves += 1;
+        }
+    }
+    Ok(())
 }
 
 /// One life of `p.life_years` storms (module docs), life `index` of the stream `seed`.
@@ -758,6 +971,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
                 h13_m: z.h13_m * e.transformation,
                 hmax_m: z.hmax_m * e.transformation,
                 period_s,
+                periods: p.climate.periods,
                 waves: (duration_s / period_s).round().max(1.0) as usize,
                 tide_m,
                 angle_rad,
@@ -982,6 +1196,23 @@ mod tests {
             checked += 1;
         }
         assert_eq!(checked, 2);
+    }
+
+    /// The constructors' rules by hand: a truncated error of bias −0.09 reaches 1 − 0.09 − 2 · 0.455
+    /// = 0 at COV 0.455 (refused, naming the COV), untruncated it is allowed; a Weibull of B = 7.5 m,
+    /// A = 1.5 m, k = 1.4 is exceeded at 10 m (1 − F = exp(−(2.5/1.5)^1.4) = 0.106) but not at 90 m.
+    #[test]
+    fn constructors_refuse_what_cannot_be_drawn() {
+        let e = ErrorModel::new(-0.09, 0.455, Some(2.0)).unwrap_err();
+        assert_eq!((e.quantity, e.value), ("cov", 0.455));
+        assert!(ErrorModel::new(-0.09, 0.45, Some(2.0)).is_ok() && ErrorModel::new(-0.09, 0.9, None).is_ok());
+        let w = StormDistribution::Weibull { scale_m: 1.5, shape: 1.4, location_m: 7.5 };
+        assert_eq!(
+            w.peaks_over_threshold(3.0, 10.0),
+            Ok(StormModel::PeaksOverThreshold { rate_per_year: 3.0, threshold_m: 10.0 })
+        );
+        assert!((1.0 - w.cdf(10.0) - (-(2.5f64 / 1.5).powf(1.4)).exp()).abs() < 1e-15);
+        assert_eq!(w.peaks_over_threshold(3.0, 90.0).unwrap_err().quantity, "threshold_m");
     }
 
     /// Limit 1 m; lives |S| 0.1, 0.5 (failed by rotation), 3 (failed by sliding), 0.2: the

@@ -2,7 +2,7 @@
 
 use super::{fingerprint, ModelReport, Provenance};
 use crate::analysis::checks::{life_warnings, structure_warnings, wave_load_warnings, Warning};
-use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection};
+use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, LifeParams,
     LifeStatistics, StormCase, StormOutcome, WaveDraws,
@@ -177,6 +177,9 @@ pub struct ClimateChoices {
     pub storm_duration: StormDuration,
     pub wave_direction: WaveDirection,
     pub sea_level_rise: SeaLevelRise,
+    /// The waves' periods when each wave has its own; absent when every wave is at T1/3.
+    #[serde(skip_serializing_if = "WavePeriods::is_significant")]
+    pub wave_periods: WavePeriods,
     pub error_scope: ErrorScope,
     pub errors_truncated: bool,
     /// The impulsive component's own error (bias, cov); absent: the wave force's.
@@ -196,6 +199,7 @@ impl ClimateChoices {
             storm_duration: life.climate.duration,
             wave_direction: life.climate.direction,
             sea_level_rise: life.climate.sea_level.clone(),
+            wave_periods: life.climate.periods,
             error_scope: e.scope,
             errors_truncated: truncated,
             impact_force_error: e.impact_force,
@@ -212,6 +216,7 @@ impl ClimateChoices {
         }
         parts.extend(duration_text(&self.storm_duration));
         parts.extend(direction_text(&self.wave_direction));
+        parts.extend(periods_text(&self.wave_periods));
         match &self.sea_level_rise {
             SeaLevelRise::None => {}
             SeaLevelRise::Linear { rise_m, life_years } => {
@@ -241,6 +246,16 @@ pub fn duration_text(d: &StormDuration) -> Option<String> {
     match d {
         StormDuration::Fixed => None,
         StormDuration::Lognormal { cov } => Some(format!("lognormal storm durations (COV {cov})")),
+    }
+}
+
+/// The waves' periods in words, if not every wave at T1/3.
+pub fn periods_text(p: &WavePeriods) -> Option<String> {
+    match p {
+        WavePeriods::Significant => None,
+        WavePeriods::LonguetHiggins { spectral_width } => Some(format!(
+            "wave-by-wave periods given the heights (Longuet-Higgins 1983, spectral width ν = {spectral_width})"
+        )),
     }
 }
 

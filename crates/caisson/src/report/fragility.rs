@@ -2,7 +2,7 @@
 
 use super::{ModelReport, Provenance};
 use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warnings, Warning};
-use crate::analysis::climate::{StormDuration, WaveDirection};
+use crate::analysis::climate::{StormDuration, WaveDirection, WavePeriods};
 use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
 use crate::analysis::site::WaveSetup;
@@ -153,6 +153,10 @@ pub struct FragilityReport {
     /// The storms' wave directions when not head-on; absent when head-on.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wave_direction: Option<WaveDirection>,
+    /// The waves' periods when each wave has its own (`period_s` their T1/3); absent when every
+    /// wave is at T1/3.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wave_periods: Option<WavePeriods>,
     pub waves_per_storm: usize,
     pub hmax_ratio: f64,
     pub storms: usize,
@@ -180,6 +184,7 @@ impl FragilityReport {
             storm_duration_h: p.storm_duration_s / 3600.0,
             storm_duration: (p.duration != StormDuration::Fixed).then_some(p.duration),
             wave_direction: (p.direction != WaveDirection::HeadOn).then_some(p.direction),
+            wave_periods: (!p.periods.is_significant()).then_some(p.periods),
             waves_per_storm: p.waves_per_storm(),
             hmax_ratio: HMAX_RATIO,
             storms: p.storms,

@@ -5,11 +5,13 @@
 
 use super::waves::{self, number, seed_of};
 use super::{ScenarioError, ScenarioFile};
+use crate::analysis::climate::WavePeriods;
 use crate::analysis::climate::{
     Climate, SeaLevelRise, StormDuration, StormModel, WaveDirection, MAX_ANGLE_SPREAD_DEG, MAX_MEAN_ANGLE_DEG,
     MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR,
 };
 use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
+use crate::waves::periods::DEFAULT_SPECTRAL_WIDTH;
 use serde::Deserialize;
 
 /// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
@@ -78,6 +80,11 @@ pub struct DesignTable {
     pub storm_duration_model: Option<String>,
     /// Lognormal durations: the coefficient of variation.
     pub storm_duration_cov: Option<f64>,
+    /// `"significant"` (default: every wave at T1/3) or `"longuet-higgins"` (each wave's period
+    /// given its height).
+    pub wave_periods: Option<String>,
+    /// Longuet-Higgins periods: the spectral width ν.
+    pub period_spectral_width: Option<f64>,
 }
 
 /// The largest `[design] failure_rotation_rad` (and `[fragility]`'s), rad: 0.1 rad (5.7°) lifts
@@ -99,6 +106,12 @@ fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
             Err(ScenarioError::range(&format!("[design] {key}"), n, format!("must be a whole number from 1 to {hi}")))
         }
     }
+}
+
+/// A rule of a parameter type's constructor ([`crate::ParamError`]) under the file's `key`, with
+/// its words (the rules' values are in the keys' units).
+fn rule(key: &str, e: crate::ParamError) -> ScenarioError {
+    ScenarioError::range(key, e.value, e.allowed.describe(1.0, ""))
 }
 
 fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
@@ -183,6 +196,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         duration: duration_model("[design]", &t.storm_duration_model, t.storm_duration_cov)?,
         sea_level: sea_level(t, life_years)?,
         direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
+        periods: wave_periods("[design]", &t.wave_periods, t.period_spectral_width)?,
     };
     let truncated = t.error_truncated.unwrap_or(true);
     if !truncated && t.error_truncation_sigmas.is_some() {
@@ -195,14 +209,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
         let bias = num(&format!("{name}_bias"), bias, def.bias, -0.9, 1.0, false, "fraction")?;
         let cov = num(&format!("{name}_cov"), cov, def.cov, 0.0, 1.0, false, "fraction")?;
-        if truncated && 1.0 + bias - k * cov <= 0.0 {
-            return Err(ScenarioError::range(
-                &format!("[design] {name}_cov"),
-                cov,
-                format!("with bias {bias} and truncation ±{k}σ the multiplier 1 + bias − k·cov must stay positive"),
-            ));
-        }
-        Ok(ErrorModel { bias, cov, truncation_sigmas: truncated.then_some(k) })
+        ErrorModel::new(bias, cov, truncated.then_some(k)).map_err(|e| rule(&format!("[design] {name}_cov"), e))
     };
     let wave_force = err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?;
     let impact_force = match (t.impact_force_bias, t.impact_force_cov) {
@@ -314,15 +321,7 @@ fn storm_model(t: &DesignTable, dist: &StormDistribution) -> R<StormModel> {
                 false,
                 "m",
             )?;
-            // The fitted distribution must leave room above the threshold.
-            if 1.0 - dist.cdf(threshold_m) < 1e-9 {
-                return Err(ScenarioError::range(
-                    "[design] storm_threshold_m",
-                    threshold_m,
-                    "must be a height the storm distribution exceeds (1 − F(threshold) ≥ 1e-9): lower it, or check the distribution's parameters",
-                ));
-            }
-            Ok(StormModel::PeaksOverThreshold { rate_per_year, threshold_m })
+            dist.peaks_over_threshold(rate_per_year, threshold_m).map_err(|e| rule("[design] storm_threshold_m", e))
         }
         other => Err(ScenarioError::range(
             "[design] storm_model",
@@ -351,6 +350,26 @@ pub(super) fn duration_model(table: &str, model: &Option<String>, cov: Option<f6
             &format!("{table} storm_duration_model"),
             format!("\"{other}\""),
             "must be \"fixed\" or \"lognormal\"",
+        )),
+    }
+}
+
+/// The waves' periods of `table` (`[design]` or `[fragility]`): `wave_periods` and its spectral
+/// width (docs/design.md, "Climate").
+pub(super) fn wave_periods(table: &str, kind: &Option<String>, width: Option<f64>) -> R<WavePeriods> {
+    match kind.as_deref().unwrap_or("significant") {
+        "significant" => match width {
+            Some(_) => Err(ScenarioError::Conflict {
+                message: format!("`{table} period_spectral_width` is used only with wave_periods = \"longuet-higgins\"; remove it, or set wave_periods"),
+            }),
+            None => Ok(WavePeriods::Significant),
+        },
+        "longuet-higgins" => WavePeriods::longuet_higgins(width.unwrap_or(DEFAULT_SPECTRAL_WIDTH))
+            .map_err(|e| rule(&format!("{table} period_spectral_width"), e)),
+        other => Err(ScenarioError::range(
+            &format!("{table} wave_periods"),
+            format!("\"{other}\""),
+            "must be \"significant\" (every wave at T1/3) or \"longuet-higgins\" (each wave's period given its height)",
         )),
     }
 }

@@ -40,6 +40,8 @@ pub struct FragilityTable {
     pub wave_direction: Option<String>,
     pub wave_direction_mean_deg: Option<f64>,
     pub wave_direction_spread_deg: Option<f64>,
+    pub wave_periods: Option<String>,
+    pub period_spectral_width: Option<f64>,
 }
 
 /// At most this many heights and limits.
@@ -185,6 +187,7 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
             t.wave_direction_mean_deg,
             t.wave_direction_spread_deg,
         )?,
+        periods: super::design::wave_periods("[fragility]", &t.wave_periods, t.period_spectral_width)?,
     })
 }
 
@@ -239,6 +242,7 @@ significant_heights_m = [4.0, 6.0, 8.0]
                 failure_rotation_rad: 0.01,
                 duration: crate::analysis::climate::StormDuration::Fixed,
                 direction: crate::analysis::climate::WaveDirection::HeadOn,
+                periods: crate::analysis::climate::WavePeriods::Significant,
             }
         );
         assert_eq!(p.waves_per_storm(), 600);

@@ -6,7 +6,9 @@
 //!   McCowan), each with its closed-form inversion for the breaking depth and a generic bisection.
 //! * [`surf_zone`]: Goda's (2000) surf-zone H1/3 and H_max with Kweon & Goda (1996) nonlinear
 //!   shoaling.
-//! * [`statistics`]: Rayleigh wave heights (exceedance, quantiles, seeded sampling).
+//! * [`statistics`]: Rayleigh wave heights (exceedance, quantiles, seeded sampling), the normal
+//!   distribution's Φ, φ and Φ⁻¹.
+//! * [`periods`]: wave-by-wave periods given the heights (Longuet-Higgins 1983).
 //!
 //! All functions take SI inputs (m, s) and return SI outputs. They are pure: no allocation, no
 //! I/O. Inputs outside the stated domain give `NaN` or `None`, never a panic; the scenario
@@ -14,5 +16,6 @@
 
 pub mod breaking;
 pub mod dispersion;
+pub mod periods;
 pub mod statistics;
 pub mod surf_zone;
