@@ -86,7 +86,7 @@ fn least_normal_n(s: &Scenario, stepping: Stepping, dt_s: f64) -> (f64, f64) {
 /// (between +1e-5 and +3e-5), adaptive stepping at its defaults is within max(1 µm, 1 %) of fixed
 /// steps of 1e-5 s (measured at most 0.07 %, with lift-off and re-contact located or not: this
 /// case's spring carries little shear when it lifts). The reference is converged (fixed 2.5e-6 s
-/// within 1.3e-9 m) and continuous in the load to within the shear the lift-off resets: across
+/// within 1.8e-9 m) and continuous in the load to within the shear the lift-off resets: across
 /// the threshold the sliding drops by 1.5e-7 m (0.02 %) where the neighbouring loads move it by
 /// 8e-9 m, and the test holds the jump below 1 µm.
 #[test]
