@@ -58,9 +58,12 @@
 //! fixed step (or the adaptive stepper goes on from there). An onset within 1 % of either end
 //! of the step (or within 1e-2 dt_s) is left where it falls; at most 16 onsets are located in a
 //! step. Without it, the force's kink (or with μ_d < μ_s its jump) at the onset is smeared over
-//! the step and the sliding converges at first order. Lift-off and re-contact are not located:
-//! doing so (with N_i interpolated the same way) made the rocking runs of the examples depend on
-//! rounding (two runs equal to 1e-16 drifting apart to 2.5e-6 over a storm).
+//! the step and the sliding converges at first order. With [`SolverParams::locate_contact`]
+//! (adaptive stepping, the consistent profile) lift-off and re-contact are located the same way:
+//! a spring's unclamped normal force N_i = −k_y u_y,i, linear in the step, changes sign at
+//! θ = N_0/(N_0 − N_1). That makes the time of a lift exact, not whether a spring that comes
+//! within rounding of N_i = 0 lifts: a lift resets its shear, so such runs still part by that
+//! shear under rounding (docs/model.md §9.1). The end of a slip is not located.
 //!
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
@@ -567,15 +570,25 @@ impl Simulation {
     /// slips at its end. The friction margin κ N_i e_lim − |F_i| of the spring held sticking is
     /// interpolated linearly over the step. `None` if there is none, or if it falls close to
     /// either end of the step.
-    fn event_fraction(&self, h: f64, c: &Converged) -> Option<f64> {
+    fn event_fraction(&self, h: f64, c: &Converged, contact: bool) -> Option<f64> {
+        let (un, vn) = (self.state.u, self.state.v);
+        let mut theta = 1.0f64;
+        if contact {
+            // Lift-off and re-contact: N_i = −k_y u_y,i (unclamped) is linear in the step's
+            // displacements, so its root is where the straight line between the ends crosses 0.
+            for &x in &self.model.x_m {
+                let (g0, g1) = (-(un[1] - un[2] * x), -(c.u[1] - c.u[2] * x));
+                if (g0 > 0.0) != (g1 > 0.0) {
+                    theta = theta.min(g0 / (g0 - g1));
+                }
+            }
+        }
         if self.fast.iterate.is_some() {
             // Every spring sticks at the step's end.
-            return None;
+            return self.event_within(theta, h);
         }
         let law = self.model.law;
         let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
-        let (un, vn) = (self.state.u, self.state.v);
-        let mut theta = 1.0f64;
         // The springs' responses at the converged iterate (the general path's) say which ones
         // slip at the step's end; only those that stuck at its start are measured.
         let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial);
@@ -590,11 +603,17 @@ impl Simulation {
             let e_bar = e_n + 0.5 * h * elastic_rate(s, vn[0]);
             let (n1, g1) = law.stick_margin(s.slip_m, limit, c.u[0], uy1, e_bar, c_prime);
             // The spring law's own tests: in contact while N > 0, sticking while the margin ≥ 0
-            // (contact events are not located: module docs).
+            // (a contact event in the step is located above).
             if n0 > 0.0 && n1 > 0.0 && !s.sliding && g0 > 0.0 && g1 < 0.0 {
                 theta = theta.min(g0 / (g0 - g1));
             }
         }
+        self.event_within(theta, h)
+    }
+
+    /// The event at the fraction `theta` of a step of length `h`, if it is one to locate (module
+    /// docs, "Events").
+    fn event_within(&self, theta: f64, h: f64) -> Option<f64> {
         // Just past the event, so that the step's end is not within rounding of the spring
         // law's threshold (which side it fell on would then be decided by rounding).
         let theta = theta * (1.0 + EVENT_OVERSHOOT);
@@ -716,7 +735,7 @@ impl Simulation {
         match self.try_step(h, self.load_vector(w)) {
             Ok(c) => {
                 if events > 0 {
-                    if let Some(theta) = self.event_fraction(h, &c) {
+                    if let Some(theta) = self.event_fraction(h, &c, false) {
                         // To the event without locating again, then the rest of the step.
                         self.stats.located_events += 1;
                         self.advance(theta * h, level, 0, load, obs)?;
@@ -846,7 +865,7 @@ impl Simulation {
             match self.try_step(h, self.load_vector(w)) {
                 Ok(c) => {
                     if !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
-                        if let Some(theta) = self.event_fraction(h, &c) {
+                        if let Some(theta) = self.event_fraction(h, &c, self.solver.locate_contact) {
                             if theta * h >= p.dt_min_s {
                                 self.stats.located_events += 1;
                                 events += 1;

@@ -80,6 +80,11 @@ pub struct SolverParams {
     /// [`Self::sticking_fast_path`]. Part of the numerics of a results version, not reported.
     #[serde(skip)]
     pub exact_sticking: bool,
+    /// Adaptive stepping: locate lift-off and re-contact within the step as the onsets of slip
+    /// are (docs/model.md §9.1, "Events"). Default on; off under the `seed-2011` profile.
+    /// Part of the numerics of a results version, not reported.
+    #[serde(skip)]
+    pub locate_contact: bool,
     /// Newton iterations allowed per (sub)step before the step is sub-stepped.
     pub max_iterations: usize,
     /// Times a failing step may be halved (2^levels sub-steps at most) before the run fails.
@@ -100,6 +105,7 @@ impl Default for SolverParams {
             predictor: Predictor::ConstantAcceleration,
             sticking_fast_path: true,
             exact_sticking: true,
+            locate_contact: true,
             max_iterations: 30,
             max_substep_levels: 8,
             tolerance: 1e-9,
@@ -153,10 +159,11 @@ impl SolverParams {
         Ok(self)
     }
 
-    /// The numerics of `profile`: [`Self::exact_sticking`] on under `consistent`, off under
-    /// `seed-2011` (whose numbers reproduce the paper).
+    /// The numerics of `profile`: [`Self::exact_sticking`] and [`Self::locate_contact`] on under
+    /// `consistent`, off under `seed-2011` (whose numbers reproduce the paper).
     pub fn for_profile(mut self, profile: crate::Profile) -> Self {
         self.exact_sticking = profile == crate::Profile::Consistent;
+        self.locate_contact = self.exact_sticking;
         self
     }
 
