@@ -27,14 +27,18 @@
 //! all four blocks of the exponential of one 15 × 15 matrix (Â = [A, B, 0, 0; 0, 0, I, 0;
 //! 0, 0, 0, I; 0]·h: Van Loan 1978), computed once per simulation for h = dt_max. The load is
 //! interpolated through the step's start, middle and end (third order); R through the step's end,
-//! its start and the previous step's start when that step was exact too (otherwise linearly), so
-//! that R(h) is the one unknown: y(h) is affine in it, R quadratic in y, and R(h) the root of a
+//! its start and the previous step's start when that step was exact too (otherwise through its
+//! value and rate Ṙ = ∇R·q̇ at the start and its value at the end), so that R(h) is the one unknown: y(h) is affine in it, R quadratic in y, and R(h) the root of a
 //! quadratic (the one that tends to the linear solution, as in `sticking`).
 //!
 //! The step is taken only from a committed all-sticking state, when no load breakpoint falls
-//! inside it, and kept only if every spring sticks at its end and in its middle (the cubic
-//! through the ends' displacements and velocities) by the spring law's own test (`sticking`);
-//! otherwise the Newmark step is taken from the same state (which locates the onset of slip).
+//! inside it, and kept only if every spring sticks at its end and in its middle by the spring
+//! law's own test (`sticking`), and if its error estimate is within the adaptive tolerance:
+//! the middle y(h/2) follows exactly from the same interpolated force (the blocks of the
+//! exponential for h/2), R there against its interpolation there, δR, is a force through
+//! σ = 0, h/2, h vanishing at the ends, which moves the end by δR times the middle value's
+//! weights (the largest of the u_x, u_y and θ B/2 rows, m). Otherwise the Newmark step is taken
+//! from the same state (which locates the onset of slip).
 //! Its end is committed as an all-sticking Newmark step would be.
 
 use super::{Converged, Model, Simulation};
@@ -53,8 +57,13 @@ pub(super) struct Propagator {
     before: [Block; 3],
     /// The weights of the load at σ = 0, h/2 and h (the first exact step of a phase).
     middle: [Block; 3],
-    /// The x columns of the weights of R at σ = 0 and h, linear in σ (the first exact step).
-    linear_x: [[f64; 6]; 2],
+    /// The x columns of the weights of R and Ṙ at σ = 0 and R at h, R quadratic in σ through
+    /// them (the first exact step of a phase).
+    hermite_x: [[f64; 6]; 3],
+    /// e^{hA/2}, row by row: to the step's middle.
+    half_e0: [[f64; 6]; 6],
+    /// The weights of c_0, c_1 and c_2 (g = c_0 + c_1 σ + c_2 σ²) at σ = h/2.
+    half_c: [Block; 3],
     minv: Matrix3<f64>,
     k_l: Matrix3<f64>,
     c_l: Matrix3<f64>,
@@ -110,23 +119,30 @@ impl Propagator {
     pub fn new(model: &Model, h: f64) -> Option<Self> {
         let (mass, k_l, c_l) = Self::matrices(model);
         let minv = mass.try_inverse()?;
-        // h Â (module docs): y = (q, q̇), then the chain z0' = z1, z1' = z2 of the force.
-        let mut big = SMatrix::<f64, 15, 15>::zeros();
         let (mk, mc) = (-minv * k_l, -minv * c_l);
-        for i in 0..3 {
-            big[(i, 3 + i)] = h;
-            for j in 0..3 {
-                big[(3 + i, j)] = h * mk[(i, j)];
-                big[(3 + i, 3 + j)] = h * mc[(i, j)];
-                big[(3 + i, 6 + j)] = h * minv[(i, j)];
+        // e^{h Â} (module docs): y = (q, q̇), then the chain z0' = z1, z1' = z2 of the force.
+        let van_loan = |h: f64| {
+            let mut big = SMatrix::<f64, 15, 15>::zeros();
+            for i in 0..3 {
+                big[(i, 3 + i)] = h;
+                for j in 0..3 {
+                    big[(3 + i, j)] = h * mk[(i, j)];
+                    big[(3 + i, 3 + j)] = h * mc[(i, j)];
+                    big[(3 + i, 6 + j)] = h * minv[(i, j)];
+                }
+                big[(6 + i, 9 + i)] = h;
+                big[(9 + i, 12 + i)] = h;
             }
-            big[(6 + i, 9 + i)] = h;
-            big[(9 + i, 12 + i)] = h;
-        }
-        let ex = big.exp();
-        if !ex.iter().all(|v| v.is_finite()) {
-            return None;
-        }
+            let ex = big.exp();
+            ex.iter().all(|v| v.is_finite()).then_some(ex)
+        };
+        let (ex, hx) = (van_loan(h)?, van_loan(0.5 * h)?);
+        // To the middle: e^{hA/2} and the weights of c_0, c_1, c_2 (E_1, E_2, 2 E_3 at h/2).
+        let half_e0 = std::array::from_fn(|i| std::array::from_fn(|j| hx[(i, j)]));
+        let half_c = std::array::from_fn(|k| {
+            let w = if k == 2 { 2.0 } else { 1.0 };
+            std::array::from_fn(|i| std::array::from_fn(|j| w * hx[(i, 6 + 3 * k + j)]))
+        });
         let e0 = std::array::from_fn(|i| std::array::from_fn(|j| ex[(i, j)]));
         // E_1, E_2, E_3 (module docs) and the weights of g = c_0 + c_1 σ + c_2 σ² as
         // E_1 c_0 + E_2 c_1 + 2 E_3 c_2, combined per interpolation point.
@@ -140,14 +156,20 @@ impl Propagator {
         // Through σ = 0, h/2, h: c_1 = (4 gm − 3 g0 − g1)/h, c_2 = 2 (g0 − 2 gm + g1)/h².
         let middle =
             [block([1.0, -3.0 / h, 4.0 / h2]), block([0.0, 4.0 / h, -8.0 / h2]), block([0.0, -1.0 / h, 4.0 / h2])];
-        // Linear through σ = 0, h: c_1 = (g1 − g0)/h.
-        let linear_x = [std::array::from_fn(|i| e(0, i, 0) - e(1, i, 0) / h), std::array::from_fn(|i| e(1, i, 0) / h)];
+        // Through R and Ṙ at σ = 0 and R at h: c_0 = R0, c_1 = Ṙ0, c_2 = (R1 − R0 − Ṙ0 h)/h².
+        let hermite_x = [
+            std::array::from_fn(|i| e(0, i, 0) - 2.0 * e(2, i, 0) / h2),
+            std::array::from_fn(|i| e(1, i, 0) - 2.0 * e(2, i, 0) / h),
+            std::array::from_fn(|i| 2.0 * e(2, i, 0) / h2),
+        ];
         Some(Propagator {
             h,
             e0,
             before,
             middle,
-            linear_x,
+            hermite_x,
+            half_e0,
+            half_c,
             minv,
             k_l,
             c_l,
@@ -178,13 +200,15 @@ impl Propagator {
 impl Simulation {
     /// One all-sticking step of the propagator's length from the committed state (module docs),
     /// with the loads (gravity included) `p0` at its start, `p1` at its end and a `third` point.
-    /// `None` if a spring does not stick at its end (or the root is not real): nothing is changed
-    /// then but the fast path's iterate.
+    /// `None` if a spring does not stick at its end or in its middle, if the error estimate of R's
+    /// interpolation exceeds `tolerance_m` (module docs), or if the root is not real: nothing is
+    /// changed then but the fast path's iterate.
     pub(super) fn exact_sticking_step(
         &mut self,
         p0: Vector3<f64>,
         p1: Vector3<f64>,
         third: Third,
+        tolerance_m: f64,
     ) -> Option<Converged> {
         let [n, sx, s1, sum_d, sum_xd] = self.slip_sums();
         let pr = self.exact.as_ref()?;
@@ -199,6 +223,12 @@ impl Simulation {
         let (un, vn) = (self.state.u, self.state.v);
         let y0 = [un[0] - s1, un[1], un[2], vn[0], vn[1], vn[2]];
         let r0 = r_of(&y0);
+        // Ṙ at the start: R's gradient in q times q̇.
+        let r0_rate = {
+            let (a, b) = (-ky * y0[1], ky * y0[2]);
+            let (se, sxe) = (n * y0[0] - sum_d, sx * y0[0] - sum_xd);
+            kappa * (-ky * y0[4] * se + (a - pr.a_ref) * n * y0[3] + ky * y0[5] * sxe + b * sx * y0[3])
+        };
         // The force g = p + (κ a_r Σd, 0, 0) − R e_x.
         let shift = kappa * pr.a_ref * sum_d;
         let g = |p: Vector3<f64>, r: f64| [p[0] + shift - r, p[1], p[2]];
@@ -220,8 +250,9 @@ impl Simulation {
                 add(&pr.middle[0], g(p0, 0.0));
                 add(&pr.middle[1], g(pm, 0.0));
                 add(&pr.middle[2], g(p1, 0.0));
-                y.iter_mut().zip(pr.linear_x[0]).for_each(|(a, w)| *a -= w * r0);
-                std::array::from_fn(|i| -pr.linear_x[1][i])
+                y.iter_mut().zip(pr.hermite_x[0]).for_each(|(a, w)| *a -= w * r0);
+                y.iter_mut().zip(pr.hermite_x[1]).for_each(|(a, w)| *a -= w * r0_rate);
+                std::array::from_fn(|i| -pr.hermite_x[2][i])
             }
             (Third::Before(_), None) => return None,
         };
@@ -244,11 +275,54 @@ impl Simulation {
         let acc = pr.minv * (g1 - pr.k_l * q1 - pr.c_l * v1);
         let u = [q1[0] + s1, q1[1], q1[2]];
         let v = [v1[0], v1[1], v1[2]];
-        // Every spring must stick in the middle of the step (the cubic through the ends'
-        // displacements and velocities) and at its end (the spring law's own test; the last one
-        // records the sums of the commit and the base reaction).
-        let um: [f64; 3] = std::array::from_fn(|i| 0.5 * (un[i] + u[i]) + 0.125 * h * (vn[i] - v[i]));
-        let vm: [f64; 3] = std::array::from_fn(|i| 1.5 * (u[i] - un[i]) / h - 0.25 * (vn[i] + v[i]));
+        // The step's middle under the same interpolated force: its quadratic through the three
+        // points (R linear on the first step of a phase: its value in the middle is the mean).
+        let r_prev = prev.map_or(0.0, |p| p.r_start_n);
+        let r_mid = match third {
+            Third::Before(_) => (3.0 * r1 + 6.0 * r0 - r_prev) / 8.0,
+            Third::Middle(_) => 0.75 * r0 + 0.25 * r1 + 0.25 * h * r0_rate,
+        };
+        let (g0, g1) = (g(p0, r0), g(p1, r1));
+        let c: [[f64; 3]; 3] = match third {
+            Third::Before(pb) => {
+                let gb = g(pb, r_prev);
+                let h2 = h * h;
+                [
+                    g0,
+                    std::array::from_fn(|i| (g1[i] - gb[i]) / (2.0 * h)),
+                    std::array::from_fn(|i| (g1[i] - 2.0 * g0[i] + gb[i]) / (2.0 * h2)),
+                ]
+            }
+            Third::Middle(pm) => {
+                // The load through σ = 0, h/2, h, less R through R0, Ṙ0 and R1.
+                let (l0, lm, l1) = (g(p0, 0.0), g(pm, 0.0), g(p1, 0.0));
+                let mut c = [
+                    l0,
+                    std::array::from_fn(|i| (4.0 * lm[i] - 3.0 * l0[i] - l1[i]) / h),
+                    std::array::from_fn(|i| 2.0 * (l0[i] - 2.0 * lm[i] + l1[i]) / (h * h)),
+                ];
+                c[0][0] -= r0;
+                c[1][0] -= r0_rate;
+                c[2][0] -= (r1 - r0 - r0_rate * h) / (h * h);
+                c
+            }
+        };
+        let mut ym = mul(&pr.half_e0, &y0);
+        for (w, ck) in pr.half_c.iter().zip(&c) {
+            ym.iter_mut().zip(mul(w, ck)).for_each(|(a, b)| *a += b);
+        }
+        // The error estimate: R in the middle against its interpolation there, as a force through
+        // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
+        let dr = r_of(&ym) - r_mid;
+        let w = &pr.middle[1];
+        let err = dr.abs() * w[0][0].abs().max(w[1][0].abs()).max(w[2][0].abs() * 0.5 * self.model.width_m);
+        if err > tolerance_m || err.is_nan() {
+            return None;
+        }
+        // Every spring must stick in the middle of the step and at its end (the spring law's own
+        // test; the last one records the sums of the commit and the base reaction).
+        let um = [ym[0] + s1, ym[1], ym[2]];
+        let vm = [ym[3], ym[4], ym[5]];
         self.sticking_force(um, vm, 0.5 * h)?;
         self.sticking_force(u, v, h)?;
         self.exact_prev = Some(Previous { t_end_s: self.state.t_s + h, r_start_n: r0, p_start: p0 });
@@ -309,7 +383,8 @@ mod tests {
             let t = sim.state.t_s;
             let third = if i == 0 { Third::Middle(p(t + 0.5 * h)) } else { Third::Before(p(t - h)) };
             let (p0, p1) = (p(t), p(t + h));
-            let step = sim.exact_sticking_step(p0, p1, third).unwrap_or_else(|| panic!("step {i}: {:?}", sim.state));
+            let step =
+                sim.exact_sticking_step(p0, p1, third, 1.0).unwrap_or_else(|| panic!("step {i}: {:?}", sim.state));
             sim.commit(h, step);
             let u = sim.state.u[0];
             worst = worst.max((u - exact_u(t + h)).abs() / scale);

@@ -839,7 +839,7 @@ impl Simulation {
                             None => exact::Third::Middle(self.load_vector(load.at(t + 0.5 * hx))),
                         };
                         let w1 = load.at(t1);
-                        if let Some(c) = self.exact_sticking_step(p0, self.load_vector(w1), third) {
+                        if let Some(c) = self.exact_sticking_step(p0, self.load_vector(w1), third, p.tolerance_m) {
                             self.stats.exact_steps += 1;
                             self.commit_observed(hx, c, t1, w1, obs);
                             continue;
