@@ -110,3 +110,17 @@ def short_design_toml(tmp_path: Path, lives: int = 40, years: int = 20) -> Path:
     p = tmp_path / "design_short.toml"
     p.write_text(sc.to_toml())
     return p
+
+
+def short_size_toml(tmp_path: Path, range_m=(8.0, 30.0)) -> Path:
+    """examples/size_breakwater.toml with short lives, few of them and a coarse search over
+    `range_m` (seconds)."""
+    import caisson
+
+    sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml").replace(
+        design={"life_years": 5, "storm_duration_h": 0.2, "storm_location_m": 7.5, "storm_scale_m": 1.5},
+        size={"lives": 12, "curve_points": 4, "tolerance_m": 0.5, "range_m": list(range_m)},
+    )
+    p = tmp_path / f"size_short_{range_m[0]:g}.toml"
+    p.write_text(sc.to_toml())
+    return p

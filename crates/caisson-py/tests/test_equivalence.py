@@ -12,7 +12,7 @@ import pytest
 import math
 
 import caisson
-from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml
+from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml, short_size_toml
 
 
 def heavy_triangle(tmp_path):
@@ -87,12 +87,7 @@ def test_size_candidates_without_a_goda_value_are_the_clis_nulls_and_empty_cells
     # (no resultant inside the base): `null` in size.json, an empty cell in candidates.csv, and in
     # Python None in the report and NaN in the frame. A front-end that turned it into a number (an
     # infinity, a 0) or dropped the candidate would drift here.
-    sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml").replace(
-        design={"life_years": 5, "storm_duration_h": 0.2, "storm_location_m": 7.5, "storm_scale_m": 1.5},
-        size={"lives": 12, "curve_points": 4, "tolerance_m": 0.5, "range_m": [3.0, 30.0]},
-    )
-    p = tmp_path / "size_narrow.toml"
-    p.write_text(sc.to_toml())
+    p = short_size_toml(tmp_path, range_m=(3.0, 30.0))
     out = tmp_path / "out"
     cli("size", p, "--out", out)
     want = json.loads((out / "size.json").read_text())

@@ -8,18 +8,7 @@ import json
 import pytest
 
 import caisson
-from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml
-
-
-def short_size_toml(tmp_path):
-    """examples/size_breakwater.toml with short lives, few of them and a coarse search (seconds)."""
-    sc = caisson.Scenario.from_toml(EXAMPLES / "size_breakwater.toml").replace(
-        design={"life_years": 5, "storm_duration_h": 0.2, "storm_location_m": 7.5, "storm_scale_m": 1.5},
-        size={"lives": 12, "curve_points": 4, "tolerance_m": 0.5, "range_m": [8.0, 30.0]},
-    )
-    p = tmp_path / "size_short.toml"
-    p.write_text(sc.to_toml())
-    return p
+from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml, short_size_toml
 
 
 def test_size_is_caisson_size_bit_for_bit(tmp_path):

@@ -6,50 +6,26 @@ mod support;
 use caisson::analysis::lifetime::{simulate_life, simulate_storm, StormCase, StormInput, StormOutcome, WaveDraws};
 use caisson::loads::generator::realization_rng;
 use caisson::scenario::Scenario;
-use support::scenario;
+use support::{scenario, site};
 
-/// A calm site (every storm far below what slides the caisson: the screen's load bound spares the
+/// The shared small design (`support::site`) made a calm site (every storm far below what slides the caisson: the screen's load bound spares the
 /// grid, so a life costs microseconds) with a constant period (b = 0: T1/3 = a = 10 s) and storms
 /// of 0.15 h (54 waves): a life's `waves` is 54 × its number of storms.
-const CALM: &str = r#"
-[caisson]
-width_m = 20.0
-height_m = 24.5
-base_depth_m = 17.5
-weight_in_water_kn = 4500.0
-[foundation]
-mu_static = 0.6
-mu_dynamic = 0.6
-e100_kpa = 3.5e5
-density_kg_per_m3 = 2000
-[water]
-density_kg_per_m3 = 1030.0
-depth_at_toe_m = 20.0
-depth_at_wall_m = 16.5
-seabed_slope = 0.01
-[waves]
-kind = "irregular"
-significant_height_m = 7.5
-period_s = 12.8
-[solver]
-dt_max_s = 0.05
-error_tolerance_m = 1e-6
-[design]
-life_years = 4
-lives = 10
-seed = 5
-storm_distribution = "weibull"
-storm_scale_m = 0.5
-storm_shape = 1.4
-storm_location_m = 1.0
-period_coefficient = 10.0
-period_exponent = 0.0
-storm_duration_h = 0.15
-"#;
+fn calm_text() -> String {
+    let text = site::without(site::SMALL_DESIGN, "foundation", &["damping_mode", "vertical_damping"]);
+    let text = site::without(&text, "solver", &["dt_s"]);
+    let text = site::without(&text, "design", &["tidal_range_m"]);
+    site::with(
+        &text,
+        "design",
+        "life_years = 4\nlives = 10\nseed = 5\nstorm_scale_m = 0.5\nstorm_location_m = 1.0\n\
+         period_coefficient = 10.0\nperiod_exponent = 0.0\nstorm_duration_h = 0.15",
+    )
+}
 
-/// `CALM` with `extra` keys appended to `[design]`.
+/// `calm_text()` with `extra` keys appended to `[design]`.
 fn calm(extra: &str) -> Scenario {
-    scenario(&format!("{CALM}{extra}\n"))
+    scenario(&format!("{}{extra}\n", calm_text()))
 }
 
 /// Lives 0..n of `sc`.
@@ -127,7 +103,7 @@ fn pot_heights_are_the_exceedances_of_the_threshold() {
 /// at this COV, the lognormal's kurtosis 3 + 6.6 with σ² = ln 1.25).
 #[test]
 fn lognormal_durations_through_simulate_life() {
-    let text = CALM
+    let text = calm_text()
         .replace("life_years = 4", "life_years = 1")
         .replace("period_coefficient = 10.0", "period_coefficient = 1.0")
         .replace("storm_duration_h = 0.15", "storm_duration_h = 2.0");
@@ -152,7 +128,7 @@ fn lognormal_durations_through_simulate_life() {
 /// one storm's.
 #[test]
 fn errors_per_life_are_shared_by_the_storms() {
-    let text = CALM
+    let text = calm_text()
         .replace("storm_scale_m = 0.5", "storm_scale_m = 1e-12")
         .replace("storm_location_m = 1.0", "storm_location_m = 2.0")
         .replace("period_coefficient = 10.0", "period_coefficient = 1.0")
@@ -172,6 +148,24 @@ fn errors_per_life_are_shared_by_the_storms() {
     assert!((ratio - 4.0).abs() < 0.15 * 4.0, "ratio {ratio}");
 }
 
+/// A storm of the design example: 300 waves of H1/3 = 9 m limited to 13.45 m at T = 12.8 s, no
+/// tide, from the angle `angle_rad` with the impact factor `impact_factor` (the other factors 1).
+fn design_storm(case: &StormCase<'_>, angle_rad: f64, impact_factor: f64) -> StormOutcome {
+    let s = StormInput {
+        h13_m: 9.0,
+        hmax_m: 13.45,
+        period_s: 12.8,
+        periods: Default::default(),
+        waves: 300,
+        tide_m: 0.0,
+        angle_rad,
+        force_factor: 1.0,
+        impact_factor,
+        friction_factor: 1.0,
+    };
+    simulate_storm(case, &s, &mut realization_rng(4, 0)).unwrap()
+}
+
 /// The impulsive component's own error multiplies the impact only: a storm of the design
 /// example (300 waves of H1/3 = 9 m, limited to 13.45 m, at T = 12.8 s: some 5 waves above the
 /// breaker height at the wall, 12.79 m, impulsive), the quasi-static factor kept at 1.
@@ -179,21 +173,7 @@ fn errors_per_life_are_shared_by_the_storms() {
 fn the_impact_factor_scales_the_impulsive_component() {
     let sc = support::example("design_breakwater.toml");
     let case = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
-    let storm = |impact_factor: f64| {
-        let s = StormInput {
-            h13_m: 9.0,
-            hmax_m: 13.45,
-            period_s: 12.8,
-            periods: Default::default(),
-            waves: 300,
-            tide_m: 0.0,
-            angle_rad: 0.0,
-            force_factor: 1.0,
-            impact_factor,
-            friction_factor: 1.0,
-        };
-        simulate_storm(&case, &s, &mut realization_rng(4, 0)).unwrap()
-    };
+    let storm = |impact_factor: f64| design_storm(&case, 0.0, impact_factor);
     let (none, one, two) = (storm(0.0), storm(1.0), storm(2.0));
     // The rigid block slides under the impacts only (their own factor; the quasi-static load of
     // this storm alone cannot slide it): 0, then more with each factor.
@@ -212,7 +192,7 @@ fn the_impact_factor_scales_the_impulsive_component() {
 /// the file is refused naming the weight and the rise; without the rise it is accepted.
 #[test]
 fn a_caisson_that_floats_at_the_risen_sea_is_refused() {
-    let text = format!("{CALM}tidal_range_m = 19.0\n");
+    let text = format!("{}tidal_range_m = 19.0\n", calm_text());
     assert!(Scenario::from_toml(&text, std::path::Path::new("t.toml"), std::path::Path::new(".")).is_ok());
     let e = Scenario::from_toml(
         &format!("{text}sea_level_rise_m = 4.5\n"),
@@ -234,21 +214,7 @@ fn a_caisson_that_floats_at_the_risen_sea_is_refused() {
 fn the_storm_angle_acts_through_goda_beta() {
     let sc = support::example("design_breakwater.toml");
     let case = StormCase { failure: None, ..sc.storm_case(true).unwrap() };
-    let storm = |deg: f64| {
-        let s = StormInput {
-            h13_m: 9.0,
-            hmax_m: 13.45,
-            period_s: 12.8,
-            periods: Default::default(),
-            waves: 300,
-            tide_m: 0.0,
-            angle_rad: deg.to_radians(),
-            force_factor: 1.0,
-            impact_factor: 1.0,
-            friction_factor: 1.0,
-        };
-        simulate_storm(&case, &s, &mut realization_rng(4, 0)).unwrap()
-    };
+    let storm = |deg: f64| design_storm(&case, deg.to_radians(), 1.0);
     let head_on = storm(0.0);
     assert_eq!(storm(10.0), head_on);
     assert_eq!(storm(-10.0), head_on);
