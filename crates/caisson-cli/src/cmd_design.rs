@@ -669,9 +669,16 @@ pub(crate) fn report_lives(
 
 /// The table of a design run.
 fn design_text(r: &DesignReport) -> String {
-    let years = r.life_years;
-    let (d, sd, sr) = (&r.dynamic, &r.dynamic.sliding, &r.rigid_block);
     let mut t = String::new();
+    design_header(r, &mut t);
+    sliding_table(r, &mut t);
+    dynamic_only(r, &mut t);
+    t
+}
+
+/// The run (lives, waves, screen), the climate, the sign convention and the failure rule.
+fn design_header(r: &DesignReport, t: &mut String) {
+    let years = r.life_years;
     let _ = writeln!(
         t,
         "{} lives of {years} years (seed {}), {} waves, {} through the dynamic model, {:.4} % screened{}",
@@ -699,6 +706,11 @@ fn design_text(r: &DesignReport) -> String {
             "lives continue after failure (continue_after_failure); E|S|, the percentiles and P(|S| > s) take a failed life at the sliding limit"
         }
     );
+}
+
+/// The dynamic model beside the rigid block: E|S|, percentiles, exceedance and failure.
+fn sliding_table(r: &DesignReport, t: &mut String) {
+    let (sd, sr) = (&r.dynamic.sliding, &r.rigid_block);
     let _ = writeln!(t);
     let _ = writeln!(
         t,
@@ -708,8 +720,8 @@ fn design_text(r: &DesignReport) -> String {
     let row = |t: &mut String, what: &str, a: f64, b: f64| {
         let _ = writeln!(t, "{what:<32} {a:>10.4} m    {b:>10.4} m");
     };
-    row(&mut t, "expected sliding E|S|", sd.expected_sliding_m, sr.expected_sliding_m);
-    row(&mut t, "E|S| as simulated (uncapped)", sd.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_m);
+    row(t, "expected sliding E|S|", sd.expected_sliding_m, sr.expected_sliding_m);
+    row(t, "E|S| as simulated (uncapped)", sd.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_m);
     let _ = writeln!(
         t,
         "{:<32} {:>10.5} m    {:>10.5} m",
@@ -717,7 +729,7 @@ fn design_text(r: &DesignReport) -> String {
     );
     let (pd, pr) = (&sd.percentiles_m, &sr.percentiles_m);
     for (p, a, b) in [(5.0, pd.p5, pr.p5), (50.0, pd.p50, pr.p50), (95.0, pd.p95, pr.p95), (99.0, pd.p99, pr.p99)] {
-        row(&mut t, &format!("{p:>3.0} % percentile of |S|"), a, b);
+        row(t, &format!("{p:>3.0} % percentile of |S|"), a, b);
     }
     for (a, b) in sd.exceedance_probability.iter().zip(&sr.exceedance_probability) {
         let _ = writeln!(
@@ -748,8 +760,13 @@ fn design_text(r: &DesignReport) -> String {
         "  by rotation", sd.failure.by_rotation.probability, "-", sd.failure.by_rotation.lives
     );
     let (vd, vr) = (&sd.surviving, &sr.surviving);
-    row(&mut t, "E|S| of the surviving lives", vd.expected_sliding_m, vr.expected_sliding_m);
-    row(&mut t, "95 % of |S|, surviving lives", vd.percentiles_m.p95, vr.percentiles_m.p95);
+    row(t, "E|S| of the surviving lives", vd.expected_sliding_m, vr.expected_sliding_m);
+    row(t, "95 % of |S|, surviving lives", vd.percentiles_m.p95, vr.percentiles_m.p95);
+}
+
+/// What only the dynamic model gives: net, shoreward and seaward sliding, excursion, rocking.
+fn dynamic_only(r: &DesignReport, t: &mut String) {
+    let d = &r.dynamic;
     let _ = writeln!(t);
     let _ = writeln!(t, "dynamic model only:");
     let _ = writeln!(t, "  expected net sliding E[S]      {:>10.4} m", d.expected_net_sliding_m);
@@ -769,7 +786,6 @@ fn design_text(r: &DesignReport) -> String {
         "  lives ending seaward (any amount) {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
         d.seaward_lives, d.rocking_waves, d.large_rotation_waves, d.large_rotation_lives
     );
-    t
 }
 
 #[cfg(test)]

@@ -8,9 +8,11 @@ use crate::output::{check_out_dir, pretty, progress, report_json, write_atomic};
 use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::spectrum::{estimated_steps, log_space, sweep, SpectrumPoint};
+use caisson::loads::pulse::TrianglePulse;
 use caisson::loads::LoadSpec;
 use caisson::report::spectrum::SpectrumReport;
-use caisson::scenario;
+use caisson::scenario::{self, Scenario};
+use std::path::Path;
 
 /// Smallest and largest t_r/T0 of a sweep. Below, the steps of t_r/20 make a point last about
 /// 200 T0/t_r steps; above, the point lasts 4 t_r.
@@ -62,77 +64,88 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
     let pb = progress(ratios.len() as u64, "spectrum", "points");
     let pts = sweep(sc.structure(), base, &ratios, &|| pb.inc(1)).context("the spectrum sweep failed")?;
     pb.finish_and_clear();
-    let model = sc.structure().model();
     let report = SpectrumReport::new(sc.structure(), &base, &pts);
     let json = report_json(&report, "spectrum")?;
     crate::output::print_warning_lines(&report.warnings);
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {
-        crate::sayln!(
-            "T0 = {:.4} s, F_max = {:.3} kN, U_max = {:.3} kN, static sliding resistance μ_s W' = {:.3} kN",
-            model.natural_period_s(),
-            base.peak.fx_n / 1e3,
-            base.peak.fy_n / 1e3,
-            sc.foundation().mu_static * sc.caisson().weight_in_water_n / 1e3
-        );
-        crate::sayln!(
-            "{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}",
-            "tr/T0",
-            "tr (s)",
-            "Ψ",
-            "Ψ closed",
-            "slide (mm)",
-            "Shimosako",
-            "rigid blk",
-            "R_x (kN)"
-        );
-        for p in &pts {
-            crate::sayln!(
-                "{:>9.4} {:>10.5} {:>8.4} {:>10.4} {:>12.4} {:>12.4} {:>12.4} {:>10.3}",
-                p.tr_over_t0,
-                p.rise_time_s,
-                p.psi,
-                p.psi_closed_form,
-                p.permanent_sliding_m * 1e3,
-                p.shimosako_sliding_m * 1e3,
-                p.rigid_block_sliding_m * 1e3,
-                p.max_horizontal_reaction_n / 1e3
-            );
-        }
-        crate::sayln!("Ψ closed: undamped SDOF (docs/model.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
+        spectrum_text(&sc, &base, &pts);
     }
     if let Some(dir) = &args.out {
-        let _set = crate::output::OutSet::open(dir);
-        write_atomic(&dir.join("spectrum.csv"), &to_csv(pts.iter().map(SpectrumRow::from))?)?;
-        write_atomic(&dir.join("spectrum.json"), pretty(&json)?.as_bytes())?;
-        let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
-        panels(
-            &dir.join("spectrum.svg"),
-            "Shock spectrum: triangular pulse (seed Figs. 7-8)",
-            "t_r / T0",
-            &[
-                Panel {
-                    y_label: "Ψ = max u_x / (F/K_x)".into(),
-                    series: vec![
-                        Series::markers("dynamic model", col(|p| p.psi)),
-                        Series::dashed("undamped SDOF, closed form", col(|p| p.psi_closed_form)),
-                    ],
-                },
-                Panel {
-                    y_label: "permanent sliding (mm)".into(),
-                    series: vec![
-                        Series::markers("dynamic model", col(|p| p.permanent_sliding_m * 1e3)),
-                        Series::line("Shimosako (1999) closed form", col(|p| p.shimosako_sliding_m * 1e3)),
-                        Series::dashed("exact rigid block", col(|p| p.rigid_block_sliding_m * 1e3)),
-                    ],
-                },
-            ],
-        )?;
-        crate::output::tidy_out_dir(dir, "spectrum", &[])?;
-        if !args.json {
-            crate::sayln!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
-        }
+        write_spectrum_files(dir, &pts, &json, args.json)?;
+    }
+    Ok(())
+}
+
+/// The text table of a sweep: the pulse, then one row per point.
+fn spectrum_text(sc: &Scenario, base: &TrianglePulse, pts: &[SpectrumPoint]) {
+    let model = sc.structure().model();
+    crate::sayln!(
+        "T0 = {:.4} s, F_max = {:.3} kN, U_max = {:.3} kN, static sliding resistance μ_s W' = {:.3} kN",
+        model.natural_period_s(),
+        base.peak.fx_n / 1e3,
+        base.peak.fy_n / 1e3,
+        sc.foundation().mu_static * sc.caisson().weight_in_water_n / 1e3
+    );
+    crate::sayln!(
+        "{:>9} {:>10} {:>8} {:>10} {:>12} {:>12} {:>12} {:>10}",
+        "tr/T0",
+        "tr (s)",
+        "Ψ",
+        "Ψ closed",
+        "slide (mm)",
+        "Shimosako",
+        "rigid blk",
+        "R_x (kN)"
+    );
+    for p in pts {
+        crate::sayln!(
+            "{:>9.4} {:>10.5} {:>8.4} {:>10.4} {:>12.4} {:>12.4} {:>12.4} {:>10.3}",
+            p.tr_over_t0,
+            p.rise_time_s,
+            p.psi,
+            p.psi_closed_form,
+            p.permanent_sliding_m * 1e3,
+            p.shimosako_sliding_m * 1e3,
+            p.rigid_block_sliding_m * 1e3,
+            p.max_horizontal_reaction_n / 1e3
+        );
+    }
+    crate::sayln!("Ψ closed: undamped SDOF (docs/model.md §9.2). Shimosako: Shimosako & Takahashi (1999) closed form; rigid blk: exact rigid block (§6.3); both with the same mass.");
+}
+
+/// spectrum.csv, spectrum.json and spectrum.svg into `dir`.
+fn write_spectrum_files(dir: &Path, pts: &[SpectrumPoint], json: &serde_json::Value, quiet: bool) -> Result<()> {
+    let _set = crate::output::OutSet::open(dir);
+    write_atomic(&dir.join("spectrum.csv"), &to_csv(pts.iter().map(SpectrumRow::from))?)?;
+    write_atomic(&dir.join("spectrum.json"), pretty(&json)?.as_bytes())?;
+    let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
+    panels(
+        &dir.join("spectrum.svg"),
+        "Shock spectrum: triangular pulse (seed Figs. 7-8)",
+        "t_r / T0",
+        &[
+            Panel {
+                y_label: "Ψ = max u_x / (F/K_x)".into(),
+                series: vec![
+                    Series::markers("dynamic model", col(|p| p.psi)),
+                    Series::dashed("undamped SDOF, closed form", col(|p| p.psi_closed_form)),
+                ],
+            },
+            Panel {
+                y_label: "permanent sliding (mm)".into(),
+                series: vec![
+                    Series::markers("dynamic model", col(|p| p.permanent_sliding_m * 1e3)),
+                    Series::line("Shimosako (1999) closed form", col(|p| p.shimosako_sliding_m * 1e3)),
+                    Series::dashed("exact rigid block", col(|p| p.rigid_block_sliding_m * 1e3)),
+                ],
+            },
+        ],
+    )?;
+    crate::output::tidy_out_dir(dir, "spectrum", &[])?;
+    if !quiet {
+        crate::sayln!("Wrote spectrum.csv, spectrum.json, spectrum.svg to {}", dir.display());
     }
     Ok(())
 }
