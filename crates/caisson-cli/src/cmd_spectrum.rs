@@ -119,7 +119,7 @@ fn spectrum_text(sc: &Scenario, base: &TrianglePulse, pts: &[SpectrumPoint]) {
 fn write_spectrum_files(dir: &Path, pts: &[SpectrumPoint], json: &serde_json::Value, quiet: bool) -> Result<()> {
     let _set = crate::output::OutSet::open(dir);
     write_atomic(&dir.join("spectrum.csv"), &to_csv(pts.iter().map(SpectrumRow::from))?)?;
-    write_atomic(&dir.join("spectrum.json"), pretty(&json)?.as_bytes())?;
+    write_atomic(&dir.join("spectrum.json"), pretty(json)?.as_bytes())?;
     let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
     panels(
         &dir.join("spectrum.svg"),
