@@ -34,6 +34,7 @@ use crate::cmd_design::{
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, process_running, progress, TempFile};
 use anyhow::{Context, Result};
+use caisson::analysis::lifetime::StormOutcome;
 use caisson::report::checkpoint::{Merge, MergeError};
 use caisson::report::design::design_fingerprint;
 use std::io::Write;
@@ -134,6 +135,31 @@ pub fn run(args: MergeArgs) -> Result<()> {
     check_out_dir(Some(&args.out))?;
     let _out_lock = crate::output::OutLock::acquire(&args.out, "merge")?;
     let shards: Vec<Shard> = args.shards.iter().map(|a| Shard::new(a)).collect();
+    let brute_force = check_shards(&shards)?;
+    let (sc, design) = load_design(&args.scenario, "`caisson merge`", args.lives, brute_force)?;
+    let case = sc.storm_case(design.screen).map_err(input_err)?;
+    let fingerprint = design_fingerprint(&case, &design);
+    let n = design.lives;
+    let file = args.scenario.display().to_string();
+
+    let lives = read_shards(&shards, &fingerprint, n, &args)?;
+
+    // The merged checkpoint: the header and the lines of one run of lives 0..N.
+    ensure_dir(&args.out)?;
+    let cp_path = args.out.join("checkpoint.jsonl");
+    let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
+    // The checkpoint and the outputs of report_lives: one set.
+    let _set = crate::output::OutSet::open(&args.out);
+    write_merged_checkpoint(&cp_path, &Header::new(fingerprint, &(0..n), brute_force).line(), &lives)?;
+    if !args.json {
+        crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
+    }
+    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, Some(&args.out), &[])
+}
+
+/// Each shard given once, none still running, all run with or all without --brute-force (which
+/// is returned).
+fn check_shards(shards: &[Shard]) -> Result<bool> {
     for (k, s) in shards.iter().enumerate() {
         let same = |a: &Shard| match (a.checkpoint.canonicalize(), s.checkpoint.canonicalize()) {
             (Ok(x), Ok(y)) => x == y,
@@ -160,19 +186,18 @@ pub fn run(args: MergeArgs) -> Result<()> {
             shards[without].name()
         )));
     }
-    let (sc, design) = load_design(&args.scenario, "`caisson merge`", args.lives, brute_force)?;
-    let case = sc.storm_case(design.screen).map_err(input_err)?;
-    let fingerprint = design_fingerprint(&case, &design);
-    let n = design.lives;
-    let file = args.scenario.display().to_string();
+    Ok(brute_force)
+}
 
-    // Read every shard: its lives into their places, each life from one shard only (the
-    // library's merge rules, worded here with the shards' names).
+/// Every shard's lives into their places, each life from one shard only (the library's merge
+/// rules, worded here with the shards' names); lives 0..n, in index order.
+fn read_shards(shards: &[Shard], fingerprint: &str, n: usize, args: &MergeArgs) -> Result<Vec<StormOutcome>> {
+    let file = args.scenario.display().to_string();
     let pb = progress(n as u64, "reading the shards", "lives");
     let mut merge = Merge::new(n);
     // The lives each shard was run for (its header).
     let mut ranges: Vec<Range<usize>> = Vec::with_capacity(shards.len());
-    for s in &shards {
+    for s in shards {
         let reader = Reader {
             who: s.name(),
             this: format!("{file} gives"),
@@ -181,7 +206,7 @@ pub fn run(args: MergeArgs) -> Result<()> {
                 "remove that line (and any after it) and complete the shard with --resume, or run that shard again"
                     .into(),
         };
-        let cp = read_checkpoint(&s.checkpoint, &reader, &|_| fingerprint.clone(), &|| pb.inc(1))?;
+        let cp = read_checkpoint(&s.checkpoint, &reader, &|_| fingerprint.to_owned(), &|| pb.inc(1))?;
         let range = cp.header.range();
         if cp.torn_bytes > 0 {
             return Err(input_err(format!(
@@ -194,33 +219,27 @@ pub fn run(args: MergeArgs) -> Result<()> {
             )));
         }
         ranges.push(range.clone());
-        merge.add(Some(range), cp.lives).map_err(|e| merge_error(e, &shards, &ranges, n, &args))?;
+        merge.add(Some(range), cp.lives).map_err(|e| merge_error(e, shards, &ranges, n, args))?;
     }
     pb.finish_and_clear();
     // Every life 0..N in some shard.
-    let lives = merge.finish().map_err(|e| merge_error(e, &shards, &ranges, n, &args))?;
+    merge.finish().map_err(|e| merge_error(e, shards, &ranges, n, args))
+}
 
-    // The merged checkpoint: the header and the lines of one run of lives 0..N.
-    ensure_dir(&args.out)?;
-    let cp_path = args.out.join("checkpoint.jsonl");
-    let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
-    // The checkpoint and the outputs of report_lives: one set.
-    let _set = crate::output::OutSet::open(&args.out);
-    let header_line = Header::new(fingerprint, &(0..n), brute_force).line();
-    let (tmp, f) = TempFile::create(&cp_path)?;
+/// The merged checkpoint: the header and the lines of one run of lives 0..N, written whole or
+/// not at all.
+fn write_merged_checkpoint(cp_path: &Path, header_line: &str, lives: &[StormOutcome]) -> Result<()> {
+    let (tmp, f) = TempFile::create(cp_path)?;
     let mut w = std::io::BufWriter::new(f);
     let written = (|| -> std::io::Result<()> {
         writeln!(w, "{header_line}")?;
         for (i, l) in lives.iter().enumerate() {
-            w.write_all(life_line(&header_line, i, l).as_bytes())?;
+            w.write_all(life_line(header_line, i, l).as_bytes())?;
         }
         w.flush()
     })();
     written.with_context(|| format!("writing {}", cp_path.display()))?;
     drop(w);
-    tmp.commit(&cp_path)?;
-    if !args.json {
-        crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
-    }
-    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, Some(&args.out), &[])
+    tmp.commit(cp_path)?;
+    Ok(())
 }
