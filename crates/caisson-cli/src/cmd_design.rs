@@ -569,8 +569,38 @@ pub fn run(args: DesignArgs) -> Result<()> {
     crate::work::say(note);
     let pb = progress(range.len() as u64, "lives", "");
     pb.set_position(done.len() as u64);
-    let finished_now = AtomicUsize::new(0);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
+    let results = compute_lives(&case, &design, &todo, writer, &pb, args.threads, stop_after)?;
+    done.extend(results);
+    let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
+    refuse_incomplete(done.len(), range.len(), &kept())?;
+    // The outputs (and the checkpoint, if it is in --out) are one set.
+    let _set = args.out.as_deref().map(crate::output::OutSet::open);
+    if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
+        rewrite_checkpoint(path, header_line, &done, &outside)?;
+    }
+    if shard {
+        let dir = args.out.as_deref().expect("--life-range requires --out");
+        return write_shard(dir, &done, &range, &args.scenario, checkpoint.as_deref(), &kept());
+    }
+    let lives: Vec<StormOutcome> = done.into_values().collect();
+    let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
+    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, args.out.as_deref(), &keep)
+}
+
+/// The lives `todo` on `threads` workers, each appended to the checkpoint as it finishes, and the
+/// checkpoint finished (every life on disk) before they are returned; stops early after
+/// `stop_after` lives or at Ctrl-C.
+fn compute_lives(
+    case: &StormCase,
+    design: &DesignParams,
+    todo: &[usize],
+    writer: Option<Mutex<CheckpointWriter>>,
+    pb: &indicatif::ProgressBar,
+    threads: usize,
+    stop_after: usize,
+) -> Result<Vec<(usize, StormOutcome)>> {
+    let finished_now = AtomicUsize::new(0);
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
     let on_life = |i: usize, o: &StormOutcome| {
         if let Some(w) = &writer {
@@ -586,7 +616,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
             ControlFlow::Continue(())
         }
     };
-    let results = with_threads(args.threads, || run_lives(&case, &design.life, design.seed, &todo, &on_life))?
+    let results = with_threads(threads, || run_lives(case, &design.life, design.seed, todo, &on_life))?
         .context("the design run failed")?;
     pb.finish_and_clear();
     if let Some(e) = write_error.into_inner().expect("error slot") {
@@ -596,29 +626,25 @@ pub fn run(args: DesignArgs) -> Result<()> {
     if let Some(w) = writer {
         w.into_inner().unwrap_or_else(|e| e.into_inner()).finish()?;
     }
-    done.extend(results);
-    let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
-    refuse_incomplete(done.len(), range.len(), &kept())?;
-    // The outputs (and the checkpoint, if it is in --out) are one set.
-    let _set = args.out.as_deref().map(crate::output::OutSet::open);
-    if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
-        // The lives in index order, whatever the order they finished in: the same file for any
-        // --threads and after any resume.
-        let mut text = format!("{header_line}\n");
-        let mut all: Vec<(&usize, &StormOutcome)> = done.iter().chain(outside.iter()).collect();
-        all.sort_by_key(|(i, _)| **i);
-        for (i, o) in all {
-            text.push_str(&life_line(header_line, *i, o));
-        }
-        write_atomic(path, text.as_bytes())?;
+    Ok(results)
+}
+
+/// The checkpoint rewritten with the lives in index order, whatever the order they finished in:
+/// the same file for any --threads and after any resume (`outside`: lives of the file outside
+/// this run's range, kept).
+fn rewrite_checkpoint(
+    path: &Path,
+    header_line: &str,
+    done: &BTreeMap<usize, StormOutcome>,
+    outside: &BTreeMap<usize, StormOutcome>,
+) -> Result<()> {
+    let mut text = format!("{header_line}\n");
+    let mut all: Vec<(&usize, &StormOutcome)> = done.iter().chain(outside.iter()).collect();
+    all.sort_by_key(|(i, _)| **i);
+    for (i, o) in all {
+        text.push_str(&life_line(header_line, *i, o));
     }
-    if shard {
-        let dir = args.out.as_deref().expect("--life-range requires --out");
-        return write_shard(dir, &done, &range, &args.scenario, checkpoint.as_deref(), &kept());
-    }
-    let lives: Vec<StormOutcome> = done.into_values().collect();
-    let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, args.out.as_deref(), &keep)
+    write_atomic(path, text.as_bytes())
 }
 
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
