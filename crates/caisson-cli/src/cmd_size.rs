@@ -104,7 +104,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
         ensure_dir(dir)?;
     }
     let _lock = checkpoint.as_deref().map(|c| crate::cmd_design::CheckpointLock::acquire(c, "size")).transpose()?;
-    let (mut writer, finished) = match &checkpoint {
+    let (writer, finished) = match &checkpoint {
         Some(path) => {
             let (w, done) = open_checkpoint(path, args.resume, &fingerprint)?;
             (Some(w), done)
@@ -124,41 +124,7 @@ pub fn run(args: SizeArgs) -> Result<()> {
     }
     crate::interrupt::graceful();
     crate::work::say(note);
-    // The library's driver; the CLI keeps the progress, Ctrl-C and the checkpoint's file.
-    let mut write_error: Option<anyhow::Error> = None;
-    let result = {
-        let mut width = |w: f64, reused: bool| {
-            if reused {
-                pb.inc(p.lives as u64);
-            } else {
-                pb.set_message(format!("B = {w:.3} m"));
-            }
-        };
-        let life = || {
-            pb.inc(1);
-            if crate::interrupt::requested() {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        };
-        let mut candidate = |c: &Candidate| -> std::result::Result<(), String> {
-            let Some((header_line, f)) = writer.as_mut() else { return Ok(()) };
-            let path = checkpoint.as_deref().expect("a checkpoint with a writer");
-            let written = f
-                .write_all(candidate_line(header_line, c).as_bytes())
-                .and_then(|_| f.sync_data())
-                .with_context(|| format!("writing the checkpoint {}", path.display()));
-            written.map_err(|e| {
-                let why = format!("{e:#}");
-                write_error = Some(e);
-                why
-            })
-        };
-        let hooks = Hooks { width: &mut width, life: &life, candidate: &mut candidate };
-        with_threads(args.threads, || sizer.run(&finished, hooks))?
-    };
-    let report = result.map_err(|e| size_error(e, checkpoint.as_deref(), write_error.take()))?;
+    let report = drive(&sizer, &finished, writer, checkpoint.as_deref(), &pb, args.threads)?;
     pb.finish_and_clear();
     let json = crate::output::report_json(&report, "size")?;
     crate::output::print_warning_lines(&report.warnings);
@@ -178,6 +144,53 @@ pub fn run(args: SizeArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The library's driver over the candidates (`finished`: read back from the checkpoint); the CLI
+/// keeps the progress, Ctrl-C and the checkpoint's file, a line per candidate as it finishes.
+fn drive(
+    sizer: &Sizer,
+    finished: &[Candidate],
+    mut writer: Option<(String, std::fs::File)>,
+    checkpoint: Option<&Path>,
+    pb: &indicatif::ProgressBar,
+    threads: usize,
+) -> Result<SizeReport> {
+    let mut write_error: Option<anyhow::Error> = None;
+    let result = {
+        let lives = sizer.params.lives as u64;
+        let mut width = |w: f64, reused: bool| {
+            if reused {
+                pb.inc(lives);
+            } else {
+                pb.set_message(format!("B = {w:.3} m"));
+            }
+        };
+        let life = || {
+            pb.inc(1);
+            if crate::interrupt::requested() {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
+        let mut candidate = |c: &Candidate| -> std::result::Result<(), String> {
+            let Some((header_line, f)) = writer.as_mut() else { return Ok(()) };
+            let path = checkpoint.expect("a checkpoint with a writer");
+            let written = f
+                .write_all(candidate_line(header_line, c).as_bytes())
+                .and_then(|_| f.sync_data())
+                .with_context(|| format!("writing the checkpoint {}", path.display()));
+            written.map_err(|e| {
+                let why = format!("{e:#}");
+                write_error = Some(e);
+                why
+            })
+        };
+        let hooks = Hooks { width: &mut width, life: &life, candidate: &mut candidate };
+        with_threads(threads, || sizer.run(finished, hooks))?
+    };
+    result.map_err(|e| size_error(e, checkpoint, write_error.take()))
 }
 
 /// The checkpoint at `path` for this run: read back on `resume` (its header and finished
