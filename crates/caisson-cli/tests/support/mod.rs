@@ -35,6 +35,10 @@ pub fn s(p: &Path) -> &str {
 #[path = "../../../caisson/tests/support/site.rs"]
 pub mod site;
 
+/// Who names whom among modules, read from the source (`crates/caisson/tests/support/imports.rs`).
+#[path = "../../../caisson/tests/support/imports.rs"]
+pub mod imports;
+
 /// The small design ([`site::SMALL_DESIGN`], `crates/caisson/tests/data/small_design.toml`, also
 /// read by the Python shard tests; a life takes milliseconds) with `lives` lives, `seed`, and the
 /// lines `extra` added at its end (in its `[design]` table, or tables of their own).
