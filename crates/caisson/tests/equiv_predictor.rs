@@ -12,13 +12,16 @@
 //! a fragility storm that slid 0.74 m, in the storms drawn before results version 4).
 //! Tolerance: 1e-4 of the largest value of each quantity, plus 1e-9 (m, N) for quantities near
 //! zero; fifteen times tighter than the adaptive stepper's own accuracy against fine fixed steps
-//! (0.15 % on the design example, BENCHMARKS.md).
+//! (0.15 % on the design example, BENCHMARKS.md). A life or a storm of a lifetime or fragility
+//! run sums many waves, each stepped to its own error tolerance (1e-6 m in the examples), so
+//! there 5 tolerances more: since results version 17 (the slip positions in the error estimate)
+//! the climate example's third life differs by 1.5e-6 m of 0.0153 m.
 
 mod support;
 
 use support::signature::{signature, train_values, Signature};
 
-use caisson::dynamics::{Predictor, Simulation, SolverParams};
+use caisson::dynamics::{Predictor, Simulation, SolverParams, Stepping};
 use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
 use caisson::scenario::Scenario;
@@ -70,13 +73,18 @@ fn the_predictor_moves_no_example_beyond_the_newton_and_step_tolerances() {
         let sc = caisson::scenario::load(path).unwrap();
         let (old, old_it) = results(&with_predictor(&sc, Predictor::LastDisplacement));
         let (new, new_it) = results(&with_predictor(&sc, Predictor::ConstantAcceleration));
+        // A lifetime or fragility run: its lives' and storms' sums of many waves (module docs).
+        let reach_m = match sc.solver().stepping {
+            Stepping::Adaptive(p) if sc.design.is_some() || sc.fragility.is_some() => 5.0 * p.tolerance_m,
+            _ => 0.0,
+        };
         for (key, o) in &old {
             let n = &new[key];
             assert_eq!(o.len(), n.len(), "{name} {key}");
             let scale = o.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             for (i, (a, b)) in o.iter().zip(n).enumerate() {
                 let d = (a - b).abs();
-                assert!(d <= 1e-4 * scale + 1e-9, "{name} {key}[{i}]: {b} with the predictor, {a} without");
+                assert!(d <= 1e-4 * scale + 1e-9 + reach_m, "{name} {key}[{i}]: {b} with the predictor, {a} without");
                 if scale > 0.0 && d / scale > largest.0 {
                     largest = (d / scale, format!("{name} {key}[{i}]"));
                 }

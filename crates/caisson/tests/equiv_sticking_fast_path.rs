@@ -17,7 +17,11 @@
 //! (`cargo test --release --test equiv_sticking_fast_path -- --nocapture` prints it). Tolerance: 1e-6 of the
 //! largest value of each quantity plus 1e-12 (m, N) for quantities near zero, five times the
 //! measured difference and three orders below the adaptive stepper's own accuracy (0.15 % on the
-//! design example, BENCHMARKS.md).
+//! design example, BENCHMARKS.md). A lifetime or fragility run accepts or rejects thousands of
+//! steps against its error tolerance, and one estimate within rounding of it can go either way,
+//! which moves that wave's sliding by a few tolerances: since results version 17 (the slip
+//! positions in the estimate) one does, on the fragility example's fourth storm (2.0e-6 m of
+//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 5 tolerances more.
 //!
 //! Both runs leave lift-off and re-contact unlocated (`SolverParams::locate_contact` off): a
 //! located lift-off ends a step a millionth past N_i = 0, and whether a step lands on a spring
@@ -30,7 +34,7 @@ mod support;
 
 use support::signature::{signature, train_values, Signature};
 
-use caisson::dynamics::SolverParams;
+use caisson::dynamics::{SolverParams, Stepping};
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
 
@@ -92,8 +96,9 @@ fn results(sc: &Scenario) -> (Results, Work) {
 }
 
 /// The largest difference of `new` from `old` relative to the largest |value| of each quantity,
-/// asserted within the tolerance of the module docs; returns it and the number of values.
-fn compare(name: &str, old: &Results, new: &Results, largest: &mut (f64, String)) -> usize {
+/// asserted within the tolerance of the module docs (plus `reach_m`, m, for an adaptive run's
+/// decisions: module docs); returns it and the number of values.
+fn compare(name: &str, old: &Results, new: &Results, reach_m: f64, largest: &mut (f64, String)) -> usize {
     let mut compared = 0;
     assert_eq!(old.len(), new.len(), "{name}");
     for (key, o) in old {
@@ -102,7 +107,7 @@ fn compare(name: &str, old: &Results, new: &Results, largest: &mut (f64, String)
         let scale = o.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (i, (a, b)) in o.iter().zip(n).enumerate() {
             let d = (a - b).abs();
-            assert!(d <= 1e-6 * scale + 1e-12, "{name} {key}[{i}]: {b} with the fast path, {a} without");
+            assert!(d <= 1e-6 * scale + 1e-12 + reach_m, "{name} {key}[{i}]: {b} with the fast path, {a} without");
             if scale > 0.0 && d / scale > largest.0 {
                 *largest = (d / scale, format!("{name} {key}[{i}]"));
             }
@@ -122,7 +127,13 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         let sc = caisson::scenario::load(path).unwrap();
         let (old, old_work) = results(&with_fast_path(&sc, false));
         let (new, new_work) = results(&with_fast_path(&sc, true));
-        compared += compare(&name, &old, &new, &mut largest);
+        // A lifetime or fragility run takes thousands of adaptive steps, each accepted or
+        // rejected against the error tolerance (module docs).
+        let reach_m = match sc.solver().stepping {
+            Stepping::Adaptive(p) if sc.design.is_some() || sc.fragility.is_some() => 5.0 * p.tolerance_m,
+            _ => 0.0,
+        };
+        compared += compare(&name, &old, &new, reach_m, &mut largest);
         if let (Some(o), Some(n)) = (old_work, new_work) {
             assert_eq!(o.0, n.0, "{name}: steps without and with the fast path");
             // A direct step counts one iteration, where Newton's predictor may have landed inside

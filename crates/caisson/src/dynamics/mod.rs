@@ -32,9 +32,12 @@
 //!
 //! **Adaptive stepping** ([`Stepping::Adaptive`]): the local displacement error of a Newmark step
 //! is estimated after Zienkiewicz & Xie (1991), e_{n+1} = (β − 1/6) h² (q̈_{n+1} − q̈_n)
-//! (rotation counted as θ·B/2), and with the dashpot beside the springs (`elastic` mode) the
-//! larger of that and the trapezoidal rule's error in the elastic displacement of every slipping
-//! spring, h² κ N_i |ė_{n+1} − ė_n| / (12 c_d) (`Simulation::dashpot_error_m`). A converged
+//! (rotation counted as θ·B/2), and with it the error of the springs' slip positions
+//! (`Simulation::slip_error_m`, docs/model.md §9.1): of a spring slipping at the step's end, u_x's
+//! plus the trapezoidal rule's in its elastic displacement, h² κ N_i |ė_{n+1} − ė_n| / (12 c_d)
+//! (with the dashpot beside the springs, the `elastic` mode); of a spring that touches down within
+//! the step, λ (1 − λ) |h u̇_x,n − Δu_x|, the straight line's departure from the step's quadratic
+//! where it touches. The largest is e. A converged
 //! step with ‖e‖∞ > tol is rejected and retried shorter; the next step is
 //! h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h; the cube root by `fast_cbrt`), within
 //! [dt_min, dt_max]. No
@@ -63,7 +66,13 @@
 //! a spring's unclamped normal force N_i = −k_y u_y,i, linear in the step, changes sign at
 //! θ = N_0/(N_0 − N_1). That makes the time of a lift exact, not whether a spring that comes
 //! within rounding of N_i = 0 lifts: a lift resets its shear, so such runs still part by that
-//! shear under rounding (docs/model.md §9.1). The end of a slip is not located.
+//! shear under rounding (docs/model.md §9.1). With `locate_contact` (both steppings) the end of a
+//! slip is located too: a spring slipping at the step's start in the direction σ of its force,
+//! with the slip rate ṡ = u̇_x − ė, σ ṡ_0 > 0, and at the end the rate of the slip it would have
+//! gone on with, ṡ_1 = 2 (s_slip − s_n)/h − ṡ_0, σ ṡ_1 < 0: θ = ṡ_0/(ṡ_0 − ṡ_1); and a spring
+//! lifted at the step's start and in contact at its end touches down within the step, at
+//! λ = u_y,i,n/(u_y,i,n − u_y,i), with its slip position the caisson's u_x there
+//! ([`crate::foundation::SpringLaw::trial_recontact`]), not u_x,n.
 //!
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
@@ -496,20 +505,51 @@ impl Simulation {
     /// and [`Self::reaction`] are summed from).
     #[inline]
     fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
+        if self.solver.locate_contact && self.committed_lifted() {
+            self.springs_force::<true>(u, v, h)
+        } else {
+            self.springs_force::<false>(u, v, h)
+        }
+    }
+
+    /// Whether a spring is lifted (u_y,i ≥ 0) at the committed state: u_y,i is linear in x_i,
+    /// so the outermost springs tell (the positions ascend: `Foundation::spring_positions`).
+    #[inline]
+    fn committed_lifted(&self) -> bool {
+        let (uy, th) = (self.state.u[1], self.state.u[2]);
+        match (self.model.x_m.first(), self.model.x_m.last()) {
+            (Some(&lo), Some(&hi)) => uy - th * lo >= 0.0 || uy - th * hi >= 0.0,
+            _ => false,
+        }
+    }
+
+    /// [`Self::general_force`]; with `RECONTACT` a spring lifted at the step's start and in
+    /// contact at the trial touches within the step (module docs, "Events").
+    #[inline]
+    fn springs_force<const RECONTACT: bool>(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
         self.fast.iterate = None;
         let cd = self.model.spring_dashpot_ns_per_m;
         let c_prime = 2.0 * cd / h;
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let law = self.model.law;
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
+        let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
         let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
         for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
+            let uy = u[1] - u[2] * x;
+            let uy_start = uy_n - th_n * x;
             // Elastic mode: the dashpot sits beside the spring, on its elastic displacement, with
             // the trapezoidal rate from ē_n = e_n + (h/2) ė_n (`foundation::spring`).
-            let e_bar = ux_n - c.slip_m + 0.5 * h * elastic_rate(c, vx_n);
-            let mut r = law.trial_with_dashpot(*c, u[0], u[1] - u[2] * x, e_bar, c_prime);
+            let (mut r, e_bar, rho) = if RECONTACT && uy_start >= 0.0 && uy < 0.0 {
+                // Lifted at the start, in contact at the trial: it touches within the step,
+                // with its slip position where it touches.
+                law.trial_recontact(ux_n, uy_start, u[0], uy, 0.5 * h * vx_n, c_prime)
+            } else {
+                let e_bar = ux_n - c.slip_m + 0.5 * h * elastic_rate(c, vx_n);
+                (law.trial_with_dashpot(*c, u[0], uy, e_bar, c_prime), e_bar, 1.0)
+            };
             if cd > 0.0 && r.state.sliding {
-                r.state.rate_m_per_s = 2.0 * (u[0] - r.state.slip_m - e_bar) / h;
+                r.state.rate_m_per_s = 2.0 * (u[0] - r.state.slip_m - e_bar) / (rho * h);
             }
             if cdy > 0.0 && r.normal_n > 0.0 {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
@@ -565,11 +605,12 @@ impl Simulation {
         (f, self.tangent(h))
     }
 
-    /// The fraction θ of a converged step of length `h` (to `c`) at which the first slip onset
-    /// happens (module docs, "Events"): a spring in contact and sticking at the step's start that
-    /// slips at its end. The friction margin κ N_i e_lim − |F_i| of the spring held sticking is
-    /// interpolated linearly over the step. `None` if there is none, or if it falls close to
-    /// either end of the step.
+    /// The fraction θ of a converged step of length `h` (to `c`) at which its first event
+    /// happens (module docs, "Events"): the onset of a slip (a spring in contact and sticking at
+    /// the step's start that slips at its end: the friction margin κ N_i e_lim − |F_i| of the
+    /// spring held sticking, interpolated linearly over the step), with `contact` a lift-off or
+    /// re-contact, and with [`SolverParams::locate_contact`] the end of a slip (the slip rate's
+    /// sign change). `None` if there is none, or if it falls close to either end of the step.
     fn event_fraction(&self, h: f64, c: &Converged, contact: bool) -> Option<f64> {
         let (un, vn) = (self.state.u, self.state.v);
         let mut theta = 1.0f64;
@@ -583,12 +624,38 @@ impl Simulation {
                 }
             }
         }
-        if self.fast.iterate.is_some() {
+        let law = self.model.law;
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+        let all_stick = self.fast.iterate.is_some();
+        if self.solver.locate_contact && self.committed_sliding() {
+            // The end of a slip: a spring slipping at the step's start, in the direction σ of
+            // its force, and in contact at its end. Its slip rate ṡ = u̇_x − ė, ṡ_0 at the start
+            // and, at the end, the rate of the slip it would have gone on with,
+            // ṡ_1 = 2 (s_slip − s_n)/h − ṡ_0 (the trapezoidal rule, as the step's u_x), changes
+            // sign where the slip stops, whether the spring sticks at the end or, having
+            // slipped more forward than back over the step, still slips there.
+            let cd = self.model.spring_dashpot_ns_per_m;
+            for (&x, s) in self.model.x_m.iter().zip(&self.state.springs) {
+                let uy1 = c.u[1] - c.u[2] * x;
+                if !(s.sliding && uy1 < 0.0) {
+                    continue;
+                }
+                let kn0 = law.kappa_per_m * (-law.ky_n_per_m * (un[1] - un[2] * x));
+                let sign = (kn0 * (un[0] - s.slip_m) + cd * s.rate_m_per_s).signum();
+                let rate0 = vn[0] - s.rate_m_per_s;
+                let e_bar = un[0] - s.slip_m + 0.5 * h * s.rate_m_per_s;
+                let slip1 = law.slipping_position(sign, c.u[0], uy1, e_bar, c_prime);
+                let rate1 = 2.0 * (slip1 - s.slip_m) / h - rate0;
+                let (g0, g1) = (sign * rate0, sign * rate1);
+                if g0 > 0.0 && g1 < 0.0 {
+                    theta = theta.min(g0 / (g0 - g1));
+                }
+            }
+        }
+        if all_stick {
             // Every spring sticks at the step's end.
             return self.event_within(theta, h);
         }
-        let law = self.model.law;
-        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
         // The springs' responses at the converged iterate (the general path's) say which ones
         // slip at the step's end; only those that stuck at its start are measured.
         let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial);
@@ -623,25 +690,50 @@ impl Simulation {
         (theta >= floor && theta <= 1.0 - floor).then_some(theta)
     }
 
-    /// The local error of the trapezoidal rule for the elastic displacement of the springs that
-    /// slip over a converged step of length `h` (module docs, adaptive stepping), m: on a slip,
-    /// c_d ė = F − κ N e relaxes e with the time constant τ = c_d/(κ N), so d³e/dt³ = −ë/τ and
-    /// the rule's error h³ |d³e/dt³|/12 is h² |ė_{n+1} − ė_n| / (12 τ). 0 without a dashpot
-    /// beside the springs or when every spring sticks.
-    fn dashpot_error_m(&self, h: f64) -> f64 {
-        let cd = self.model.spring_dashpot_ns_per_m;
-        if cd == 0.0 || self.fast.iterate.is_some() {
+    /// The local error of the springs' slip positions over a converged step of length `h` to
+    /// `c` (module docs, adaptive stepping), m, given `ux_error_m`, the Zienkiewicz-Xie estimate
+    /// of u_x's:
+    ///
+    /// * a spring slipping at the step's end has s_i = u_x − e_i, so its error is u_x's plus
+    ///   that of the trapezoidal rule for its elastic displacement: on a slip c_d ė = F − κ N e
+    ///   relaxes e with the time constant τ = c_d/(κ N), so d³e/dt³ = −ë/τ and the rule's error
+    ///   h³ |d³e/dt³|/12 is h² |ė_{n+1} − ė_n| / (12 τ) (0 without a dashpot beside the
+    ///   springs). The committed rate ė_{n+1} is e's over τ: held with e;
+    /// * a spring re-contacting within the step takes the straight line's u_x where it touches,
+    ///   at the fraction λ of the step (`foundation::spring`, "Re-contact"); the step's own
+    ///   u_x is the quadratic u_x,n + λ h u̇_x,n + λ² (Δu_x − h u̇_x,n), λ (1 − λ) |h u̇_x,n − Δu_x|
+    ///   from the line.
+    ///
+    /// 0 when every spring sticks at the step's end (no slip position moved).
+    fn slip_error_m(&self, h: f64, c: &Converged, ux_error_m: f64) -> f64 {
+        if self.fast.iterate.is_some() {
             return 0.0;
         }
-        let vx_n = self.state.v[0];
-        let mut worst = 0.0f64;
-        for (c, r) in self.state.springs.iter().zip(&self.trial) {
-            if r.state.sliding && r.normal_n > 0.0 {
-                let kn = self.model.law.kappa_per_m * r.normal_n;
-                worst = worst.max(kn * (r.state.rate_m_per_s - elastic_rate(c, vx_n)).abs());
+        let cd = self.model.spring_dashpot_ns_per_m;
+        let (un, vx_n) = (self.state.u, self.state.v[0]);
+        let chord = (h * vx_n - (c.u[0] - un[0])).abs();
+        let recontact = self.solver.locate_contact && self.committed_lifted();
+        let (mut rate, mut touch) = (0.0f64, 0.0f64);
+        let mut slipping = false;
+        for ((&x, s), r) in self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial) {
+            if r.normal_n <= 0.0 {
+                continue;
+            }
+            if r.state.sliding {
+                slipping = true;
+                if cd > 0.0 {
+                    let kn = self.model.law.kappa_per_m * r.normal_n;
+                    rate = rate.max(kn * (r.state.rate_m_per_s - elastic_rate(s, vx_n)).abs());
+                }
+            }
+            let uy_start = un[1] - un[2] * x;
+            if recontact && uy_start >= 0.0 {
+                let lambda = uy_start / (uy_start - (c.u[1] - c.u[2] * x));
+                touch = touch.max(lambda * (1.0 - lambda));
             }
         }
-        h * h * worst / (12.0 * cd)
+        let slip = if slipping { ux_error_m + h * h * rate / (12.0 * cd.max(f64::MIN_POSITIVE)) } else { 0.0 };
+        slip.max(touch * chord)
     }
 
     /// Newton-Raphson for one step of length `h` to load `p`. Commits nothing.
@@ -878,7 +970,8 @@ impl Simulation {
                     }
                     let an = self.state.a;
                     let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * half_b];
-                    let err = (c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.dashpot_error_m(h));
+                    let ux_err = c_err * h * h * da[0];
+                    let err = (c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, &c, ux_err));
                     let ratio = if err > 0.0 { 0.9 * fast_cbrt(p.tolerance_m / err) } else { f64::INFINITY };
                     if err > p.tolerance_m && h > p.dt_min_s {
                         self.stats.rejected_steps += 1;
@@ -1023,6 +1116,45 @@ mod tests {
         assert_eq!(checked, 6001);
     }
 
+    /// The assembled tangent at the trial (`u0`, `v0`) of a step of length `h` against central
+    /// differences of the resisting force (displacement steps of `eps`, m, the rotation's
+    /// `eps`/B; the velocity following as in a Newmark step, v = v0 + γ/(β h) (u − u0)), each
+    /// entry within 1e-6 of the tangent's largest; returns the entries checked (9).
+    fn tangent_against_differences(
+        sim: &mut Simulation,
+        u0: [f64; 3],
+        v0: [f64; 3],
+        h: f64,
+        eps: f64,
+        what: &str,
+    ) -> usize {
+        let dv_du = sim.solver.gamma / (sim.solver.beta * h);
+        let (_, k) = sim.assemble(u0, v0, h);
+        let scale = k.abs().max();
+        let mut checked = 0;
+        for j in 0..3 {
+            let eps = if j == 2 { eps / 0.78 } else { eps };
+            let mut f_at = |sign: f64| {
+                let mut u = u0;
+                u[j] += sign * eps;
+                let mut v = v0;
+                v[j] += sign * eps * dv_du;
+                sim.assemble(u, v, h).0
+            };
+            let fd = (f_at(1.0) - f_at(-1.0)) / (2.0 * eps);
+            for r in 0..3 {
+                assert!(
+                    (fd[r] - k[(r, j)]).abs() <= 1e-6 * scale,
+                    "{what}: ∂f_{r}/∂q_{j} = {} by differences, {} assembled",
+                    fd[r],
+                    k[(r, j)]
+                );
+                checked += 1;
+            }
+        }
+        checked
+    }
+
     /// The tangent of the assembled resisting force (springs with their shear, normal and
     /// rotation coupling, and the per-spring dashpots of the `elastic` and `springs` placements)
     /// against central finite differences, for both horizontal and both vertical dashpot
@@ -1053,8 +1185,7 @@ mod tests {
                 let u0 = [2.0e-4 + 1e-3 * law.stick_limit_m, -settle - 1e-7, theta];
                 assert!(x.iter().filter(|&&xi| u0[1] - u0[2] * xi > 0.0).count() == 2, "two springs lifted");
                 let v0 = [0.01, -0.002, 0.03];
-                let dv_du = sim.solver.gamma / (sim.solver.beta * h);
-                let (_, k) = sim.assemble(u0, v0, h);
+                sim.assemble(u0, v0, h);
                 let contact = sim.trial.iter().filter(|r| r.normal_n > 0.0);
                 let sliding = contact.clone().filter(|r| r.state.sliding).count();
                 let sticking = contact.filter(|r| !r.state.sliding).count();
@@ -1062,27 +1193,44 @@ mod tests {
                     sliding >= 2 && sticking >= 2 && sliding + sticking == 8,
                     "{sliding} sliding, {sticking} sticking"
                 );
-                let scale = k.abs().max();
-                for j in 0..3 {
-                    let eps = if j == 2 { 1e-9 / 0.78 } else { 1e-9 };
-                    let mut f_at = |sign: f64| {
-                        let mut u = u0;
-                        u[j] += sign * eps;
-                        let mut v = v0;
-                        v[j] += sign * eps * dv_du;
-                        sim.assemble(u, v, h).0
-                    };
-                    let fd = (f_at(1.0) - f_at(-1.0)) / (2.0 * eps);
-                    for r in 0..3 {
-                        assert!(
-                            (fd[r] - k[(r, j)]).abs() <= 1e-6 * scale,
-                            "{mode:?}/{vertical:?}: ∂f_{r}/∂q_{j} = {} by differences, {} assembled",
-                            fd[r],
-                            k[(r, j)]
-                        );
-                        checked += 1;
-                    }
+                checked += tangent_against_differences(&mut sim, u0, v0, h, 1e-9, &format!("{mode:?}/{vertical:?}"));
+            }
+        }
+        assert_eq!(checked, 4 * 9);
+    }
+
+    /// The assembled tangent against central finite differences where two seaward springs
+    /// lifted at the committed state touch again at the trial (`SpringLaw::trial_recontact`:
+    /// their slip positions depend on the trial's u_x and u_y), for both horizontal and both
+    /// vertical dashpot placements; the re-contacting springs' slip positions lie between u_x,n
+    /// and u_x (they touch within the step).
+    #[test]
+    fn assembled_tangent_matches_finite_differences_at_recontact() {
+        let h = 1e-4;
+        let mut checked = 0;
+        for mode in [DampingMode::Total, DampingMode::Elastic] {
+            for vertical in [VerticalDamping::Seed, VerticalDamping::Springs] {
+                let mut sim = simulation(mode, vertical);
+                let settle = sim.model.static_settlement_m();
+                let x = sim.model.x_m.clone();
+                // Committed: rotated so that the two seaward springs are lifted (s_i = u_x,n).
+                let theta_n = settle / (0.3 * 0.78);
+                sim.state.u = [2e-4, -settle, theta_n];
+                for (s, &xi) in sim.state.springs.iter_mut().zip(&x) {
+                    let lifted = -settle - theta_n * xi >= 0.0;
+                    let e = if lifted { 0.0 } else { 0.2 * sim.model.law.stick_limit_m };
+                    *s = SpringState { slip_m: 2e-4 - e, sliding: false, rate_m_per_s: 0.0 };
                 }
+                assert_eq!(x.iter().filter(|&&xi| -settle - theta_n * xi >= 0.0).count(), 2);
+                sim.fast.invalidate();
+                // Trial: every spring in contact.
+                let u0 = [2e-4 + 1e-7, -settle - 1e-7, 0.2 * theta_n];
+                let v0 = [0.01, -0.002, 0.03];
+                sim.assemble(u0, v0, h);
+                let touching: Vec<f64> = sim.trial[..2].iter().map(|r| r.state.slip_m).collect();
+                assert!(sim.trial.iter().all(|r| r.normal_n > 0.0 && !r.state.sliding));
+                assert!(touching.iter().all(|&s| s > 2e-4 && s < u0[0]), "slip positions {touching:?}");
+                checked += tangent_against_differences(&mut sim, u0, v0, h, 1e-10, &format!("{mode:?}/{vertical:?}"));
             }
         }
         assert_eq!(checked, 4 * 9);

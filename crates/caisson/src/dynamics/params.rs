@@ -81,8 +81,9 @@ pub struct SolverParams {
     #[serde(skip)]
     pub exact_sticking: bool,
     /// Adaptive stepping: locate lift-off and re-contact within the step as the onsets of slip
-    /// are (docs/model.md §9.1, "Events"). Default on; off under the `seed-2011` profile.
-    /// Part of the numerics of a results version, not reported.
+    /// are; both steppings: locate the end of a slip, and give a spring that touches down within
+    /// a step its slip position where it touches (docs/model.md §9.1, "Events"). Default on; off
+    /// under the `seed-2011` profile. Part of the numerics of a results version, not reported.
     #[serde(skip)]
     pub locate_contact: bool,
     /// Newton iterations allowed per (sub)step before the step is sub-stepped.

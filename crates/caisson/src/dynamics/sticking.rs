@@ -61,6 +61,9 @@ pub(super) struct FastPath {
     valid: bool,
     /// A spring of the committed state was slipping (its limit is e_d, not e_s).
     any_sliding: bool,
+    /// A spring was lifted in the committed state while re-contact is placed within the step
+    /// ([`super::SolverParams::locate_contact`]): its trial needs the general path.
+    any_lifted: bool,
     /// Every spring has the same slip position, the positions x_i ascend and there is a spring:
     /// with equal limits, the stick test of the two outermost springs decides for all.
     same_slips: bool,
@@ -151,6 +154,9 @@ impl Simulation {
         let half_h = 0.5 * h;
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let fs = &self.fast;
+        if fs.any_lifted {
+            return None;
+        }
         // Indexed over slices of one length, so that the compiler vectorizes the test.
         let n = fs.slip_m.len();
         let (x_m, slip_m, limit_m) = (&self.model.x_m[..n], &fs.slip_m[..n], &fs.limit_m[..n]);
@@ -331,8 +337,19 @@ impl Simulation {
         [fs.n, fs.sum_x, fs.s_ref_m, fs.sum_d, fs.sum_xd]
     }
 
+    /// Whether a spring was slipping at the committed state.
+    #[inline]
+    pub(super) fn committed_sliding(&self) -> bool {
+        if self.fast.valid {
+            self.fast.any_sliding
+        } else {
+            self.state.springs.iter().any(|s| s.sliding)
+        }
+    }
+
     /// Recompute the sums and slices of the committed slip positions.
     fn refresh_fast_path(&mut self) {
+        self.fast.any_lifted = self.solver.locate_contact && self.committed_lifted();
         let law = self.model.law;
         let fs = &mut self.fast;
         let s_ref_m = self.state.springs.first().map_or(0.0, |c| c.slip_m);

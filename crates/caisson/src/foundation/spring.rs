@@ -35,6 +35,13 @@
 //! re-contacts sticking). Friction caps the whole force the foundation transmits, dashpot
 //! included. With c_d = 0 this is the law above.
 //!
+//! **Re-contact** ([`SpringLaw::trial_recontact`], docs/model.md §9.1): a spring lifted at the
+//! start of a step (its slip position following u_x) and in contact at its end touches where its
+//! vertical displacement, linear in the step, crosses 0, at the fraction λ of the step; its slip
+//! position is the caisson's u_x there, s_c = u_x,n + λ (u_x − u_x,n), so that only the step's
+//! part after the touch-down loads it, e = (1 − λ)(u_x − u_x,n). The dashpot beside it follows the
+//! trapezoidal rule over that part, from e = 0 at the rate u̇_x,n.
+//!
 //! Trial → commit → revert: [`SpringLaw::trial`] computes the response from the committed
 //! [`SpringState`] without changing it; committing is copying [`SpringResponse::state`].
 
@@ -134,6 +141,47 @@ impl SpringLaw {
         }
     }
 
+    /// As [`Self::trial_with_dashpot`] for a spring lifted at the step's start (its local vertical
+    /// displacement `uy_n_m` ≥ 0, its slip position the caisson's u_x,n = `ux_n_m`) and in contact
+    /// at the trial (`uy` < 0), over a step whose dashpot term is c' = `c_over_h` = 2 c_d/h
+    /// (module docs, "Re-contact"). It touches where u_y,i, linear in the step, crosses 0, at the
+    /// fraction λ = u_y,n/(u_y,n − u_y) of the step, with its slip position the caisson's u_x
+    /// there, s_c = u_x,n + λ (u_x − u_x,n), and its elastic displacement e = u_x − s_c
+    /// = ρ (u_x − u_x,n) (ρ = 1 − λ) grows over the rest of the step, ρ h, from 0 at the rate
+    /// u̇_x,n: the trapezoidal rule over ρ h, c'/ρ and ē = ρ `shift_m` (`shift_m` = (h/2) u̇_x,n).
+    /// Sticking, its force is κ N ρ (u_x − u_x,n) + c' (u_x − u_x,n − `shift_m`), the dashpot's
+    /// term that of a spring in contact throughout; the tangent takes λ's dependence on u_x and
+    /// u_y. Returns the response, the ē used and ρ (a slipping spring's rate is 2 (e − ē)/(ρ h)).
+    #[inline]
+    pub fn trial_recontact(
+        &self,
+        ux_n_m: f64,
+        uy_n_m: f64,
+        ux: f64,
+        uy: f64,
+        shift_m: f64,
+        c_over_h: f64,
+    ) -> (SpringResponse, f64, f64) {
+        let gap = uy_n_m - uy;
+        let (lambda, rho) = (uy_n_m / gap, -uy / gap);
+        let du = ux - ux_n_m;
+        let slip_m = ux_n_m + lambda * du;
+        // ρ ≥ 1e-9 in the dashpot's terms: no overflow when the spring touches at the step's end.
+        let rho_d = rho.max(1e-9);
+        let e_bar = rho_d * shift_m;
+        let c = SpringState { slip_m, sliding: false, rate_m_per_s: 0.0 };
+        let mut r = self.trial_with_dashpot(c, ux, uy, e_bar, c_over_h / rho_d);
+        if !r.state.sliding {
+            // e = ρ (u_x − u_x,n): ∂e/∂u_x = ρ, ∂e/∂u_y = −(u_x − u_x,n) u_y,n/gap²; the
+            // dashpot's term c' (u_x − u_x,n − shift) (to rounding).
+            let kn = self.kappa_per_m * r.normal_n;
+            r.dshear_dux = kn * rho + c_over_h;
+            r.dshear_duy -= kn * du * uy_n_m / (gap * gap);
+            r.dslip_dux = lambda;
+        }
+        (r, e_bar, rho_d)
+    }
+
     /// The elastic displacement a spring in state `c` may reach and still stick: e_d if it was
     /// slipping, else e_s (module docs).
     #[inline(always)]
@@ -194,6 +242,19 @@ impl SpringLaw {
     pub fn stick_margin(&self, slip_m: f64, limit_m: f64, ux: f64, uy: f64, e_bar_m: f64, c_prime: f64) -> (f64, f64) {
         let (n, kn, _, f_trial, _) = self.elastic_trial(slip_m, limit_m, ux, uy, e_bar_m, c_prime);
         (n, kn * limit_m - f_trial.abs())
+    }
+
+    /// The slip position s a spring at slip position `slip_m` would reach at (`ux`, `uy`), with
+    /// `uy` < 0, if it went on slipping in the direction of `sign` (the `slipping` branch of
+    /// [`Self::trial_with_dashpot`] with its force ± μ_d N_i): u_x − e with
+    /// e = (κ N_i e_d ± c' ē_n)/(κ N_i + c'), e_d itself without a dashpot. What the end of a slip
+    /// is located by (docs/model.md §9.1, "Events").
+    #[inline]
+    pub fn slipping_position(&self, sign: f64, ux: f64, uy: f64, e_prev_m: f64, c_over_h: f64) -> f64 {
+        let kn = self.kappa_per_m * (-self.ky_n_per_m * uy);
+        let g = self.slip_offset_m.copysign(sign);
+        let e = if c_over_h > 0.0 { (kn * g + c_over_h * e_prev_m) / (kn + c_over_h) } else { g };
+        ux - e
     }
 
     /// The `sticking` branch's response from the elastic trial.
@@ -269,6 +330,57 @@ mod tests {
         // Trial elastic displacement smaller than e_d (reversal): sticks, slip position kept.
         let r = l.trial(c, 0.01 + 0.5 * l.slip_offset_m, -1e-5);
         assert!(!r.state.sliding && r.state.slip_m == 0.01);
+    }
+
+    /// Re-contact within the step (`trial_recontact`): a spring lifted at the start by
+    /// u_y,n = 2e-6 m and pressed to u_y = −6e-6 m at the trial touches at λ = 2/8 = 0.25 of the
+    /// step, so its slip position is u_x,n + 0.25 (u_x − u_x,n) and, sticking, its force
+    /// κ N · 0.75 (u_x − u_x,n) plus the dashpot's c' (u_x − u_x,n − shift) (by hand); the
+    /// tangent against central differences in u_x and u_y (each branch is smooth there:
+    /// differences of 1e-12 m, tolerance 1e-5 of κ N + c'), with the dashpot and without.
+    #[test]
+    fn recontact_slips_where_the_spring_touches() {
+        let l = law();
+        let (ux_n, uy_n, ux, uy) = (1e-3, 2e-6, 1e-3 + 2e-7, -6e-6);
+        let mut checked = 0;
+        for (c_over_h, shift) in [(0.0, 0.0), (1.2e8, 3e-8)] {
+            let (r, _, rho) = l.trial_recontact(ux_n, uy_n, ux, uy, shift, c_over_h);
+            assert!(!r.state.sliding, "sticks");
+            assert_eq!(rho, 0.75);
+            assert!((r.state.slip_m - (ux_n + 0.25 * 2e-7)).abs() < 1e-18, "slip {}", r.state.slip_m);
+            let n = -l.ky_n_per_m * uy;
+            let by_hand = l.kappa_per_m * n * 0.75 * 2e-7 + c_over_h * (2e-7 - shift);
+            assert!((r.shear_n - by_hand).abs() <= 1e-9 * by_hand.abs(), "{} against {by_hand}", r.shear_n);
+            let d = 1e-12;
+            let f = |ux: f64, uy: f64| l.trial_recontact(ux_n, uy_n, ux, uy, shift, c_over_h).0.shear_n;
+            let fd_x = (f(ux + d, uy) - f(ux - d, uy)) / (2.0 * d);
+            let fd_y = (f(ux, uy + d) - f(ux, uy - d)) / (2.0 * d);
+            let scale = l.kappa_per_m * n + c_over_h;
+            assert!((fd_x - r.dshear_dux).abs() <= 1e-5 * scale, "dF/dux {fd_x} against {}", r.dshear_dux);
+            assert!((fd_y - r.dshear_duy).abs() <= 1e-5 * scale, "dF/duy {fd_y} against {}", r.dshear_duy);
+            checked += 1;
+        }
+        assert_eq!(checked, 2);
+    }
+
+    /// `slipping_position` is the slip position of the `slipping` branch of the trial, with and
+    /// without the dashpot, in both directions (to rounding).
+    #[test]
+    fn slipping_position_is_the_slip_branch() {
+        let l = law();
+        let mut checked = 0;
+        for c_over_h in [0.0, 1.2e8] {
+            for sign in [1.0, -1.0] {
+                let c = SpringState { slip_m: 2e-3, sliding: true, rate_m_per_s: 0.0 };
+                let (ux, uy, e_bar) = (2e-3 + sign * 3.0 * l.stick_limit_m, -1e-5, sign * 0.5 * l.slip_offset_m);
+                let r = l.trial_with_dashpot(c, ux, uy, e_bar, c_over_h);
+                assert!(r.state.sliding);
+                let s = l.slipping_position(sign, ux, uy, e_bar, c_over_h);
+                assert!((s - r.state.slip_m).abs() <= 1e-18, "{s} against {}", r.state.slip_m);
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 4);
     }
 
     proptest! {
