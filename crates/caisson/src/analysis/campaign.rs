@@ -13,9 +13,11 @@ use super::conventional::{DesignWave, StaticCheck};
 use super::site::WaveSetup;
 use super::train::{RealizationResult, TrainCase, TrainRunError, TrainSummary};
 use super::{Progress, Structure};
+use crate::check::positive;
 use crate::loads::model::WaveLoads;
 use crate::loads::regime::RegimeChoice;
 use crate::loads::safety::SafetyFactors;
+use crate::ParamError;
 use rayon::prelude::*;
 
 /// A test condition.
@@ -26,6 +28,28 @@ pub struct Condition {
     /// Weight in water W', N.
     pub weight_in_water_n: f64,
     pub regime: RegimeChoice,
+}
+
+impl Condition {
+    /// A condition of a wave height above 0 (m) and a weight in water above 0 (N); refused naming
+    /// `height_m` or `weight_in_water_n`. (Whether the waves and the caisson of that height and
+    /// weight are plausible is checked where the condition's setup is built.)
+    pub fn new(height_m: f64, weight_in_water_n: f64, regime: RegimeChoice) -> Result<Self, ParamError> {
+        let height_m = Self::checked_height_m(height_m)?;
+        let weight_in_water_n = Self::checked_weight_in_water_n(weight_in_water_n)?;
+        Ok(Condition { height_m, weight_in_water_n, regime })
+    }
+
+    /// A condition's wave height if above 0, m (the rule of [`Self::new`], for a grid's heights).
+    pub fn checked_height_m(height_m: f64) -> Result<f64, ParamError> {
+        positive("height_m", height_m)
+    }
+
+    /// A condition's weight in water if above 0, N (the rule of [`Self::new`], for a grid's
+    /// weights).
+    pub fn checked_weight_in_water_n(weight_in_water_n: f64) -> Result<f64, ParamError> {
+        positive("weight_in_water_n", weight_in_water_n)
+    }
 }
 
 /// A condition with the structure and waves it runs on.
@@ -88,4 +112,31 @@ pub fn run_campaign(setups: &[ConditionSetup], progress: Progress<'_>) -> Result
             Ok(ConditionResult { condition: s.condition, nominal, safety, summary: TrainSummary::new(rs) })
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A condition refuses a height or a weight that is not a finite number above 0 by itself,
+    /// naming the quantity.
+    #[test]
+    fn condition_names_what_it_refuses() {
+        let ok = Condition::new(0.5, 1.0e4, RegimeChoice::Forced(crate::loads::regime::Regime::Breaking)).unwrap();
+        assert_eq!(
+            (ok.height_m, ok.weight_in_water_n, ok.regime),
+            (0.5, 1.0e4, RegimeChoice::Forced(crate::loads::regime::Regime::Breaking))
+        );
+        let mut checked = 0;
+        for (h, w, quantity) in [
+            (0.0, 1.0e4, "height_m"),
+            (f64::NAN, 1.0e4, "height_m"),
+            (0.5, -1.0, "weight_in_water_n"),
+            (0.5, f64::INFINITY, "weight_in_water_n"),
+        ] {
+            assert_eq!(Condition::new(h, w, RegimeChoice::Auto).unwrap_err().quantity, quantity);
+            checked += 1;
+        }
+        assert_eq!(checked, 4);
+    }
 }

@@ -50,8 +50,10 @@
 //! default), or each wave's period given its height from the joint distribution of Longuet-Higgins
 //! (1983); drawn per wave from the storm's part of the stream ([`super::lifetime`]).
 
+use crate::check::{self, interval};
 use crate::loads::risetime::LoadRng;
 pub use crate::waves::periods::WavePeriods;
+use crate::ParamError;
 use rand::Rng;
 use rand_distr::StandardNormal;
 use std::f64::consts::FRAC_PI_2;
@@ -73,6 +75,26 @@ impl Climate {
     /// Whether every choice is today's (a run then draws exactly the numbers it drew before).
     pub fn is_default(&self) -> bool {
         *self == Climate::default()
+    }
+
+    /// The choices if their parameters are in range: the durations' ([`StormDuration::checked`]),
+    /// the sea level's ([`SeaLevelRise::checked`]: a table's point refused as its quantity), the
+    /// directions' ([`WaveDirection::checked`]) and the periods'
+    /// ([`WavePeriods::longuet_higgins`]). (A storm model's rules need its distribution:
+    /// `lifetime::StormDistribution::peaks_over_threshold`.)
+    pub fn checked(self) -> Result<Self, ParamError> {
+        self.duration.checked()?;
+        self.sea_level.clone().checked().map_err(|e| match e {
+            SeaLevelError::Points { count } => {
+                check::rule("points", count as f64, format!("must list 1 to {MAX_SEA_LEVEL_POINTS} points"))
+            }
+            SeaLevelError::Point { error, .. } => error,
+        })?;
+        self.direction.checked()?;
+        if let WavePeriods::LonguetHiggins { spectral_width } = self.periods {
+            WavePeriods::longuet_higgins(spectral_width)?;
+        }
+        Ok(self)
     }
 }
 
@@ -129,6 +151,20 @@ pub const MAX_STORM_DURATION_S: f64 = 72.0 * 3600.0;
 pub const MAX_STORM_DURATION_COV: f64 = 2.0;
 
 impl StormDuration {
+    /// Lognormal durations of coefficient of variation `cov` in (0, [`MAX_STORM_DURATION_COV`]],
+    /// refused naming `duration_cov`.
+    pub fn lognormal(cov: f64) -> Result<Self, ParamError> {
+        StormDuration::Lognormal { cov }.checked()
+    }
+
+    /// The durations if their COV is in range ([`Self::lognormal`]).
+    pub fn checked(self) -> Result<Self, ParamError> {
+        if let StormDuration::Lognormal { cov } = self {
+            interval("duration_cov", cov, 0.0, MAX_STORM_DURATION_COV, true)?;
+        }
+        Ok(self)
+    }
+
     /// The duration of one storm of mean `mean_s`, s: `mean_s` (fixed), or one lognormal draw (one
     /// standard normal) limited to [`MAX_STORM_DURATION_S`].
     pub fn draw_s(&self, mean_s: f64, rng: &mut LoadRng) -> f64 {
@@ -159,7 +195,62 @@ pub enum SeaLevelRise {
 /// The largest rise of `[design] sea_level_rise_m` and of a table's levels, m.
 pub const MAX_SEA_LEVEL_RISE_M: f64 = 5.0;
 
+/// Most points of a sea-level table.
+pub const MAX_SEA_LEVEL_POINTS: usize = 1000;
+
+/// Why a sea-level rise is refused: too few or too many points, or the point `index`.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SeaLevelError {
+    #[error("{count} points: must list 1 to {MAX_SEA_LEVEL_POINTS} points")]
+    Points { count: usize },
+    #[error("point {index}: {error}")]
+    Point { index: usize, error: ParamError },
+}
+
 impl SeaLevelRise {
+    /// A linear rise to `rise_m` at the end of a life of `life_years`: from 0 to
+    /// [`MAX_SEA_LEVEL_RISE_M`], refused naming `rise_m`.
+    pub fn linear(rise_m: f64, life_years: usize) -> Result<Self, ParamError> {
+        interval("rise_m", rise_m, 0.0, MAX_SEA_LEVEL_RISE_M, false)?;
+        Ok(SeaLevelRise::Linear { rise_m, life_years: life_years as f64 })
+    }
+
+    /// A table of (years from the start of the life, rise m) points: 1 to
+    /// [`MAX_SEA_LEVEL_POINTS`] points, years from 0 to 1000 and increasing, rises from 0 to
+    /// [`MAX_SEA_LEVEL_RISE_M`]; a point refused by its index and `years` or `rise_m`.
+    pub fn table(points: Vec<(f64, f64)>) -> Result<Self, SeaLevelError> {
+        SeaLevelRise::Table { points }.checked()
+    }
+
+    /// The rise if in range ([`Self::linear`], [`Self::table`]).
+    pub fn checked(self) -> Result<Self, SeaLevelError> {
+        match &self {
+            SeaLevelRise::None => {}
+            SeaLevelRise::Linear { rise_m, .. } => {
+                interval("rise_m", *rise_m, 0.0, MAX_SEA_LEVEL_RISE_M, false)
+                    .map_err(|error| SeaLevelError::Point { index: 0, error })?;
+            }
+            SeaLevelRise::Table { points } => {
+                if points.is_empty() || points.len() > MAX_SEA_LEVEL_POINTS {
+                    return Err(SeaLevelError::Points { count: points.len() });
+                }
+                for (index, &(y, r)) in points.iter().enumerate() {
+                    let at = |error| SeaLevelError::Point { index, error };
+                    interval("years", y, 0.0, 1000.0, false).map_err(at)?;
+                    interval("rise_m", r, 0.0, MAX_SEA_LEVEL_RISE_M, false).map_err(at)?;
+                    if let Some(&(y0, _)) = index.checked_sub(1).map(|i| &points[i]) {
+                        if y <= y0 {
+                            let rule =
+                                format!("must be larger than the year before it ({y0}): the years must increase");
+                            return Err(at(check::rule("years", y, rule)));
+                        }
+                    }
+                }
+            }
+        }
+        Ok(self)
+    }
+
     /// The rise at `t_years` from the start of the life, m.
     pub fn rise_m(&self, t_years: f64) -> f64 {
         match self {
@@ -210,6 +301,35 @@ pub const MAX_MEAN_ANGLE_DEG: f64 = 75.0;
 pub const MAX_ANGLE_SPREAD_DEG: f64 = 45.0;
 
 impl WaveDirection {
+    /// Normal angles about `mean_deg` (from −[`MAX_MEAN_ANGLE_DEG`] to [`MAX_MEAN_ANGLE_DEG`])
+    /// with standard deviation `sd_deg` in (0, [`MAX_ANGLE_SPREAD_DEG`]], degrees; refused naming
+    /// `mean_deg` or `sd_deg`.
+    pub fn normal_deg(mean_deg: f64, sd_deg: f64) -> Result<Self, ParamError> {
+        let mean_rad = mean_angle_deg(mean_deg)? * DEG;
+        Ok(WaveDirection::Normal { mean_rad, sd_rad: spread_deg("sd_deg", sd_deg)? * DEG })
+    }
+
+    /// Uniform angles on `mean_deg` ± `half_width_deg`, degrees, in the ranges of
+    /// [`Self::normal_deg`]; refused naming `mean_deg` or `half_width_deg`.
+    pub fn uniform_deg(mean_deg: f64, half_width_deg: f64) -> Result<Self, ParamError> {
+        let mean_rad = mean_angle_deg(mean_deg)? * DEG;
+        Ok(WaveDirection::Uniform { mean_rad, half_width_rad: spread_deg("half_width_deg", half_width_deg)? * DEG })
+    }
+
+    /// The directions if in the ranges of [`Self::normal_deg`] (in radians; a spread may be 0,
+    /// where a spread of a few 1e-324 degrees underflows).
+    pub fn checked(self) -> Result<Self, ParamError> {
+        let (mean_rad, spread, spread_rad) = match self {
+            WaveDirection::HeadOn => return Ok(self),
+            WaveDirection::Normal { mean_rad, sd_rad } => (mean_rad, "sd_rad", sd_rad),
+            WaveDirection::Uniform { mean_rad, half_width_rad } => (mean_rad, "half_width_rad", half_width_rad),
+        };
+        let hi = MAX_MEAN_ANGLE_DEG * DEG;
+        interval("mean_rad", mean_rad, -hi, hi, false)?;
+        interval(spread, spread_rad, 0.0, MAX_ANGLE_SPREAD_DEG * DEG, false)?;
+        Ok(self)
+    }
+
     /// The angle of one storm, rad, limited to ±π/2: 0 (head-on, nothing drawn), or one draw (a
     /// standard normal, or a uniform).
     pub fn draw_rad(&self, rng: &mut LoadRng) -> f64 {
@@ -222,6 +342,19 @@ impl WaveDirection {
         };
         theta.clamp(-FRAC_PI_2, FRAC_PI_2)
     }
+}
+
+/// One degree, rad.
+const DEG: f64 = std::f64::consts::PI / 180.0;
+
+/// A mean angle to the normal, degrees, from −[`MAX_MEAN_ANGLE_DEG`] to [`MAX_MEAN_ANGLE_DEG`].
+fn mean_angle_deg(v: f64) -> Result<f64, ParamError> {
+    interval("mean_deg", v, -MAX_MEAN_ANGLE_DEG, MAX_MEAN_ANGLE_DEG, false)
+}
+
+/// A spread of angles, degrees, in (0, [`MAX_ANGLE_SPREAD_DEG`]].
+fn spread_deg(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
+    interval(quantity, v, 0.0, MAX_ANGLE_SPREAD_DEG, true)
 }
 
 /// The smallest n with P(N ≤ n) > u for N Poisson of mean `rate` (inversion by sequential search,
@@ -244,6 +377,42 @@ pub fn poisson_inverse(rate: f64, u: f64) -> usize {
 mod tests {
     use super::*;
     use crate::loads::generator::realization_rng;
+
+    /// Each constructor refuses a value outside its range by itself, naming the quantity (a
+    /// table's point by its index); the ends of the ranges are allowed, and the angles of the
+    /// degree constructors pass the radian check (the same conversion).
+    #[test]
+    fn climate_constructors_name_what_they_refuse() {
+        assert_eq!(StormDuration::lognormal(2.0), Ok(StormDuration::Lognormal { cov: 2.0 }));
+        assert_eq!(StormDuration::lognormal(0.0).unwrap_err().quantity, "duration_cov");
+        assert_eq!(SeaLevelRise::linear(5.0, 50), Ok(SeaLevelRise::Linear { rise_m: 5.0, life_years: 50.0 }));
+        assert_eq!(SeaLevelRise::linear(5.01, 50).unwrap_err().quantity, "rise_m");
+        assert!(SeaLevelRise::table(vec![(0.0, 0.0), (1000.0, 5.0)]).is_ok());
+        assert_eq!(SeaLevelRise::table(vec![]), Err(SeaLevelError::Points { count: 0 }));
+        assert_eq!(SeaLevelRise::table(vec![(0.0, 0.0); 1001]), Err(SeaLevelError::Points { count: 1001 }));
+        let point = |points: Vec<(f64, f64)>| match SeaLevelRise::table(points) {
+            Err(SeaLevelError::Point { index, error }) => (index, error.quantity),
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(point(vec![(0.0, 0.0), (10.0, 0.1), (10.0, 0.2)]), (2, "years"));
+        assert_eq!(point(vec![(1000.5, 0.0)]), (0, "years"));
+        assert_eq!(point(vec![(0.0, 0.0), (10.0, -0.1)]), (1, "rise_m"));
+        let d = WaveDirection::normal_deg(-75.0, 45.0).unwrap();
+        assert_eq!(d, WaveDirection::Normal { mean_rad: -75.0 * DEG, sd_rad: 45.0 * DEG });
+        assert_eq!(d.checked(), Ok(d));
+        assert_eq!(WaveDirection::normal_deg(75.5, 10.0).unwrap_err().quantity, "mean_deg");
+        assert_eq!(WaveDirection::normal_deg(0.0, 0.0).unwrap_err().quantity, "sd_deg");
+        assert_eq!(WaveDirection::uniform_deg(0.0, 45.5).unwrap_err().quantity, "half_width_deg");
+        let wide = WaveDirection::Uniform { mean_rad: 0.0, half_width_rad: 1.0 };
+        assert_eq!(wide.checked().unwrap_err().quantity, "half_width_rad");
+        // The smallest spread in degrees is allowed, and its 0 rad too.
+        assert_eq!(WaveDirection::normal_deg(0.0, 5e-324).unwrap().checked().map(|_| ()), Ok(()));
+        let climate = Climate { duration: StormDuration::Lognormal { cov: -1.0 }, ..Climate::default() };
+        assert_eq!(climate.checked().unwrap_err().quantity, "duration_cov");
+        let climate = Climate { periods: WavePeriods::LonguetHiggins { spectral_width: 0.9 }, ..Climate::default() };
+        assert_eq!(climate.checked().unwrap_err().quantity, "spectral_width");
+        assert_eq!(Climate::default().checked(), Ok(Climate::default()));
+    }
 
     /// The counts of 200 000 years at λ = 3.7 and 0.4: the sample mean and variance are both λ
     /// (the Poisson's mean and variance) within 5 standard errors: the mean's is (λ/n)^½, the

@@ -79,14 +79,18 @@
 //! §6.2, `erfcc`): fractional error below 1.2e-7 everywhere, so Φ(z) and its tail Φ(−z) have the
 //! same relative accuracy.
 
-use super::climate::{StormDuration, WaveDirection, WavePeriods};
+use super::climate::{StormDuration, WaveDirection, WavePeriods, MAX_STORM_DURATION_S};
 use super::conventional::DesignWave;
-use super::lifetime::{simulate_storm, StormCase, StormError, StormInput, StormOutcome};
+use super::lifetime::{failure_rotation_rad, simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
+use crate::check::{self, count, interval};
 use crate::loads::model::WaveLoadModel;
 use crate::loads::risetime::LoadRng;
+use crate::waves::breaking::MICHE_STEEPNESS;
+use crate::waves::dispersion::deep_water_wavelength_m;
 /// Φ, φ and erfc live with the other distributions of the waves; named here as before.
 pub use crate::waves::statistics::{erfc, normal_cdf, normal_pdf};
+use crate::ParamError;
 use rand::SeedableRng;
 use rayon::prelude::*;
 use thiserror::Error;
@@ -292,6 +296,30 @@ pub fn fit_lognormal(im: &[f64], k: &[u64], n: &[u64]) -> Result<LognormalFit, F
     Ok(LognormalFit { median: ln_median.exp(), beta, ln_median_se, beta_se, log_likelihood: -f_best })
 }
 
+/// A non-empty, strictly increasing list of at most [`MAX_LEVELS`] finite numbers in (0, `hi`)
+/// (`unit`: the words after the bound).
+fn increasing(quantity: &'static str, v: &[f64], hi: f64, unit: &str) -> Result<(), FragilityParamError> {
+    if v.is_empty() {
+        return Err(FragilityParamError::Empty { quantity });
+    }
+    if v.len() > MAX_LEVELS {
+        return Err(FragilityParamError::TooMany { quantity, count: v.len() });
+    }
+    for (index, &x) in v.iter().enumerate() {
+        let at = |words: String| FragilityParamError::Element { index, error: check::rule(quantity, x, words) };
+        if !(x.is_finite() && x > 0.0 && x < hi) {
+            return Err(at(format!("must be a finite number > 0 and < {hi} ({unit})")));
+        }
+        if index > 0 && x <= v[index - 1] {
+            return Err(at(format!(
+                "must be larger than the value before it ({}): the list must increase",
+                v[index - 1]
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// The storms of a fragility analysis (module docs).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct FragilityParams {
@@ -319,7 +347,57 @@ pub struct FragilityParams {
     pub periods: WavePeriods,
 }
 
+/// At most this many heights and limits.
+pub const MAX_LEVELS: usize = 1000;
+/// At most this many storms per height.
+pub const MAX_STORMS_PER_HEIGHT: usize = 1_000_000;
+/// At most this many storms in all (heights × storms).
+pub const MAX_STORMS: usize = 10_000_000;
+
+/// Why [`FragilityParams`] are refused: a quantity, or a list's length or element.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FragilityParamError {
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    #[error("{quantity} is empty: it must list at least one value")]
+    Empty { quantity: &'static str },
+    #[error("{quantity} has {count} values: at most {MAX_LEVELS}")]
+    TooMany { quantity: &'static str, count: usize },
+    /// The element `index` of the list `error.quantity`.
+    #[error("{}[{index}] = {}: {}", error.quantity, error.value, error.allowed.describe(1.0, ""))]
+    Element { index: usize, error: ParamError },
+}
+
 impl FragilityParams {
+    /// The storms if in range: a period in (0, 1000] s; 1 to [`MAX_LEVELS`] heights, increasing,
+    /// each above 0 and below Miche's deep-water limit 0.142 L0 at that period (as `[waves]
+    /// significant_height_m`); 1 to [`MAX_LEVELS`] limits, increasing, above 0 and below 1 km; 1
+    /// to [`MAX_STORMS_PER_HEIGHT`] storms a height and at most [`MAX_STORMS`] in all; a duration
+    /// in (0, [`MAX_STORM_DURATION_S`]]; the failure rotation
+    /// ([`super::lifetime::failure_rotation_rad`]) and the climate's choices (their `checked`).
+    pub fn checked(self) -> Result<Self, FragilityParamError> {
+        interval("period_s", self.period_s, 0.0, 1e3, true)?;
+        let limit = MICHE_STEEPNESS * deep_water_wavelength_m(self.period_s);
+        let words = format!("m; below 0.142 L0 = {limit:.3} m for T = {} s", self.period_s);
+        increasing("heights_m", &self.heights_m, limit, &words)?;
+        increasing("limits_m", &self.limits_m, 1e3, "m")?;
+        count("storms", self.storms, 1, MAX_STORMS_PER_HEIGHT as u64)?;
+        let all = self.storms.saturating_mul(self.heights_m.len());
+        if all > MAX_STORMS {
+            let n = self.heights_m.len();
+            let words = format!("times {n} heights is {all} storms; at most {MAX_STORMS} in all");
+            return Err(check::rule("storms", self.storms as f64, words).into());
+        }
+        interval("storm_duration_s", self.storm_duration_s, 0.0, MAX_STORM_DURATION_S, true)?;
+        failure_rotation_rad(self.failure_rotation_rad)?;
+        self.duration.checked()?;
+        self.direction.checked()?;
+        if let WavePeriods::LonguetHiggins { spectral_width } = self.periods {
+            WavePeriods::longuet_higgins(spectral_width)?;
+        }
+        Ok(self)
+    }
+
     /// Waves per storm, round(duration / T1/3), at least 1.
     pub fn waves_per_storm(&self) -> usize {
         (self.storm_duration_s / self.period_s).round().max(1.0) as usize
@@ -499,6 +577,58 @@ mod tests {
     use super::*;
     use crate::loads::risetime::load_rng;
     use rand::Rng;
+
+    /// The constructor refuses each bad value by itself, naming the quantity (a list's element
+    /// by its index): at T1/3 = 12 s Miche's limit is 0.142 · 224.8 m = 31.9 m.
+    #[test]
+    fn fragility_params_name_what_they_refuse() {
+        let p = FragilityParams {
+            heights_m: vec![4.0, 31.0],
+            storms: 10,
+            limits_m: vec![0.1, 999.0],
+            storm_duration_s: MAX_STORM_DURATION_S,
+            period_s: 12.0,
+            seed: 1,
+            failure_rotation_rad: 0.01,
+            duration: StormDuration::Fixed,
+            direction: WaveDirection::HeadOn,
+            periods: WavePeriods::Significant,
+        };
+        assert_eq!(p.clone().checked(), Ok(p.clone()));
+        let refused = |q: FragilityParams| q.checked().unwrap_err();
+        let element = |q: FragilityParams| match q.checked() {
+            Err(FragilityParamError::Element { index, error }) => (index, error.quantity),
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(element(FragilityParams { heights_m: vec![4.0, 32.0], ..p.clone() }), (1, "heights_m"));
+        assert_eq!(element(FragilityParams { heights_m: vec![4.0, 4.0], ..p.clone() }), (1, "heights_m"));
+        assert_eq!(element(FragilityParams { limits_m: vec![f64::NAN], ..p.clone() }), (0, "limits_m"));
+        assert_eq!(element(FragilityParams { limits_m: vec![0.3, 1000.0], ..p.clone() }), (1, "limits_m"));
+        assert_eq!(
+            refused(FragilityParams { heights_m: vec![], ..p.clone() }),
+            FragilityParamError::Empty { quantity: "heights_m" }
+        );
+        assert_eq!(
+            refused(FragilityParams { limits_m: vec![1.0; 1001], ..p.clone() }),
+            FragilityParamError::TooMany { quantity: "limits_m", count: 1001 }
+        );
+        let quantity = |q: FragilityParams| match q.checked() {
+            Err(FragilityParamError::Param(e)) => e.quantity,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(quantity(FragilityParams { period_s: 0.0, ..p.clone() }), "period_s");
+        assert_eq!(quantity(FragilityParams { storms: 0, ..p.clone() }), "storms");
+        // 10 heights × 10⁶ storms: 10⁷ storms are allowed, 10⁷ + 10⁶ are not.
+        let heights_m: Vec<f64> = (1..=11).map(f64::from).collect();
+        assert!(FragilityParams { heights_m: heights_m[..10].to_vec(), storms: 1_000_000, ..p.clone() }
+            .checked()
+            .is_ok());
+        assert_eq!(quantity(FragilityParams { heights_m, storms: 1_000_000, ..p.clone() }), "storms");
+        assert_eq!(quantity(FragilityParams { storm_duration_s: 0.0, ..p.clone() }), "storm_duration_s");
+        assert_eq!(quantity(FragilityParams { failure_rotation_rad: 0.2, ..p.clone() }), "failure_rotation_rad");
+        let duration = StormDuration::Lognormal { cov: 3.0 };
+        assert_eq!(quantity(FragilityParams { duration, ..p }), "duration_cov");
+    }
 
     fn exact_counts(im: &[f64], median: f64, beta: f64, n: u64) -> Vec<u64> {
         im.iter().map(|&x| (n as f64 * normal_cdf((x / median).ln() / beta)).round() as u64).collect()

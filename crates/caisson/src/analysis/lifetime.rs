@@ -112,11 +112,12 @@
 //! Lives are independent, so results do not depend on the thread count, and a life can be
 //! recomputed alone (checkpoint/resume).
 
-use super::climate::{Climate, StormModel};
+use super::climate::{Climate, StormModel, MAX_STORM_DURATION_S, MAX_STORM_RATE_PER_YEAR};
 use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD, SEAWARD_REPORT_M};
 use super::rigid::RigidBlock;
 use super::run::permanent_sliding_m;
 use super::Structure;
+use crate::check::{self, count, interval};
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
@@ -126,7 +127,7 @@ use crate::loads::risetime::LoadRng;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
 use crate::waves::surf_zone::goda_surf_zone;
-use crate::{check, ParamError, G_M_PER_S2};
+use crate::{ParamError, G_M_PER_S2};
 use rand::Rng;
 use rand_distr::StandardNormal;
 use rayon::prelude::*;
@@ -146,6 +147,34 @@ pub enum StormDistribution {
 }
 
 impl StormDistribution {
+    /// A Weibull distribution of annual maxima: scale A in (0, 100] m, shape k from 0.1 to 20,
+    /// location B from 0 to 100 m; refused naming the quantity.
+    pub fn weibull(scale_m: f64, shape: f64, location_m: f64) -> Result<Self, ParamError> {
+        StormDistribution::Weibull { scale_m, shape, location_m }.checked()
+    }
+
+    /// A Gumbel distribution of annual maxima: location B and scale A in (0, 100] m; refused
+    /// naming the quantity.
+    pub fn gumbel(location_m: f64, scale_m: f64) -> Result<Self, ParamError> {
+        StormDistribution::Gumbel { location_m, scale_m }.checked()
+    }
+
+    /// The distribution if its parameters are in range ([`Self::weibull`], [`Self::gumbel`]).
+    pub fn checked(self) -> Result<Self, ParamError> {
+        match self {
+            StormDistribution::Weibull { scale_m, shape, location_m } => {
+                interval("scale_m", scale_m, 0.0, 100.0, true)?;
+                interval("shape", shape, 0.1, 20.0, false)?;
+                interval("location_m", location_m, 0.0, 100.0, false)?;
+            }
+            StormDistribution::Gumbel { location_m, scale_m } => {
+                interval("location_m", location_m, 0.0, 100.0, true)?;
+                interval("scale_m", scale_m, 0.0, 100.0, true)?;
+            }
+        }
+        Ok(self)
+    }
+
     /// The height of non-exceedance probability `p` in (0, 1).
     pub fn quantile_m(&self, p: f64) -> f64 {
         match *self {
@@ -157,10 +186,12 @@ impl StormDistribution {
     }
 
     /// Peaks over threshold of this fitted distribution ([`StormModel::PeaksOverThreshold`]):
+    /// a rate in (0, [`MAX_STORM_RATE_PER_YEAR`]] storms a year and a threshold from 0 to 100 m,
     /// refused naming `threshold_m` where the distribution leaves no room above the threshold
-    /// (1 − F(threshold) < 10⁻⁹: its exceedances could not be drawn). (The ranges of the rate and
-    /// the threshold are the scenario's keys'.)
+    /// (1 − F(threshold) < 10⁻⁹: its exceedances could not be drawn).
     pub fn peaks_over_threshold(&self, rate_per_year: f64, threshold_m: f64) -> Result<StormModel, ParamError> {
+        interval("rate_per_year", rate_per_year, 0.0, MAX_STORM_RATE_PER_YEAR, true)?;
+        interval("threshold_m", threshold_m, 0.0, 100.0, false)?;
         if 1.0 - self.cdf(threshold_m) < 1e-9 {
             return Err(check::rule(
                 "threshold_m",
@@ -199,10 +230,22 @@ pub struct ErrorModel {
 impl ErrorModel {
     pub const NONE: ErrorModel = ErrorModel { bias: 0.0, cov: 0.0, truncation_sigmas: Some(2.0) };
 
-    /// An error model whose multiplier stays positive: truncated at ±k, 1 + bias − k·cov > 0
-    /// (the lowest multiplier it can draw); refused naming `cov` otherwise. (The ranges of the
-    /// bias, the COV and k are the scenario's keys'.)
+    /// An error model of bias from −0.9 to 1 and COV from 0 to 1, truncated at ±k with k from
+    /// 0.5 to 10 (or not truncated), whose multiplier stays positive: truncated, the lowest
+    /// multiplier it can draw, 1 + bias − k·cov, is above 0; refused naming `bias`, `cov` or
+    /// `truncation_sigmas`.
     pub fn new(bias: f64, cov: f64, truncation_sigmas: Option<f64>) -> Result<Self, ParamError> {
+        ErrorModel { bias, cov, truncation_sigmas }.checked()
+    }
+
+    /// The model if its coefficients are in range ([`Self::new`]).
+    pub fn checked(self) -> Result<Self, ParamError> {
+        let ErrorModel { bias, cov, truncation_sigmas } = self;
+        if let Some(k) = truncation_sigmas {
+            interval("truncation_sigmas", k, 0.5, 10.0, false)?;
+        }
+        interval("bias", bias, -0.9, 1.0, false)?;
+        interval("cov", cov, 0.0, 1.0, false)?;
         if let Some(k) = truncation_sigmas {
             if 1.0 + bias - k * cov <= 0.0 {
                 return Err(check::rule(
@@ -212,7 +255,7 @@ impl ErrorModel {
                 ));
             }
         }
-        Ok(ErrorModel { bias, cov, truncation_sigmas })
+        Ok(self)
     }
 
     fn draw(&self, rng: &mut LoadRng) -> f64 {
@@ -324,7 +367,34 @@ pub struct LifeParams {
     pub climate: Climate,
 }
 
+/// The longest life, years (`[design] life_years`).
+pub const MAX_LIFE_YEARS: usize = 1000;
+
 impl LifeParams {
+    /// The life model if every coefficient is in range: 1 to [`MAX_LIFE_YEARS`] years, the storm
+    /// distribution ([`StormDistribution::checked`]), a period coefficient a in (0, 100] s·m^−b
+    /// and exponent b from 0 to 2, a storm duration in (0, [`MAX_STORM_DURATION_S`]], a tidal range
+    /// from 0 to 20 m, the errors ([`ErrorModel::checked`]) and the climate
+    /// ([`StormDistribution::peaks_over_threshold`], [`Climate::checked`]); refused naming the
+    /// quantity.
+    pub fn checked(self) -> Result<Self, ParamError> {
+        count("life_years", self.life_years, 1, MAX_LIFE_YEARS as u64)?;
+        self.storms.checked()?;
+        if let StormModel::PeaksOverThreshold { rate_per_year, threshold_m } = self.climate.storms {
+            self.storms.peaks_over_threshold(rate_per_year, threshold_m)?;
+        }
+        let climate = self.climate.checked()?;
+        interval("period_coefficient", self.period_coefficient, 0.0, 100.0, true)?;
+        interval("period_exponent", self.period_exponent, 0.0, 2.0, false)?;
+        interval("storm_duration_s", self.storm_duration_s, 0.0, MAX_STORM_DURATION_S, true)?;
+        interval("tidal_range_m", self.tidal_range_m, 0.0, 20.0, false)?;
+        let e = &self.errors;
+        for m in [e.deep_water_height, e.transformation, e.wave_force, e.friction].iter().chain(&e.impact_force) {
+            m.checked()?;
+        }
+        Ok(LifeParams { climate, ..self })
+    }
+
     /// The highest water level above still water of the life's storms: the tidal range and the
     /// largest sea-level rise, m.
     pub fn highest_water_m(&self) -> f64 {
@@ -1012,7 +1082,56 @@ pub struct DesignParams {
     pub continue_after_failure: bool,
 }
 
+/// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
+pub const MAX_LIVES: usize = 10_000_000;
+
+/// Takahashi's performance grades (docs/model.md §6.4 step 8), m: always among the reported
+/// thresholds.
+pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
+
+/// The largest failure rotation limit (`[design]` and `[fragility] failure_rotation_rad`), rad:
+/// 0.1 rad (5.7°) lifts the heel of a 20 m wide caisson by 2 m, far beyond the small rotations the
+/// model describes.
+pub const MAX_FAILURE_ROTATION_RAD: f64 = 0.1;
+
+/// A failure rotation limit in (0, [`MAX_FAILURE_ROTATION_RAD`]] rad, refused naming
+/// `failure_rotation_rad` (the design's and the fragility's).
+pub fn failure_rotation_rad(v: f64) -> Result<f64, ParamError> {
+    interval("failure_rotation_rad", v, 0.0, MAX_FAILURE_ROTATION_RAD, true)
+}
+
 impl DesignParams {
+    /// The run if in range: the life model ([`LifeParams::checked`]), 1 to [`MAX_LIVES`] lives,
+    /// thresholds above 0 and increasing, a failure sliding limit in (0, 1000] m and a failure
+    /// rotation limit ([`failure_rotation_rad`]); refused naming the quantity.
+    pub fn checked(self) -> Result<Self, ParamError> {
+        let life = self.life.checked()?;
+        count("lives", self.lives, 1, MAX_LIVES as u64)?;
+        for (i, &t) in self.thresholds_m.iter().enumerate() {
+            check::positive("thresholds_m", t)?;
+            if i > 0 && t <= self.thresholds_m[i - 1] {
+                return Err(check::rule("thresholds_m", t, "must be larger than the threshold before it"));
+            }
+        }
+        if let Some(s) = self.failure_sliding_m {
+            interval("failure_sliding_m", s, 0.0, 1000.0, true)?;
+        }
+        failure_rotation_rad(self.failure_rotation_rad)?;
+        Ok(DesignParams { life, ..self })
+    }
+
+    /// The reported thresholds: [`STANDARD_THRESHOLDS_M`] and `extra_m`, sorted, each once;
+    /// refused at the first of `extra_m` that is not above 0 (its index and the rule).
+    pub fn thresholds_m(extra_m: &[f64]) -> Result<Vec<f64>, (usize, ParamError)> {
+        let mut thresholds_m = STANDARD_THRESHOLDS_M.to_vec();
+        for (i, &v) in extra_m.iter().enumerate() {
+            thresholds_m.push(check::positive("thresholds_m", v).map_err(|e| (i, e))?);
+        }
+        thresholds_m.sort_by(f64::total_cmp);
+        thresholds_m.dedup();
+        Ok(thresholds_m)
+    }
+
     /// The failure limit for a caisson of base width `width_m`, m.
     pub fn failure_limit_m(&self, width_m: f64) -> f64 {
         self.failure_sliding_m.unwrap_or(FAILURE_FRACTION_OF_WIDTH * width_m)
@@ -1213,6 +1332,75 @@ mod tests {
         );
         assert!((1.0 - w.cdf(10.0) - (-(2.5f64 / 1.5).powf(1.4)).exp()).abs() < 1e-15);
         assert_eq!(w.peaks_over_threshold(3.0, 90.0).unwrap_err().quantity, "threshold_m");
+    }
+
+    /// Each constructor refuses a value outside its range by itself, naming the quantity: the
+    /// ranges' ends are allowed (B = 0 m and k = 0.1 for a Weibull, 1000 years, 72 h, 20 m of
+    /// tide), the values just beyond them are not.
+    #[test]
+    fn life_constructors_name_what_they_refuse() {
+        let q = |r: Result<StormDistribution, ParamError>| r.unwrap_err().quantity;
+        assert!(StormDistribution::weibull(100.0, 0.1, 0.0).is_ok() && StormDistribution::gumbel(100.0, 1.0).is_ok());
+        assert_eq!(q(StormDistribution::weibull(0.0, 1.4, 0.0)), "scale_m");
+        assert_eq!(q(StormDistribution::weibull(1.5, 0.09, 0.0)), "shape");
+        assert_eq!(q(StormDistribution::weibull(1.5, 1.4, -0.1)), "location_m");
+        assert_eq!(q(StormDistribution::gumbel(0.0, 1.0)), "location_m");
+        assert_eq!(q(StormDistribution::gumbel(4.0, f64::NAN)), "scale_m");
+        let w = StormDistribution::weibull(1.5, 1.4, 2.0).unwrap();
+        assert_eq!(w.peaks_over_threshold(0.0, 3.0).unwrap_err().quantity, "rate_per_year");
+        assert_eq!(w.peaks_over_threshold(MAX_STORM_RATE_PER_YEAR * 1.01, 3.0).unwrap_err().quantity, "rate_per_year");
+        assert_eq!(w.peaks_over_threshold(3.0, -0.1).unwrap_err().quantity, "threshold_m");
+        for (bias, cov, k, quantity) in
+            [(-0.91, 0.1, Some(2.0), "bias"), (0.0, 1.01, None, "cov"), (0.0, 0.1, Some(0.4), "truncation_sigmas")]
+        {
+            assert_eq!(ErrorModel::new(bias, cov, k).unwrap_err().quantity, quantity);
+        }
+        let life = LifeParams {
+            life_years: 1000,
+            storms: w,
+            period_coefficient: 3.3,
+            period_exponent: 0.63,
+            storm_duration_s: 72.0 * 3600.0,
+            tidal_range_m: 20.0,
+            errors: Errors::default(),
+            climate: Climate::default(),
+        };
+        assert_eq!(life.clone().checked(), Ok(life.clone()));
+        let refused = |l: LifeParams| l.checked().unwrap_err().quantity;
+        assert_eq!(refused(LifeParams { life_years: 1001, ..life.clone() }), "life_years");
+        assert_eq!(refused(LifeParams { period_coefficient: 0.0, ..life.clone() }), "period_coefficient");
+        assert_eq!(refused(LifeParams { period_exponent: 2.1, ..life.clone() }), "period_exponent");
+        assert_eq!(refused(LifeParams { storm_duration_s: 72.0 * 3600.0 + 1.0, ..life.clone() }), "storm_duration_s");
+        assert_eq!(refused(LifeParams { tidal_range_m: 20.5, ..life.clone() }), "tidal_range_m");
+        let friction = ErrorModel { bias: 0.0, cov: 0.6, truncation_sigmas: Some(2.0) };
+        assert_eq!(refused(LifeParams { errors: Errors { friction, ..Errors::default() }, ..life.clone() }), "cov");
+        let storms = StormModel::PeaksOverThreshold { rate_per_year: 3.0, threshold_m: 90.0 };
+        assert_eq!(
+            refused(LifeParams { climate: Climate { storms, ..Climate::default() }, ..life.clone() }),
+            "threshold_m"
+        );
+        let design = DesignParams {
+            life,
+            lives: 10,
+            seed: 1,
+            thresholds_m: DesignParams::thresholds_m(&[0.3, 0.05]).unwrap(),
+            screen: true,
+            failure_sliding_m: Some(1000.0),
+            failure_rotation_rad: MAX_FAILURE_ROTATION_RAD,
+            continue_after_failure: false,
+        };
+        assert_eq!(design.thresholds_m, [0.03, 0.05, 0.1, 0.3, 1.0, 3.0]);
+        assert_eq!(DesignParams::thresholds_m(&[0.2, -0.1]).unwrap_err().0, 1);
+        assert_eq!(design.clone().checked(), Ok(design.clone()));
+        let refused = |d: DesignParams| d.checked().unwrap_err().quantity;
+        assert_eq!(refused(DesignParams { lives: 0, ..design.clone() }), "lives");
+        assert_eq!(refused(DesignParams { thresholds_m: vec![0.3, 0.1], ..design.clone() }), "thresholds_m");
+        assert_eq!(refused(DesignParams { failure_sliding_m: Some(0.0), ..design.clone() }), "failure_sliding_m");
+        assert_eq!(refused(DesignParams { failure_rotation_rad: 0.11, ..design.clone() }), "failure_rotation_rad");
+        assert_eq!(
+            refused(DesignParams { life: LifeParams { life_years: 0, ..design.life.clone() }, ..design }),
+            "life_years"
+        );
     }
 
     /// Limit 1 m; lives |S| 0.1, 0.5 (failed by rotation), 3 (failed by sliding), 0.2: the

@@ -201,14 +201,21 @@ impl SolverParams {
         self
     }
 
+    /// The controls if `dt_s` is at most the simulated time `duration_s` (a rule of
+    /// [`Self::check_run`], for a caller that checks it first).
+    pub fn within(self, duration_s: f64) -> Result<Self, ParamError> {
+        if self.dt_s > duration_s {
+            return Err(rule("dt_s", self.dt_s, format!("must not exceed the simulated time {duration_s} s")));
+        }
+        Ok(self)
+    }
+
     /// Check the controls against a run of `duration_s`: dt_s at most the duration, at most 1e9
     /// steps of dt_s (fixed or adaptive stepping: docs/scenario.md), and an output interval from
     /// dt_s to the duration.
     pub fn check_run(&self, duration_s: f64) -> Result<(), ParamError> {
         time_step(self.dt_s)?;
-        if self.dt_s > duration_s {
-            return Err(rule("dt_s", self.dt_s, format!("must not exceed the simulated time {duration_s} s")));
-        }
+        self.within(duration_s)?;
         if duration_s / self.dt_s > MAX_FIXED_STEPS {
             let adaptive = if self.stepping == Stepping::Fixed { "" } else { " of dt_s (the first adaptive step)" };
             return Err(rule(
@@ -227,5 +234,22 @@ impl SolverParams {
             ));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One rule for a step longer than the run: [`SolverParams::within`] and
+    /// [`SolverParams::check_run`] refuse dt_s = 0.5 s on a 0.4 s run naming `dt_s` with the same
+    /// words, and allow it on a run of 0.5 s.
+    #[test]
+    fn a_step_longer_than_the_run_is_refused_naming_dt() {
+        let s = SolverParams::fixed(0.5).unwrap();
+        let e = s.within(0.4).unwrap_err();
+        assert_eq!((e.quantity, e.value), ("dt_s", 0.5));
+        assert_eq!(s.check_run(0.4), Err(e));
+        assert!(s.within(0.5).is_ok() && s.check_run(0.5).is_ok());
     }
 }

@@ -69,18 +69,21 @@ fn regime_of(key: &str, v: &str) -> R<RegimeChoice> {
     })
 }
 
-fn positive_list(key: &str, v: &[f64], unit: &str) -> R<()> {
+/// A refused height (m) or weight in water (N) of a condition under `key`, with the value as
+/// read (`read`: m or kN).
+fn refused(key: &str, read: f64, e: crate::ParamError) -> ScenarioError {
+    let unit = if e.quantity == "height_m" { "m" } else { "kN" };
+    ScenarioError::range(key, read, e.allowed.describe(1.0, unit))
+}
+
+/// A grid's list `key` of heights (m) or weights in water (kN: `scale` 1e3 to N), each checked by
+/// `check` (a rule of [`Condition::new`]).
+fn grid_list(key: &str, v: &[f64], scale: f64, check: fn(f64) -> Result<f64, crate::ParamError>) -> R<()> {
     if v.is_empty() {
         return Err(ScenarioError::range(key, "[]", "must list at least one value"));
     }
-    for (i, x) in v.iter().enumerate() {
-        if !(x.is_finite() && *x > 0.0) {
-            return Err(ScenarioError::range(
-                &format!("{key}[{i}]"),
-                x,
-                format!("must be a finite number > 0 ({unit})"),
-            ));
-        }
+    for (i, &x) in v.iter().enumerate() {
+        check(x * scale).map_err(|e| refused(&format!("{key}[{i}]"), x, e))?;
     }
     Ok(())
 }
@@ -141,16 +144,16 @@ fn listed(list: &[ConditionTable], default_regime: RegimeChoice) -> R<Placed> {
         let w = t.weight_in_water_kn.ok_or_else(|| {
             ScenarioError::missing(&key("weight_in_water_kn"), "the caisson weight in water of this condition, kN")
         })?;
-        positive_list(&key("height_m"), &[h], "m")?;
-        positive_list(&key("weight_in_water_kn"), &[w], "kN")?;
+        // Named as a list of one, as the keys have always been named ("height_m[0]").
+        let c = Condition::new(h, w * 1e3, default_regime).map_err(|e| match e.quantity {
+            "height_m" => refused(&format!("{}[0]", key("height_m")), h, e),
+            _ => refused(&format!("{}[0]", key("weight_in_water_kn")), w, e),
+        })?;
         let regime = match &t.regime {
             Some(r) => regime_of(&key("regime"), r)?,
             None => default_regime,
         };
-        conditions.push((
-            format!("[campaign] conditions[{i}]"),
-            Condition { height_m: h, weight_in_water_n: w * 1e3, regime },
-        ));
+        conditions.push((format!("[campaign] conditions[{i}]"), Condition { regime, ..c }));
     }
     Ok(conditions)
 }
@@ -167,8 +170,8 @@ fn grid(c: &CampaignTable, default_regime: RegimeChoice) -> R<Placed> {
             "the caisson weights in water of the grid, kN (or a conditions list)",
         )
     })?;
-    positive_list("[campaign] heights_m", hs, "m")?;
-    positive_list("[campaign] weights_in_water_kn", ws, "kN")?;
+    grid_list("[campaign] heights_m", hs, 1.0, Condition::checked_height_m)?;
+    grid_list("[campaign] weights_in_water_kn", ws, 1e3, Condition::checked_weight_in_water_n)?;
     let regimes = match &c.regimes {
         Some(list) if list.is_empty() => {
             return Err(ScenarioError::range("[campaign] regimes", "[]", "must list at least one regime"))
@@ -181,11 +184,12 @@ fn grid(c: &CampaignTable, default_regime: RegimeChoice) -> R<Placed> {
         None => vec![default_regime],
     };
     let mut conditions = Vec::new();
-    for (ri, r) in regimes.iter().enumerate() {
-        for (wi, w) in ws.iter().enumerate() {
-            for (hi, h) in hs.iter().enumerate() {
+    for (ri, &r) in regimes.iter().enumerate() {
+        for (wi, &w) in ws.iter().enumerate() {
+            for (hi, &h) in hs.iter().enumerate() {
                 let key = format!("[campaign] (heights_m[{hi}], weights_in_water_kn[{wi}], regimes[{ri}]) ");
-                conditions.push((key, Condition { height_m: *h, weight_in_water_n: w * 1e3, regime: *r }));
+                let c = Condition::new(h, w * 1e3, r).map_err(|e| refused(&key, h, e))?;
+                conditions.push((key, c));
             }
         }
     }

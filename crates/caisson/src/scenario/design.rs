@@ -1,21 +1,24 @@
-//! `[design]`: the lifetime Monte Carlo of performance-based design (docs/model.md §6.4), validated
-//! into [`DesignParams`] (the life model and the run controls). Every key is documented in `docs/design.md`; the
-//! defaults are the values docs/model.md §6.4 cites (Goda & Takagi 2000; Takayama & Ikeda 1992 via
-//! Shimosako & Takahashi 1999; Kim & Takayama 2003 for the truncation).
+//! `[design]`: the lifetime Monte Carlo of performance-based design (docs/model.md §6.4), read
+//! into [`DesignParams`] (the life model and the run controls), whose constructors hold the rules
+//! of the values ([`DesignParams::checked`], and those of its parts: `StormDistribution::weibull`,
+//! `ErrorModel::new`, the climate's); this file reads the keys (missing, together or not, names of
+//! choices, whole numbers) and names a refusal's key. Every key is documented in
+//! `docs/design.md`; the defaults are the values docs/model.md §6.4 cites (Goda & Takagi 2000;
+//! Takayama & Ikeda 1992 via Shimosako & Takahashi 1999; Kim & Takayama 2003 for the truncation).
 
-use super::waves::{self, number, seed_of};
+use super::waves::{self, seed_of};
 use super::{ScenarioError, ScenarioFile};
-use crate::analysis::climate::WavePeriods;
 use crate::analysis::climate::{
-    Climate, SeaLevelRise, StormDuration, StormModel, WaveDirection, MAX_ANGLE_SPREAD_DEG, MAX_MEAN_ANGLE_DEG,
-    MAX_SEA_LEVEL_RISE_M, MAX_STORM_DURATION_COV, MAX_STORM_RATE_PER_YEAR,
+    Climate, SeaLevelError, SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods, MAX_SEA_LEVEL_POINTS,
 };
-use crate::analysis::lifetime::{DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution};
+use crate::analysis::lifetime::{
+    DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution, MAX_LIFE_YEARS,
+};
+use crate::analysis::limits::ROCKING_LIMIT_RAD;
 use crate::waves::periods::DEFAULT_SPECTRAL_WIDTH;
 use serde::Deserialize;
 
-/// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
-pub const MAX_LIVES: usize = 10_000_000;
+pub use crate::analysis::lifetime::{MAX_FAILURE_ROTATION_RAD, MAX_LIVES, STANDARD_THRESHOLDS_M};
 
 type R<T> = Result<T, ScenarioError>;
 
@@ -87,38 +90,74 @@ pub struct DesignTable {
     pub period_spectral_width: Option<f64>,
 }
 
-/// The largest `[design] failure_rotation_rad` (and `[fragility]`'s), rad: 0.1 rad (5.7°) lifts
-/// the heel of a 20 m wide caisson by 2 m, far beyond the small rotations the model describes.
-pub const MAX_FAILURE_ROTATION_RAD: f64 = 0.1;
-
-/// Takahashi's performance grades (docs/model.md §6.4 step 8), m.
-pub const STANDARD_THRESHOLDS_M: [f64; 5] = [0.03, 0.1, 0.3, 1.0, 3.0];
-
-fn num(key: &str, v: Option<f64>, default: f64, lo: f64, hi: f64, lo_open: bool, unit: &str) -> R<f64> {
-    v.map_or(Ok(default), |v| number(&format!("[design] {key}"), v, lo, hi, lo_open, unit))
+/// How a value of a key is shown in its refusal: as the key's value is read
+/// ([`super::fmt_value`]), or as Rust writes the number.
+#[derive(Clone, Copy)]
+enum Shown {
+    AsRead,
+    Plain,
 }
 
-fn count(key: &str, v: Option<i64>, default: usize, hi: i64) -> R<usize> {
+/// The keys of the quantities of the life model's types (named as in their types), without
+/// their table, and their units.
+const LIFE_KEYS: &[(&str, &str, &str, Shown)] = &[
+    ("scale_m", "storm_scale_m", "m", Shown::AsRead),
+    ("shape", "storm_shape", "-", Shown::AsRead),
+    ("location_m", "storm_location_m", "m", Shown::AsRead),
+    ("rate_per_year", "storm_rate_per_year", "storms a year", Shown::AsRead),
+    ("threshold_m", "storm_threshold_m", "m", Shown::AsRead),
+    ("duration_cov", "storm_duration_cov", "fraction", Shown::AsRead),
+    ("rise_m", "sea_level_rise_m", RISE_UNIT, Shown::AsRead),
+    ("mean_deg", "wave_direction_mean_deg", "degrees from the breakwater's normal", Shown::AsRead),
+    ("sd_deg", "wave_direction_spread_deg", "degrees", Shown::AsRead),
+    ("half_width_deg", "wave_direction_spread_deg", "degrees", Shown::AsRead),
+    ("spectral_width", "period_spectral_width", "", Shown::Plain),
+    ("truncation_sigmas", "error_truncation_sigmas", "standard deviations", Shown::AsRead),
+    ("life_years", "life_years", "", Shown::AsRead),
+    ("period_coefficient", "period_coefficient", "s·m^−b", Shown::AsRead),
+    ("period_exponent", "period_exponent", "-", Shown::AsRead),
+    ("tidal_range_m", "tidal_range_m", "m", Shown::AsRead),
+    ("lives", "lives", "", Shown::AsRead),
+    ("failure_sliding_m", "failure_sliding_m", "m", Shown::AsRead),
+    ("failure_rotation_rad", "failure_rotation_rad", "rad", Shown::AsRead),
+];
+
+/// The unit of the sea-level rise keys.
+const RISE_UNIT: &str = "m; the still-water level's rise, at most 5 m";
+
+/// A refused quantity of the life model under its key of `table` (`[design]` or `[fragility]`):
+/// a range with the value shown as [`LIFE_KEYS`] says, a rule with the value as Rust writes it.
+pub(super) fn keyed(table: &str, e: crate::ParamError) -> ScenarioError {
+    let found = LIFE_KEYS.iter().find(|(q, ..)| *q == e.quantity);
+    let (key, unit, shown) = found.map_or((e.quantity, "", Shown::Plain), |&(_, k, u, s)| (k, u, s));
+    shown_under(&format!("{table} {key}"), e, unit, shown)
+}
+
+/// `e` under `key`, its bounds in `unit`.
+fn shown_under(key: &str, e: crate::ParamError, unit: &str, shown: Shown) -> ScenarioError {
+    let value = match (&e.allowed, shown) {
+        (crate::Allowed::Rule(_), _) | (_, Shown::Plain) => e.value.to_string(),
+        (_, Shown::AsRead) => super::fmt_value(e.value),
+    };
+    ScenarioError::range(key, value, e.allowed.describe(1.0, unit))
+}
+
+fn count(key: &str, v: Option<i64>, default: usize, hi: usize) -> R<usize> {
     match v {
         None => Ok(default),
-        Some(n) if (1..=hi).contains(&n) => Ok(n as usize),
+        Some(n) if (1..=hi as i64).contains(&n) => Ok(n as usize),
         Some(n) => {
             Err(ScenarioError::range(&format!("[design] {key}"), n, format!("must be a whole number from 1 to {hi}")))
         }
     }
 }
 
-/// A rule of a parameter type's constructor ([`crate::ParamError`]) under the file's `key`, with
-/// its words (the rules' values are in the keys' units).
-fn rule(key: &str, e: crate::ParamError) -> ScenarioError {
-    ScenarioError::range(key, e.value, e.allowed.describe(1.0, ""))
-}
-
 fn required(key: &str, v: Option<f64>, hint: &str) -> R<f64> {
     waves::required(&format!("[design] {key}"), v, hint)
 }
 
-/// Validate `[design]`.
+/// Read `[design]` into [`DesignParams`], whose constructors check the values
+/// ([`DesignParams::checked`] and those of its parts).
 pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let t = file.design.as_ref().ok_or_else(|| {
         ScenarioError::missing(
@@ -126,6 +165,52 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             "add a [design] table: storm_distribution, its parameters, life_years, lives",
         )
     })?;
+    let storms = distribution(t)?;
+    let life_years = count("life_years", t.life_years, 50, MAX_LIFE_YEARS)?;
+    let climate = Climate {
+        storms: storm_model(t, &storms)?,
+        duration: duration_model("[design]", &t.storm_duration_model, t.storm_duration_cov)?,
+        sea_level: sea_level(t, life_years)?,
+        direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
+        periods: wave_periods("[design]", &t.wave_periods, t.period_spectral_width)?,
+    };
+    let errors = errors(t)?;
+    let extra = t.thresholds_m.as_deref().unwrap_or_default();
+    let thresholds_m = DesignParams::thresholds_m(extra)
+        .map_err(|(i, e)| shown_under(&format!("[design] thresholds_m[{i}]"), e, "m", Shown::Plain))?;
+    let seed = seed_of("[design] seed", t.seed)?;
+    let params = DesignParams {
+        life: LifeParams {
+            life_years,
+            storms,
+            period_coefficient: t.period_coefficient.unwrap_or(3.3),
+            period_exponent: t.period_exponent.unwrap_or(0.63),
+            storm_duration_s: t.storm_duration_h.unwrap_or(2.0) * 3600.0,
+            tidal_range_m: t.tidal_range_m.unwrap_or(0.0),
+            errors,
+            climate,
+        },
+        lives: count("lives", t.lives, 5000, MAX_LIVES)?,
+        seed,
+        thresholds_m,
+        screen: t.screen.unwrap_or(true),
+        failure_sliding_m: t.failure_sliding_m,
+        failure_rotation_rad: t.failure_rotation_rad.unwrap_or(ROCKING_LIMIT_RAD),
+        continue_after_failure: t.continue_after_failure.unwrap_or(false),
+    };
+    params.checked().map_err(|e| match e.quantity {
+        // Shown in hours, as read (the rule's bounds in seconds, shown in hours).
+        "storm_duration_s" => ScenarioError::range(
+            "[design] storm_duration_h",
+            super::fmt_value(t.storm_duration_h.unwrap_or(2.0)),
+            e.allowed.describe(1.0 / 3600.0, "h"),
+        ),
+        _ => keyed("[design]", e),
+    })
+}
+
+/// `[design] storm_distribution` and its parameters.
+fn distribution(t: &DesignTable) -> R<StormDistribution> {
     let dist = t.storm_distribution.as_deref().ok_or_else(|| {
         ScenarioError::missing(
             "[design] storm_distribution",
@@ -133,27 +218,11 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         )
     })?;
     let storms = match dist {
-        "weibull" => StormDistribution::Weibull {
-            scale_m: num(
-                "storm_scale_m",
-                Some(required("storm_scale_m", t.storm_scale_m, "the Weibull scale A, m")?),
-                0.0,
-                0.0,
-                100.0,
-                true,
-                "m",
-            )?,
-            shape: num(
-                "storm_shape",
-                Some(required("storm_shape", t.storm_shape, "the Weibull shape k (0.75-2 typically)")?),
-                0.0,
-                0.1,
-                20.0,
-                false,
-                "-",
-            )?,
-            location_m: num("storm_location_m", t.storm_location_m, 0.0, 0.0, 100.0, false, "m")?,
-        },
+        "weibull" => StormDistribution::weibull(
+            required("storm_scale_m", t.storm_scale_m, "the Weibull scale A, m")?,
+            required("storm_shape", t.storm_shape, "the Weibull shape k (0.75-2 typically)")?,
+            t.storm_location_m.unwrap_or(0.0),
+        ),
         "gumbel" => {
             if t.storm_shape.is_some() {
                 return Err(ScenarioError::Conflict {
@@ -161,26 +230,10 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
                         .into(),
                 });
             }
-            StormDistribution::Gumbel {
-                location_m: num(
-                    "storm_location_m",
-                    Some(required("storm_location_m", t.storm_location_m, "the Gumbel location B, m")?),
-                    0.0,
-                    0.0,
-                    100.0,
-                    true,
-                    "m",
-                )?,
-                scale_m: num(
-                    "storm_scale_m",
-                    Some(required("storm_scale_m", t.storm_scale_m, "the Gumbel scale A, m")?),
-                    0.0,
-                    0.0,
-                    100.0,
-                    true,
-                    "m",
-                )?,
-            }
+            StormDistribution::gumbel(
+                required("storm_location_m", t.storm_location_m, "the Gumbel location B, m")?,
+                required("storm_scale_m", t.storm_scale_m, "the Gumbel scale A, m")?,
+            )
         }
         other => {
             return Err(ScenarioError::range(
@@ -190,26 +243,24 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             ))
         }
     };
-    let life_years = count("life_years", t.life_years, 50, 1000)?;
-    let climate = Climate {
-        storms: storm_model(t, &storms)?,
-        duration: duration_model("[design]", &t.storm_duration_model, t.storm_duration_cov)?,
-        sea_level: sea_level(t, life_years)?,
-        direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
-        periods: wave_periods("[design]", &t.wave_periods, t.period_spectral_width)?,
-    };
+    storms.map_err(|e| keyed("[design]", e))
+}
+
+/// The estimation errors of `[design]`: each model's bias and COV, the truncation and the scope.
+fn errors(t: &DesignTable) -> R<Errors> {
     let truncated = t.error_truncated.unwrap_or(true);
     if !truncated && t.error_truncation_sigmas.is_some() {
         return Err(ScenarioError::Conflict {
             message: "`[design] error_truncation_sigmas` is not used with error_truncated = false (untruncated normal errors); remove one of them".into(),
         });
     }
-    let k = num("error_truncation_sigmas", t.error_truncation_sigmas, 2.0, 0.5, 10.0, false, "standard deviations")?;
+    let k = truncated.then_some(t.error_truncation_sigmas.unwrap_or(2.0));
     let d = Errors::default();
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
-        let bias = num(&format!("{name}_bias"), bias, def.bias, -0.9, 1.0, false, "fraction")?;
-        let cov = num(&format!("{name}_cov"), cov, def.cov, 0.0, 1.0, false, "fraction")?;
-        ErrorModel::new(bias, cov, truncated.then_some(k)).map_err(|e| rule(&format!("[design] {name}_cov"), e))
+        ErrorModel::new(bias.unwrap_or(def.bias), cov.unwrap_or(def.cov), k).map_err(|e| match e.quantity {
+            "bias" | "cov" => shown_under(&format!("[design] {name}_{}", e.quantity), e, "fraction", Shown::AsRead),
+            _ => keyed("[design]", e),
+        })
     };
     let wave_force = err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?;
     let impact_force = match (t.impact_force_bias, t.impact_force_cov) {
@@ -227,7 +278,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             ))
         }
     };
-    let errors = Errors {
+    Ok(Errors {
         deep_water_height: err(
             "deep_water_height",
             t.deep_water_height_bias,
@@ -239,42 +290,6 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         friction: err("friction", t.friction_bias, t.friction_cov, d.friction)?,
         impact_force,
         scope,
-    };
-    let mut thresholds_m = STANDARD_THRESHOLDS_M.to_vec();
-    for (i, v) in t.thresholds_m.iter().flatten().enumerate() {
-        if !(v.is_finite() && *v > 0.0) {
-            return Err(ScenarioError::range(
-                &format!("[design] thresholds_m[{i}]"),
-                v,
-                "must be a finite number > 0 (m)",
-            ));
-        }
-        thresholds_m.push(*v);
-    }
-    thresholds_m.sort_by(f64::total_cmp);
-    thresholds_m.dedup();
-    let seed = seed_of("[design] seed", t.seed)?;
-    Ok(DesignParams {
-        life: LifeParams {
-            life_years,
-            storms,
-            period_coefficient: num("period_coefficient", t.period_coefficient, 3.3, 0.0, 100.0, true, "s·m^−b")?,
-            period_exponent: num("period_exponent", t.period_exponent, 0.63, 0.0, 2.0, false, "-")?,
-            storm_duration_s: num("storm_duration_h", t.storm_duration_h, 2.0, 0.0, 72.0, true, "h")? * 3600.0,
-            tidal_range_m: num("tidal_range_m", t.tidal_range_m, 0.0, 0.0, 20.0, false, "m")?,
-            errors,
-            climate,
-        },
-        lives: count("lives", t.lives, 5000, MAX_LIVES as i64)?,
-        seed,
-        thresholds_m,
-        screen: t.screen.unwrap_or(true),
-        failure_sliding_m: t
-            .failure_sliding_m
-            .map(|v| number("[design] failure_sliding_m", v, 0.0, 1000.0, true, "m"))
-            .transpose()?,
-        failure_rotation_rad: failure_rotation("[design] failure_rotation_rad", t.failure_rotation_rad)?,
-        continue_after_failure: t.continue_after_failure.unwrap_or(false),
     })
 }
 
@@ -295,33 +310,17 @@ fn storm_model(t: &DesignTable, dist: &StormDistribution) -> R<StormModel> {
             Ok(StormModel::AnnualMaxima)
         }
         "peaks-over-threshold" => {
-            let rate_per_year = num(
+            let rate_per_year = required(
                 "storm_rate_per_year",
-                Some(required(
-                    "storm_rate_per_year",
-                    t.storm_rate_per_year,
-                    "the mean number of storms a year above the threshold",
-                )?),
-                0.0,
-                0.0,
-                MAX_STORM_RATE_PER_YEAR,
-                true,
-                "storms a year",
+                t.storm_rate_per_year,
+                "the mean number of storms a year above the threshold",
             )?;
-            let threshold_m = num(
+            let threshold_m = required(
                 "storm_threshold_m",
-                Some(required(
-                    "storm_threshold_m",
-                    t.storm_threshold_m,
-                    "the threshold of the deep-water H1/3 the storms exceed, m",
-                )?),
-                0.0,
-                0.0,
-                100.0,
-                false,
-                "m",
+                t.storm_threshold_m,
+                "the threshold of the deep-water H1/3 the storms exceed, m",
             )?;
-            dist.peaks_over_threshold(rate_per_year, threshold_m).map_err(|e| rule("[design] storm_threshold_m", e))
+            dist.peaks_over_threshold(rate_per_year, threshold_m).map_err(|e| keyed("[design]", e))
         }
         other => Err(ScenarioError::range(
             "[design] storm_model",
@@ -344,7 +343,7 @@ pub(super) fn duration_model(table: &str, model: &Option<String>, cov: Option<f6
         "lognormal" => {
             let key = format!("{table} storm_duration_cov");
             let v = waves::required(&key, cov, "the coefficient of variation of the durations (e.g. 0.5)")?;
-            Ok(StormDuration::Lognormal { cov: number(&key, v, 0.0, MAX_STORM_DURATION_COV, true, "fraction")? })
+            StormDuration::lognormal(v).map_err(|e| keyed(table, e))
         }
         other => Err(ScenarioError::range(
             &format!("{table} storm_duration_model"),
@@ -364,8 +363,9 @@ pub(super) fn wave_periods(table: &str, kind: &Option<String>, width: Option<f64
             }),
             None => Ok(WavePeriods::Significant),
         },
-        "longuet-higgins" => WavePeriods::longuet_higgins(width.unwrap_or(DEFAULT_SPECTRAL_WIDTH))
-            .map_err(|e| rule(&format!("{table} period_spectral_width"), e)),
+        "longuet-higgins" => {
+            WavePeriods::longuet_higgins(width.unwrap_or(DEFAULT_SPECTRAL_WIDTH)).map_err(|e| keyed(table, e))
+        }
         other => Err(ScenarioError::range(
             &format!("{table} wave_periods"),
             format!("\"{other}\""),
@@ -376,21 +376,14 @@ pub(super) fn wave_periods(table: &str, kind: &Option<String>, width: Option<f64
 
 /// `[design] sea_level_rise_m` or `sea_level_rise_table` (docs/design.md, "Climate").
 fn sea_level(t: &DesignTable, life_years: usize) -> R<SeaLevelRise> {
-    let unit = "m; the still-water level's rise, at most 5 m";
+    let key = "[design] sea_level_rise_table";
     match (t.sea_level_rise_m, &t.sea_level_rise_table) {
         (Some(_), Some(_)) => Err(ScenarioError::Conflict {
             message: "give `[design] sea_level_rise_m` (a linear rise) or `sea_level_rise_table` (years and metres), not both".into(),
         }),
         (None, None) => Ok(SeaLevelRise::None),
-        (Some(r), None) => Ok(SeaLevelRise::Linear {
-            rise_m: num("sea_level_rise_m", Some(r), 0.0, 0.0, MAX_SEA_LEVEL_RISE_M, false, unit)?,
-            life_years: life_years as f64,
-        }),
+        (Some(r), None) => SeaLevelRise::linear(r, life_years).map_err(|e| keyed("[design]", e)),
         (None, Some(rows)) => {
-            let key = "[design] sea_level_rise_table";
-            if rows.is_empty() || rows.len() > 1000 {
-                return Err(ScenarioError::range(key, format!("{} rows", rows.len()), "must list 1 to 1000 [years, m] pairs"));
-            }
             let mut points = Vec::with_capacity(rows.len());
             for (i, row) in rows.iter().enumerate() {
                 let &[y, r] = row.as_slice() else {
@@ -400,20 +393,19 @@ fn sea_level(t: &DesignTable, life_years: usize) -> R<SeaLevelRise> {
                         "must be a pair [years from the start of the life, rise m]",
                     ));
                 };
-                let y = number(&format!("{key}[{i}][0]"), y, 0.0, 1000.0, false, "years from the start of the life")?;
-                let r = number(&format!("{key}[{i}][1]"), r, 0.0, MAX_SEA_LEVEL_RISE_M, false, unit)?;
-                if let Some(&(y0, _)) = points.last() {
-                    if y <= y0 {
-                        return Err(ScenarioError::range(
-                            &format!("{key}[{i}][0]"),
-                            y,
-                            format!("must be larger than the year before it ({y0}): the years must increase"),
-                        ));
-                    }
-                }
                 points.push((y, r));
             }
-            Ok(SeaLevelRise::Table { points })
+            SeaLevelRise::table(points).map_err(|e| match e {
+                SeaLevelError::Points { count } => {
+                    let allowed = format!("must list 1 to {MAX_SEA_LEVEL_POINTS} [years, m] pairs");
+                    ScenarioError::range(key, format!("{count} rows"), allowed)
+                }
+                SeaLevelError::Point { index, error } => {
+                    let (column, unit) =
+                        if error.quantity == "years" { (0, "years from the start of the life") } else { (1, RISE_UNIT) };
+                    shown_under(&format!("{key}[{index}][{column}]"), error, unit, Shown::AsRead)
+                }
+            })
         }
     }
 }
@@ -426,25 +418,9 @@ pub(super) fn direction(
     mean: Option<f64>,
     spread: Option<f64>,
 ) -> R<WaveDirection> {
-    let deg = std::f64::consts::PI / 180.0;
-    let mean_rad = || -> R<f64> {
-        Ok(mean.map_or(Ok(0.0), |v| {
-            number(
-                &format!("{table} wave_direction_mean_deg"),
-                v,
-                -MAX_MEAN_ANGLE_DEG,
-                MAX_MEAN_ANGLE_DEG,
-                false,
-                "degrees from the breakwater's normal",
-            )
-        })? * deg)
-    };
-    let spread_rad = |what: &str| -> R<f64> {
-        let key = format!("{table} wave_direction_spread_deg");
-        let v = waves::required(&key, spread, what)?;
-        Ok(number(&key, v, 0.0, MAX_ANGLE_SPREAD_DEG, true, "degrees")? * deg)
-    };
-    match kind.as_deref().unwrap_or("head-on") {
+    let spread_deg = |what: &str| waves::required(&format!("{table} wave_direction_spread_deg"), spread, what);
+    let mean_deg = mean.unwrap_or(0.0);
+    let direction = match kind.as_deref().unwrap_or("head-on") {
         "head-on" => {
             for (key, given) in
                 [("wave_direction_mean_deg", mean.is_some()), ("wave_direction_spread_deg", spread.is_some())]
@@ -457,26 +433,20 @@ pub(super) fn direction(
             }
             Ok(WaveDirection::HeadOn)
         }
-        "normal" => Ok(WaveDirection::Normal {
-            mean_rad: mean_rad()?,
-            sd_rad: spread_rad("the standard deviation of the angle, degrees (e.g. 15)")?,
-        }),
-        "uniform" => Ok(WaveDirection::Uniform {
-            mean_rad: mean_rad()?,
-            half_width_rad: spread_rad("the half-width of the angles about the mean, degrees (e.g. 20)")?,
-        }),
-        other => Err(ScenarioError::range(
-            &format!("{table} wave_direction"),
-            format!("\"{other}\""),
-            "must be \"head-on\", \"normal\" or \"uniform\"",
-        )),
-    }
-}
-
-/// A failure rotation limit (`key`), rad: in (0, [`MAX_FAILURE_ROTATION_RAD`]], default
-/// [`crate::analysis::limits::ROCKING_LIMIT_RAD`].
-pub(super) fn failure_rotation(key: &str, v: Option<f64>) -> R<f64> {
-    v.map_or(Ok(crate::analysis::limits::ROCKING_LIMIT_RAD), |v| {
-        number(key, v, 0.0, MAX_FAILURE_ROTATION_RAD, true, "rad")
-    })
+        "normal" => {
+            WaveDirection::normal_deg(mean_deg, spread_deg("the standard deviation of the angle, degrees (e.g. 15)")?)
+        }
+        "uniform" => WaveDirection::uniform_deg(
+            mean_deg,
+            spread_deg("the half-width of the angles about the mean, degrees (e.g. 20)")?,
+        ),
+        other => {
+            return Err(ScenarioError::range(
+                &format!("{table} wave_direction"),
+                format!("\"{other}\""),
+                "must be \"head-on\", \"normal\" or \"uniform\"",
+            ))
+        }
+    };
+    direction.map_err(|e| keyed(table, e))
 }

@@ -6,11 +6,12 @@
 //! and the train keys `waves`, `realizations` and `seed` of `[waves]` are not used (the storms
 //! have their own duration and seed), so they are rejected rather than silently ignored.
 
-use super::{Scenario, ScenarioError, ScenarioFile};
-use crate::analysis::fragility::FragilityParams;
+use super::{design, Scenario, ScenarioError, ScenarioFile};
+use crate::analysis::climate::{StormDuration, WaveDirection, WavePeriods};
+use crate::analysis::fragility::{FragilityParamError, FragilityParams, MAX_LEVELS, MAX_STORMS_PER_HEIGHT};
+use crate::analysis::limits::ROCKING_LIMIT_RAD;
+use crate::analysis::site::WaveSetup;
 use crate::loads::generator::TrainKind;
-use crate::waves::breaking::MICHE_STEEPNESS;
-use crate::waves::dispersion::deep_water_wavelength_m;
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
@@ -44,39 +45,38 @@ pub struct FragilityTable {
     pub period_spectral_width: Option<f64>,
 }
 
-/// At most this many heights and limits.
-const MAX_LEVELS: usize = 1000;
-/// At most this many storms in all (heights × storms).
-const MAX_STORMS: usize = 10_000_000;
-
-/// A non-empty, strictly increasing list of finite numbers in (0, `hi`).
-fn increasing(key: &str, v: &[f64], hi: f64, unit: &str) -> R<()> {
-    if v.is_empty() {
-        return Err(ScenarioError::range(key, "[]", "must list at least one value"));
-    }
-    if v.len() > MAX_LEVELS {
-        return Err(ScenarioError::range(key, format!("{} values", v.len()), format!("at most {MAX_LEVELS} values")));
-    }
-    for (i, x) in v.iter().enumerate() {
-        if !(x.is_finite() && *x > 0.0 && *x < hi) {
-            return Err(ScenarioError::range(
-                &format!("{key}[{i}]"),
-                x,
-                format!("must be a finite number > 0 and < {hi} ({unit})"),
-            ));
+/// A refused [`FragilityParams`] under its `[fragility]` key, the value as Rust writes it; the
+/// climate's quantities and the failure rotation as `[design]`'s are shown.
+fn keyed(e: FragilityParamError, duration_h: f64) -> ScenarioError {
+    let list = |quantity: &str| match quantity {
+        "heights_m" => "[fragility] significant_heights_m".to_string(),
+        q => format!("[fragility] {q}"),
+    };
+    match e {
+        FragilityParamError::Empty { quantity } => {
+            ScenarioError::range(&list(quantity), "[]", "must list at least one value")
         }
-        if i > 0 && *x <= v[i - 1] {
-            return Err(ScenarioError::range(
-                &format!("{key}[{i}]"),
-                x,
-                format!("must be larger than the value before it ({}): the list must increase", v[i - 1]),
-            ));
+        FragilityParamError::TooMany { quantity, count } => {
+            ScenarioError::range(&list(quantity), format!("{count} values"), format!("at most {MAX_LEVELS} values"))
         }
+        FragilityParamError::Element { index, error } => ScenarioError::range(
+            &format!("{}[{index}]", list(error.quantity)),
+            error.value,
+            error.allowed.describe(1.0, ""),
+        ),
+        FragilityParamError::Param(e) => match e.quantity {
+            "period_s" | "storms" => ScenarioError::range(&list(e.quantity), e.value, e.allowed.describe(1.0, "s")),
+            // Shown in hours, as read (the rule's bounds in seconds, shown in hours).
+            "storm_duration_s" => {
+                ScenarioError::range("[fragility] storm_duration_h", duration_h, e.allowed.describe(1.0 / 3600.0, "h"))
+            }
+            _ => super::design::keyed("[fragility]", e),
+        },
     }
-    Ok(())
 }
 
-/// Validate `[fragility]` for the validated rest of the file `sc`.
+/// Read `[fragility]` for the validated rest of the file `sc` into [`FragilityParams`], whose
+/// constructor checks the values ([`FragilityParams::checked`]).
 pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<FragilityParams> {
     let t = file.fragility.as_ref().ok_or_else(|| {
         ScenarioError::missing(
@@ -84,6 +84,53 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
             "add a [fragility] table with significant_heights_m (and storms, limits_m, ...)",
         )
     })?;
+    let waves = storm_waves(file, sc)?;
+    let heights = t.significant_heights_m.as_ref().ok_or_else(|| {
+        ScenarioError::missing(
+            "[fragility] significant_heights_m",
+            "the grid of H1/3 at the structure, m, increasing (e.g. [3, 4, 5, 6, 7])",
+        )
+    })?;
+    let storms = match t.storms {
+        None => 200,
+        Some(n) if (1..=MAX_STORMS_PER_HEIGHT as i64).contains(&n) => n as usize,
+        Some(n) => {
+            return Err(ScenarioError::range(
+                "[fragility] storms",
+                n,
+                format!("must be a whole number from 1 to {MAX_STORMS_PER_HEIGHT}"),
+            ))
+        }
+    };
+    let duration_h = t.storm_duration_h.unwrap_or(2.0);
+    let params = FragilityParams {
+        heights_m: heights.clone(),
+        storms,
+        limits_m: t.limits_m.clone().unwrap_or_else(|| vec![0.1, 0.3]),
+        storm_duration_s: duration_h * 3600.0,
+        period_s: t.period_s.unwrap_or_else(|| waves.period_s()),
+        seed: super::waves::seed_of("[fragility] seed", t.seed)?,
+        failure_rotation_rad: t.failure_rotation_rad.unwrap_or(ROCKING_LIMIT_RAD),
+        duration: StormDuration::Fixed,
+        direction: WaveDirection::HeadOn,
+        periods: WavePeriods::Significant,
+    };
+    Ok(FragilityParams {
+        duration: design::duration_model("[fragility]", &t.storm_duration_model, t.storm_duration_cov)?,
+        direction: design::direction(
+            "[fragility]",
+            &t.wave_direction,
+            t.wave_direction_mean_deg,
+            t.wave_direction_spread_deg,
+        )?,
+        periods: design::wave_periods("[fragility]", &t.wave_periods, t.period_spectral_width)?,
+        ..params.checked().map_err(|e| keyed(e, duration_h))?
+    })
+}
+
+/// The irregular waves of `sc` the storms take their site and period from: no `[load]` or
+/// `[campaign]`, and none of `[waves]`'s train keys (the storms have their own).
+fn storm_waves<'a>(file: &ScenarioFile, sc: &'a Scenario) -> R<&'a WaveSetup> {
     if file.load.is_some() {
         return Err(ScenarioError::Conflict {
             message: "a fragility runs storms of waves from [waves]; remove the [load] table".into(),
@@ -117,78 +164,7 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
             "must be \"irregular\" for a fragility (storms of Rayleigh waves of the given H1/3)",
         ));
     }
-    let period_s = match t.period_s {
-        None => waves.period_s(),
-        Some(v) if v.is_finite() && v > 0.0 && v <= 1e3 => v,
-        Some(v) => {
-            return Err(ScenarioError::range("[fragility] period_s", v, "must be a finite number > 0 and ≤ 1000 (s)"))
-        }
-    };
-    let heights = t.significant_heights_m.as_ref().ok_or_else(|| {
-        ScenarioError::missing(
-            "[fragility] significant_heights_m",
-            "the grid of H1/3 at the structure, m, increasing (e.g. [3, 4, 5, 6, 7])",
-        )
-    })?;
-    // No wave is steeper than Miche's deep-water limit (as for [waves] significant_height_m).
-    let limit = MICHE_STEEPNESS * deep_water_wavelength_m(period_s);
-    increasing(
-        "[fragility] significant_heights_m",
-        heights,
-        limit,
-        &format!("m; below 0.142 L0 = {limit:.3} m for T = {period_s} s"),
-    )?;
-    let limits_m = t.limits_m.clone().unwrap_or_else(|| vec![0.1, 0.3]);
-    increasing("[fragility] limits_m", &limits_m, 1e3, "m")?;
-    let storms = match t.storms {
-        None => 200,
-        Some(n) if (1..=1_000_000).contains(&n) => n as usize,
-        Some(n) => {
-            return Err(ScenarioError::range("[fragility] storms", n, "must be a whole number from 1 to 1000000"))
-        }
-    };
-    if storms * heights.len() > MAX_STORMS {
-        return Err(ScenarioError::range(
-            "[fragility] storms",
-            storms,
-            format!(
-                "times {} heights is {} storms; at most {MAX_STORMS} in all",
-                heights.len(),
-                storms * heights.len()
-            ),
-        ));
-    }
-    let storm_duration_s = match t.storm_duration_h {
-        None => 2.0,
-        Some(v) if v.is_finite() && v > 0.0 && v <= 72.0 => v,
-        Some(v) => {
-            return Err(ScenarioError::range(
-                "[fragility] storm_duration_h",
-                v,
-                "must be a finite number > 0 and ≤ 72 (h)",
-            ))
-        }
-    } * 3600.0;
-    let seed = super::waves::seed_of("[fragility] seed", t.seed)?;
-    let failure_rotation_rad =
-        super::design::failure_rotation("[fragility] failure_rotation_rad", t.failure_rotation_rad)?;
-    Ok(FragilityParams {
-        heights_m: heights.clone(),
-        storms,
-        limits_m,
-        storm_duration_s,
-        period_s,
-        seed,
-        failure_rotation_rad,
-        duration: super::design::duration_model("[fragility]", &t.storm_duration_model, t.storm_duration_cov)?,
-        direction: super::design::direction(
-            "[fragility]",
-            &t.wave_direction,
-            t.wave_direction_mean_deg,
-            t.wave_direction_spread_deg,
-        )?,
-        periods: super::design::wave_periods("[fragility]", &t.wave_periods, t.period_spectral_width)?,
-    })
+    Ok(waves)
 }
 
 #[cfg(test)]

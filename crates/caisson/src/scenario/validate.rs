@@ -524,13 +524,8 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
     let err = |e| keyed("[solver]", SOLVER_KEYS, e);
     let d = SolverParams::default();
     let mut s = SolverParams::fixed(t.dt_s.unwrap_or(d.dt_s)).map_err(err)?;
-    if s.dt_s > duration_s {
-        return Err(ScenarioError::range(
-            "[solver] dt_s",
-            s.dt_s,
-            format!("must not exceed the simulated time {duration_s} s"),
-        ));
-    }
+    // The run's length first (the value as Rust writes it).
+    s = s.within(duration_s).map_err(|e| super::keyed_in(&[("dt_s", "[solver] dt_s", "s")], e))?;
     s = s.with_newmark(t.gamma.unwrap_or(d.gamma), t.beta.unwrap_or(d.beta)).map_err(err)?;
     let stepping_default = if f.load.is_none() && f.waves.is_some() { "adaptive" } else { "fixed" };
     let adaptive = choice(
