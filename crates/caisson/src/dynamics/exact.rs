@@ -219,7 +219,7 @@ impl Ladder {
     /// The ladder of `model` for steps up to `dt_max_s`, sharing the propagators of this
     /// thread's ladder of the same matrices and dt_max (the same numbers: nothing else enters
     /// them). `None` if the longest step's cannot be built (a singular mass matrix).
-    pub fn cached(model: &Model, dt_max_s: f64) -> Option<Box<Self>> {
+    pub fn cached(model: &Model, dt_max_s: f64) -> Option<Self> {
         let (m, k, c) = Propagator::matrices(model);
         let mut key = [0.0; 28];
         key[..9].copy_from_slice(m.as_slice());
@@ -236,7 +236,7 @@ impl Ladder {
             l[CACHED_LADDERS - 1] = Some((key, r.clone()));
             r
         });
-        let ladder = Box::new(Ladder { dt_max_s, rungs, a_ref: model.weight_n / model.x_m.len() as f64, k: 0 });
+        let ladder = Ladder { dt_max_s, rungs, a_ref: model.weight_n / model.x_m.len() as f64, k: 0 };
         ladder.rung(model, 0)?;
         Some(ladder)
     }
@@ -273,7 +273,7 @@ impl Simulation {
         obs: &mut O,
     ) -> bool {
         let t = self.state.t_s;
-        let Some(ladder) = self.exact.as_deref() else {
+        let Some(ladder) = self.exact.as_ref() else {
             return false;
         };
         let room = bp_s.min(t_end_s) - t;
@@ -287,7 +287,7 @@ impl Simulation {
             _ => self.load_vector(load.at(t)),
         };
         for k in first..RUNGS {
-            let ladder = self.exact.as_deref().expect("checked above");
+            let ladder = self.exact.as_ref().expect("checked above");
             let h = ladder.h(k);
             let t1 = t + h;
             let third = match self.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h) {
@@ -299,7 +299,7 @@ impl Simulation {
                 Ok(c) => {
                     self.stats.exact_steps += 1;
                     self.commit_observed(h, c, t1, w1, obs);
-                    let ladder = self.exact.as_deref_mut().expect("checked above");
+                    let ladder = self.exact.as_mut().expect("checked above");
                     // The next step tries the rung above (measured on the design example: the
                     // rung above whatever the estimate costs fewer instructions than waiting
                     // until it is within 1/16 of the tolerance, 1.893 G against 1.970 G).
@@ -308,7 +308,7 @@ impl Simulation {
                     return true;
                 }
                 Err(Refused::Error) if k + 1 < RUNGS => {
-                    self.exact.as_deref_mut().expect("checked above").k = k + 1;
+                    self.exact.as_mut().expect("checked above").k = k + 1;
                 }
                 Err(_) => {
                     // A spring slips or lifts within the step (or the shortest rung is too
@@ -337,7 +337,7 @@ impl Simulation {
         tolerance_m: f64,
     ) -> Result<Converged, Refused> {
         let [n, sx, s1, sum_d, sum_xd] = self.slip_sums();
-        let (ladder, model) = (self.exact.as_deref().ok_or(Refused::Stick)?, &self.model);
+        let (ladder, model) = (self.exact.as_ref().ok_or(Refused::Stick)?, &self.model);
         let h = ladder.h(k);
         let a_ref = ladder.a_ref;
         let pr = ladder.rung(model, k).ok_or(Refused::Stick)?;

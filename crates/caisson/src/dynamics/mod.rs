@@ -363,7 +363,7 @@ pub struct Simulation {
     fast: sticking::FastPath,
     /// Adaptive stepping with [`SolverParams::exact_sticking`]: the propagators of all-sticking
     /// steps of dt_max/2^k (`exact`).
-    exact: Option<Box<exact::Ladder>>,
+    exact: Option<exact::Ladder>,
     /// The last committed step, if it was exact (its end and R at its start: `exact`).
     exact_prev: Option<exact::Previous>,
     /// An exact step is not tried again before this time after one that failed, s.
@@ -428,7 +428,7 @@ impl Simulation {
         self.fast.invalidate();
         self.exact_prev = None;
         self.exact_retry_s = f64::NEG_INFINITY;
-        if let Some(l) = self.exact.as_deref_mut() {
+        if let Some(l) = self.exact.as_mut() {
             l.restart();
         }
         self.last_load = None;
