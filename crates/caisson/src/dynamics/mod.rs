@@ -48,10 +48,11 @@
 //! `max_substep_levels` times in a row).
 //!
 //! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
-//! all-sticking state, a step of dt_max with no load breakpoint inside it is solved exactly
-//! (`exact`: the linear part by its matrix exponential, the shear's bilinear remainder and the
-//! load interpolated quadratically), and kept if every spring sticks at its end and in its
-//! middle; otherwise the Newmark step is taken from the same state.
+//! all-sticking state, a step of dt_max/2^k (k = 0, 1, 2: `exact`'s ladder) with no load
+//! breakpoint inside it is solved exactly (`exact`: the linear part by its matrix exponential,
+//! the shear's bilinear remainder and the load interpolated quadratically), and kept if every
+//! spring sticks at its end and in its middle and its error estimate is within the tolerance
+//! (else the next shorter rung); otherwise the Newmark step is taken from the same state.
 //!
 //! **Events**: a converged step in which a spring that was in contact and sticking starts to
 //! slip is not committed if the onset falls inside it: the friction margin of that spring held
@@ -369,9 +370,9 @@ pub struct Simulation {
     h_next: f64,
     /// The all-sticking fast path's sums and scratch (`sticking`).
     fast: sticking::FastPath,
-    /// Adaptive stepping with [`SolverParams::exact_sticking`]: the propagators of an
-    /// all-sticking step of dt_max (`exact`).
-    exact: Option<exact::Propagator>,
+    /// Adaptive stepping with [`SolverParams::exact_sticking`]: the propagators of all-sticking
+    /// steps of dt_max/2^k (`exact`).
+    exact: Option<exact::Ladder>,
     /// The last committed step, if it was exact (its end and R at its start: `exact`).
     exact_prev: Option<exact::Previous>,
     /// An exact step is not tried again before this time after one that failed, s.
@@ -417,7 +418,7 @@ impl Simulation {
             last_load: None,
         };
         if let (Stepping::Adaptive(p), true) = (solver.stepping, solver.exact_sticking && solver.sticking_fast_path) {
-            sim.exact = exact::Propagator::cached(&sim.model, p.dt_max_s);
+            sim.exact = exact::Ladder::cached(&sim.model, p.dt_max_s);
         }
         sim.reset(load);
         sim
@@ -436,6 +437,9 @@ impl Simulation {
         self.fast.invalidate();
         self.exact_prev = None;
         self.exact_retry_s = f64::NEG_INFINITY;
+        if let Some(l) = self.exact.as_mut() {
+            l.restart();
+        }
         self.last_load = None;
         let p0 = self.load_vector(load.at(0.0));
         // The general path: it leaves the springs' responses of the static equilibrium.
@@ -915,30 +919,15 @@ impl Simulation {
             if t >= bp {
                 bp = load.next_breakpoint_s(t);
             }
-            // From an all-sticking state, a step of dt_max solved exactly if no breakpoint falls
-            // inside it (`exact`); where a spring would slip or lift, the Newmark step instead.
-            if level == 0 && !at_event && self.fast.direct && t >= self.exact_retry_s {
-                if let Some(hx) = self.exact.as_ref().map(|e| e.h) {
-                    let t1 = t + hx;
-                    if t1 <= bp && t_end_s - t1 >= p.dt_min_s {
-                        // The load at the start: the committed step's, if it is known.
-                        let p0 = match self.last_load {
-                            Some((tl, p)) if tl == t => p,
-                            _ => self.load_vector(load.at(t)),
-                        };
-                        let third = match self.exact_load_before() {
-                            Some(pb) => exact::Third::Before(pb),
-                            None => exact::Third::Middle(self.load_vector(load.at(t + 0.5 * hx))),
-                        };
-                        let w1 = load.at(t1);
-                        if let Some(c) = self.exact_sticking_step(p0, self.load_vector(w1), third, p.tolerance_m) {
-                            self.stats.exact_steps += 1;
-                            self.commit_observed(hx, c, t1, w1, obs);
-                            continue;
-                        }
-                        self.exact_retry_s = t1;
-                    }
-                }
+            // From an all-sticking state, an exact step if one fits before the breakpoint
+            // (`exact`); where a spring would slip or lift, the Newmark step instead.
+            if level == 0
+                && !at_event
+                && self.fast.direct
+                && t >= self.exact_retry_s
+                && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs)
+            {
+                continue;
             }
             // After a Newton failure the halved step may go below dt_min.
             let planned =
