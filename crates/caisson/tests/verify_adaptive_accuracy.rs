@@ -186,9 +186,10 @@ fn contact_events_are_located_under_the_consistent_profile() {
 /// stepper at its defaults within 0.2 % of fixed steps of 1e-4 s (the bound; measured
 /// 0.05 % at results version 17 too; fixed 2.5e-5 s is 0.007 % from 1e-4 s, so the reference is
 /// converged well within it). Not asserted: the same train under the consistent profile, which
-/// rocks it to 0.021 rad, is 0.35 % from fixed 1e-4 s (0.41 % at results version 16), and fixed
-/// 1e-4 s is itself 0.56 % from the converged sliding (fixed 2.5e-6 s, 16.653 mm; 2.5e-5 s:
-/// 0.15 %, so about first order), adaptive 0.91 %.
+/// rocks it to 0.021 rad, is 0.46 % from fixed 1e-4 s at results version 18 (0.35 % at 17), and
+/// 0.51 % from the converged sliding (16.649 mm; 0.93 % at 17; 0.10 % at tolerance 1e-9 m): the
+/// sum of the rocking phases' local errors; fixed 1e-4 s is 0.05 % from it (0.59 % at 17, first
+/// order then: `verify_convergence_order.rs`).
 #[test]
 fn fifteen_waves_adaptive_within_0_2_percent_of_fixed_steps() {
     let s = support::example("fifteen_waves.toml");
