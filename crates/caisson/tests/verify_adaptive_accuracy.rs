@@ -190,9 +190,10 @@ fn contact_events_are_located_under_the_consistent_profile() {
 /// stepper at its defaults within 0.2 % of fixed steps of 1e-4 s (the bound; measured
 /// 0.05 % at results version 17 too; fixed 2.5e-5 s is 0.007 % from 1e-4 s, so the reference is
 /// converged well within it). Not asserted: the same train under the consistent profile, which
-/// rocks it to 0.021 rad, is 0.35 % from fixed 1e-4 s (0.41 % at results version 16), and fixed
-/// 1e-4 s is itself 0.56 % from the converged sliding (fixed 2.5e-6 s, 16.653 mm; 2.5e-5 s:
-/// 0.15 %, so about first order), adaptive 0.91 %.
+/// rocks it to 0.021 rad, is 0.46 % from fixed 1e-4 s at results version 18 (0.35 % at 17), and
+/// 0.51 % from the converged sliding (16.649 mm; 0.93 % at 17; 0.10 % at tolerance 1e-9 m): the
+/// sum of the rocking phases' local errors; fixed 1e-4 s is 0.05 % from it (0.59 % at 17, first
+/// order then: `verify_convergence_order.rs`).
 #[test]
 fn fifteen_waves_adaptive_within_0_2_percent_of_fixed_steps() {
     let s = support::example("fifteen_waves.toml");
@@ -210,10 +211,13 @@ fn fifteen_waves_adaptive_within_0_2_percent_of_fixed_steps() {
 /// exactly (`dynamics::exact`, the default), and by Newmark steps at the controls the example had
 /// before (dt_max 0.2 s), against a converged reference (Newmark, tolerance 1e-9 m, dt_max
 /// 0.02 s). Both within max(1 µm, 1 %) of the reference's sliding (measured at results version
-/// 17: exact at most 1.3 µm, 0.13 %; Newmark 1.6 µm, 0.14 %; the example's tolerance is 1e-6 m),
+/// 18: exact at most 6.7 µm, 0.42 %; Newmark 5.4 µm, 0.56 %; at 17: 1.3 µm, 0.13 % and 1.6 µm,
+/// 0.14 %; the example's tolerance is 1e-6 m; the reference is converged: tolerance 1e-10 and
+/// 1e-11 m and fixed steps of 1e-4 s agree with it within 1e-7 m),
 /// 1 % of its peak displacement and rotation
-/// (measured: exact 0.54 % and 0.17 %, Newmark 0.09 % and 0.09 %; the peaks are read at the
-/// steps' ends, 0.5 s apart in an exact phase), and 1e-3 W'/n of its smallest spring normal force
+/// (measured at results version 18, the peaks read on each step's cubic Hermite interpolant:
+/// exact 0.025 % and 0.017 %, Newmark 0.019 % and 0.015 %; read at the steps' ends, 0.5 s apart
+/// in an exact phase, 0.54 % and 0.16 %, 0.09 % and 0.09 %), and 1e-3 W'/n of its smallest spring normal force
 /// (measured 8e-4 and 5e-4); the exact path takes a tenth of the steps or more (measured 17 %;
 /// the sliding waves step by Newmark while they slip, and an exact step over the tolerance is
 /// taken by Newmark: before the exact step had an error estimate, results version 15, 203 of

@@ -73,7 +73,12 @@
 //! gone on with, ṡ_1 = 2 (s_slip − s_n)/h − ṡ_0, σ ṡ_1 < 0: θ = ṡ_0/(ṡ_0 − ṡ_1); and a spring
 //! lifted at the step's start and in contact at its end touches down within the step, at
 //! λ = u_y,i,n/(u_y,i,n − u_y,i), with its slip position the caisson's u_x there
-//! ([`crate::foundation::SpringLaw::trial_recontact`]), not u_x,n.
+//! ([`crate::foundation::SpringLaw::trial_recontact`]), not u_x,n. Lift-off and re-contact are
+//! located in fixed steps too; the step cut at one is solved with the vertical dashpots of the
+//! springs in contact at its start, and the acceleration restarts across their jump at its end
+//! ([`Simulation::restart_at_event`]; a change in a step's first hundredth restarts it at the
+//! step's start, [`Simulation::restart_at_start`]), so that the jump is not weighted by h/2 in
+//! Newmark's velocity (a first-order error).
 //!
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
@@ -235,6 +240,20 @@ fn elastic_rate(c: &SpringState, vx_n: f64) -> f64 {
     }
 }
 
+/// Whether the vertical dashpot beside a spring acts in a step: while the spring is in contact
+/// at the trial (normal force `normal_n` > 0), or, in a step that ends at a located event
+/// (`event_step`), while it was in contact at the step's start (its vertical displacement
+/// `uy_start_m` < 0), so that the force is smooth over the step and jumps at its end
+/// ([`Simulation::restart_at_event`]).
+#[inline(always)]
+fn dashpot_acts(event_step: bool, uy_start_m: f64, normal_n: f64) -> bool {
+    if event_step {
+        uy_start_m < 0.0
+    } else {
+        normal_n > 0.0
+    }
+}
+
 /// x^(1/3) for x > 0, to about 1e-5 relative, without libm's `cbrt` (the step-size rule of the
 /// adaptive stepper needs a few digits, and `cbrt` cost 10 % of the design run's instructions):
 /// an estimate from the exponent bits (the bit pattern divided by 3, within 4 %), then two
@@ -380,6 +399,11 @@ pub struct Simulation {
     /// The load (gravity included) of the last step committed by the adaptive stepping, and its
     /// time.
     last_load: Option<(f64, Vector3<f64>)>,
+    /// The step being tried ends at a located event: the springs' vertical dashpots act as at
+    /// the step's start, and the acceleration restarts at its end ([`Self::restart_at_event`]).
+    event_step: bool,
+    /// The time of the last restart at a step's start ([`Self::restart_at_start`]).
+    restarted_at_s: f64,
 }
 
 struct Converged {
@@ -416,6 +440,8 @@ impl Simulation {
             exact_prev: None,
             exact_retry_s: f64::NEG_INFINITY,
             last_load: None,
+            event_step: false,
+            restarted_at_s: f64::NEG_INFINITY,
         };
         if let (Stepping::Adaptive(p), true) = (solver.stepping, solver.exact_sticking && solver.sticking_fast_path) {
             sim.exact = exact::Ladder::cached(&sim.model, p.dt_max_s);
@@ -441,6 +467,8 @@ impl Simulation {
             l.restart();
         }
         self.last_load = None;
+        self.event_step = false;
+        self.restarted_at_s = f64::NEG_INFINITY;
         let p0 = self.load_vector(load.at(0.0));
         // The general path: it leaves the springs' responses of the static equilibrium.
         let f = self.general_force(self.state.u, [0.0; 3], self.solver.dt_s);
@@ -538,6 +566,7 @@ impl Simulation {
         let law = self.model.law;
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
+        let event_step = self.event_step;
         let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
         for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
             let uy = u[1] - u[2] * x;
@@ -555,7 +584,7 @@ impl Simulation {
             if cd > 0.0 && r.state.sliding {
                 r.state.rate_m_per_s = 2.0 * (u[0] - r.state.slip_m - e_bar) / (rho * h);
             }
-            if cdy > 0.0 && r.normal_n > 0.0 {
+            if cdy > 0.0 && dashpot_acts(event_step, uy_start, r.normal_n) {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
                 // local vertical coordinate u_y − θ x.
                 let fd = cdy * (v[1] - v[2] * x);
@@ -583,8 +612,9 @@ impl Simulation {
         let kd = cdy * (self.solver.gamma / (self.solver.beta * h));
         let (mut k00, mut k01, mut k02) = (0.0, 0.0, 0.0);
         let (mut k11, mut k12, mut k21, mut k22) = (0.0, 0.0, 0.0, 0.0);
+        let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
         for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
-            if cdy > 0.0 && r.normal_n > 0.0 {
+            if cdy > 0.0 && dashpot_acts(self.event_step, uy_n - th_n * x, r.normal_n) {
                 k11 += kd;
                 k12 -= x * kd;
                 k21 -= x * kd;
@@ -788,7 +818,10 @@ impl Simulation {
         Err((self.solver.max_iterations, norm))
     }
 
-    fn commit(&mut self, h: f64, c: Converged) {
+    fn commit(&mut self, h: f64, mut c: Converged) {
+        if self.event_step {
+            c.a = self.restart_at_event(&c);
+        }
         if self.fast.iterate.is_some() && !self.sticking_commit_possible() {
             // All-sticking from a state with slipping springs: their responses need their own
             // committed rates, so the step is committed spring by spring (`sticking`).
@@ -815,31 +848,98 @@ impl Simulation {
         self.stats.max_residual = self.stats.max_residual.max(c.residual);
     }
 
+    /// The acceleration after a step to a located event (converged to `c`), where a spring
+    /// touched down or lifted: the step was solved with the vertical dashpots of the springs in
+    /// contact at its start ([`dashpot_acts`]), so `c.a` is the acceleration on the event's near
+    /// side; the displacements and velocities are continuous across it and the force jumps by
+    /// the dashpot of each spring that changed, ΔF = ± c_y (v_y − θ̇ x_i) (0, 1, −x_i) (+ for a
+    /// touch-down), so the next step starts from q̈⁺ = q̈⁻ − M⁻¹ ΔF. Otherwise Newmark's
+    /// trapezoidal velocity would weight the jump by h/2 in the step to the event whatever its
+    /// length, a first-order error (docs/model.md §9.1, "Events").
+    fn restart_at_event(&self, c: &Converged) -> [f64; 3] {
+        let da = self.dashpot_jump(self.state.u, c.u, c.v, f64::INFINITY);
+        [c.a[0] - da[0], c.a[1] - da[1], c.a[2] - da[2]]
+    }
+
+    /// M⁻¹ ΔF, ΔF the jump of the vertical dashpots (`springs` form) of the springs whose
+    /// contact changes between the displacements `u0` and `u1` at a fraction below
+    /// `max_fraction` of the way (their u_y,i linear between them), at the velocity `v`:
+    /// ± c_y (v_y − θ̇ x_i) (0, 1, −x_i), + for a touch-down. Zero without such dashpots.
+    fn dashpot_jump(&self, u0: [f64; 3], u1: [f64; 3], v: [f64; 3], max_fraction: f64) -> Vector3<f64> {
+        let cdy = self.model.spring_vertical_dashpot_ns_per_m;
+        let mut df = Vector3::zeros();
+        if cdy <= 0.0 {
+            return df;
+        }
+        for &x in &self.model.x_m {
+            let (y0, y1) = (u0[1] - u0[2] * x, u1[1] - u1[2] * x);
+            if (y0 < 0.0) != (y1 < 0.0) && y0 / (y0 - y1) < max_fraction {
+                let fd = cdy * (v[1] - v[2] * x);
+                let sign = if y1 < 0.0 { 1.0 } else { -1.0 };
+                df[1] += sign * fd;
+                df[2] -= sign * x * fd;
+            }
+        }
+        if df == Vector3::zeros() {
+            return df;
+        }
+        self.model.mass.lu().solve(&df).unwrap_or_else(Vector3::zeros)
+    }
+
+    /// A spring that touched down or lifted in the first hundredth of a converged step (to `c`),
+    /// too close to its start to be located (typically just after a step cut at the event's
+    /// estimate ended a little short of it): the step counted its vertical dashpot as at its end
+    /// over the whole step, so the committed acceleration restarts as across the event at the
+    /// step's start, q̈_n ← q̈_n − M⁻¹ ΔF (ΔF as in [`Self::restart_at_event`], at the start's
+    /// velocity), and the step is to be retaken. Once per start time; `true` if it restarted.
+    fn restart_at_start(&mut self, c: &Converged) -> bool {
+        if self.event_step || self.restarted_at_s == self.state.t_s {
+            return false;
+        }
+        let da = self.dashpot_jump(self.state.u, c.u, self.state.v, EVENT_MIN_FRACTION);
+        if da == Vector3::zeros() {
+            return false;
+        }
+        for (a, d) in self.state.a.iter_mut().zip(da.iter()) {
+            *a -= d;
+        }
+        self.restarted_at_s = self.state.t_s;
+        true
+    }
+
     /// Advance by `h` seconds, halving on failure (recursively, up to the allowed levels), and
     /// shortening a step to end at its first event (`events` more at most: module docs).
+    /// `event`: the step ends at a located event ([`Self::restart_at_event`]).
     fn advance<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
         &mut self,
         h: f64,
         level: usize,
         events: usize,
+        event: bool,
         load: &L,
         obs: &mut O,
     ) -> Result<(), SolveError> {
         let t0 = self.state.t_s;
         let t1 = t0 + h;
         let w = load.at(t1);
-        match self.try_step(h, self.load_vector(w)) {
+        self.event_step = event;
+        let tried = self.try_step(h, self.load_vector(w));
+        match tried {
             Ok(c) => {
+                if self.restart_at_start(&c) {
+                    return self.advance(h, level, events, event, load, obs);
+                }
                 if events > 0 {
-                    if let Some(theta) = self.event_fraction(h, &c, false) {
+                    if let Some(theta) = self.event_fraction(h, &c, self.solver.locate_contact) {
                         // To the event without locating again, then the rest of the step.
                         self.stats.located_events += 1;
-                        self.advance(theta * h, level, 0, load, obs)?;
-                        return self.advance(t1 - self.state.t_s, level, events - 1, load, obs);
+                        self.advance(theta * h, level, 0, true, load, obs)?;
+                        return self.advance(t1 - self.state.t_s, level, events - 1, false, load, obs);
                     }
                 }
                 let it = c.iterations;
                 self.commit(h, c);
+                self.event_step = false;
                 if obs.observes() {
                     if obs.reads_springs() {
                         self.fill_sticking_responses();
@@ -861,8 +961,9 @@ impl Simulation {
                 }
                 self.stats.substeps += 1;
                 self.stats.max_substep_level = self.stats.max_substep_level.max(level + 1);
-                self.advance(0.5 * h, level + 1, events, load, obs)?;
-                self.advance(t1 - self.state.t_s, level + 1, events, load, obs)
+                self.event_step = false;
+                self.advance(0.5 * h, level + 1, events, event, load, obs)?;
+                self.advance(t1 - self.state.t_s, level + 1, events, event, load, obs)
             }
         }
     }
@@ -874,7 +975,7 @@ impl Simulation {
         load: &L,
         obs: &mut O,
     ) -> Result<(), SolveError> {
-        let r = self.advance(self.solver.dt_s, 0, MAX_EVENTS_PER_STEP, load, obs);
+        let r = self.advance(self.solver.dt_s, 0, MAX_EVENTS_PER_STEP, false, load, obs);
         self.fill_sticking_responses();
         r
     }
@@ -891,6 +992,7 @@ impl Simulation {
             Stepping::Fixed => self.run_fixed(t_end_s, load, obs),
             Stepping::Adaptive(p) => self.run_adaptive(t_end_s, p, load, obs),
         };
+        self.event_step = false;
         // What `reaction` and `springs` read after the run.
         self.fill_sticking_responses();
         r
@@ -916,6 +1018,7 @@ impl Simulation {
         // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
         while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
             let t = self.state.t_s;
+            self.event_step = at_event;
             if t >= bp {
                 bp = load.next_breakpoint_s(t);
             }
@@ -945,6 +1048,9 @@ impl Simulation {
             let w = load.at(t1);
             match self.try_step(h, self.load_vector(w)) {
                 Ok(c) => {
+                    if self.restart_at_start(&c) {
+                        continue;
+                    }
                     if !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
                         if let Some(theta) = self.event_fraction(h, &c, self.solver.locate_contact) {
                             if theta * h >= p.dt_min_s {
@@ -1032,7 +1138,7 @@ impl Simulation {
             if h <= 0.0 {
                 continue;
             }
-            self.advance(h, 0, MAX_EVENTS_PER_STEP, load, obs)?;
+            self.advance(h, 0, MAX_EVENTS_PER_STEP, false, load, obs)?;
             self.state.t_s = target;
         }
         Ok(())
