@@ -37,7 +37,7 @@ trap 'rm -rf "$scratch"' EXIT
 
 # "name|runs|arguments": what the headline table times.
 cases=(
-    "15-wave test, adaptive (\`run examples/fifteen_waves.toml\`, incl. reading the CSV series)|$((runs * 3))|run examples/fifteen_waves.toml --threads 2"
+    "15-wave test, fixed dt = 1e-4 s, 456 000 steps (\`run examples/fifteen_waves.toml\`, incl. reading the CSV series)|$((runs * 3))|run examples/fifteen_waves.toml --threads 2"
     "PARI non-breaking campaign (2 250 waves)|$runs|campaign examples/pari_nonbreaking_campaign.toml --out @ --threads 2"
     "PARI breaking campaign (2 250 waves)|$runs|campaign examples/pari_breaking_campaign.toml --out @ --threads 2"
     "design example (5000 lives x 50 years)|$runs|design examples/design_breakwater.toml --out @ --threads 2"
