@@ -3,23 +3,17 @@
 //!
 //! cargo bench -p caisson --bench loads -- --warm-up-time 1 --measurement-time 3
 
-use caisson::loads::model::{WaveLoadModel, WaveLoadOptions, WaveRecord, WaveSite};
+use caisson::loads::model::{WaveLoadModel, WaveLoadOptions, WaveRecord};
 use caisson::loads::regime::Regime;
 use caisson::loads::LoadHistory;
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 
+#[path = "../tests/support/pari.rs"]
+mod pari;
+use pari::pari_site;
+
 fn pari() -> WaveLoadModel {
-    let site = WaveSite {
-        rho_w: 1000.0,
-        depth_at_toe_m: 1.14,
-        depth_at_wall_m: 0.4,
-        base_depth_m: 0.8,
-        crest_freeboard_m: 0.32,
-        width_m: 0.78,
-        length_m: 1.0,
-        seabed_slope: 0.0,
-        berm_width_m: None,
-    };
+    let site = pari_site(0.4);
     WaveLoadModel { site, options: WaveLoadOptions::default() }
 }
 

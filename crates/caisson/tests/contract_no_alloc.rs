@@ -8,12 +8,13 @@ mod counting_alloc;
 mod support;
 
 use caisson::dynamics::Simulation;
-use caisson::loads::model::{WaveLoadModel, WaveLoadOptions, WaveRecord, WaveSite};
+use caisson::loads::model::{WaveLoadModel, WaveLoadOptions, WaveRecord};
 use caisson::loads::pulse::TrianglePulse;
 use caisson::loads::regime::Regime;
 use caisson::loads::shapes::LoadShape;
 use caisson::loads::{LoadHistory, WaveForce};
 use counting_alloc::count_allocations;
+use support::pari::pari_site;
 use support::scenario;
 
 #[test]
@@ -55,17 +56,7 @@ fn adaptive_time_loop_does_not_allocate() {
 /// `WaveTrain::at` (the wave-load `LoadHistory`) allocates nothing, for every load shape.
 #[test]
 fn wave_train_at_does_not_allocate() {
-    let site = WaveSite {
-        rho_w: 1000.0,
-        depth_at_toe_m: 1.14,
-        depth_at_wall_m: 0.4,
-        base_depth_m: 0.8,
-        crest_freeboard_m: 0.32,
-        width_m: 0.78,
-        length_m: 1.0,
-        seabed_slope: 0.0,
-        berm_width_m: None,
-    };
+    let site = pari_site(0.4);
     let mut checked = 0;
     for (_, shape) in LoadShape::ALL {
         let model =

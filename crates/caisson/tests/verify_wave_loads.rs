@@ -5,6 +5,8 @@
 //! tolerance the issue asks for (0.1 % Goda, 0.5 % the others) or to half a unit of the last
 //! printed digit, whichever is larger: a table rounded to 0.001 cannot pin α2 = 0.028 to 0.1 %.
 
+mod support;
+
 use caisson::loads::goda::{goda, GodaInput};
 use caisson::loads::history::{LoadComponent, WaveEvent};
 use caisson::loads::impact::{impact, ImpactInput};
@@ -17,9 +19,10 @@ use caisson::loads::LoadHistory;
 use caisson::waves::breaking::{miche_breaker_height_m, miche_breaking_depth_m, BreakerCriterion};
 use caisson::waves::dispersion::wavelength_m;
 use caisson::G_M_PER_S2;
+use support::pari::{pari_site, PARI_DEPTH_AT_TOE_M};
 
 const T: f64 = 3.04;
-const HS: f64 = 1.14;
+const HS: f64 = PARI_DEPTH_AT_TOE_M;
 
 /// |got − want| ≤ max(rel·|want|, half a unit of the last printed digit).
 fn close(what: &str, got: f64, want: f64, rel: f64, printed_decimals: i32) {
@@ -41,20 +44,6 @@ fn goda_pari(h: f64, d: f64) -> GodaInput {
         berm_width_m: None,
         lambda: [1.0; 3],
         rho_w: 1000.0,
-    }
-}
-
-fn pari_site(d: f64) -> WaveSite {
-    WaveSite {
-        rho_w: 1000.0,
-        depth_at_toe_m: HS,
-        depth_at_wall_m: d,
-        base_depth_m: 0.8,
-        crest_freeboard_m: 0.32,
-        width_m: 0.78,
-        length_m: 1.0,
-        seabed_slope: 0.0,
-        berm_width_m: None,
     }
 }
 

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod imports;
+pub mod pari;
 pub mod signature;
 pub mod site;
 
