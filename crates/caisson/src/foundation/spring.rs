@@ -90,6 +90,18 @@ pub struct SpringResponse {
     pub state: SpringState,
 }
 
+/// The elastic displacement of a slipping spring (κN = `kn`, signed offset `g` = ±e_d) at the
+/// step's end: (κ N g + c' ē_n)/(κ N + c') with the dashpot beside it (c' = `c_over_h`, ē_n =
+/// `e_prev_m`), g itself without.
+#[inline(always)]
+fn slip_elastic_m(kn: f64, g: f64, e_prev_m: f64, c_over_h: f64) -> f64 {
+    if c_over_h > 0.0 {
+        (kn * g + c_over_h * e_prev_m) / (kn + c_over_h)
+    } else {
+        g
+    }
+}
+
 impl SpringLaw {
     /// Build from totals: `kx`, `ky` (N/m), weight in water `w` (N), `n` springs, μ_s, μ_d.
     pub fn new(kx_total: f64, ky_total: f64, w_n: f64, n: usize, mu_s: f64, mu_d: f64) -> Self {
@@ -127,8 +139,7 @@ impl SpringLaw {
             self.stick_response(c, n, kn, e, f_trial, c_over_h)
         } else {
             let g = self.slip_offset_m.copysign(f_trial);
-            // Elastic part after the slip: g itself without a dashpot.
-            let e_slip = if c_over_h > 0.0 { (kn * g + c_over_h * e_prev_m) / (kn + c_over_h) } else { g };
+            let e_slip = slip_elastic_m(kn, g, e_prev_m, c_over_h);
             SpringResponse {
                 normal_n: n,
                 shear_n: kn * g,
@@ -252,9 +263,7 @@ impl SpringLaw {
     #[inline]
     pub fn slipping_position(&self, sign: f64, ux: f64, uy: f64, e_prev_m: f64, c_over_h: f64) -> f64 {
         let kn = self.kappa_per_m * (-self.ky_n_per_m * uy);
-        let g = self.slip_offset_m.copysign(sign);
-        let e = if c_over_h > 0.0 { (kn * g + c_over_h * e_prev_m) / (kn + c_over_h) } else { g };
-        ux - e
+        ux - slip_elastic_m(kn, self.slip_offset_m.copysign(sign), e_prev_m, c_over_h)
     }
 
     /// The `sticking` branch's response from the elastic trial.
