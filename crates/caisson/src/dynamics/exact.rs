@@ -59,13 +59,13 @@ use crate::loads::LoadHistory;
 use nalgebra::{Matrix3, SMatrix, Vector3};
 use std::sync::{Arc, OnceLock};
 
-/// A 6 × 3 block, row by row.
-type Block = [[f64; 3]; 6];
+/// A 6 × 3 block, column by column.
+type Block = [[f64; 6]; 3];
 
 /// The propagators of an all-sticking step of length `h` (module docs).
 #[derive(Debug, Clone)]
 pub(super) struct Propagator {
-    /// e^{hA}, row by row.
+    /// e^{hA}, column by column.
     e0: [[f64; 6]; 6],
     /// The weights F_j of the force at σ = 0, h and −h (the previous step exact).
     before: [Block; 3],
@@ -74,7 +74,7 @@ pub(super) struct Propagator {
     /// The x columns of the weights of R and Ṙ at σ = 0 and R at h, R quadratic in σ through
     /// them (the first exact step of a phase).
     hermite_x: [[f64; 6]; 3],
-    /// e^{hA/2}, row by row: to the step's middle.
+    /// e^{hA/2}, column by column: to the step's middle.
     half_e0: [[f64; 6]; 6],
     /// The weights of c_0, c_1 and c_2 (g = c_0 + c_1 σ + c_2 σ²) at σ = h/2.
     half_c: [Block; 3],
@@ -144,10 +144,18 @@ thread_local! {
         const { std::cell::RefCell::new([const { None }; CACHED_LADDERS]) };
 }
 
-/// Σ_k m[i][k] x[k] for the six rows.
+/// Σ_k m_ik x_k for the six rows i of a matrix stored column by column (`columns[k][i]` = m_ik):
+/// each row's sum from −0.0 in the order of k, the operations of `Iterator::sum` over the row
+/// one for one (the same bits), with the six rows side by side, which the compiler vectorizes.
 #[inline(always)]
-fn mul<const K: usize>(m: &[[f64; K]; 6], x: &[f64; K]) -> [f64; 6] {
-    std::array::from_fn(|i| m[i].iter().zip(x).map(|(a, b)| a * b).sum())
+fn mul<const K: usize>(columns: &[[f64; 6]; K], x: &[f64; K]) -> [f64; 6] {
+    let mut y = [-0.0; 6];
+    for (column, &xk) in columns.iter().zip(x) {
+        for (yi, &m) in y.iter_mut().zip(column) {
+            *yi += m * xk;
+        }
+    }
+    y
 }
 
 impl Propagator {
@@ -187,17 +195,17 @@ impl Propagator {
         };
         let (ex, hx) = (van_loan(h)?, van_loan(0.5 * h)?);
         // To the middle: e^{hA/2} and the weights of c_0, c_1, c_2 (E_1, E_2, 2 E_3 at h/2).
-        let half_e0 = std::array::from_fn(|i| std::array::from_fn(|j| hx[(i, j)]));
+        let half_e0 = std::array::from_fn(|j| std::array::from_fn(|i| hx[(i, j)]));
         let half_c = std::array::from_fn(|k| {
             let w = if k == 2 { 2.0 } else { 1.0 };
-            std::array::from_fn(|i| std::array::from_fn(|j| w * hx[(i, 6 + 3 * k + j)]))
+            std::array::from_fn(|j| std::array::from_fn(|i| w * hx[(i, 6 + 3 * k + j)]))
         });
-        let e0 = std::array::from_fn(|i| std::array::from_fn(|j| ex[(i, j)]));
+        let e0 = std::array::from_fn(|j| std::array::from_fn(|i| ex[(i, j)]));
         // E_1, E_2, E_3 (module docs) and the weights of g = c_0 + c_1 σ + c_2 σ² as
         // E_1 c_0 + E_2 c_1 + 2 E_3 c_2, combined per interpolation point.
         let e = |k: usize, i: usize, j: usize| ex[(i, 6 + 3 * k + j)];
         let block = |w: [f64; 3]| -> Block {
-            std::array::from_fn(|i| std::array::from_fn(|j| w[0] * e(0, i, j) + w[1] * e(1, i, j) + w[2] * e(2, i, j)))
+            std::array::from_fn(|j| std::array::from_fn(|i| w[0] * e(0, i, j) + w[1] * e(1, i, j) + w[2] * e(2, i, j)))
         };
         let h2 = h * h;
         // Through σ = 0, h, −h: c_0 = g0, c_1 = (g1 − g−)/(2h), c_2 = (g1 − 2 g0 + g−)/(2h²).
@@ -372,7 +380,7 @@ impl Simulation {
                 add(&pr.before[0], g(p0, r0));
                 add(&pr.before[1], g(p1, 0.0));
                 add(&pr.before[2], g(pb, p.r_start_n));
-                std::array::from_fn(|i| -pr.before[1][i][0])
+                pr.before[1][0].map(|w| -w)
             }
             (Third::Middle(pm), _) => {
                 add(&pr.middle[0], g(p0, 0.0));
@@ -442,16 +450,16 @@ impl Simulation {
         // The error estimate: R in the middle against its interpolation there, as a force through
         // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
         let dr = r_of(&ym) - r_mid;
-        let w = &pr.middle[1];
-        let err = dr.abs() * w[0][0].abs().max(w[1][0].abs()).max(w[2][0].abs() * 0.5 * self.model.width_m);
+        let w = &pr.middle[1][0];
+        let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
         if err > tolerance_m || err.is_nan() {
             return Err(Refused::Error);
         }
         // Every spring must stick in the middle of the step and at its end (the spring law's own
         // test; the last one records the sums of the commit and the base reaction).
-        let um = [ym[0] + s1, ym[1], ym[2]];
-        let vm = [ym[3], ym[4], ym[5]];
-        self.sticking_force(um, vm, 0.5 * h).ok_or(Refused::Stick)?;
+        if !self.all_stick([ym[0] + s1, ym[1], ym[2]], 0.5 * h) {
+            return Err(Refused::Stick);
+        }
         self.sticking_force(u, v, h).ok_or(Refused::Stick)?;
         self.exact_prev = Some(Previous { t_end_s: self.state.t_s + h, h_s: h, r_start_n: r0, p_start: p0 });
         Ok(Converged { u, v, a: [acc[0], acc[1], acc[2]], iterations: 0, residual: 0.0 })

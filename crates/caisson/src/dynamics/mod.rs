@@ -427,6 +427,7 @@ impl Simulation {
             springs: vec![SpringState::default(); n],
         };
         let gravity = Vector3::new(0.0, -model.weight_n, 0.0);
+        let fast = sticking::FastPath::new(&model.x_m);
         let mut sim = Simulation {
             model,
             solver,
@@ -435,7 +436,7 @@ impl Simulation {
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
             h_next: solver.dt_s,
-            fast: sticking::FastPath::new(n),
+            fast,
             exact: None,
             exact_prev: None,
             exact_retry_s: f64::NEG_INFINITY,
@@ -868,7 +869,7 @@ impl Simulation {
     fn dashpot_jump(&self, u0: [f64; 3], u1: [f64; 3], v: [f64; 3], max_fraction: f64) -> Vector3<f64> {
         let cdy = self.model.spring_vertical_dashpot_ns_per_m;
         let mut df = Vector3::zeros();
-        if cdy <= 0.0 {
+        if cdy <= 0.0 || !self.contact_may_change(u0, u1) {
             return df;
         }
         for &x in &self.model.x_m {
@@ -884,6 +885,21 @@ impl Simulation {
             return df;
         }
         self.model.mass.lu().solve(&df).unwrap_or_else(Vector3::zeros)
+    }
+
+    /// Whether a spring may be in contact (u_y,i < 0) at one of the displacements `u0`, `u1` and
+    /// not at the other. u_y,i = u_y − θ x_i, rounded, is monotonic in x_i (each rounded
+    /// operation is), so the outermost springs bound every spring's: when they are all in
+    /// contact, or all not, at both ends, no spring changes (`false`, the springs' own tests
+    /// would find none; the positions ascend: `Foundation::spring_positions`).
+    #[inline]
+    fn contact_may_change(&self, u0: [f64; 3], u1: [f64; 3]) -> bool {
+        let (Some(&lo), Some(&hi)) = (self.model.x_m.first(), self.model.x_m.last()) else {
+            return false;
+        };
+        let touch = |u: [f64; 3], x: f64| u[1] - u[2] * x < 0.0;
+        let first = touch(u0, lo);
+        !(touch(u0, hi) == first && touch(u1, lo) == first && touch(u1, hi) == first)
     }
 
     /// A spring that touched down or lifted in the first hundredth of a converged step (to `c`),

@@ -19,10 +19,12 @@
 //! ∂ΣF/∂u_x = κ ΣN_i + n c', ∂ΣF/∂u_y = −κ k_y Σe_i, ∂ΣF/∂θ = κ k_y Σx_i e_i, and the
 //! vertical block (k_y + γ c_y/(β h)) (n, −Σx_i; −Σx_i, Σx_i²).
 //!
-//! n, Σx_i, Σx_i², Σd_i, Σx_i d_i and the slipping springs' Σė_n,i change only when a spring's
-//! slip state does, i.e. after a step committed by the general path; they are recomputed before
-//! the next iterate. A step that the fast path found all-sticking from a state with slipping
-//! springs is committed through the general path (their responses need their own rates).
+//! n, Σx_i and Σx_i² are the model's (summed once); Σd_i, Σx_i d_i and the slipping springs'
+//! Σė_n,i change only when a spring's slip state does, i.e. after a step committed by the general
+//! path; they are recomputed (in one pass over the springs) before the next iterate that needs
+//! them, not while a spring is lifted at the committed state (the general path then). A step that
+//! the fast path found all-sticking from a state with slipping springs is committed through the
+//! general path (their responses need their own rates).
 //!
 //! Whether every spring sticks is decided spring by spring by the spring law's own test
 //! ([`SpringLaw::sticks`], the same operations as its `sticking` branch), so the path
@@ -67,6 +69,9 @@ pub(super) struct FastPath {
     /// Every spring has the same slip position, the positions x_i ascend and there is a spring:
     /// with equal limits, the stick test of the two outermost springs decides for all.
     same_slips: bool,
+    /// The positions x_i ascend and there is a spring (the model's, fixed).
+    ascending: bool,
+    /// n, Σx_i and Σx_i² (the model's, fixed).
     n: f64,
     sum_x: f64,
     sum_x2: f64,
@@ -121,8 +126,20 @@ struct PendingResponses {
 }
 
 impl FastPath {
-    pub fn new(springs: usize) -> Self {
+    /// The scratch of springs at the positions `x_m`, with their sums n, Σx_i and Σx_i².
+    pub fn new(x_m: &[f64]) -> Self {
+        let springs = x_m.len();
+        let (mut n, mut sum_x, mut sum_x2) = (0.0, 0.0, 0.0);
+        for &x in x_m {
+            n += 1.0;
+            sum_x += x;
+            sum_x2 += x * x;
+        }
         FastPath {
+            ascending: springs > 0 && x_m.windows(2).all(|w| w[0] <= w[1]),
+            n,
+            sum_x,
+            sum_x2,
             slip_m: vec![0.0; springs],
             limit_m: vec![0.0; springs],
             rate_m: vec![0.0; springs],
@@ -141,12 +158,15 @@ impl FastPath {
 }
 
 impl Simulation {
-    /// f_S at the trial (`u`, `v`) of a step of length `h` if every spring is in contact and
-    /// sticks there (module docs), recording the sums [`Self::sticking_tangent`] needs; `None`
-    /// otherwise.
+    /// Whether every spring is in contact and sticks at the trial displacement `u` of a step of
+    /// length `h` (the test of [`Self::sticking_force`], module docs), without its sums.
     #[inline]
-    pub(super) fn sticking_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Option<Vector3<f64>> {
+    pub(super) fn all_stick(&mut self, u: [f64; 3], h: f64) -> bool {
         if !self.fast.valid {
+            // A lifted spring needs the general path: the sums are not needed yet.
+            if self.solver.locate_contact && self.committed_lifted() {
+                return false;
+            }
             self.refresh_fast_path();
         }
         let law = self.model.law;
@@ -155,7 +175,7 @@ impl Simulation {
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let fs = &self.fast;
         if fs.any_lifted {
-            return None;
+            return false;
         }
         // Indexed over slices of one length, so that the compiler vectorizes the test.
         let n = fs.slip_m.len();
@@ -190,10 +210,24 @@ impl Simulation {
                     fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
                 }
             }
-            if fails > 0 {
-                return None;
-            }
+            return fails == 0;
         }
+        true
+    }
+
+    /// f_S at the trial (`u`, `v`) of a step of length `h` if every spring is in contact and
+    /// sticks there (module docs), recording the sums [`Self::sticking_tangent`] needs; `None`
+    /// otherwise.
+    #[inline]
+    pub(super) fn sticking_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Option<Vector3<f64>> {
+        if !self.all_stick(u, h) {
+            return None;
+        }
+        let law = self.model.law;
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+        let half_h = 0.5 * h;
+        let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
+        let fs = &self.fast;
         let (a, b) = (-law.ky_n_per_m * u[1], law.ky_n_per_m * u[2]);
         let e_ref = u[0] - fs.s_ref_m;
         let sum_e = fs.n * e_ref - fs.sum_d;
@@ -347,37 +381,37 @@ impl Simulation {
         }
     }
 
-    /// Recompute the sums and slices of the committed slip positions.
+    /// Recompute the sums and slices of the committed slip positions, in one pass (each sum's
+    /// terms in the springs' order).
     fn refresh_fast_path(&mut self) {
         self.fast.any_lifted = self.solver.locate_contact && self.committed_lifted();
         let law = self.model.law;
         let fs = &mut self.fast;
-        let s_ref_m = self.state.springs.first().map_or(0.0, |c| c.slip_m);
-        (fs.n, fs.sum_x, fs.sum_x2, fs.sum_d, fs.sum_xd) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        fs.s_ref_m = s_ref_m;
-        fs.any_sliding = false;
-        (fs.sum_rate, fs.n_follow) = (0.0, 0.0);
-        let rates = fs.rate_m.iter_mut().zip(fs.follows_v.iter_mut());
-        for (c, (rate, follows)) in self.state.springs.iter().zip(rates) {
-            (*rate, *follows) = if c.sliding { (c.rate_m_per_s, 0.0) } else { (0.0, 1.0) };
-            fs.sum_rate += *rate;
-            fs.n_follow += *follows;
-        }
-        let slices = fs.slip_m.iter_mut().zip(fs.limit_m.iter_mut());
-        for ((&x, c), (slip, limit)) in self.model.x_m.iter().zip(&self.state.springs).zip(slices) {
+        let springs = &self.state.springs[..];
+        let n = springs.len();
+        let x_m = &self.model.x_m[..n];
+        let (slip_m, limit_m) = (&mut fs.slip_m[..n], &mut fs.limit_m[..n]);
+        let (rate_m, follows_v) = (&mut fs.rate_m[..n], &mut fs.follows_v[..n]);
+        let s_ref_m = springs.first().map_or(0.0, |c| c.slip_m);
+        let (mut sum_d, mut sum_xd, mut sum_rate, mut n_follow) = (0.0, 0.0, 0.0, 0.0);
+        let (mut any_sliding, mut same_slips) = (false, true);
+        for i in 0..n {
+            let (c, x) = (springs[i], x_m[i]);
+            let (rate, follows) = if c.sliding { (c.rate_m_per_s, 0.0) } else { (0.0, 1.0) };
+            (rate_m[i], follows_v[i]) = (rate, follows);
+            sum_rate += rate;
+            n_follow += follows;
             let d = c.slip_m - s_ref_m;
-            fs.n += 1.0;
-            fs.sum_x += x;
-            fs.sum_x2 += x * x;
-            fs.sum_d += d;
-            fs.sum_xd += x * d;
-            *slip = c.slip_m;
-            *limit = law.limit_m(*c);
-            fs.any_sliding |= c.sliding;
+            sum_d += d;
+            sum_xd += x * d;
+            slip_m[i] = c.slip_m;
+            limit_m[i] = law.limit_m(c);
+            any_sliding |= c.sliding;
+            same_slips &= c.slip_m == s_ref_m;
         }
-        fs.same_slips = !self.state.springs.is_empty()
-            && self.state.springs.iter().all(|c| c.slip_m == s_ref_m)
-            && self.model.x_m.windows(2).all(|w| w[0] <= w[1]);
+        (fs.s_ref_m, fs.sum_d, fs.sum_xd, fs.sum_rate, fs.n_follow) = (s_ref_m, sum_d, sum_xd, sum_rate, n_follow);
+        fs.any_sliding = any_sliding;
+        fs.same_slips = same_slips && fs.ascending;
         fs.valid = true;
     }
 
