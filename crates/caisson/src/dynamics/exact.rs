@@ -407,8 +407,6 @@ impl Simulation {
         y.iter_mut().zip(gamma).for_each(|(a, w)| *a += w * r1);
         let q1 = Vector3::new(y[0], y[1], y[2]);
         let v1 = Vector3::new(y[3], y[4], y[5]);
-        let g1 = Vector3::from(g(p1, r1));
-        let acc = pr.minv * (g1 - pr.k_l * q1 - pr.c_l * v1);
         let u = [q1[0] + s1, q1[1], q1[2]];
         let v = [v1[0], v1[1], v1[2]];
         // The step's middle under the same interpolated force: its quadratic through the three
@@ -455,6 +453,8 @@ impl Simulation {
         if err > tolerance_m || err.is_nan() {
             return Err(Refused::Error);
         }
+        // The acceleration at the end (not for a step refused by its error estimate).
+        let acc = pr.minv * (Vector3::from(g1) - pr.k_l * q1 - pr.c_l * v1);
         // Every spring must stick in the middle of the step and at its end (the spring law's own
         // test; the last one records the sums of the commit and the base reaction).
         if !self.all_stick([ym[0] + s1, ym[1], ym[2]], 0.5 * h) {
