@@ -83,12 +83,13 @@
 //! The time loop allocates nothing: all per-spring buffers live in [`Simulation`] and are sized
 //! when it is built.
 //!
-//! **Cost of an iteration**: the resisting force is summed at every iterate (one pass over the
-//! springs that stores their trial responses), the tangent only when a correction follows (a
-//! second pass over the stored responses), and the base reaction only for an observer that looks
-//! at the step ([`Observer::observes`]). The 3×3 solve is nalgebra's LU with partial pivoting
-//! unrolled (`solve3`, identical to the last bit). Splitting the single pass changed no result:
-//! every sum has its terms in the same order as before.
+//! **Cost of an iteration**: the resisting force is summed at every iterate (a pass over the
+//! springs that stores their trial responses, then one that sums them: fewer values live in each,
+//! the first compiled apart for steps that end at a located event), the tangent only when a
+//! correction follows (another pass over the stored responses), and the base reaction only for
+//! an observer that looks at the step ([`Observer::observes`]). The 3×3 solve is nalgebra's LU
+//! with partial pivoting unrolled (`solve3`, identical to the last bit). Splitting the passes
+//! changed no result: every sum has its terms in the same order as before.
 
 mod exact;
 mod params;
@@ -538,10 +539,11 @@ impl Simulation {
     /// and [`Self::reaction`] are summed from).
     #[inline]
     fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
-        if self.solver.locate_contact && self.committed_lifted() {
-            self.springs_force::<true>(u, v, h)
-        } else {
-            self.springs_force::<false>(u, v, h)
+        match (self.solver.locate_contact && self.committed_lifted(), self.event_step) {
+            (true, false) => self.springs_force::<true, false>(u, v, h),
+            (false, false) => self.springs_force::<false, false>(u, v, h),
+            (true, true) => self.springs_force::<true, true>(u, v, h),
+            (false, true) => self.springs_force::<false, true>(u, v, h),
         }
     }
 
@@ -557,9 +559,15 @@ impl Simulation {
     }
 
     /// [`Self::general_force`]; with `RECONTACT` a spring lifted at the step's start and in
-    /// contact at the trial touches within the step (module docs, "Events").
+    /// contact at the trial touches within the step (module docs, "Events"); `EVENT` is
+    /// `self.event_step` ([`dashpot_acts`]).
     #[inline]
-    fn springs_force<const RECONTACT: bool>(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
+    fn springs_force<const RECONTACT: bool, const EVENT: bool>(
+        &mut self,
+        u: [f64; 3],
+        v: [f64; 3],
+        h: f64,
+    ) -> Vector3<f64> {
         self.fast.iterate = None;
         let cd = self.model.spring_dashpot_ns_per_m;
         let c_prime = 2.0 * cd / h;
@@ -567,8 +575,6 @@ impl Simulation {
         let law = self.model.law;
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
-        let event_step = self.event_step;
-        let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
         for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
             let uy = u[1] - u[2] * x;
             let uy_start = uy_n - th_n * x;
@@ -585,7 +591,12 @@ impl Simulation {
             if cd > 0.0 && r.state.sliding {
                 r.state.rate_m_per_s = 2.0 * (u[0] - r.state.slip_m - e_bar) / (rho * h);
             }
-            if cdy > 0.0 && dashpot_acts(event_step, uy_start, r.normal_n) {
+            *out = r;
+        }
+        // The sums, spring by spring in a second pass (fewer values live in the first).
+        let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
+        for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
+            if cdy > 0.0 && dashpot_acts(EVENT, uy_n - th_n * x, r.normal_n) {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
                 // local vertical coordinate u_y − θ x.
                 let fd = cdy * (v[1] - v[2] * x);
@@ -595,7 +606,6 @@ impl Simulation {
             f0 += r.shear_n;
             f1 -= r.normal_n;
             f2 += x * r.normal_n;
-            *out = r;
         }
         Vector3::new(f0, f1, f2)
     }
