@@ -352,8 +352,9 @@ fn with_and_without_the_bound(text: &str) -> (Vec<StormOutcome>, Vec<StormOutcom
 
 /// The bound answers only waves that neither slide nor lift the caisson, and keeps the largest
 /// rotation: on storms of the small design at T1/3, with Longuet-Higgins periods, with a high
-/// mound (impulsive breaking waves, which the bound leaves to the engine) and with larger
-/// friction and force errors, every output of every life is the same to the last bit with and
+/// mound (d = 11 m, slope 1/30: the waves above the breaker height at the wall, 8.9 m, are
+/// impulsive, and the bound leaves them to the engine) and with larger friction and force
+/// errors, every output of every life is the same to the last bit with and
 /// without it (tides and the failure limits as the design's), but the counts of simulated and
 /// screened waves, which move by the same number. Each case must have waves answered by the
 /// bound and waves that slide.
