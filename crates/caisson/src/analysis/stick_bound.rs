@@ -355,9 +355,9 @@ impl StickBound {
         // them on an interval of π/INTERVALS, 1 − cos(π/(2 INTERVALS)) of its amplitude; the free
         // vibration within its modes' envelopes at t_k (they decay).
         let excess = 1.0 - (0.5 * PI / INTERVALS as f64).cos();
-        let fine = |f: usize| {
+        let fine_half = |f: usize, half: usize| {
             let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-            for half in 0..2 {
+            {
                 // e^{iωt} on the second half is −e^{iω(t − T/2)}.
                 let g = if half == 0 { harmonic(f, half) } else { -harmonic(f, half) };
                 let amp = amplitudes(f, half);
@@ -385,15 +385,26 @@ impl StickBound {
             }
             (lo, hi)
         };
+        let fine = |f: usize| {
+            let ((lo0, hi0), (lo1, hi1)) = (fine_half(f, 0), fine_half(f, 1));
+            (lo0.min(lo1), hi0.max(hi1))
+        };
         // The coarse bound of |f| over the wave: its harmonic amplitude and every mode's at a
         // half's start.
         let coarse = |f: usize| {
             (0..2).map(|half| modulus(harmonic(f, half)) + amplitudes(f, half).iter().sum::<f64>()).fold(0.0, f64::max)
         };
-        let n_min = self.n_ref + fine(EDGES[0]).0.min(fine(EDGES[1]).0);
-        let normal_share = n_min / self.n_ref;
-        let mut margins = Margins { normal_share, friction_share: f64::INFINITY, rotation_rad: f64::INFINITY };
-        if normal_share < LIFT_RESERVE {
+        // The crest half first: most waves that may lift do so there.
+        let edges_lo = |half: usize| fine_half(EDGES[0], half).0.min(fine_half(EDGES[1], half).0);
+        let mut n_min = self.n_ref + edges_lo(0);
+        let mut margins =
+            Margins { normal_share: n_min / self.n_ref, friction_share: f64::INFINITY, rotation_rad: f64::INFINITY };
+        if margins.normal_share < LIFT_RESERVE {
+            return margins;
+        }
+        n_min = n_min.min(self.n_ref + edges_lo(1));
+        margins.normal_share = n_min / self.n_ref;
+        if margins.normal_share < LIFT_RESERVE {
             return margins;
         }
         let total_min = self.weight_n - coarse(TOTAL);
