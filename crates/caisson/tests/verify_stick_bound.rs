@@ -66,7 +66,7 @@ fn a_wave_just_inside_the_bound_stays_still_and_one_just_outside_moves() {
     let a = 1.0 - margins(1.0).normal_share;
     assert!(a > 0.0);
     // Just inside: the largest k the bound answers, by bisection (here its friction test binds:
-    // 0.95 μ_s at k = 1.047, with 7 % of N̄ left at the outer spring).
+    // 0.95 μ_s at k = 1.043, with 7 % of N̄ left at the outer spring).
     let (mut lo, mut hi) = (0.0, (1.0 - LIFT_RESERVE) / a);
     for _ in 0..50 {
         let mid = 0.5 * (lo + hi);

@@ -69,7 +69,7 @@ pub const LIFT_RESERVE: f64 = 0.05;
 /// a spring is simulated.
 pub const SLIP_RESERVE: f64 = 0.95;
 /// Intervals of each half wave on which the bound is taken.
-const INTERVALS: usize = 16;
+const INTERVALS: usize = 12;
 
 type C64 = Complex<f64>;
 type Matrix6c = SMatrix<C64, 6, 6>;
