@@ -76,7 +76,7 @@ type Matrix6c = SMatrix<C64, 6, 6>;
 type Vector6c = SMatrix<C64, 6, 1>;
 
 /// The functionals of the state y = (q, q̇) the bound tracks: ΔN at the outer springs (two), ΔN
-/// of all springs, u_x and u̇_x.
+/// of all springs, u_x, u̇_x and θ.
 const FUNCTIONALS: usize = 6;
 /// The functionals' indices: ΔN at the outer springs, ΔN of all springs, u_x, u̇_x (the only one
 /// that reads q̇) and θ.
@@ -156,7 +156,8 @@ pub struct Margins {
 }
 
 impl Margins {
-    /// Whether the wave provably neither lifts nor slips a spring, with the reserves.
+    /// Whether the bound, with its reserves, shows that the wave neither lifts nor slips a
+    /// spring (module docs: the reserves cover what the bound leaves out).
     pub fn still(&self) -> bool {
         self.normal_share >= LIFT_RESERVE && self.friction_share <= SLIP_RESERVE
     }
