@@ -13,7 +13,7 @@ use support::imports::{assert_floors, assert_no_circle, module_files, named_modu
 
 /// The floor of every analysis module; a new module must be placed here (the test fails
 /// otherwise).
-const FLOORS: [(&str, u8); 18] = [
+const FLOORS: [(&str, u8); 19] = [
     // The model pieces: what every driver runs on.
     ("mod", 0), // Structure, Progress
     ("site", 0),
@@ -21,6 +21,7 @@ const FLOORS: [(&str, u8); 18] = [
     ("limits", 0),
     ("closed_form", 0),
     ("climate", 0),
+    ("stick_bound", 0),
     // The drivers.
     ("run", 1),
     ("envelope", 1),

@@ -337,3 +337,52 @@ fn the_capped_expected_sliding_stays_below_the_failure_limit_where_the_uncapped_
     );
     assert!(!r.lives_end_at_failure);
 }
+
+/// The lives of `text` (seed 5, 6 lives of 4 years), screened, with and without the bound of the
+/// all-sticking response ([`caisson::analysis::stick_bound`]); with the design's failure limits.
+fn with_and_without_the_bound(text: &str) -> (Vec<StormOutcome>, Vec<StormOutcome>) {
+    let sc = scenario(&site::with(text, "design", "life_years = 4\nlives = 6\nseed = 5"));
+    let d = sc.design.clone().unwrap();
+    let run = |stick_bound: bool| {
+        let st = StormCase { stick_bound, ..sc.storm_case(true).unwrap() };
+        (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect::<Vec<_>>()
+    };
+    (run(true), run(false))
+}
+
+/// The bound answers only waves that neither slide nor lift the caisson, and keeps the largest
+/// rotation: on storms of the small design at T1/3, with Longuet-Higgins periods, with a high
+/// mound (d = 11 m, slope 1/30: the waves above the breaker height at the wall, 8.9 m, are
+/// impulsive, and the bound leaves them to the engine) and with larger friction and force
+/// errors, every output of every life is the same to the last bit with and
+/// without it (tides and the failure limits as the design's), but the counts of simulated and
+/// screened waves, which move by the same number. Each case must have waves answered by the
+/// bound and waves that slide.
+#[test]
+fn the_stick_bound_answers_only_still_waves() {
+    let cases = [
+        ("T1/3", site::SMALL_DESIGN.to_string()),
+        ("Longuet-Higgins periods", site::with(site::SMALL_DESIGN, "design", "wave_periods = \"longuet-higgins\"")),
+        ("high mound", site::with(site::SMALL_DESIGN, "water", "depth_at_wall_m = 11.0\nseabed_slope = 0.03")),
+        ("larger errors", site::with(site::SMALL_DESIGN, "design", "friction_cov = 0.2\nwave_force_cov = 0.2")),
+    ];
+    let mut checked = 0;
+    for (name, text) in &cases {
+        let (with, without) = with_and_without_the_bound(text);
+        assert_eq!((with.len(), without.len()), (6, 6));
+        let (mut simulated, mut removed, mut sliding) = (0, 0, 0.0);
+        for (a, b) in with.iter().zip(&without) {
+            let moved = b.simulated_waves - a.simulated_waves;
+            assert_eq!(a.screened_waves, b.screened_waves + moved, "{name}: the counts move together");
+            let same = StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a };
+            assert_eq!(same, *b, "{name}: every other output is the same");
+            simulated += b.simulated_waves;
+            removed += moved;
+            sliding += b.sliding_m.abs();
+        }
+        assert!(removed > 0 && sliding > 1e-3, "{name}: {removed} of {simulated} waves answered, {sliding} m slid");
+        eprintln!("{name}: the bound answered {removed} of the {simulated} waves the screen let through");
+        checked += 1;
+    }
+    assert_eq!(checked, cases.len());
+}

@@ -56,6 +56,20 @@
 //! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
 //! totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
+//! **The stick bound** (issue 19). The static test lets through many waves that
+//! then neither slide nor lift (its amplifications are bounds for any load shape; on the design
+//! example 156 010 of its 217 856 simulated waves moved no spring). A pulsating wave that passes
+//! it is then tested on the all-sticking response itself ([`super::stick_bound`]: the exact
+//! steady state of its crest and trough plus the modes' envelopes of the free vibration, at every
+//! instant of the wave): if that leaves the outer springs 5 % of their normal force at rest and
+//! the friction demand within 95 % of μ_s, no spring slips or lifts, the wave's sliding is
+//! exactly 0 and it is not run ([`StormCase::stick_bound`]). Only its rotation is not known; a
+//! storm's largest rotation may be such a wave's, so at the storm's end the answered waves whose
+//! rotation bound (1 % over the engine's, at most, on the design example) exceeds the storm's
+//! largest rotation are run after all, largest bound first, until one's bound is below it. Every
+//! output is then the same to the last bit as without the bound but the counts of simulated and
+//! screened waves (`tests/equiv_lifetime.rs`). Impulsive waves are left to the engine.
+//!
 //! **Wave periods** ([`StormInput::periods`], [`crate::waves::periods`]). By default every wave
 //! has the storm's T1/3. With Longuet-Higgins' periods each wave's period τ is drawn given its
 //! height (in 0.5-2.5 τ̄, τ̄ = 0.89 T1/3), and its loads, rise time, screen bound (Ψ at τ) and
@@ -116,6 +130,7 @@ use super::climate::{Climate, StormModel, MAX_STORM_DURATION_S, MAX_STORM_RATE_P
 use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD, SEAWARD_REPORT_M};
 use super::rigid::RigidBlock;
 use super::run::permanent_sliding_m;
+use super::stick_bound::{AtPeriod, StickBound};
 use super::Structure;
 use crate::check::{self, count, interval};
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
@@ -131,6 +146,7 @@ use crate::{ParamError, G_M_PER_S2};
 use rand::Rng;
 use rand_distr::StandardNormal;
 use rayon::prelude::*;
+use std::cell::OnceCell;
 use std::f64::consts::PI;
 use std::ops::ControlFlow;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -425,6 +441,11 @@ pub struct StormCase<'a> {
     pub rigid_block_mu: f64,
     /// Skip the waves that cannot slide the caisson (module docs).
     pub screen: bool,
+    /// With the screen, answer the pulsating waves that the bound of the all-sticking response
+    /// shows can neither slide nor lift the caisson without running them (module docs, "The
+    /// screen"; [`super::stick_bound`]): `false` runs them as up to results version 20 (the
+    /// tests' reference).
+    pub stick_bound: bool,
     /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
     /// wave is drawn and simulated.
     pub draws: WaveDraws,
@@ -647,7 +668,24 @@ fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
 struct StormScratch {
     train: WaveTrain,
     waves: Vec<DrawnWave>,
+    still: Vec<StillWave>,
 }
+
+/// A wave the linear bound answered ([`super::stick_bound`]): the bound on its rotation, rad,
+/// and what runs it again (its height, rise-time deviate and period), should the storm's largest
+/// rotation need it (module docs, "The screen").
+#[derive(Debug, Clone, Copy)]
+struct StillWave {
+    rotation_rad: f64,
+    height_m: f64,
+    deviate: f64,
+    period_s: f64,
+}
+
+/// A still wave whose rotation bound times this factor exceeds the storm's largest rotation so
+/// far is run after all (module docs, "The screen"): the bound has been at most 0.1 % above the
+/// rotation the engine reports on the design example, never below.
+const ROTATION_RESERVE: f64 = 1.01;
 
 /// A wave drawn above the screen's threshold: its place in the storm (a uniform on [0, 1): the
 /// drawn waves run in this order), its height (clamped), its rise-time deviate and its period.
@@ -687,6 +725,8 @@ struct StormSite {
     weight_n: f64,
     mu: f64,
     width_m: f64,
+    /// The bound of the all-sticking response, built when a wave first needs it.
+    stick: OnceCell<Option<StickBound>>,
 }
 
 impl StormSite {
@@ -712,6 +752,7 @@ impl StormSite {
             weight_n: caisson.weight_in_water_n,
             mu: foundation.mu_static.min(block.mu_static),
             width_m: caisson.width_m,
+            stick: OnceCell::new(),
             model,
             block,
             dyn_model,
@@ -857,12 +898,17 @@ struct WaveRun<'a> {
     ended: bool,
     sim: Option<Simulation>,
     train: &'a mut WaveTrain,
+    /// The linear bound at T1/3, built when a wave first needs it.
+    stick_t13: OnceCell<Option<AtPeriod>>,
+    /// The waves the linear bound answered, in this storm.
+    still: &'a mut Vec<StillWave>,
 }
 
 impl WaveRun<'_> {
-    /// Wave of height `h` (clamped), rise-time deviate `z` and period `period_s`.
-    fn run(&mut self, h: f64, z: f64, period_s: f64, out: &mut StormOutcome) -> Result<(), StormError> {
-        let (st, s, site) = (self.st, self.s, self.site);
+    /// The loads of the wave of height `h` (clamped), rise-time deviate `z` and period
+    /// `period_s`, times the storm's errors, and the screen's bound at its period.
+    fn event(&self, h: f64, z: f64, period_s: f64) -> (WaveEvent, ScreenBound) {
+        let (s, site) = (self.s, self.site);
         let own;
         let (loads_at, bound) = if s.periods.is_significant() {
             (&self.loads_t13, self.bound_t13)
@@ -882,6 +928,13 @@ impl WaveRun<'_> {
             impact: e.impact.scaled(s.impact_factor),
             ..e
         };
+        (event, bound)
+    }
+
+    /// Wave of height `h` (clamped), rise-time deviate `z` and period `period_s`.
+    fn run(&mut self, h: f64, z: f64, period_s: f64, out: &mut StormOutcome) -> Result<(), StormError> {
+        let (st, site) = (self.st, self.site);
+        let (event, bound) = self.event(h, z, period_s);
         // The grid's neighbours are a margin for the heights (and periods) between its nodes; the
         // wave's own loads decide.
         if st.screen && !may_slide(&PeakComponents { quasi: event.quasi, impact: event.impact }, &bound) {
@@ -894,6 +947,62 @@ impl WaveRun<'_> {
             out.screened_waves += 1;
             return Ok(());
         }
+        if st.screen && st.stick_bound {
+            if let Some(rotation_rad) = self.still_rotation_rad(&event, period_s) {
+                // Neither slides nor lifts (module docs, "The screen"): its rotation may still be
+                // the storm's largest, which [`Self::settle_rotation`] decides.
+                out.screened_waves += 1;
+                self.still.push(StillWave { rotation_rad, height_m: h, deviate: z, period_s });
+                return Ok(());
+            }
+        }
+        self.simulate(event, h, period_s, out)
+    }
+
+    /// The bound on the rotation of a pulsating wave that the linear bound shows can neither
+    /// slide nor lift the caisson, nor rotate it near the rocking or failure limits
+    /// ([`super::stick_bound`]); `None` for any other wave.
+    fn still_rotation_rad(&self, event: &WaveEvent, period_s: f64) -> Option<f64> {
+        if event.impulse.is_some() {
+            return None;
+        }
+        let site = self.site;
+        let bound = site.stick.get_or_init(|| StickBound::new(&site.dyn_model)).as_ref()?;
+        let own;
+        let at = if self.s.periods.is_significant() {
+            self.stick_t13.get_or_init(|| bound.at_period(self.s.period_s)).as_ref()?
+        } else {
+            own = bound.at_period(period_s)?;
+            &own
+        };
+        let m = bound.margins(at, event.quasi.total(), event.trough.total());
+        let limit_rad = self.st.failure.map_or(ROCKING_LIMIT_RAD, |f| f.rotation_rad.min(ROCKING_LIMIT_RAD));
+        (m.still() && m.rotation_rad * ROTATION_RESERVE < limit_rad).then_some(m.rotation_rad)
+    }
+
+    /// Run the still waves whose rotation bound may exceed the storm's largest rotation, largest
+    /// bound first, until the bound of the next is below it (module docs, "The screen"): the
+    /// storm's largest rotation is then what running every wave gives. Each wave run moves from
+    /// the screened to the simulated count.
+    fn settle_rotation(&mut self, out: &mut StormOutcome) -> Result<(), StormError> {
+        let mut still = std::mem::take(self.still);
+        still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+        for w in &still {
+            if w.rotation_rad * ROTATION_RESERVE <= out.max_rotation_rad {
+                break;
+            }
+            let (event, _) = self.event(w.height_m, w.deviate, w.period_s);
+            out.screened_waves -= 1;
+            self.simulate(event, w.height_m, w.period_s, out)?;
+        }
+        still.clear();
+        *self.still = still;
+        Ok(())
+    }
+
+    /// Run `event` (of height `h` and period `period_s`) through the dynamic model.
+    fn simulate(&mut self, event: WaveEvent, h: f64, period_s: f64, out: &mut StormOutcome) -> Result<(), StormError> {
+        let (st, site) = (self.st, self.site);
         let train = &mut *self.train;
         train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s, source })?;
         let sim = match self.sim.as_mut() {
@@ -938,8 +1047,21 @@ fn storm_from(
     let (loads_t13, bound_t13) = (site.model.at_period(s.period_s), site.bound(s.period_s));
     let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
-    let StormScratch { train, waves } = scratch;
-    let mut run = WaveRun { st, s, site: &site, loads_t13, bound_t13, start_m, ended: failed, sim: None, train };
+    let StormScratch { train, waves, still } = scratch;
+    still.clear();
+    let mut run = WaveRun {
+        st,
+        s,
+        site: &site,
+        loads_t13,
+        bound_t13,
+        start_m,
+        ended: failed,
+        sim: None,
+        train,
+        stick_t13: OnceCell::new(),
+        still,
+    };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
         draw_above_threshold(s, &screen, rng, waves, &mut run, &mut out)?;
     } else {
@@ -956,6 +1078,7 @@ fn storm_from(
             run.run(h, z, period_s, &mut out)?;
         }
     }
+    run.settle_rotation(&mut out)?;
     out.max_storm_sliding_m = out.sliding_m;
     Ok(out)
 }

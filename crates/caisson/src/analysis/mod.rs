@@ -4,7 +4,7 @@
 //! In three floors; a module names only modules of its floor or below, without a circle
 //! (ARCHITECTURE.md; tests/contract_floors.rs):
 //! 0. the model pieces: [`Structure`] (here), [`site`], [`rigid`], [`limits`], [`closed_form`],
-//!    [`climate`];
+//!    [`climate`], [`stick_bound`];
 //! 1. the drivers: [`run`], [`envelope`], [`spectrum`], [`train`], [`campaign`], [`lifetime`],
 //!    [`fragility`], [`conventional`], [`sizing`];
 //! 2. the judgement: [`checks`] (plausibility warnings of inputs and results), [`findings`] (the
@@ -31,6 +31,7 @@ pub mod run;
 pub mod site;
 pub mod sizing;
 pub mod spectrum;
+pub mod stick_bound;
 pub mod train;
 pub mod work;
 

@@ -223,6 +223,14 @@ impl Propagator {
     }
 }
 
+impl Model {
+    /// M, K_L and C_L of the all-sticking equations of motion (module docs): the linear system
+    /// whose response the design run's screen bounds (`analysis::stick_bound`).
+    pub fn sticking_matrices(&self) -> (Matrix3<f64>, Matrix3<f64>, Matrix3<f64>) {
+        Propagator::matrices(self)
+    }
+}
+
 impl Ladder {
     /// The ladder of `model` for steps up to `dt_max_s`, sharing the propagators of this
     /// thread's ladder of the same matrices and dt_max (the same numbers: nothing else enters

@@ -1,0 +1,447 @@
+//! The sharper screen of a design run (issue 19): a bound on the all-sticking response of the
+//! caisson to a pulsating wave, which answers the waves that can neither slide nor lift the
+//! caisson without time-stepping them ([`super::lifetime`], module docs "The screen").
+//!
+//! While every spring is in contact and sticks, the equations of motion are linear but for the
+//! shear's departure R from K_x u_x (`dynamics::exact`'s module docs; [`Model::sticking_matrices`]):
+//!
+//! ```text
+//! M q̈ + C_L q̇ + K_L q = p(t),    q = (u_x, u_y, θ) from the static equilibrium, y = (q, q̇)
+//! ```
+//!
+//! A pulsating wave (Goda's loads, Eq. 29 shape: no impulse) loads it with p = P₁ sin ωt for
+//! 0 ≤ t < T/2 (P₁ the crest's forces and moment) and p = P₂ sin ωt for T/2 ≤ t < T (P₂ the
+//! trough's magnitudes; sin ωt < 0 there), ω = 2π/T. On each half the response is exactly
+//!
+//! ```text
+//! y = y_p + y_h,   q_p(t) = Re[−i X e^{iωt}],  X = Z⁻¹ P,  Z = K_L − ω² M + iω C_L   (steady state)
+//!                  y_h(τ) = Σ_m α_m w_m e^{λ_m τ}                                      (free vibration)
+//! ```
+//!
+//! with λ_m, w_m the eigenvalues and eigenvectors of the first-order system y' = A y (every
+//! Re λ_m < 0: damped modes, else no bound), τ the time from the half's start, and the modal
+//! coordinates α from rest, α¹ = −W⁻¹ y_p1(0), and at T/2 α² = α¹ e^{λ T/2} + W⁻¹ (y_p2(0) −
+//! y_p1(0)) (the first half's state less the trough's steady state there; y_p(0) = (Im X, ω Re X)).
+//! A functional g = f·y then is |G| cos(ωt + arg G) plus Re Σ_m (f·w_m) α_m e^{λ_m τ}, and on each
+//! of the INTERVALS intervals [τ_k, τ_k+1] of a half it lies within
+//!
+//! ```text
+//! [min, max](g_p(τ_k), g_p(τ_k+1)) ∓ |G| (1 − cos(π/(2 INTERVALS)))  ∓  Σ_m |f·w_m α_m| e^{Re λ_m τ_k}
+//! ```
+//!
+//! (a sinusoid exceeds its values at the ends of an interval of π/INTERVALS by at most that
+//! share of its amplitude; every mode's envelope decays). Once the envelopes are below the first
+//! term's slack, the rest of the half takes the sinusoid's exact range. So the bound holds at every
+//! instant of the wave, not only at samples. The functionals are the normal forces' changes at
+//! the two outer springs, ΔN_i = −k_y (u_y − θ x_i), and of all springs, the elastic displacement
+//! u_x, its rate u̇_x and the rotation θ. The wave can neither lift nor slip a spring if
+//!
+//! ```text
+//! lift:  N_min = N̄ + min ΔN_i ≥ LIFT_RESERVE · N̄
+//! slip:  κ max|u_x| W'/(W' + min ΣΔN) + c_d max|u̇_x| / N_min ≤ SLIP_RESERVE · μ_s
+//! ```
+//!
+//! with N̄ = W'/n, κ the shear stiffness per unit normal force and c_d the dashpot beside each
+//! spring (`foundation::spring`: a sticking spring slips when |κ N_i u_x + c_d u̇_x| > μ_s N_i).
+//! The factor W'/(W' + min ΣΔN) is R's quasi-static effect: the springs' horizontal stiffness is
+//! κ Σ N_i, not K_x = κ W', so u_x grows as the uplift unloads them (ΣΔN and the friction terms
+//! take the coarser bound |G| + Σ_m |f·w_m α_m| over a half). The reserves cover what the bound
+//! leaves out: R's dynamic part and its coupling into the rocking through the mass matrix, and
+//! the engine's own time-stepping error (tolerance 1e-6 m). Measured on the design example's
+//! 216 329 simulated pulsating waves (results version 20, every functional on the fine bound):
+//! every wave that lifted or slipped had a bound of N_min ≤ 0.0006 N̄ (none of those the reserves
+//! would answer), and the engine's largest rotation was 95.8-99.9 % of the bound's. With the
+//! bound as it is, the design, fragility and sizing examples give every output of version 20 to
+//! the bit (`scripts/same-numbers.sh`); `tests/verify_stick_bound.rs` and
+//! `tests/equiv_lifetime.rs` check it on other waves and storms.
+
+use crate::dynamics::Model;
+use crate::loads::WaveForce;
+use nalgebra::{Complex, Matrix3, SMatrix, Vector3};
+use std::cell::RefCell;
+use std::f64::consts::PI;
+use std::rc::Rc;
+
+/// The share of N̄ = W'/n the bound must leave at the outer springs: a wave whose bound comes
+/// closer to lifting one is simulated.
+pub const LIFT_RESERVE: f64 = 0.05;
+/// The share of μ_s the bound's friction demand may reach: a wave that comes closer to slipping
+/// a spring is simulated.
+pub const SLIP_RESERVE: f64 = 0.95;
+/// Intervals of each half wave on which the bound is taken.
+const INTERVALS: usize = 12;
+
+type C64 = Complex<f64>;
+type Matrix6c = SMatrix<C64, 6, 6>;
+type Vector6c = SMatrix<C64, 6, 1>;
+
+/// The functionals of the state y = (q, q̇) the bound tracks: ΔN at the outer springs (two), ΔN
+/// of all springs, u_x, u̇_x and θ.
+const FUNCTIONALS: usize = 6;
+/// The functionals' indices: ΔN at the outer springs, ΔN of all springs, u_x, u̇_x (the only one
+/// that reads q̇) and θ.
+const EDGES: [usize; 2] = [0, 1];
+const TOTAL: usize = 2;
+const UX: usize = 3;
+const VX: usize = 4;
+const THETA: usize = 5;
+
+/// The modes of the all-sticking system and the functionals in them: the same for every storm
+/// of a caisson (the tide changes its weight in water, not M, K_L or C_L), so built once per
+/// thread and caisson.
+#[derive(Debug)]
+struct Modes {
+    mass: Matrix3<f64>,
+    k_l: Matrix3<f64>,
+    c_l: Matrix3<f64>,
+    /// The eigenvalues λ_m of the first-order system y' = A y (every Re λ_m < 0).
+    lambda: [C64; 6],
+    /// The eigenvectors' inverse (the modal coordinates of a state), its real and imaginary
+    /// parts.
+    winv: [[f64; 6]; 6],
+    winv_im: [[f64; 6]; 6],
+    /// The functionals in modal coordinates, f·w_m.
+    modal: [[C64; 6]; FUNCTIONALS],
+    /// The functionals' q rows (u̇_x's is 0: it reads q̇_x).
+    rows: [Vector3<f64>; FUNCTIONALS],
+}
+
+/// M, K_L, C_L, k_y and the springs' lowest and highest x and Σx: what [`Modes`] come from.
+type Key = [f64; 31];
+
+/// Modes kept per thread, the most recent last (a sizing run alternates among a few caissons).
+const CACHED_MODES: usize = 4;
+
+/// A cached entry: the key and the modes it gave (`None`: none could be built).
+type Cached = Option<(Key, Option<Rc<Modes>>)>;
+
+thread_local! {
+    static MODES: RefCell<[Cached; CACHED_MODES]> =
+        const { RefCell::new([const { None }; CACHED_MODES]) };
+}
+
+/// The caisson's all-sticking system at a storm's water level: what every wave's bound needs.
+#[derive(Debug, Clone)]
+pub struct StickBound {
+    modes: Rc<Modes>,
+    /// N̄ = W'/n, W', N; κ, 1/m; c_d, N·s/m; μ_s.
+    n_ref: f64,
+    weight_n: f64,
+    kappa_per_m: f64,
+    dashpot_ns_per_m: f64,
+    mu_static: f64,
+}
+
+/// What the bound of a wave of one period needs: Z⁻¹ = (K_L − ω² M + iω C_L)⁻¹, the phasors
+/// e^{iωt_k} and the modes' decays e^{Re λ_m t_k} at the INTERVALS + 1 points of a half wave,
+/// and e^{λ_m T/2}.
+#[derive(Debug, Clone, Copy)]
+pub struct AtPeriod {
+    zinv: Matrix3<C64>,
+    omega: f64,
+    phasor: [C64; INTERVALS + 1],
+    decay: [[f64; 6]; INTERVALS + 1],
+    half: [C64; 6],
+}
+
+/// What the bound leaves of a wave's margins: the smallest normal force at the outer springs
+/// as a share of N̄ (below 0: it may lift), and the friction demand as a share of μ_s (above 1:
+/// it may slip).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Margins {
+    pub normal_share: f64,
+    pub friction_share: f64,
+    /// The largest rotation |θ| the wave may give the caisson, rad.
+    pub rotation_rad: f64,
+}
+
+impl Margins {
+    /// Whether the bound, with its reserves, shows that the wave neither lifts nor slips a
+    /// spring (module docs: the reserves cover what the bound leaves out).
+    pub fn still(&self) -> bool {
+        self.normal_share >= LIFT_RESERVE && self.friction_share <= SLIP_RESERVE
+    }
+}
+
+fn complex(v: &Vector3<f64>) -> Vector3<C64> {
+    v.map(|x| C64::new(x, 0.0))
+}
+
+/// The first-order matrix A of y = (q, q̇): [0, I; −M⁻¹K, −M⁻¹C].
+fn first_order(minv: &Matrix3<f64>, k: &Matrix3<f64>, c: &Matrix3<f64>) -> SMatrix<f64, 6, 6> {
+    let (mk, mc) = (-minv * k, -minv * c);
+    let mut a = SMatrix::<f64, 6, 6>::zeros();
+    for i in 0..3 {
+        a[(i, 3 + i)] = 1.0;
+        for j in 0..3 {
+            a[(3 + i, j)] = mk[(i, j)];
+            a[(3 + i, 3 + j)] = mc[(i, j)];
+        }
+    }
+    a
+}
+
+/// The eigenvectors of `a` for its eigenvalues `lambda`, by inverse iteration (three solves
+/// from a shift a part in 1e-9 off each eigenvalue); `None` if a solve fails.
+fn eigenvectors(a: &SMatrix<f64, 6, 6>, lambda: &[C64; 6]) -> Option<Matrix6c> {
+    let ac = a.map(|x| C64::new(x, 0.0));
+    let mut w = Matrix6c::zeros();
+    for (m, &l) in lambda.iter().enumerate() {
+        let shift = l + C64::new(1e-9 * l.norm().max(1e-9), 1e-9 * l.norm().max(1e-9));
+        let lu = (ac - Matrix6c::identity() * shift).lu();
+        let mut v = Vector6c::from_fn(|i, _| C64::new(1.0 + 0.1 * i as f64, 0.3 - 0.05 * i as f64));
+        for _ in 0..3 {
+            v = lu.solve(&v)?;
+            let n = v.norm();
+            if !(n.is_finite() && n > 0.0) {
+                return None;
+            }
+            v /= C64::new(n, 0.0);
+        }
+        w.set_column(m, &v);
+    }
+    Some(w)
+}
+
+impl Modes {
+    /// The modes of `model`'s all-sticking system; `None` if its matrices are singular, a mode
+    /// is not damped, or the modes cannot be separated.
+    fn new(model: &Model, (mass, k_l, c_l): (Matrix3<f64>, Matrix3<f64>, Matrix3<f64>), key: &Key) -> Option<Self> {
+        let minv = mass.try_inverse()?;
+        let a = first_order(&minv, &k_l, &c_l);
+        let ev = a.complex_eigenvalues();
+        let lambda: [C64; 6] = std::array::from_fn(|i| ev[i]);
+        if lambda.iter().any(|l| !(l.re < 0.0 && l.im.is_finite())) {
+            return None;
+        }
+        let w = eigenvectors(&a, &lambda)?;
+        let winv = w.try_inverse()?;
+        // The decomposition must give A back (a defective or ill-separated pair would not).
+        let back = w * Matrix6c::from_diagonal(&Vector6c::from_fn(|i, _| lambda[i])) * winv;
+        if (back - a.map(|x| C64::new(x, 0.0))).norm() > 1e-6 * a.norm() {
+            return None;
+        }
+        let n = model.x_m.len() as f64;
+        let [ky, x_lo, x_hi, sum_x] = [key[27], key[28], key[29], key[30]];
+        let rows = [
+            Vector3::new(0.0, -ky, ky * x_lo),
+            Vector3::new(0.0, -ky, ky * x_hi),
+            Vector3::new(0.0, -n * ky, ky * sum_x),
+            Vector3::x(),
+            Vector3::zeros(),
+            Vector3::z(),
+        ];
+        let modal = std::array::from_fn(|f| {
+            std::array::from_fn(|m| if f == VX { w[(3, m)] } else { (0..3).map(|i| w[(i, m)] * rows[f][i]).sum() })
+        });
+        Some(Modes {
+            mass,
+            k_l,
+            c_l,
+            lambda,
+            winv: std::array::from_fn(|i| std::array::from_fn(|j| winv[(i, j)].re)),
+            winv_im: std::array::from_fn(|i| std::array::from_fn(|j| winv[(i, j)].im)),
+            modal,
+            rows,
+        })
+    }
+
+    /// The modes of `model`, from this thread's cache when it has them.
+    fn cached(model: &Model) -> Option<Rc<Modes>> {
+        let (m, k, c) = model.sticking_matrices();
+        let (x_lo, x_hi) = model.x_m.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+        let mut key = [0.0; 31];
+        key[..9].copy_from_slice(m.as_slice());
+        key[9..18].copy_from_slice(k.as_slice());
+        key[18..27].copy_from_slice(c.as_slice());
+        key[27..].copy_from_slice(&[model.law.ky_n_per_m, x_lo, x_hi, model.x_m.iter().sum()]);
+        MODES.with(|cache| {
+            let mut cache = cache.borrow_mut();
+            if let Some((_, modes)) = cache.iter().flatten().find(|(k, _)| *k == key) {
+                return modes.clone();
+            }
+            let modes = Modes::new(model, (m, k, c), &key).map(Rc::new);
+            cache.rotate_left(1);
+            cache[CACHED_MODES - 1] = Some((key, modes.clone()));
+            modes
+        })
+    }
+}
+
+impl StickBound {
+    /// The bound of `model` (at the storm's water level and friction); `None` if its
+    /// all-sticking system has no damped, separable modes.
+    pub fn new(model: &Model) -> Option<Self> {
+        Some(StickBound {
+            modes: Modes::cached(model)?,
+            n_ref: model.weight_n / model.x_m.len() as f64,
+            weight_n: model.weight_n,
+            kappa_per_m: model.law.kappa_per_m,
+            dashpot_ns_per_m: model.spring_dashpot_ns_per_m,
+            mu_static: model.mu_static,
+        })
+    }
+
+    /// What the bound of a wave of period `period_s` needs; `None` if Z is singular.
+    pub fn at_period(&self, period_s: f64) -> Option<AtPeriod> {
+        let md = &*self.modes;
+        let omega = 2.0 * PI / period_s;
+        let z = md.k_l.map(|x| C64::new(x, 0.0)) - md.mass.map(|x| C64::new(omega * omega * x, 0.0))
+            + md.c_l.map(|x| C64::new(0.0, omega * x));
+        let dt = 0.5 * period_s / INTERVALS as f64;
+        let step = C64::from_polar(1.0, omega * dt);
+        let shrink: [f64; 6] = std::array::from_fn(|m| (md.lambda[m].re * dt).exp());
+        let mut at = AtPeriod {
+            zinv: z.try_inverse()?,
+            omega,
+            phasor: [C64::new(1.0, 0.0); INTERVALS + 1],
+            decay: [[1.0; 6]; INTERVALS + 1],
+            half: std::array::from_fn(|m| (md.lambda[m] * (0.5 * period_s)).exp()),
+        };
+        for k in 1..=INTERVALS {
+            at.phasor[k] = at.phasor[k - 1] * step;
+            at.decay[k] = std::array::from_fn(|m| at.decay[k - 1][m] * shrink[m]);
+        }
+        Some(at)
+    }
+
+    /// The margins of a pulsating wave of crest load `crest` and trough magnitudes `trough`
+    /// (module docs), in the order the test needs them: the normal forces first (a wave that may
+    /// lift a spring is left there, its friction share and rotation infinite: it is simulated),
+    /// then the friction (likewise), then the rotation.
+    pub fn margins(&self, at: &AtPeriod, crest: WaveForce, trough: WaveForce) -> Margins {
+        let md = &*self.modes;
+        let w = at.omega;
+        let solve = |p: WaveForce| -> Vector3<C64> {
+            let p = [p.fx_n, p.fy_n, p.m_nm];
+            Vector3::from_fn(|i, _| (0..3).map(|j| at.zinv[(i, j)] * p[j]).sum())
+        };
+        let x = [solve(crest), solve(trough)];
+        // The modal coordinates of the steady state of a load P sin ωt at t = 0,
+        // y_p(0) = (Im X, ω Re X).
+        let modal_p0 = |x: &Vector3<C64>| -> [C64; 6] {
+            let y: [f64; 6] = std::array::from_fn(|i| if i < 3 { x[i].im } else { w * x[i - 3].re });
+            let dot = |row: &[f64; 6]| row.iter().zip(&y).map(|(a, b)| a * b).sum::<f64>();
+            std::array::from_fn(|m| C64::new(dot(&md.winv[m]), dot(&md.winv_im[m])))
+        };
+        // The free vibration's modal coordinates at each half's start: from rest, −y_p1(0); at
+        // T/2, its own continuation plus y_p1(T/2) − y_p2(T/2) = y_p2(0) − y_p1(0).
+        let (p1, p2) = (modal_p0(&x[0]), modal_p0(&x[1]));
+        let alpha0: [C64; 6] = std::array::from_fn(|m| -p1[m]);
+        let alpha = [alpha0, std::array::from_fn(|m| alpha0[m] * at.half[m] + p2[m] - p1[m])];
+        // A wave whose crest alone, at T/4 and without its free vibration, leaves an outer spring
+        // less than the reserve is simulated without the rest of the bound (it would fail it).
+        for f in EDGES {
+            let crest_at_quarter = -(complex(&md.rows[f]).dot(&x[0])).re;
+            if self.n_ref + crest_at_quarter < LIFT_RESERVE * self.n_ref {
+                return Margins {
+                    normal_share: 1.0 + crest_at_quarter / self.n_ref,
+                    friction_share: f64::INFINITY,
+                    rotation_rad: f64::INFINITY,
+                };
+            }
+        }
+        // Functional f's harmonic part G on a half, and its modes' amplitudes |f·w_m α_m| there.
+        let harmonic = |f: usize, half: usize| {
+            if f == VX {
+                x[half][0] * w
+            } else {
+                complex(&md.rows[f]).dot(&x[half]) * C64::new(0.0, -1.0)
+            }
+        };
+        let amplitudes =
+            |f: usize, half: usize| -> [f64; 6] { std::array::from_fn(|m| modulus(md.modal[f][m] * alpha[half][m])) };
+        // The fine range of a functional over the wave: on each interval [t_k, t_k+1] of a half,
+        // the harmonic part within its ends' range plus the largest excess of a sinusoid over
+        // them on an interval of π/INTERVALS, 1 − cos(π/(2 INTERVALS)) of its amplitude; the free
+        // vibration within its modes' envelopes at t_k (they decay).
+        let excess = 1.0 - (0.5 * PI / INTERVALS as f64).cos();
+        let fine_half = |f: usize, half: usize| {
+            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+            {
+                // e^{iωt} on the second half is −e^{iω(t − T/2)}.
+                let g = if half == 0 { harmonic(f, half) } else { -harmonic(f, half) };
+                let amp = amplitudes(f, half);
+                let a = modulus(g);
+                let slack = excess * a;
+                let mut prev = (g * at.phasor[0]).re;
+                for k in 0..INTERVALS {
+                    let env: f64 = (0..6).map(|m| amp[m] * at.decay[k][m]).sum();
+                    if env <= slack {
+                        // The free vibration has died down to the slack: on the rest of the half,
+                        // the harmonic part's exact range (ωt from k π/INTERVALS to π) plus it.
+                        let (c_lo, c_hi) = cos_range(
+                            g.arg() + PI * k as f64 / INTERVALS as f64,
+                            PI * (INTERVALS - k) as f64 / INTERVALS as f64,
+                        );
+                        lo = lo.min(a * c_lo - env);
+                        hi = hi.max(a * c_hi + env);
+                        break;
+                    }
+                    let next = (g * at.phasor[k + 1]).re;
+                    lo = lo.min(prev.min(next) - slack - env);
+                    hi = hi.max(prev.max(next) + slack + env);
+                    prev = next;
+                }
+            }
+            (lo, hi)
+        };
+        let fine = |f: usize| {
+            let ((lo0, hi0), (lo1, hi1)) = (fine_half(f, 0), fine_half(f, 1));
+            (lo0.min(lo1), hi0.max(hi1))
+        };
+        // The coarse bound of |f| over the wave: its harmonic amplitude and every mode's at a
+        // half's start.
+        let coarse = |f: usize| {
+            (0..2).map(|half| modulus(harmonic(f, half)) + amplitudes(f, half).iter().sum::<f64>()).fold(0.0, f64::max)
+        };
+        // The crest half first: most waves that may lift do so there.
+        let edges_lo = |half: usize| fine_half(EDGES[0], half).0.min(fine_half(EDGES[1], half).0);
+        let mut n_min = self.n_ref + edges_lo(0);
+        let mut margins =
+            Margins { normal_share: n_min / self.n_ref, friction_share: f64::INFINITY, rotation_rad: f64::INFINITY };
+        if margins.normal_share < LIFT_RESERVE {
+            return margins;
+        }
+        n_min = n_min.min(self.n_ref + edges_lo(1));
+        margins.normal_share = n_min / self.n_ref;
+        if margins.normal_share < LIFT_RESERVE {
+            return margins;
+        }
+        let total_min = self.weight_n - coarse(TOTAL);
+        if total_min <= 0.0 {
+            return margins;
+        }
+        let peak = |f: usize| {
+            let (lo, hi) = fine(f);
+            lo.abs().max(hi.abs())
+        };
+        let friction =
+            self.kappa_per_m * peak(UX) * self.weight_n / total_min + self.dashpot_ns_per_m * peak(VX) / n_min;
+        margins.friction_share = friction / self.mu_static;
+        if margins.friction_share > SLIP_RESERVE {
+            return margins;
+        }
+        margins.rotation_rad = peak(THETA);
+        margins
+    }
+}
+
+/// The range of cos ψ for ψ in [a, a + width], width ≤ 2π.
+fn cos_range(a: f64, width: f64) -> (f64, f64) {
+    let (c0, c1) = (a.cos(), (a + width).cos());
+    // The first maximum (ψ = 2πk) and minimum (ψ = π + 2πk) at or after a.
+    let tau = 2.0 * PI;
+    let first_max = (a / tau).ceil() * tau;
+    let first_min = ((a - PI) / tau).ceil() * tau + PI;
+    let hi = if first_max <= a + width { 1.0 } else { c0.max(c1) };
+    let lo = if first_min <= a + width { -1.0 } else { c0.min(c1) };
+    (lo, hi)
+}
+
+/// |z| without libm's `hypot` (the bound needs no care for overflow: its numbers are forces and
+/// displacements).
+#[inline]
+fn modulus(z: C64) -> f64 {
+    (z.re * z.re + z.im * z.im).sqrt()
+}
