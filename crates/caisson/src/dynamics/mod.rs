@@ -59,14 +59,21 @@
 //! sticking, g = κ N_i e_lim − |κ N_i e_i + c_d ė_i|, interpolated linearly between the step's
 //! start (g_0 > 0) and end (g_1 < 0), puts the onset at θ = g_0/(g_0 − g_1) of the step; the
 //! step is retaken to θ (1 + 1e-6) h, just past the earliest onset, then the rest of the
-//! fixed step (or the adaptive stepper goes on from there). An onset within 1 % of either end
-//! of the step (or within 1e-2 dt_s) is left where it falls; at most 16 onsets are located in a
-//! step. Without it, the force's kink (or with μ_d < μ_s its jump) at the onset is smeared over
-//! the step and the sliding converges at first order. With [`SolverParams::locate_contact`]
+//! fixed step. The adaptive stepper instead lands on the event ([`Landing`]): it retakes the step
+//! until it ends past the event within its last hundredth, each length the root of the event's
+//! margin g(s) at the ends of the steps tried (inverse quadratic interpolation through the last
+//! three, else the Illinois rule) aimed 0.25 % of the step past it, at most 6 retakes. An onset
+//! within 1 % of either end of the step (or within 1e-2 dt_s) is left where it falls; at most 16
+//! onsets are located in a step. Without it, the force's kink (or with μ_d < μ_s its jump) at
+//! the onset is smeared over the step and the sliding converges at first order. With [`SolverParams::locate_contact`]
 //! (adaptive stepping, the consistent profile) lift-off and re-contact are located the same way:
 //! a spring's unclamped normal force N_i = −k_y u_y,i, linear in the step, changes sign at
-//! θ = N_0/(N_0 − N_1). That makes the time of a lift exact, not whether a spring that comes
-//! within rounding of N_i = 0 lifts: a lift resets its shear, so such runs still part by that
+//! θ = N_0/(N_0 − N_1); and the adaptive stepper anticipates them: before a step it extrapolates
+//! each spring's u_y,i from the committed u_y,i, u̇_y,i, ü_y,i, and if it crosses 0 within the
+//! step, plans the step to end 0.25 % past the crossing (kept if it ends short, landed on as
+//! above if it passes the event by more than the step's last hundredth:
+//! [`Simulation::contact_ahead`]). That makes the time of a lift exact, not whether a spring that
+//! comes within rounding of N_i = 0 lifts: a lift resets its shear, so such runs still part by that
 //! shear under rounding (docs/model.md §9.1). With `locate_contact` (both steppings) the end of a
 //! slip is located too: a spring slipping at the step's start in the direction σ of its force,
 //! with the slip rate ṡ = u̇_x − ė, σ ṡ_0 > 0, and at the end the rate of the slip it would have
@@ -112,6 +119,107 @@ const MAX_EVENTS_PER_STEP: usize = 16;
 const EVENT_OVERSHOOT: f64 = 1e-6;
 /// An event is located only if it splits the step into parts of at least this fraction of it.
 const EVENT_MIN_FRACTION: f64 = 0.01;
+/// Steps retaken to land on one event by the adaptive stepping (module docs, "Events").
+const MAX_LOCATE_TRIES: usize = 6;
+/// The adaptive stepping aims a step retaken to an event this fraction of it past the event's
+/// estimate, a quarter of the window in which it is left (`EVENT_MIN_FRACTION`): a step that
+/// ends short of the event is retaken again, one past it within the window is kept.
+const EVENT_LEAD: f64 = 0.25 * EVENT_MIN_FRACTION;
+
+/// What changes at an event (module docs, "Events").
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum EventKind {
+    /// A spring lifts off or touches down.
+    Contact,
+    /// A slipping spring stops slipping.
+    SlipEnd,
+    /// A sticking spring starts to slip.
+    Onset,
+}
+
+/// The first event of a converged step ([`Simulation::event_fraction`]).
+#[derive(Debug, Clone, Copy)]
+struct Event {
+    /// Where it falls, as a fraction of the step (found: just past it, `EVENT_OVERSHOOT`;
+    /// anticipated: at it).
+    theta: f64,
+    spring: usize,
+    kind: EventKind,
+    /// Its margin at the step's start and end ([`Simulation::event_margins`]), signed so that
+    /// g0 > 0 > g1.
+    g0: f64,
+    g1: f64,
+}
+
+/// An event being landed on by the adaptive stepping: the longest step from the current state
+/// known to end before it (`lo`) and the shortest known to end past it (`hi`), each with the
+/// event's margin g at its end. The next step length is the root of g(s) by inverse quadratic
+/// interpolation through these two and the end the last step replaced (as in Brent's method,
+/// Brent 1973 ch. 4) if it falls inside the bracket, else by the Illinois variant of regula
+/// falsi (Dowell & Jarratt 1971: the end kept twice in a row has its margin halved).
+#[derive(Debug, Clone, Copy)]
+struct Landing {
+    spring: usize,
+    kind: EventKind,
+    /// (step length s, margin g(s)).
+    lo: (f64, f64),
+    hi: (f64, f64),
+    /// Which end moved last: `Some(true)` the upper.
+    moved_hi: Option<bool>,
+    /// Steps retaken so far.
+    tries: usize,
+    /// Predicted ([`Simulation::contact_ahead`]), not found: a step that ends short of it is kept.
+    predicted: bool,
+}
+
+impl Landing {
+    fn new(e: Event, h: f64) -> Self {
+        Landing {
+            spring: e.spring,
+            kind: e.kind,
+            lo: (0.0, e.g0),
+            hi: (h, e.g1),
+            moved_hi: None,
+            tries: 0,
+            predicted: false,
+        }
+    }
+
+    /// The step of length `s` ended with margin `g`; the next step length to try.
+    fn narrow(&mut self, s: f64, g: f64) -> f64 {
+        let upper = g <= 0.0;
+        let old = if upper { self.hi } else { self.lo };
+        if upper {
+            self.hi = (s, g);
+        } else {
+            self.lo = (s, g);
+        }
+        self.tries += 1;
+        let ((a, ga), (b, gb)) = (self.lo, self.hi);
+        let (c, gc) = old;
+        // Inverse quadratic interpolation: s(g) through the three points, at g = 0.
+        if ga != gc && gb != gc {
+            let q = a * gb * gc / ((ga - gb) * (ga - gc))
+                + b * ga * gc / ((gb - ga) * (gb - gc))
+                + c * ga * gb / ((gc - ga) * (gc - gb));
+            if q > a && q < b {
+                self.moved_hi = Some(upper);
+                return q * (1.0 + EVENT_LEAD);
+            }
+        }
+        if self.moved_hi == Some(upper) {
+            // The same end moved twice: halve the other's margin (Illinois).
+            if upper {
+                self.lo.1 *= 0.5;
+            } else {
+                self.hi.1 *= 0.5;
+            }
+        }
+        self.moved_hi = Some(upper);
+        let ((a, ga), (b, gb)) = (self.lo, self.hi);
+        (a + (b - a) * ga / (ga - gb)) * (1.0 + EVENT_LEAD)
+    }
+}
 
 /// Why a run stopped.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -650,77 +758,134 @@ impl Simulation {
         (f, self.tangent(h))
     }
 
-    /// The fraction θ of a converged step of length `h` (to `c`) at which its first event
-    /// happens (module docs, "Events"): the onset of a slip (a spring in contact and sticking at
-    /// the step's start that slips at its end: the friction margin κ N_i e_lim − |F_i| of the
-    /// spring held sticking, interpolated linearly over the step), with `contact` a lift-off or
-    /// re-contact, and with [`SolverParams::locate_contact`] the end of a slip (the slip rate's
-    /// sign change). `None` if there is none, or if it falls close to either end of the step.
-    fn event_fraction(&self, h: f64, c: &Converged, contact: bool) -> Option<f64> {
-        let (un, vn) = (self.state.u, self.state.v);
-        let mut theta = 1.0f64;
+    /// The first event of a converged step of length `h` (to `c`) (module docs, "Events"): the
+    /// onset of a slip (a spring in contact and sticking at the step's start that slips at its
+    /// end: the friction margin κ N_i e_lim − |F_i| of the spring held sticking, interpolated
+    /// linearly over the step), with `contact` a lift-off or re-contact, and with
+    /// [`SolverParams::locate_contact`] the end of a slip (the slip rate's sign change). `None`
+    /// if there is none, or if it falls close to either end of the step.
+    fn event_fraction(&self, h: f64, c: &Converged, contact: bool) -> Option<Event> {
+        let mut first = Event { theta: 1.0, spring: 0, kind: EventKind::Contact, g0: 1.0, g1: -1.0 };
+        let mut keep = |kind: EventKind, spring: usize, (g0, g1): (f64, f64)| {
+            let theta = g0 / (g0 - g1);
+            if theta < first.theta {
+                first = Event { theta, spring, kind, g0, g1 };
+            }
+        };
         if contact {
             // Lift-off and re-contact: N_i = −k_y u_y,i (unclamped) is linear in the step's
             // displacements, so its root is where the straight line between the ends crosses 0.
-            for &x in &self.model.x_m {
-                let (g0, g1) = (-(un[1] - un[2] * x), -(c.u[1] - c.u[2] * x));
+            for i in 0..self.model.x_m.len() {
+                let (g0, g1) = self.event_margins(EventKind::Contact, i, h, c);
                 if (g0 > 0.0) != (g1 > 0.0) {
-                    theta = theta.min(g0 / (g0 - g1));
+                    keep(EventKind::Contact, i, (g0, g1));
                 }
             }
         }
-        let law = self.model.law;
-        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
         let all_stick = self.fast.iterate.is_some();
         if self.solver.locate_contact && self.committed_sliding() {
-            // The end of a slip: a spring slipping at the step's start, in the direction σ of
-            // its force, and in contact at its end. Its slip rate ṡ = u̇_x − ė, ṡ_0 at the start
-            // and, at the end, the rate of the slip it would have gone on with,
-            // ṡ_1 = 2 (s_slip − s_n)/h − ṡ_0 (the trapezoidal rule, as the step's u_x), changes
-            // sign where the slip stops, whether the spring sticks at the end or, having
-            // slipped more forward than back over the step, still slips there.
-            let cd = self.model.spring_dashpot_ns_per_m;
-            for (&x, s) in self.model.x_m.iter().zip(&self.state.springs) {
-                let uy1 = c.u[1] - c.u[2] * x;
-                if !(s.sliding && uy1 < 0.0) {
+            // The end of a slip: a spring slipping at the step's start and in contact at its end.
+            for (i, (&x, s)) in self.model.x_m.iter().zip(&self.state.springs).enumerate() {
+                if !(s.sliding && c.u[1] - c.u[2] * x < 0.0) {
                     continue;
                 }
-                let kn0 = law.kappa_per_m * (-law.ky_n_per_m * (un[1] - un[2] * x));
+                let (g0, g1) = self.event_margins(EventKind::SlipEnd, i, h, c);
+                if g0 > 0.0 && g1 < 0.0 {
+                    keep(EventKind::SlipEnd, i, (g0, g1));
+                }
+            }
+        }
+        if !all_stick {
+            // The springs' responses at the converged iterate (the general path's) say which
+            // ones slip at the step's end; only those that stuck at its start are measured (when
+            // every spring sticks at the step's end, none).
+            let (un, law) = (self.state.u, self.model.law);
+            let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial).enumerate();
+            for (i, _) in starts.filter(|(_, ((_, s), r))| r.state.sliding && !s.sliding && r.normal_n > 0.0) {
+                let x = self.model.x_m[i];
+                // The spring law's own tests: in contact while N > 0, sticking while the margin
+                // ≥ 0 (a contact event in the step is located above).
+                let n0 = -law.ky_n_per_m * (un[1] - un[2] * x);
+                let n1 = -law.ky_n_per_m * (c.u[1] - c.u[2] * x);
+                let (g0, g1) = self.event_margins(EventKind::Onset, i, h, c);
+                if n0 > 0.0 && n1 > 0.0 && g0 > 0.0 && g1 < 0.0 {
+                    keep(EventKind::Onset, i, (g0, g1));
+                }
+            }
+        }
+        let theta = self.event_within(first.theta, h)?;
+        // Signed so that the margin is positive before the event (a re-contact's N_i < 0).
+        let sign = first.g0.signum();
+        Some(Event { theta, g0: sign * first.g0, g1: sign * first.g1, ..first })
+    }
+
+    /// The margin g of spring `i` for an event of `kind` at the start and the end of a converged
+    /// step of length `h` (to `c`), whose sign change is the event (module docs, "Events"):
+    ///
+    /// * `Contact`: the unclamped normal force over the normal stiffness, −u_y,i;
+    /// * `SlipEnd`: σ ṡ, the slip rate ṡ = u̇_x − ė in the direction σ of the force of a spring
+    ///   slipping at the start, ṡ_0 there and at the end the rate of the slip it would have gone
+    ///   on with, ṡ_1 = 2 (s_slip − s_n)/h − ṡ_0 (the trapezoidal rule, as the step's u_x): it
+    ///   changes sign where the slip stops, whether the spring sticks at the end or, having
+    ///   slipped more forward than back over the step, still slips there;
+    /// * `Onset`: the friction margin κ N_i e_lim − |F_i| of the spring held sticking, at the
+    ///   start with F = κ N e_n + c_d u̇_x,n (ē = e_n − (h/2) u̇_x,n), at the end from the step's
+    ///   sticking trial.
+    fn event_margins(&self, kind: EventKind, i: usize, h: f64, c: &Converged) -> (f64, f64) {
+        let (un, vn) = (self.state.u, self.state.v);
+        let (x, s, law) = (self.model.x_m[i], self.state.springs[i], self.model.law);
+        let (uy0, uy1) = (un[1] - un[2] * x, c.u[1] - c.u[2] * x);
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+        match kind {
+            EventKind::Contact => (-uy0, -uy1),
+            EventKind::SlipEnd => {
+                let cd = self.model.spring_dashpot_ns_per_m;
+                let kn0 = law.kappa_per_m * (-law.ky_n_per_m * uy0);
                 let sign = (kn0 * (un[0] - s.slip_m) + cd * s.rate_m_per_s).signum();
                 let rate0 = vn[0] - s.rate_m_per_s;
                 let e_bar = un[0] - s.slip_m + 0.5 * h * s.rate_m_per_s;
                 let slip1 = law.slipping_position(sign, c.u[0], uy1, e_bar, c_prime);
                 let rate1 = 2.0 * (slip1 - s.slip_m) / h - rate0;
-                let (g0, g1) = (sign * rate0, sign * rate1);
-                if g0 > 0.0 && g1 < 0.0 {
-                    theta = theta.min(g0 / (g0 - g1));
-                }
+                (sign * rate0, sign * rate1)
+            }
+            EventKind::Onset => {
+                let limit = law.limit_m(s);
+                let e_n = un[0] - s.slip_m;
+                let (_, g0) = law.stick_margin(s.slip_m, limit, un[0], uy0, e_n - 0.5 * h * vn[0], c_prime);
+                let e_bar = e_n + 0.5 * h * elastic_rate(&s, vn[0]);
+                let (_, g1) = law.stick_margin(s.slip_m, limit, c.u[0], uy1, e_bar, c_prime);
+                (g0, g1)
             }
         }
-        if all_stick {
-            // Every spring sticks at the step's end.
-            return self.event_within(theta, h);
-        }
-        // The springs' responses at the converged iterate (the general path's) say which ones
-        // slip at the step's end; only those that stuck at its start are measured.
-        let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial);
-        for ((&x, s), _) in starts.filter(|((_, s), r)| r.state.sliding && !s.sliding && r.normal_n > 0.0) {
-            let uy0 = un[1] - un[2] * x;
-            let uy1 = c.u[1] - c.u[2] * x;
-            let limit = law.limit_m(*s);
-            // At the start: F = κ N e_n + c_d u̇_x,n (ē = e_n − (h/2) u̇_x,n); at the end the
-            // sticking trial of the step.
-            let e_n = un[0] - s.slip_m;
-            let (n0, g0) = law.stick_margin(s.slip_m, limit, un[0], uy0, e_n - 0.5 * h * vn[0], c_prime);
-            let e_bar = e_n + 0.5 * h * elastic_rate(s, vn[0]);
-            let (n1, g1) = law.stick_margin(s.slip_m, limit, c.u[0], uy1, e_bar, c_prime);
-            // The spring law's own tests: in contact while N > 0, sticking while the margin ≥ 0
-            // (a contact event in the step is located above).
-            if n0 > 0.0 && n1 > 0.0 && !s.sliding && g0 > 0.0 && g1 < 0.0 {
-                theta = theta.min(g0 / (g0 - g1));
+    }
+
+    /// The first lift-off or touch-down ahead of the committed state within a step of length `h`,
+    /// predicted from the committed u_y,i, u̇_y,i and ü_y,i of each spring: the first root in
+    /// (0, h) of the margin g(t) = −(u_y,i + u̇_y,i t + ü_y,i t²/2) (module docs, "Events"), with
+    /// g0 and g(h) signed as [`Self::event_fraction`]'s.
+    fn contact_ahead(&self, h: f64) -> Option<Event> {
+        let (u, v, a) = (self.state.u, self.state.v, self.state.a);
+        let mut first: Option<Event> = None;
+        for (i, &x) in self.model.x_m.iter().enumerate() {
+            let g0 = -(u[1] - u[2] * x);
+            let sign = g0.signum();
+            // g(t)·sign = g0 + d t + q t², g0 > 0.
+            let (g0, d, q) = (sign * g0, -sign * (v[1] - v[2] * x), -0.5 * sign * (a[1] - a[2] * x));
+            let gh = g0 + d * h + q * h * h;
+            if gh.is_nan() || gh >= 0.0 {
+                continue;
+            }
+            // One root in (0, h) (g0 > 0 > g(h)), by the cancellation-free forms of the formula.
+            let disc = (d * d - 4.0 * q * g0).max(0.0).sqrt();
+            let t = [2.0 * g0 / (-d + disc), 2.0 * g0 / (-d - disc)]
+                .into_iter()
+                .filter(|t| *t > 0.0 && *t < h)
+                .fold(f64::INFINITY, f64::min);
+            if t.is_finite() && first.is_none_or(|e| t < e.theta * h) {
+                first = Some(Event { theta: t / h, spring: i, kind: EventKind::Contact, g0, g1: gh });
             }
         }
-        self.event_within(theta, h)
+        first
     }
 
     /// The event at the fraction `theta` of a step of length `h`, if it is one to locate (module
@@ -956,7 +1121,7 @@ impl Simulation {
                     return self.advance(h, level, events, event, load, obs);
                 }
                 if events > 0 {
-                    if let Some(theta) = self.event_fraction(h, &c, self.solver.locate_contact) {
+                    if let Some(Event { theta, .. }) = self.event_fraction(h, &c, self.solver.locate_contact) {
                         // To the event without locating again, then the rest of the step.
                         self.stats.located_events += 1;
                         self.advance(theta * h, level, 0, true, load, obs)?;
@@ -1035,9 +1200,10 @@ impl Simulation {
         let c_err = (self.solver.beta - 1.0 / 6.0).abs();
         let half_b = 0.5 * self.model.width_m;
         let mut level = 0usize;
-        // Events located in a row, and whether the step to try was shortened to end at one (it
-        // is then not located again).
+        // Events located in a row, and whether the step to try was shortened to end at one.
         let (mut events, mut at_event) = (0usize, false);
+        // The event being landed on, while the steps to it are retaken.
+        let mut landing: Option<Landing> = None;
         // The load's next breakpoint after the step's start: it stays the next one until the
         // steps pass it, so it is looked up again only then.
         let mut bp = f64::NEG_INFINITY;
@@ -1070,6 +1236,24 @@ impl Simulation {
                 h = t_end_s - t;
             }
             let truncated = h < planned;
+            // A lift-off or touch-down ahead within the step: the step ends just past it.
+            if level == 0
+                && !at_event
+                && landing.is_none()
+                && events < MAX_EVENTS_PER_STEP
+                && self.solver.locate_contact
+            {
+                if let Some(e) = self.contact_ahead(h) {
+                    let to_event = e.theta * h * (1.0 + EVENT_LEAD);
+                    if to_event < h * (1.0 - EVENT_MIN_FRACTION) && to_event >= p.dt_min_s {
+                        self.stats.located_events += 1;
+                        landing = Some(Landing { predicted: true, ..Landing::new(e, h) });
+                        h = to_event;
+                        at_event = true;
+                        self.event_step = true;
+                    }
+                }
+            }
             let t1 = t + h;
             let w = load.at(t1);
             match self.try_step(h, self.load_vector(w)) {
@@ -1077,16 +1261,43 @@ impl Simulation {
                     if self.restart_at_start(&c) {
                         continue;
                     }
-                    if !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
-                        if let Some(theta) = self.event_fraction(h, &c, self.solver.locate_contact) {
-                            if theta * h >= p.dt_min_s {
-                                self.stats.located_events += 1;
-                                events += 1;
-                                at_event = true;
-                                self.h_next = theta * h;
-                                level = 0;
-                                continue;
+                    let contact = self.solver.locate_contact;
+                    if let Some(l) = landing.as_mut() {
+                        // A step retaken to end at an event: narrowed until it ends just past
+                        // it (the event in its last hundredth), or just short of it.
+                        let next = match self.event_fraction(h, &c, contact) {
+                            Some(e) if (e.spring, e.kind) == (l.spring, l.kind) => Some(l.narrow(h, e.g1)),
+                            Some(e) => {
+                                // Another event before it: land on that one instead.
+                                *l = Landing { tries: l.tries + 1, ..Landing::new(e, h) };
+                                Some(e.theta * h * (1.0 + EVENT_LEAD))
                             }
+                            None => {
+                                let (g0, g1) = self.event_margins(l.kind, l.spring, h, &c);
+                                let g = g1 * g0.signum();
+                                // Short of it by more than a hundredth of the step.
+                                if g > 0.0 && !l.predicted {
+                                    Some(l.narrow(h, g)).filter(|s| s - h > EVENT_MIN_FRACTION * h)
+                                } else {
+                                    None
+                                }
+                            }
+                        };
+                        if let Some(s) = next.filter(|&s| l.tries <= MAX_LOCATE_TRIES && s >= p.dt_min_s) {
+                            self.h_next = s;
+                            continue;
+                        }
+                    }
+                    if landing.is_none() && !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
+                        // The step's first event: the step is retaken to land on it.
+                        if let Some(e) = self.event_fraction(h, &c, contact).filter(|e| e.theta * h >= p.dt_min_s) {
+                            self.stats.located_events += 1;
+                            events += 1;
+                            at_event = true;
+                            landing = Some(Landing::new(e, h));
+                            self.h_next = e.theta * h * (1.0 + EVENT_LEAD);
+                            level = 0;
+                            continue;
                         }
                     }
                     let an = self.state.a;
@@ -1097,12 +1308,14 @@ impl Simulation {
                     if err > p.tolerance_m && h > p.dt_min_s {
                         self.stats.rejected_steps += 1;
                         self.h_next = (h * ratio.clamp(0.1, 0.9)).max(p.dt_min_s);
+                        landing = None;
                         continue;
                     }
                     if err > p.tolerance_m {
                         self.stats.forced_min_steps += 1;
                     }
                     self.commit_observed(h, c, t1, w, obs);
+                    landing = None;
                     let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
                     self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
                     level = 0;
@@ -1116,6 +1329,7 @@ impl Simulation {
                         return Err(SolveError::NonConvergence { t_s: t1, iterations, levels: level, residual });
                     }
                     level += 1;
+                    landing = None;
                     self.stats.substeps += 1;
                     self.stats.max_substep_level = self.stats.max_substep_level.max(level);
                     self.h_next = (0.5 * h).max(p.dt_min_s * 0.5f64.powi(level as i32));
