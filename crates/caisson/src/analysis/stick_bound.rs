@@ -310,7 +310,59 @@ impl StickBound {
     /// lift a spring is left there, its friction share and rotation infinite: it is simulated),
     /// then the friction (likewise), then the rotation.
     pub fn margins(&self, at: &AtPeriod, crest: WaveForce, trough: WaveForce) -> Margins {
-        let md = &*self.modes;
+        let r = Response::new(&self.modes, at, crest, trough);
+        // A wave whose crest alone, at T/4 and without its free vibration, leaves an outer spring
+        // less than the reserve is simulated without the rest of the bound (it would fail it).
+        for f in EDGES {
+            let crest_at_quarter = -(complex(&r.md.rows[f]).dot(&r.x[0])).re;
+            if self.n_ref + crest_at_quarter < LIFT_RESERVE * self.n_ref {
+                return Margins {
+                    normal_share: 1.0 + crest_at_quarter / self.n_ref,
+                    friction_share: f64::INFINITY,
+                    rotation_rad: f64::INFINITY,
+                };
+            }
+        }
+        // The crest half first: most waves that may lift do so there.
+        let edges_lo = |half: usize| r.fine_half(EDGES[0], half).0.min(r.fine_half(EDGES[1], half).0);
+        let mut n_min = self.n_ref + edges_lo(0);
+        let mut margins =
+            Margins { normal_share: n_min / self.n_ref, friction_share: f64::INFINITY, rotation_rad: f64::INFINITY };
+        if margins.normal_share < LIFT_RESERVE {
+            return margins;
+        }
+        n_min = n_min.min(self.n_ref + edges_lo(1));
+        margins.normal_share = n_min / self.n_ref;
+        if margins.normal_share < LIFT_RESERVE {
+            return margins;
+        }
+        let total_min = self.weight_n - r.coarse(TOTAL);
+        if total_min <= 0.0 {
+            return margins;
+        }
+        let friction =
+            self.kappa_per_m * r.peak(UX) * self.weight_n / total_min + self.dashpot_ns_per_m * r.peak(VX) / n_min;
+        margins.friction_share = friction / self.mu_static;
+        if margins.friction_share > SLIP_RESERVE {
+            return margins;
+        }
+        margins.rotation_rad = r.peak(THETA);
+        margins
+    }
+}
+
+/// The all-sticking response of one wave ([`StickBound::margins`]): the steady-state amplitudes
+/// X = Z⁻¹ P of its crest and trough, and the free vibration's modal coordinates at each half's
+/// start.
+struct Response<'a> {
+    md: &'a Modes,
+    at: &'a AtPeriod,
+    x: [Vector3<C64>; 2],
+    alpha: [[C64; 6]; 2],
+}
+
+impl<'a> Response<'a> {
+    fn new(md: &'a Modes, at: &'a AtPeriod, crest: WaveForce, trough: WaveForce) -> Self {
         let w = at.omega;
         let solve = |p: WaveForce| -> Vector3<C64> {
             let p = [p.fx_n, p.fy_n, p.m_nm];
@@ -329,101 +381,71 @@ impl StickBound {
         let (p1, p2) = (modal_p0(&x[0]), modal_p0(&x[1]));
         let alpha0: [C64; 6] = std::array::from_fn(|m| -p1[m]);
         let alpha = [alpha0, std::array::from_fn(|m| alpha0[m] * at.half[m] + p2[m] - p1[m])];
-        // A wave whose crest alone, at T/4 and without its free vibration, leaves an outer spring
-        // less than the reserve is simulated without the rest of the bound (it would fail it).
-        for f in EDGES {
-            let crest_at_quarter = -(complex(&md.rows[f]).dot(&x[0])).re;
-            if self.n_ref + crest_at_quarter < LIFT_RESERVE * self.n_ref {
-                return Margins {
-                    normal_share: 1.0 + crest_at_quarter / self.n_ref,
-                    friction_share: f64::INFINITY,
-                    rotation_rad: f64::INFINITY,
-                };
-            }
+        Response { md, at, x, alpha }
+    }
+
+    /// Functional f's harmonic part G on a half.
+    fn harmonic(&self, f: usize, half: usize) -> C64 {
+        if f == VX {
+            self.x[half][0] * self.at.omega
+        } else {
+            complex(&self.md.rows[f]).dot(&self.x[half]) * C64::new(0.0, -1.0)
         }
-        // Functional f's harmonic part G on a half, and its modes' amplitudes |f·w_m α_m| there.
-        let harmonic = |f: usize, half: usize| {
-            if f == VX {
-                x[half][0] * w
-            } else {
-                complex(&md.rows[f]).dot(&x[half]) * C64::new(0.0, -1.0)
-            }
-        };
-        let amplitudes =
-            |f: usize, half: usize| -> [f64; 6] { std::array::from_fn(|m| modulus(md.modal[f][m] * alpha[half][m])) };
-        // The fine range of a functional over the wave: on each interval [t_k, t_k+1] of a half,
-        // the harmonic part within its ends' range plus the largest excess of a sinusoid over
-        // them on an interval of π/INTERVALS, 1 − cos(π/(2 INTERVALS)) of its amplitude; the free
-        // vibration within its modes' envelopes at t_k (they decay).
+    }
+
+    /// The amplitudes |f·w_m α_m| of functional f's modes on a half.
+    fn amplitudes(&self, f: usize, half: usize) -> [f64; 6] {
+        std::array::from_fn(|m| modulus(self.md.modal[f][m] * self.alpha[half][m]))
+    }
+
+    /// The fine range of a functional over a half: on each interval [t_k, t_k+1], the harmonic
+    /// part within its ends' range plus the largest excess of a sinusoid over them on an interval
+    /// of π/INTERVALS, 1 − cos(π/(2 INTERVALS)) of its amplitude; the free vibration within its
+    /// modes' envelopes at t_k (they decay).
+    fn fine_half(&self, f: usize, half: usize) -> (f64, f64) {
+        let at = self.at;
         let excess = 1.0 - (0.5 * PI / INTERVALS as f64).cos();
-        let fine_half = |f: usize, half: usize| {
-            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-            {
-                // e^{iωt} on the second half is −e^{iω(t − T/2)}.
-                let g = if half == 0 { harmonic(f, half) } else { -harmonic(f, half) };
-                let amp = amplitudes(f, half);
-                let a = modulus(g);
-                let slack = excess * a;
-                let mut prev = (g * at.phasor[0]).re;
-                for k in 0..INTERVALS {
-                    let env: f64 = (0..6).map(|m| amp[m] * at.decay[k][m]).sum();
-                    if env <= slack {
-                        // The free vibration has died down to the slack: on the rest of the half,
-                        // the harmonic part's exact range (ωt from k π/INTERVALS to π) plus it.
-                        let (c_lo, c_hi) = cos_range(
-                            g.arg() + PI * k as f64 / INTERVALS as f64,
-                            PI * (INTERVALS - k) as f64 / INTERVALS as f64,
-                        );
-                        lo = lo.min(a * c_lo - env);
-                        hi = hi.max(a * c_hi + env);
-                        break;
-                    }
-                    let next = (g * at.phasor[k + 1]).re;
-                    lo = lo.min(prev.min(next) - slack - env);
-                    hi = hi.max(prev.max(next) + slack + env);
-                    prev = next;
-                }
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        // e^{iωt} on the second half is −e^{iω(t − T/2)}.
+        let g = if half == 0 { self.harmonic(f, half) } else { -self.harmonic(f, half) };
+        let amp = self.amplitudes(f, half);
+        let a = modulus(g);
+        let slack = excess * a;
+        let mut prev = (g * at.phasor[0]).re;
+        for k in 0..INTERVALS {
+            let env: f64 = (0..6).map(|m| amp[m] * at.decay[k][m]).sum();
+            if env <= slack {
+                // The free vibration has died down to the slack: on the rest of the half, the
+                // harmonic part's exact range (ωt from k π/INTERVALS to π) plus it.
+                let (c_lo, c_hi) = cos_range(
+                    g.arg() + PI * k as f64 / INTERVALS as f64,
+                    PI * (INTERVALS - k) as f64 / INTERVALS as f64,
+                );
+                lo = lo.min(a * c_lo - env);
+                hi = hi.max(a * c_hi + env);
+                break;
             }
-            (lo, hi)
-        };
-        let fine = |f: usize| {
-            let ((lo0, hi0), (lo1, hi1)) = (fine_half(f, 0), fine_half(f, 1));
-            (lo0.min(lo1), hi0.max(hi1))
-        };
-        // The coarse bound of |f| over the wave: its harmonic amplitude and every mode's at a
-        // half's start.
-        let coarse = |f: usize| {
-            (0..2).map(|half| modulus(harmonic(f, half)) + amplitudes(f, half).iter().sum::<f64>()).fold(0.0, f64::max)
-        };
-        // The crest half first: most waves that may lift do so there.
-        let edges_lo = |half: usize| fine_half(EDGES[0], half).0.min(fine_half(EDGES[1], half).0);
-        let mut n_min = self.n_ref + edges_lo(0);
-        let mut margins =
-            Margins { normal_share: n_min / self.n_ref, friction_share: f64::INFINITY, rotation_rad: f64::INFINITY };
-        if margins.normal_share < LIFT_RESERVE {
-            return margins;
+            let next = (g * at.phasor[k + 1]).re;
+            lo = lo.min(prev.min(next) - slack - env);
+            hi = hi.max(prev.max(next) + slack + env);
+            prev = next;
         }
-        n_min = n_min.min(self.n_ref + edges_lo(1));
-        margins.normal_share = n_min / self.n_ref;
-        if margins.normal_share < LIFT_RESERVE {
-            return margins;
-        }
-        let total_min = self.weight_n - coarse(TOTAL);
-        if total_min <= 0.0 {
-            return margins;
-        }
-        let peak = |f: usize| {
-            let (lo, hi) = fine(f);
-            lo.abs().max(hi.abs())
-        };
-        let friction =
-            self.kappa_per_m * peak(UX) * self.weight_n / total_min + self.dashpot_ns_per_m * peak(VX) / n_min;
-        margins.friction_share = friction / self.mu_static;
-        if margins.friction_share > SLIP_RESERVE {
-            return margins;
-        }
-        margins.rotation_rad = peak(THETA);
-        margins
+        (lo, hi)
+    }
+
+    /// The largest |f| over the wave, from its fine ranges on both halves.
+    fn peak(&self, f: usize) -> f64 {
+        let ((lo0, hi0), (lo1, hi1)) = (self.fine_half(f, 0), self.fine_half(f, 1));
+        let (lo, hi) = (lo0.min(lo1), hi0.max(hi1));
+        lo.abs().max(hi.abs())
+    }
+
+    /// The coarse bound of |f| over the wave: its harmonic amplitude and every mode's at a
+    /// half's start.
+    fn coarse(&self, f: usize) -> f64 {
+        (0..2)
+            .map(|half| modulus(self.harmonic(f, half)) + self.amplitudes(f, half).iter().sum::<f64>())
+            .fold(0.0, f64::max)
     }
 }
 
