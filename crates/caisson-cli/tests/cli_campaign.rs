@@ -410,7 +410,7 @@ fn bad_adaptive_solver_keys_are_named_with_the_allowed_values() {
 #[test]
 fn bad_campaign_tables_and_options_are_named() {
     let grid = "heights_m = [0.428, 0.524]\nweights_in_water_kn = [13.7, 16.2]\n";
-    let cases: [(String, &[&str], &[&str]); 12] = [
+    let cases: [(String, &[&str], &[&str]); 13] = [
         (with_campaign("[campaign]\nconditions = []\n"), &[], &["`[campaign] conditions` = []", "at least one"]),
         (
             with_campaign("[campaign]\nheights_m = [0.428, -0.5]\nweights_in_water_kn = [13.7]\n"),
@@ -439,6 +439,12 @@ fn bad_campaign_tables_and_options_are_named() {
             ),
             &[],
             &["`[campaign] conditions[0].regime` = \"maybe\"", "\"auto\""],
+        ),
+        // A condition's height is one number: its key carries no list index.
+        (
+            with_campaign("[campaign]\nconditions = [{ height_m = -0.4, weight_in_water_kn = 13.7 }]\n"),
+            &[],
+            &["`[campaign] conditions[0].height_m` = -0.4", "> 0 (m)"],
         ),
         (
             with_campaign(&format!(

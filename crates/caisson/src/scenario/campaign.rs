@@ -144,10 +144,9 @@ fn listed(list: &[ConditionTable], default_regime: RegimeChoice) -> R<Placed> {
         let w = t.weight_in_water_kn.ok_or_else(|| {
             ScenarioError::missing(&key("weight_in_water_kn"), "the caisson weight in water of this condition, kN")
         })?;
-        // Named as a list of one, as the keys have always been named ("height_m[0]").
         let c = Condition::new(h, w * 1e3, default_regime).map_err(|e| match e.quantity {
-            "height_m" => refused(&format!("{}[0]", key("height_m")), h, e),
-            _ => refused(&format!("{}[0]", key("weight_in_water_kn")), w, e),
+            "height_m" => refused(&key("height_m"), h, e),
+            _ => refused(&key("weight_in_water_kn"), w, e),
         })?;
         let regime = match &t.regime {
             Some(r) => regime_of(&key("regime"), r)?,
