@@ -52,8 +52,9 @@ impl RigidBlock {
         let h_slow = t / 2000.0;
         let h_fast = if span > 0.0 { (span / 200.0).min(h_slow) } else { h_slow };
         let bps = e.breakpoints_local();
+        let plain = e.is_plain();
         let force = |tau: f64| {
-            let w = e.at_local(tau);
+            let w = if plain { e.at_local_plain(tau) } else { e.at_local(tau) };
             (w.fx_n, w.fy_n)
         };
         let (mut tau, mut x, mut v) = (0.0f64, 0.0f64, 0.0f64);
