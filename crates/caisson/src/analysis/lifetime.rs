@@ -143,7 +143,7 @@ use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
-use crate::waves::surf_zone::goda_surf_zone;
+use crate::waves::surf_zone::SlopeTerms;
 use crate::{ParamError, G_M_PER_S2};
 use rand::Rng;
 use rand_distr::StandardNormal;
@@ -1177,6 +1177,8 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     let mut life = StormOutcome::default();
     let mut scratch = StormScratch::default();
     let site = &st.model.site;
+    // The surf zone's slope terms: the same for every storm of the life.
+    let slope = SlopeTerms::new(site.seabed_slope);
     // Errors per life: drawn once, before the first storm.
     let life_errors = (p.errors.scope == ErrorScope::Life).then(|| p.errors.draw(&mut rng));
     // Storms counted over the life: storm k draws its waves from word (k + 1) · 2^40.
@@ -1195,7 +1197,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
             let angle_rad = p.climate.direction.draw_rad(&mut rng);
             let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
-            let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
+            let z = slope.surf_zone(h0, period_s, site.depth_at_toe_m + tide_m);
             let storm = StormInput {
                 h13_m: z.h13_m * e.transformation,
                 hmax_m: z.hmax_m * e.transformation,
