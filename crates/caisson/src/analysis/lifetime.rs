@@ -51,7 +51,9 @@
 //! bounds of the loads over all heights up to H_max pass neither test
 //! ([`crate::loads::model::PeriodLoads::peak_bound`]: Goda's loads grow with the height, the
 //! impact is at most its value at Eq. 30's reduction 1, and none below the breaker height at the
-//! wall). The friction used is the smaller of μ_s and the rigid block's μ, so a screened wave
+//! wall); in the other storms the nodes up to the highest node height where those bounds up to it
+//! pass neither test (found by bisection) are false without their loads, the same grid for a
+//! seventh of the loads (design example). The friction used is the smaller of μ_s and the rigid block's μ, so a screened wave
 //! slides neither model. The share of waves screened is reported; `screen = false`
 //! runs every wave (on the same waves, [`WaveDraws::EveryWave`], the screened run gives the same
 //! totals to 1 µm per life, `tests/equiv_lifetime.rs`).
@@ -141,7 +143,7 @@ use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
-use crate::waves::surf_zone::goda_surf_zone;
+use crate::waves::surf_zone::SlopeTerms;
 use crate::{ParamError, G_M_PER_S2};
 use rand::Rng;
 use rand_distr::StandardNormal;
@@ -805,12 +807,28 @@ struct StormScreen {
     mean_period_s: f64,
     u0: f64,
     du: f64,
+    /// Nodes of the rows run that the bound left false without their loads (what the tests see
+    /// of the bisection).
+    #[cfg_attr(not(test), allow(dead_code))]
+    bound_nodes: usize,
 }
 
 impl StormScreen {
     /// The grid of storm `s` on `site` (every node false without the screen); `t13` are the
     /// loads and the bound at the storm's T1/3 (the one period node of waves at T1/3).
     fn new(st: &StormCase<'_>, s: &StormInput, site: &StormSite, t13: (&PeriodLoads<'_>, ScreenBound)) -> Self {
+        Self::grid(st, s, site, t13, true)
+    }
+
+    /// [`Self::new`]; `bisect`: leave the nodes the bound of the loads up to their height holds
+    /// without their loads (`false`: every node's loads, the tests' reference).
+    fn grid(
+        st: &StormCase<'_>,
+        s: &StormInput,
+        site: &StormSite,
+        t13: (&PeriodLoads<'_>, ScreenBound),
+        bisect: bool,
+    ) -> Self {
         let hmax = s.hmax_m.max(1e-6);
         let dh = hmax / SCREEN_CELLS as f64;
         let (periods, [u0, u1]) = match s.periods {
@@ -820,6 +838,7 @@ impl StormScreen {
         let mean_period_s = periods::MEAN_PERIOD_RATIO * s.period_s;
         let du = (u1 - u0) / PERIOD_CELLS as f64;
         let mut node = [[false; SCREEN_CELLS + 1]; PERIOD_CELLS + 1];
+        let mut bound_nodes = 0;
         for (j, row) in node.iter_mut().enumerate().take(if st.screen { periods } else { 0 }) {
             let own;
             let (loads_at, bound) = if periods == 1 {
@@ -829,15 +848,31 @@ impl StormScreen {
                 own = site.model.at_period(period_s);
                 (&own, site.bound(period_s))
             };
-            // At a period where even the bounds of the loads over all heights up to H_max cannot
-            // slide or lift the caisson every node is false: the row is not needed.
-            if loads_at.peak_bound(hmax).is_some_and(|b| !may_slide(&s.scaled(&b), &bound)) {
+            // Where even the bounds of the loads over all heights up to h cannot slide or lift the
+            // caisson, every node up to h is false: at a period where that holds for H_max the
+            // row is not needed, else the nodes up to the highest node height where it holds (by
+            // bisection; the bound covers every lower node whatever the others give) are false
+            // without their loads.
+            let still_up_to = |h: f64| loads_at.peak_bound(h).is_some_and(|b| !may_slide(&s.scaled(&b), &bound));
+            if still_up_to(hmax) {
                 continue;
+            }
+            let node_h = |i: usize| (i as f64 * dh).max(1e-3 * hmax);
+            // Nodes below `first` are false; the bound does not hold the caisson at node `last`.
+            let (mut first, mut last) = (0, SCREEN_CELLS + 1);
+            while bisect && last - first > 1 {
+                let mid = (first + last) / 2;
+                if still_up_to(node_h(mid - 1)) {
+                    first = mid;
+                } else {
+                    last = mid;
+                }
             }
             let node_may_slide =
                 |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&s.scaled(&p), &bound));
-            for (i, flag) in row.iter_mut().enumerate() {
-                *flag = node_may_slide((i as f64 * dh).max(1e-3 * hmax));
+            bound_nodes += first;
+            for (i, flag) in row.iter_mut().enumerate().skip(first) {
+                *flag = node_may_slide(node_h(i));
             }
             let hbr = loads_at.breaker_height_at_wall_m();
             if hbr < hmax {
@@ -848,7 +883,7 @@ impl StormScreen {
             }
         }
         let any = node.iter().flatten().any(|&f| f);
-        StormScreen { node, periods, any, dh, mean_period_s, u0, du }
+        StormScreen { node, periods, any, dh, mean_period_s, u0, du, bound_nodes }
     }
 
     /// The period cells of the grid.
@@ -1142,6 +1177,8 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     let mut life = StormOutcome::default();
     let mut scratch = StormScratch::default();
     let site = &st.model.site;
+    // The surf zone's slope terms: the same for every storm of the life.
+    let slope = SlopeTerms::new(site.seabed_slope);
     // Errors per life: drawn once, before the first storm.
     let life_errors = (p.errors.scope == ErrorScope::Life).then(|| p.errors.draw(&mut rng));
     // Storms counted over the life: storm k draws its waves from word (k + 1) · 2^40.
@@ -1160,7 +1197,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
             let angle_rad = p.climate.direction.draw_rad(&mut rng);
             let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
-            let z = goda_surf_zone(h0, period_s, site.depth_at_toe_m + tide_m, site.seabed_slope);
+            let z = slope.surf_zone(h0, period_s, site.depth_at_toe_m + tide_m);
             let storm = StormInput {
                 h13_m: z.h13_m * e.transformation,
                 hmax_m: z.hmax_m * e.transformation,
@@ -1406,6 +1443,56 @@ impl LifeCounts {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The screen's grid leaves out the nodes the bound of the loads up to their height holds:
+    /// the same grid as every node's loads, on the design example's site at 720 storms (heights
+    /// from calm to past breaking at the wall, three periods, tides, angles and force errors),
+    /// in most of which the bound leaves nodes out.
+    #[test]
+    fn the_bisected_screen_grid_is_every_nodes_grid() {
+        let text = include_str!("../../../../examples/design_breakwater.toml");
+        let sc =
+            crate::scenario::Scenario::from_toml(text, std::path::Path::new("design.toml"), std::path::Path::new("."))
+                .expect("the design example");
+        let st = sc.storm_case(true).expect("a design");
+        let (mut storms, mut cut, mut sliding) = (0, 0, 0);
+        for h13 in [0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 8.0, 10.0, 12.0] {
+            for period_s in [7.0, 10.0, 14.0] {
+                for tide_m in [0.0, 1.5, 3.0] {
+                    for (angle_rad, force_factor) in [(0.0, 1.0), (0.4, 0.8), (0.0, 1.3), (0.2, 1.0)] {
+                        for periods in [WavePeriods::Significant, WavePeriods::LonguetHiggins { spectral_width: 0.4 }] {
+                            let s = StormInput {
+                                h13_m: h13,
+                                hmax_m: 1.8 * h13,
+                                period_s,
+                                periods,
+                                waves: 1000,
+                                tide_m,
+                                angle_rad,
+                                force_factor,
+                                impact_factor: force_factor,
+                                friction_factor: 1.0,
+                            };
+                            let site = StormSite::new(&st, &s);
+                            let t13 = (&site.model.at_period(period_s), site.bound(period_s));
+                            let (a, b) = (
+                                StormScreen::grid(&st, &s, &site, t13, true),
+                                StormScreen::grid(&st, &s, &site, t13, false),
+                            );
+                            assert_eq!(a.node, b.node, "H1/3 {h13} m, T {period_s} s, tide {tide_m} m");
+                            storms += 1;
+                            sliding += usize::from(b.any);
+                            assert_eq!(b.bound_nodes, 0);
+                            cut += usize::from(a.bound_nodes > 0);
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(storms, 720);
+        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462.
+        assert_eq!((sliding, cut), (451, 462));
+    }
 
     #[test]
     fn extreme_value_quantiles_invert_their_distributions() {

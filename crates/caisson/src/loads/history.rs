@@ -19,6 +19,7 @@
 
 use super::shapes::{weights, Impulse};
 use super::{LoadHistory, WaveForce};
+use std::f64::consts::PI;
 use thiserror::Error;
 
 /// One load component: horizontal and vertical parts, each with its moment about the base centre
@@ -128,6 +129,45 @@ impl WaveEvent {
             + self.quasi.y.scaled(w.quasi_y)
             + self.trough.total().scaled(w.trough)
     }
+
+    /// Whether [`Self::at_local_plain`] gives [`Self::at_local`]: a pulsating wave whose impact
+    /// is +0 to the bit (as [`Self::new`] leaves it) and whose crest and trough parts are finite.
+    pub(crate) fn is_plain(&self) -> bool {
+        let zero = |w: WaveForce| [w.fx_n, w.fy_n, w.m_nm].iter().all(|v| v.to_bits() == 0);
+        let finite = |w: WaveForce| [w.fx_n, w.fy_n, w.m_nm].iter().all(|v| v.is_finite());
+        self.impulse.is_none()
+            && zero(self.impact.x)
+            && zero(self.impact.y)
+            && finite(self.quasi.x)
+            && finite(self.quasi.y)
+            && finite(self.trough.total())
+    }
+
+    /// [`Self::at_local`] of a wave that [`Self::is_plain`], bit for bit, without the terms of
+    /// weight 0. Each component of `at_local` is ((((I_x·0 + a) + I_y·0) + b) + T·0) on the crest
+    /// half (a, b the crest's parts times sin ωτ, T the trough's total) and ((((I_x·0 + Q_x·0) +
+    /// I_y·0) + Q_y·0) + T sin ωτ) on the trough half. With I = +0 and Q, T finite, every zero
+    /// product is ±0 and the first +0: +0 + a is a with −0 made +0, and adding ±0 to a sum that is
+    /// not −0 leaves it, so the crest half is (a + b) + 0 and the trough half T sin ωτ + 0 (IEEE
+    /// 754 round to nearest: x + (±0) = x for x ≠ 0, +0 + (−0) = +0).
+    #[inline]
+    pub(crate) fn at_local_plain(&self, tau_s: f64) -> WaveForce {
+        if !(tau_s >= 0.0 && tau_s < self.period_s) {
+            return WaveForce::ZERO;
+        }
+        let s = (2.0 * PI * tau_s / self.period_s).sin();
+        if tau_s < 0.5 * self.period_s {
+            let (x, y) = (self.quasi.x, self.quasi.y);
+            WaveForce {
+                fx_n: (x.fx_n * s + y.fx_n * s) + 0.0,
+                fy_n: (x.fy_n * s + y.fy_n * s) + 0.0,
+                m_nm: (x.m_nm * s + y.m_nm * s) + 0.0,
+            }
+        } else {
+            let t = self.trough.total();
+            WaveForce { fx_n: t.fx_n * s + 0.0, fy_n: t.fy_n * s + 0.0, m_nm: t.m_nm * s + 0.0 }
+        }
+    }
 }
 
 /// Errors building a wave train.
@@ -143,6 +183,8 @@ pub enum TrainError {
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct WaveTrain {
     events: Vec<WaveEvent>,
+    /// [`WaveEvent::is_plain`] of each event.
+    plain: Vec<bool>,
 }
 
 impl WaveTrain {
@@ -157,7 +199,8 @@ impl WaveTrain {
             }
             prev_end = e.end_s();
         }
-        Ok(WaveTrain { events })
+        let plain = events.iter().map(WaveEvent::is_plain).collect();
+        Ok(WaveTrain { events, plain })
     }
 
     /// Make this the train of the one wave `event` (checked as by [`Self::new`]), reusing the
@@ -165,6 +208,8 @@ impl WaveTrain {
     pub fn set_single(&mut self, event: WaveEvent) -> Result<(), TrainError> {
         check_event(0, &event)?;
         self.events.clear();
+        self.plain.clear();
+        self.plain.push(event.is_plain());
         self.events.push(event);
         Ok(())
     }
@@ -218,7 +263,11 @@ impl LoadHistory for WaveTrain {
             return WaveForce::ZERO;
         }
         let e = &self.events[j - 1];
-        e.at_local(t_s - e.start_s)
+        if self.plain[j - 1] {
+            e.at_local_plain(t_s - e.start_s)
+        } else {
+            e.at_local(t_s - e.start_s)
+        }
     }
     fn end_time_s(&self) -> Option<f64> {
         Some(self.duration_s())
@@ -275,6 +324,48 @@ mod tests {
         assert!(matches!(WaveTrain::new(vec![mk(0.0, 2.0), mk(1.0, 2.0)]), Err(TrainError::Overlap { index: 1, .. })));
         assert!(matches!(WaveTrain::new(vec![mk(0.0, 0.0)]), Err(TrainError::BadNumber { .. })));
         assert!(matches!(WaveTrain::new(vec![mk(f64::NAN, 1.0)]), Err(TrainError::BadNumber { .. })));
+    }
+
+    /// The plain evaluation of a pulsating wave gives `at_local`'s bits, signed zeros included:
+    /// crest and trough parts of either sign and zero (the sums then ±0), at 2 001 local times
+    /// from before the start to after the end (both halves, T/2 and T themselves), and on a train.
+    #[test]
+    fn plain_pulsating_waves_give_the_same_bits() {
+        let values = [0.0, -0.0, 1234.5, -987.25, 3.0e-300];
+        let mut checked = 0;
+        for (i, &a) in values.iter().enumerate() {
+            for &b in &values[i..] {
+                let quasi = LoadComponent {
+                    x: WaveForce { fx_n: a, fy_n: -0.0, m_nm: a * 0.3 },
+                    y: WaveForce { fx_n: 0.0, fy_n: b, m_nm: -b },
+                };
+                let trough = LoadComponent {
+                    x: WaveForce { fx_n: b, fy_n: 0.0, m_nm: -0.0 },
+                    y: WaveForce { fx_n: -0.0, fy_n: a, m_nm: b * 0.1 },
+                };
+                let e = WaveEvent::new(0.0, 2.5, quasi, 0.9, trough, LoadComponent::default(), None);
+                assert!(e.is_plain());
+                for k in 0..=2000 {
+                    let tau = -0.1 + 2.7 * k as f64 / 2000.0;
+                    for tau in [tau, 1.25, 2.5, 0.0] {
+                        let (w, p) = (e.at_local(tau), e.at_local_plain(tau));
+                        for (u, v) in [(w.fx_n, p.fx_n), (w.fy_n, p.fy_n), (w.m_nm, p.m_nm)] {
+                            assert_eq!(u.to_bits(), v.to_bits(), "a {a} b {b} tau {tau}: {u} vs {v}");
+                        }
+                        checked += 1;
+                    }
+                }
+                let train = WaveTrain::new(vec![e]).unwrap();
+                assert_eq!(train.at(0.7), e.at_local(0.7));
+            }
+        }
+        assert_eq!(checked, 15 * 2001 * 4);
+        // An impulsive wave, or one with an impact that is not +0, takes the general path.
+        let imp = Impulse { shape: LoadShape::Seed, rise_s: 0.1, duration_s: 0.2 };
+        assert!(!WaveEvent::new(0.0, 3.0, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), comp(5.0, 1.0), Some(imp)).is_plain());
+        let mut e = WaveEvent::new(0.0, 3.0, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), LoadComponent::default(), None);
+        e.impact.x.m_nm = -0.0;
+        assert!(!e.is_plain());
     }
 
     #[test]

@@ -38,30 +38,54 @@ pub fn kweon_goda_shoaling(depth_m: f64, period_s: f64, h0_prime_m: f64) -> f64 
 /// Goda's H1/3 and H_max at depth `depth_m` for deep-water H0' `h0_prime_m`, period T1/3
 /// `period_s` and seabed slope tan θ `slope` (≥ 0).
 pub fn goda_surf_zone(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64) -> SurfZoneHeights {
-    surf_zone_with(h0_prime_m, period_s, depth_m, slope, linear_shoaling_coefficient(period_s, depth_m))
+    SlopeTerms::new(slope).surf_zone(h0_prime_m, period_s, depth_m)
 }
 
-/// [`goda_surf_zone`] with the linear shoaling coefficient K_si at `depth_m` given (it does not
-/// depend on H0': a search over H0' solves the dispersion relation once).
-fn surf_zone_with(h0_prime_m: f64, period_s: f64, depth_m: f64, slope: f64, ksi: f64) -> SurfZoneHeights {
-    let l0 = deep_water_wavelength_m(period_s);
-    let ks = ksi + 0.0015 * (depth_m / l0).powf(-2.87) * (h0_prime_m / l0).powf(1.27);
-    let shoaled = ks * h0_prime_m;
-    if depth_m / l0 >= 0.2 {
-        return SurfZoneHeights { h13_m: shoaled, hmax_m: 1.8 * shoaled, shoaling: ks };
+/// The factors of Goda's β coefficients that depend on the seabed slope alone (module docs):
+/// exp(20 tan^1.5 θ), β1, exp(2.4 tan θ) and β1*, for many storms on one slope.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlopeTerms {
+    e20: f64,
+    beta1: f64,
+    e24: f64,
+    beta1s: f64,
+}
+
+impl SlopeTerms {
+    /// The terms of the slope tan θ `slope` (negative taken as 0).
+    pub fn new(slope: f64) -> Self {
+        let s = slope.max(0.0);
+        SlopeTerms {
+            e20: (20.0 * s.powf(1.5)).exp(),
+            beta1: 0.52 * (4.2 * s).exp(),
+            e24: (2.4 * s).exp(),
+            beta1s: 0.63 * (3.8 * s).exp(),
+        }
     }
-    let s = slope.max(0.0);
-    let steep = h0_prime_m / l0;
-    let e20 = (20.0 * s.powf(1.5)).exp();
-    let beta0 = 0.028 * steep.powf(-0.38) * e20;
-    let beta1 = 0.52 * (4.2 * s).exp();
-    let beta_max = (0.32 * steep.powf(-0.29) * (2.4 * s).exp()).max(0.92);
-    let beta0s = 0.052 * steep.powf(-0.38) * e20;
-    let beta1s = 0.63 * (3.8 * s).exp();
-    let beta_maxs = (0.53 * steep.powf(-0.29) * (2.4 * s).exp()).max(1.65);
-    let h13_m = (beta0 * h0_prime_m + beta1 * depth_m).min(beta_max * h0_prime_m).min(shoaled);
-    let hmax_m = (beta0s * h0_prime_m + beta1s * depth_m).min(beta_maxs * h0_prime_m).min(1.8 * shoaled);
-    SurfZoneHeights { h13_m, hmax_m, shoaling: ks }
+
+    /// [`goda_surf_zone`] on this slope: the same numbers, the slope's terms computed once.
+    pub fn surf_zone(&self, h0_prime_m: f64, period_s: f64, depth_m: f64) -> SurfZoneHeights {
+        self.surf_zone_with(h0_prime_m, period_s, depth_m, linear_shoaling_coefficient(period_s, depth_m))
+    }
+
+    /// [`Self::surf_zone`] with the linear shoaling coefficient K_si at `depth_m` given (it does
+    /// not depend on H0': a search over H0' solves the dispersion relation once).
+    fn surf_zone_with(&self, h0_prime_m: f64, period_s: f64, depth_m: f64, ksi: f64) -> SurfZoneHeights {
+        let l0 = deep_water_wavelength_m(period_s);
+        let ks = ksi + 0.0015 * (depth_m / l0).powf(-2.87) * (h0_prime_m / l0).powf(1.27);
+        let shoaled = ks * h0_prime_m;
+        if depth_m / l0 >= 0.2 {
+            return SurfZoneHeights { h13_m: shoaled, hmax_m: 1.8 * shoaled, shoaling: ks };
+        }
+        let steep = h0_prime_m / l0;
+        let beta0 = 0.028 * steep.powf(-0.38) * self.e20;
+        let beta_max = (0.32 * steep.powf(-0.29) * self.e24).max(0.92);
+        let beta0s = 0.052 * steep.powf(-0.38) * self.e20;
+        let beta_maxs = (0.53 * steep.powf(-0.29) * self.e24).max(1.65);
+        let h13_m = (beta0 * h0_prime_m + self.beta1 * depth_m).min(beta_max * h0_prime_m).min(shoaled);
+        let hmax_m = (beta0s * h0_prime_m + self.beta1s * depth_m).min(beta_maxs * h0_prime_m).min(1.8 * shoaled);
+        SurfZoneHeights { h13_m, hmax_m, shoaling: ks }
+    }
 }
 
 /// Design heights for Goda's pressure formula (docs/model.md §1.3, §3.3): H1/3 at the site depth
@@ -83,7 +107,8 @@ pub fn equivalent_deep_water_height_m(h13_m: f64, period_s: f64, depth_m: f64, s
         return None;
     }
     let ksi = linear_shoaling_coefficient(period_s, depth_m);
-    let h13 = |h0: f64| surf_zone_with(h0, period_s, depth_m, slope, ksi).h13_m;
+    let terms = SlopeTerms::new(slope);
+    let h13 = |h0: f64| terms.surf_zone_with(h0, period_s, depth_m, ksi).h13_m;
     // A bracket [lo, hi] with H1/3(lo) < h13_m ≤ H1/3(hi), from H0' = H1/3 by halving or doubling
     // (K_s ≥ 0.9 and β_max ≥ 0.92: H1/3 is of the order of H0').
     let f = |h0: f64| h13(h0) - h13_m;
