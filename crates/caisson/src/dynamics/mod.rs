@@ -48,11 +48,14 @@
 //! `max_substep_levels` times in a row).
 //!
 //! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
-//! all-sticking state, a step of dt_max/2^k (k = 0, 1, 2: `exact`'s ladder) with no load
+//! state where every spring in contact sticks (all of them in contact, or with
+//! [`SolverParams::locate_contact`] some lifted), a step of dt_max/2^k (k = 0 … 3: `exact`'s
+//! ladder, one per contact set) with no load
 //! breakpoint inside it is solved exactly (`exact`: the linear part by its matrix exponential,
 //! the shear's bilinear remainder and the load interpolated quadratically), and kept if every
-//! spring sticks at its end and in its middle and its error estimate is within the tolerance
-//! (else the next shorter rung); otherwise the Newmark step is taken from the same state.
+//! spring in contact sticks at its end and in its middle (and, springs lifted, at its quarter
+//! points, with the contact set unchanged) and its error estimate is within the tolerance (else
+//! the next shorter rung); otherwise the Newmark step is taken from the same state.
 //!
 //! **Events**: a converged step in which a spring that was in contact and sticking starts to
 //! slip is not committed if the onset falls inside it: the friction margin of that spring held
@@ -489,6 +492,9 @@ pub struct SolverStats {
     /// All-sticking steps solved exactly (`exact`); not reported.
     #[serde(skip)]
     pub exact_steps: u64,
+    /// Those of them with springs lifted (`exact`, "Partial contact"); not reported.
+    #[serde(skip)]
+    pub exact_partial_steps: u64,
 }
 
 /// A running simulation: model, solver controls, committed state and scratch.
@@ -1277,12 +1283,13 @@ impl Simulation {
             if t >= bp {
                 bp = load.next_breakpoint_s(t);
             }
-            // From an all-sticking state, an exact step if one fits before the breakpoint
-            // (`exact`); where a spring would slip or lift, the Newmark step instead.
+            // From a state where every spring in contact sticks, an exact step if one fits before
+            // the breakpoint (`exact`); where a spring would slip, lift or touch down, the
+            // Newmark step instead.
             if level == 0
                 && !at_event
-                && self.fast.direct
                 && t >= self.exact_retry_s
+                && self.exact_may_start()
                 && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs)
             {
                 continue;

@@ -371,6 +371,45 @@ impl Simulation {
         [fs.n, fs.sum_x, fs.s_ref_m, fs.sum_d, fs.sum_xd]
     }
 
+    /// [`Self::slip_sums`] over the springs lo..hi only, s_1 the slip position of spring lo: a
+    /// partial contact set's (`exact`, "Partial contact").
+    pub(super) fn set_slip_sums(&mut self, lo: usize, hi: usize) -> [f64; 5] {
+        if !self.fast.valid {
+            self.refresh_fast_path();
+        }
+        let (x_m, slip_m) = (&self.model.x_m[lo..hi], &self.fast.slip_m[lo..hi]);
+        let s_ref_m = slip_m[0];
+        let (mut n, mut sum_x, mut sum_d, mut sum_xd) = (0.0, 0.0, 0.0, 0.0);
+        for (&x, &s) in x_m.iter().zip(slip_m) {
+            let d = s - s_ref_m;
+            n += 1.0;
+            sum_x += x;
+            sum_d += d;
+            sum_xd += x * d;
+        }
+        [n, sum_x, s_ref_m, sum_d, sum_xd]
+    }
+
+    /// Whether the springs lo..hi, none of them slipping at the committed state, are in contact
+    /// and stick at the trial displacement `u` of a step of length `h`: the spring law's own test
+    /// of each ([`Self::all_stick`]'s for a partial contact set, `exact`).
+    pub(super) fn set_sticks(&mut self, lo: usize, hi: usize, u: [f64; 3], h: f64) -> bool {
+        if !self.fast.valid {
+            self.refresh_fast_path();
+        }
+        let law = self.model.law;
+        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+        let (ux_n, shift) = (self.state.u[0], 0.5 * h * self.state.v[0]);
+        let fs = &self.fast;
+        let (x_m, slip_m, limit_m) = (&self.model.x_m[lo..hi], &fs.slip_m[lo..hi], &fs.limit_m[lo..hi]);
+        let mut fails = 0u32;
+        for ((&x, &s), &limit) in x_m.iter().zip(slip_m).zip(limit_m) {
+            let e_bar = ux_n - s + shift;
+            fails += u32::from(!law.sticks(s, limit, u[0], u[1] - u[2] * x, e_bar, c_prime));
+        }
+        fails == 0
+    }
+
     /// Whether a spring was slipping at the committed state.
     #[inline]
     pub(super) fn committed_sliding(&self) -> bool {
