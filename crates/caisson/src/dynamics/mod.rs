@@ -505,6 +505,9 @@ pub struct Simulation {
     state: State,
     /// The springs' trial responses at the last iterate.
     trial: Vec<SpringResponse>,
+    /// A spring slips in `trial` (the general path's last iterate): without one,
+    /// [`Self::event_fraction`] has no slip onset to look for.
+    trial_slips: bool,
     pub stats: SolverStats,
     gravity: Vector3<f64>,
     /// Adaptive stepping: the next step to try, s.
@@ -555,6 +558,7 @@ impl Simulation {
             solver,
             state,
             trial: vec![SpringResponse::default(); n],
+            trial_slips: false,
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
             h_next: solver.dt_s,
@@ -726,7 +730,9 @@ impl Simulation {
         }
         // The sums, spring by spring in a second pass (fewer values live in the first).
         let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
+        let mut slips = false;
         for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
+            slips |= r.state.sliding;
             if cdy > 0.0 && dashpot_acts(EVENT, uy_n - th_n * x, r.normal_n) {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
                 // local vertical coordinate u_y − θ x.
@@ -738,6 +744,7 @@ impl Simulation {
             f1 -= r.normal_n;
             f2 += x * r.normal_n;
         }
+        self.trial_slips = slips;
         Vector3::new(f0, f1, f2)
     }
 
@@ -819,10 +826,11 @@ impl Simulation {
                 }
             }
         }
-        if !all_stick {
+        if !all_stick && self.trial_slips {
             // The springs' responses at the converged iterate (the general path's) say which
             // ones slip at the step's end; only those that stuck at its start are measured (when
-            // every spring sticks at the step's end, none).
+            // every spring sticks at the step's end, none; `trial_slips`, summed with them, says
+            // whether one slips without walking them).
             let (un, law) = (self.state.u, self.model.law);
             let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial).enumerate();
             for (i, _) in starts.filter(|(_, ((_, s), r))| r.state.sliding && !s.sliding && r.normal_n > 0.0) {
