@@ -619,12 +619,18 @@ impl Observer for WaveWatch {
     #[inline]
     fn observe(&mut self, s: &StepView<'_>) {
         self.max_rotation_rad = self.max_rotation_rad.max(s.state.u[2].abs());
-        self.lifted |= s.reaction.contact_springs < s.state.springs.len();
+        // A spring out of contact (N_i ≤ 0, as the reaction counts them), once is enough.
+        self.lifted = self.lifted || !s.springs.iter().all(|r| r.normal_n > 0.0);
     }
-    /// Only the reaction's count of springs in contact: an all-sticking step need not build the
-    /// springs' responses (every spring is then in contact).
+    /// The springs' responses, not built for an all-sticking step (the slice is then empty:
+    /// every spring is in contact).
     #[inline]
     fn reads_springs(&self) -> bool {
+        false
+    }
+    /// Not the reaction: whether a spring lifted is read from the springs' responses.
+    #[inline]
+    fn reads_reaction(&self) -> bool {
         false
     }
 }

@@ -423,6 +423,7 @@ pub struct StepView<'a> {
     pub t_s: f64,
     pub state: &'a State,
     pub load: WaveForce,
+    /// All zeros for an observer that does not read it ([`Observer::reads_reaction`]).
     pub reaction: Reaction,
     /// The springs' responses; empty on an all-sticking step for an observer that does not read
     /// them ([`Observer::reads_springs`]).
@@ -449,6 +450,12 @@ pub trait Observer {
     /// the springs' responses of an all-sticking step (the slice is then empty).
     #[inline]
     fn reads_springs(&self) -> bool {
+        true
+    }
+    /// Whether [`Self::observe`] reads [`StepView::reaction`]; `false` spares the engine summing
+    /// the base reaction of every step (the view's is then [`Reaction::default`], all zeros).
+    #[inline]
+    fn reads_reaction(&self) -> bool {
         true
     }
 }
@@ -504,6 +511,9 @@ pub struct Simulation {
     state: State,
     /// The springs' trial responses at the last iterate.
     trial: Vec<SpringResponse>,
+    /// A spring slips in `trial` (the general path's last iterate): without one,
+    /// [`Self::event_fraction`] has no slip onset to look for.
+    trial_slips: bool,
     pub stats: SolverStats,
     gravity: Vector3<f64>,
     /// Adaptive stepping: the next step to try, s.
@@ -554,6 +564,7 @@ impl Simulation {
             solver,
             state,
             trial: vec![SpringResponse::default(); n],
+            trial_slips: false,
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
             h_next: solver.dt_s,
@@ -630,6 +641,16 @@ impl Simulation {
         reaction.horizontal_n += reaction.dashpot_horizontal_n;
         reaction.dashpot_moment_nm += self.model.damping[(2, 2)] * v[2];
         reaction
+    }
+    /// [`Self::reaction`] for the observer `obs`'s view of the committed step: zeros if it does
+    /// not read it ([`Observer::reads_reaction`]).
+    #[inline]
+    fn observed_reaction<O: Observer + ?Sized>(&self, obs: &O) -> Reaction {
+        if obs.reads_reaction() {
+            self.reaction()
+        } else {
+            Reaction::default()
+        }
     }
     /// The springs' responses at the committed step (the static equilibrium after [`Self::new`]
     /// and [`Self::reset`]).
@@ -715,7 +736,9 @@ impl Simulation {
         }
         // The sums, spring by spring in a second pass (fewer values live in the first).
         let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
+        let mut slips = false;
         for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
+            slips |= r.state.sliding;
             if cdy > 0.0 && dashpot_acts(EVENT, uy_n - th_n * x, r.normal_n) {
                 // Vertical dashpot beside the spring: resisting force c (v_y − θ̇ x) on the
                 // local vertical coordinate u_y − θ x.
@@ -727,6 +750,7 @@ impl Simulation {
             f1 -= r.normal_n;
             f2 += x * r.normal_n;
         }
+        self.trial_slips = slips;
         Vector3::new(f0, f1, f2)
     }
 
@@ -808,10 +832,11 @@ impl Simulation {
                 }
             }
         }
-        if !all_stick {
+        if !all_stick && self.trial_slips {
             // The springs' responses at the converged iterate (the general path's) say which
             // ones slip at the step's end; only those that stuck at its start are measured (when
-            // every spring sticks at the step's end, none).
+            // every spring sticks at the step's end, none; `trial_slips`, summed with them, says
+            // whether one slips without walking them).
             let (un, law) = (self.state.u, self.model.law);
             let starts = self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial).enumerate();
             for (i, _) in starts.filter(|(_, ((_, s), r))| r.state.sliding && !s.sliding && r.normal_n > 0.0) {
@@ -1208,7 +1233,7 @@ impl Simulation {
                         t_s: self.state.t_s,
                         state: &self.state,
                         load: w,
-                        reaction: self.reaction(),
+                        reaction: self.observed_reaction(obs),
                         springs: self.step_springs(),
                         iterations: it,
                     });
@@ -1424,7 +1449,7 @@ impl Simulation {
                 t_s: t1,
                 state: &self.state,
                 load: w,
-                reaction: self.reaction(),
+                reaction: self.observed_reaction(obs),
                 springs: self.step_springs(),
                 iterations: it,
             });
@@ -1711,5 +1736,59 @@ mod tests {
             }
         }
         assert_eq!(checked, 4 * 9);
+    }
+
+    /// Whether a spring is out of contact at each step, as an observer that reads neither the
+    /// springs' responses of an all-sticking step nor the reaction (the lifetime's) sees it.
+    struct Lift<const REACTION: bool>(Vec<bool>, usize);
+    impl<const REACTION: bool> Observer for Lift<REACTION> {
+        fn observe(&mut self, s: &StepView<'_>) {
+            let lifted = if REACTION {
+                s.reaction.contact_springs < s.state.springs.len()
+            } else {
+                assert_eq!(s.reaction, Reaction::default(), "not summed");
+                !s.springs.iter().all(|r| r.normal_n > 0.0)
+            };
+            self.0.push(lifted);
+            self.1 += s.springs.is_empty() as usize;
+        }
+        fn reads_springs(&self) -> bool {
+            false
+        }
+        fn reads_reaction(&self) -> bool {
+            REACTION
+        }
+    }
+
+    /// An observer that does not read the reaction is shown zeros, and a spring out of contact
+    /// in the springs' responses (none when they are not built, on an all-sticking step) at
+    /// exactly the steps where the reaction counts fewer springs in contact than there are:
+    /// through a pulse that rocks the caisson (its seaward springs lift) with fixed and adaptive
+    /// steps and both vertical dashpot placements; steps lifted, sticking (springs not built)
+    /// and neither in each run.
+    #[test]
+    fn lift_seen_without_the_reaction() {
+        use crate::loads::pulse::TrianglePulse;
+        let load =
+            TrianglePulse { peak: WaveForce::from_levers(15e3, 0.8, 3e3, 0.52, 0.78), rise_s: 0.2, start_s: 0.0 };
+        let mut runs = 0;
+        for stepping in [Stepping::Fixed, Stepping::Adaptive(AdaptiveParams::default())] {
+            for vertical in [VerticalDamping::Seed, VerticalDamping::Springs] {
+                let solver = SolverParams { stepping, ..SolverParams::default() };
+                let run = |obs: &mut dyn Observer| {
+                    let mut sim = simulation_with(DampingMode::Elastic, vertical, MassMatrix::Coupled, solver);
+                    sim.run_until(0.2, &load, obs).unwrap();
+                };
+                let (mut by_reaction, mut by_springs) = (Lift::<true>(Vec::new(), 0), Lift::<false>(Vec::new(), 0));
+                run(&mut by_reaction);
+                run(&mut by_springs);
+                assert_eq!(by_reaction.0, by_springs.0, "{stepping:?}/{vertical:?}");
+                let lifted = by_springs.0.iter().filter(|&&l| l).count();
+                let (steps, sticking) = (by_springs.0.len(), by_springs.1);
+                assert!(lifted > 0 && sticking > 0 && lifted + sticking < steps, "{lifted} {sticking} {steps}");
+                runs += 1;
+            }
+        }
+        assert_eq!(runs, 4);
     }
 }
