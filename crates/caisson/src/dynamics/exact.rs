@@ -243,7 +243,14 @@ thread_local! {
 /// one for one (the same bits), with the six rows side by side, which the compiler vectorizes.
 #[inline(always)]
 fn mul<const K: usize>(columns: &[[f64; 6]; K], x: &[f64; K]) -> [f64; 6] {
-    let mut y = [-0.0; 6];
+    rows(columns, x)
+}
+
+/// The first `R` rows of [`mul`], each with the same operations (the same bits): the positions
+/// of a state without its velocities.
+#[inline(always)]
+fn rows<const R: usize, const K: usize>(columns: &[[f64; 6]; K], x: &[f64; K]) -> [f64; R] {
+    let mut y = [-0.0; R];
     for (column, &xk) in columns.iter().zip(x) {
         for (yi, &m) in y.iter_mut().zip(column) {
             *yi += m * xk;
@@ -608,17 +615,22 @@ impl Simulation {
             }
         };
         // The state at σ inside the step under the same interpolated force.
-        let at = |e0: &[[f64; 6]; 6], w: &[Block; 3]| {
-            let mut ys = mul(e0, &y0);
-            for (w, ck) in w.iter().zip(&c) {
-                ys.iter_mut().zip(mul(w, ck)).for_each(|(a, b)| *a += b);
+        fn at<const R: usize>(y0: &[f64; 6], c: &[[f64; 3]; 3], e0: &[[f64; 6]; 6], w: &[Block; 3]) -> [f64; R] {
+            let mut ys = rows::<R, 6>(e0, y0);
+            for (w, ck) in w.iter().zip(c) {
+                ys.iter_mut().zip(rows::<R, 3>(w, ck)).for_each(|(a, b)| *a += b);
             }
             ys
+        }
+        // The middle: all of it for a partial set's samples, its positions for full contact.
+        let ym = (!full).then(|| at::<6>(&y0, &c, &pr.half_e0, &pr.half_c));
+        let qm: [f64; 3] = match &ym {
+            Some(y) => [y[0], y[1], y[2]],
+            None => at::<3>(&y0, &c, &pr.half_e0, &pr.half_c),
         };
-        let ym = at(&pr.half_e0, &pr.half_c);
         // The error estimate: R in the middle against its interpolation there, as a force through
         // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
-        let dr = r_of(&ym) - r_mid;
+        let dr = r_of(&qm) - r_mid;
         let w = &pr.middle[1][0];
         let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
         if err > tolerance_m || err.is_nan() {
@@ -631,15 +643,19 @@ impl Simulation {
         if full {
             // Every spring must stick in the middle of the step and at its end (the spring law's
             // own test; the last one records the sums of the commit and the base reaction).
-            if !self.all_stick(to_u(&ym), 0.5 * h) {
+            if !self.all_stick([qm[0] + s1, qm[1], qm[2]], 0.5 * h) {
                 return Err(Refused::Stick);
             }
             self.sticking_force(u, v, h).ok_or(Refused::Stick)?;
         } else {
             // The springs of the set stick, and the set holds, at the quarter points, the middle
             // and the end; the set holds between them too (module docs, "Partial contact").
-            let [yq1, yq3] =
-                pr.quarters.as_ref().map(|[a, b]| [at(&a.e0, &a.c), at(&b.e0, &b.c)]).ok_or(Refused::Stick)?;
+            let [yq1, yq3] = pr
+                .quarters
+                .as_ref()
+                .map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)])
+                .ok_or(Refused::Stick)?;
+            let ym = ym.expect("computed for a partial set");
             let samples = [(0.0, y0), (0.25 * h, yq1), (0.5 * h, ym), (0.75 * h, yq3), (h, y)];
             let springs = self.model.x_m.len();
             let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
