@@ -179,7 +179,8 @@ impl ContactSet {
 /// to try next.
 #[derive(Debug, Clone)]
 pub(super) struct Ladder {
-    dt_max_s: f64,
+    /// The step length of each rung, dt_max/2^k, s.
+    h_s: [f64; RUNGS],
     rungs: Rungs,
     /// a_r = W'/n, N.
     a_ref: f64,
@@ -366,8 +367,9 @@ impl Ladder {
             l[CACHED_LADDERS - 1] = Some((key, model.x_m.clone(), r.clone()));
             r
         });
+        let h_s = std::array::from_fn(|k| dt_max_s / (1u32 << k) as f64);
         let ladder =
-            Ladder { dt_max_s, rungs, a_ref: model.weight_n / n as f64, k: 0, set: 0, ceiling_s: f64::NEG_INFINITY };
+            Ladder { h_s, rungs, a_ref: model.weight_n / n as f64, k: 0, set: 0, ceiling_s: f64::NEG_INFINITY };
         ladder.rung(model, ContactSet::new(0, n, n), 0)?;
         Some(ladder)
     }
@@ -375,7 +377,7 @@ impl Ladder {
     /// The step length of rung `k`, s.
     #[inline]
     pub fn h(&self, k: usize) -> f64 {
-        self.dt_max_s / (1u32 << k) as f64
+        self.h_s[k]
     }
 
     /// The propagators of rung `k` of contact set `set`, built if they are not yet.
@@ -532,8 +534,10 @@ impl Simulation {
         let (un, vn) = (self.state.u, self.state.v);
         let y0 = [un[0] - s1, un[1], un[2], vn[0], vn[1], vn[2]];
         let r0 = r_of(&y0);
-        // Ṙ at the start: R's gradient in q times q̇.
-        let r0_rate = {
+        // Ṙ at the start: R's gradient in q times q̇ (needed with a middle third only).
+        let r0_rate = if let Third::Before(_) = third {
+            0.0
+        } else {
             let (a, b) = (-ky * y0[1], ky * y0[2]);
             let (se, sxe) = (n * y0[0] - sum_d, sx * y0[0] - sum_xd);
             kappa * (-ky * y0[4] * se + (a - a_ref) * n * y0[3] + ky * y0[5] * sxe + b * sx * y0[3])
