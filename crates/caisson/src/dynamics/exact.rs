@@ -99,7 +99,7 @@
 //! (the general path), as the Newmark step that would end there.
 
 use super::{Converged, Model, Observer, Simulation};
-use crate::loads::LoadHistory;
+use crate::loads::{LoadHistory, WaveForce};
 use nalgebra::{Matrix3, SMatrix, Vector3};
 use std::sync::{Arc, OnceLock};
 
@@ -458,15 +458,23 @@ impl Simulation {
             Some((tl, p)) if tl == t => p,
             _ => self.load_vector(load.at(t)),
         };
+        // The wave at a refused try's middle: the end of the next rung's.
+        let mut middle: Option<(f64, WaveForce)> = None;
         for k in first..RUNGS {
             let ladder = self.exact.as_ref().expect("checked above");
             let h = ladder.h(k);
             let t1 = t + h;
+            let known = middle.take().filter(|&(tm, _)| tm == t1);
             let third = match self.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h && p.set == set.index) {
                 Some(p) => Third::Before(p.p_start),
-                None => Third::Middle(self.load_vector(load.at(t + 0.5 * h))),
+                None => {
+                    let tm = t + 0.5 * h;
+                    let w = load.at(tm);
+                    middle = Some((tm, w));
+                    Third::Middle(self.load_vector(w))
+                }
             };
-            let w1 = load.at(t1);
+            let w1 = known.map_or_else(|| load.at(t1), |(_, w)| w);
             match self.exact_sticking_step(set, k, p0, self.load_vector(w1), third, tolerance_m) {
                 Ok(c) => {
                     self.stats.exact_steps += 1;
