@@ -99,7 +99,7 @@
 //! (the general path), as the Newmark step that would end there.
 
 use super::{Converged, Model, Observer, Simulation};
-use crate::loads::LoadHistory;
+use crate::loads::{LoadHistory, WaveForce};
 use nalgebra::{Matrix3, SMatrix, Vector3};
 use std::sync::{Arc, OnceLock};
 
@@ -179,7 +179,8 @@ impl ContactSet {
 /// to try next.
 #[derive(Debug, Clone)]
 pub(super) struct Ladder {
-    dt_max_s: f64,
+    /// The step length of each rung, dt_max/2^k, s.
+    h_s: [f64; RUNGS],
     rungs: Rungs,
     /// a_r = W'/n, N.
     a_ref: f64,
@@ -243,7 +244,14 @@ thread_local! {
 /// one for one (the same bits), with the six rows side by side, which the compiler vectorizes.
 #[inline(always)]
 fn mul<const K: usize>(columns: &[[f64; 6]; K], x: &[f64; K]) -> [f64; 6] {
-    let mut y = [-0.0; 6];
+    rows(columns, x)
+}
+
+/// The first `R` rows of [`mul`], each with the same operations (the same bits): the positions
+/// of a state without its velocities.
+#[inline(always)]
+fn rows<const R: usize, const K: usize>(columns: &[[f64; 6]; K], x: &[f64; K]) -> [f64; R] {
+    let mut y = [-0.0; R];
     for (column, &xk) in columns.iter().zip(x) {
         for (yi, &m) in y.iter_mut().zip(column) {
             *yi += m * xk;
@@ -359,8 +367,9 @@ impl Ladder {
             l[CACHED_LADDERS - 1] = Some((key, model.x_m.clone(), r.clone()));
             r
         });
+        let h_s = std::array::from_fn(|k| dt_max_s / (1u32 << k) as f64);
         let ladder =
-            Ladder { dt_max_s, rungs, a_ref: model.weight_n / n as f64, k: 0, set: 0, ceiling_s: f64::NEG_INFINITY };
+            Ladder { h_s, rungs, a_ref: model.weight_n / n as f64, k: 0, set: 0, ceiling_s: f64::NEG_INFINITY };
         ladder.rung(model, ContactSet::new(0, n, n), 0)?;
         Some(ladder)
     }
@@ -368,7 +377,7 @@ impl Ladder {
     /// The step length of rung `k`, s.
     #[inline]
     pub fn h(&self, k: usize) -> f64 {
-        self.dt_max_s / (1u32 << k) as f64
+        self.h_s[k]
     }
 
     /// The propagators of rung `k` of contact set `set`, built if they are not yet.
@@ -449,15 +458,23 @@ impl Simulation {
             Some((tl, p)) if tl == t => p,
             _ => self.load_vector(load.at(t)),
         };
+        // The wave at a refused try's middle: the end of the next rung's.
+        let mut middle: Option<(f64, WaveForce)> = None;
         for k in first..RUNGS {
             let ladder = self.exact.as_ref().expect("checked above");
             let h = ladder.h(k);
             let t1 = t + h;
+            let known = middle.take().filter(|&(tm, _)| tm == t1);
             let third = match self.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h && p.set == set.index) {
                 Some(p) => Third::Before(p.p_start),
-                None => Third::Middle(self.load_vector(load.at(t + 0.5 * h))),
+                None => {
+                    let tm = t + 0.5 * h;
+                    let w = load.at(tm);
+                    middle = Some((tm, w));
+                    Third::Middle(self.load_vector(w))
+                }
             };
-            let w1 = load.at(t1);
+            let w1 = known.map_or_else(|| load.at(t1), |(_, w)| w);
             match self.exact_sticking_step(set, k, p0, self.load_vector(w1), third, tolerance_m) {
                 Ok(c) => {
                     self.stats.exact_steps += 1;
@@ -525,8 +542,10 @@ impl Simulation {
         let (un, vn) = (self.state.u, self.state.v);
         let y0 = [un[0] - s1, un[1], un[2], vn[0], vn[1], vn[2]];
         let r0 = r_of(&y0);
-        // Ṙ at the start: R's gradient in q times q̇.
-        let r0_rate = {
+        // Ṙ at the start: R's gradient in q times q̇ (needed with a middle third only).
+        let r0_rate = if let Third::Before(_) = third {
+            0.0
+        } else {
             let (a, b) = (-ky * y0[1], ky * y0[2]);
             let (se, sxe) = (n * y0[0] - sum_d, sx * y0[0] - sum_xd);
             kappa * (-ky * y0[4] * se + (a - a_ref) * n * y0[3] + ky * y0[5] * sxe + b * sx * y0[3])
@@ -608,17 +627,22 @@ impl Simulation {
             }
         };
         // The state at σ inside the step under the same interpolated force.
-        let at = |e0: &[[f64; 6]; 6], w: &[Block; 3]| {
-            let mut ys = mul(e0, &y0);
-            for (w, ck) in w.iter().zip(&c) {
-                ys.iter_mut().zip(mul(w, ck)).for_each(|(a, b)| *a += b);
+        fn at<const R: usize>(y0: &[f64; 6], c: &[[f64; 3]; 3], e0: &[[f64; 6]; 6], w: &[Block; 3]) -> [f64; R] {
+            let mut ys = rows::<R, 6>(e0, y0);
+            for (w, ck) in w.iter().zip(c) {
+                ys.iter_mut().zip(rows::<R, 3>(w, ck)).for_each(|(a, b)| *a += b);
             }
             ys
+        }
+        // The middle: all of it for a partial set's samples, its positions for full contact.
+        let ym = (!full).then(|| at::<6>(&y0, &c, &pr.half_e0, &pr.half_c));
+        let qm: [f64; 3] = match &ym {
+            Some(y) => [y[0], y[1], y[2]],
+            None => at::<3>(&y0, &c, &pr.half_e0, &pr.half_c),
         };
-        let ym = at(&pr.half_e0, &pr.half_c);
         // The error estimate: R in the middle against its interpolation there, as a force through
         // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
-        let dr = r_of(&ym) - r_mid;
+        let dr = r_of(&qm) - r_mid;
         let w = &pr.middle[1][0];
         let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
         if err > tolerance_m || err.is_nan() {
@@ -631,15 +655,19 @@ impl Simulation {
         if full {
             // Every spring must stick in the middle of the step and at its end (the spring law's
             // own test; the last one records the sums of the commit and the base reaction).
-            if !self.all_stick(to_u(&ym), 0.5 * h) {
+            if !self.all_stick([qm[0] + s1, qm[1], qm[2]], 0.5 * h) {
                 return Err(Refused::Stick);
             }
             self.sticking_force(u, v, h).ok_or(Refused::Stick)?;
         } else {
             // The springs of the set stick, and the set holds, at the quarter points, the middle
             // and the end; the set holds between them too (module docs, "Partial contact").
-            let [yq1, yq3] =
-                pr.quarters.as_ref().map(|[a, b]| [at(&a.e0, &a.c), at(&b.e0, &b.c)]).ok_or(Refused::Stick)?;
+            let [yq1, yq3] = pr
+                .quarters
+                .as_ref()
+                .map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)])
+                .ok_or(Refused::Stick)?;
+            let ym = ym.expect("computed for a partial set");
             let samples = [(0.0, y0), (0.25 * h, yq1), (0.5 * h, ym), (0.75 * h, yq3), (h, y)];
             let springs = self.model.x_m.len();
             let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
