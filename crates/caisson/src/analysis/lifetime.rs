@@ -959,11 +959,10 @@ impl WaveRun<'_> {
             (&own, site.bound(period_s))
         };
         // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
-        let loads = match loads_at.evaluate_with(h, site.model.options.regime) {
-            Ok(l) => l,
-            Err(_) => loads_at.evaluate_with(h, RegimeChoice::Auto).expect("the automatic regime always applies"),
+        let e = match loads_at.event(h, site.model.options.regime, z) {
+            Ok(e) => e,
+            Err(_) => loads_at.event(h, RegimeChoice::Auto, z).expect("the automatic regime always applies"),
         };
-        let e = site.model.event(&loads, loads.rise_time.map(|d| d.at_deviate(z)), 0.0);
         let event = WaveEvent {
             quasi: e.quasi.scaled(s.force_factor),
             trough: e.trough.scaled(s.force_factor),

@@ -15,7 +15,9 @@
 //! [`WaveLoadModel::evaluate`] returns all of it per metre ([`WaveLoads`]). The histories take
 //! per-wave [`WaveRecord`]s (H, T, regime, t_r): [`WaveLoadModel::train`] turns a list of records
 //! into a [`WaveTrain`] (totals: per-metre values × the alongshore length), one wave after the
-//! other. [`WaveLoadModel::regular_records`] makes the records of N regular waves with rise times
+//! other. A storm's waves share a period's work ([`WaveLoadModel::at_period`]); its
+//! [`PeriodLoads::event`] builds a wave's event from what the event holds only (Sainflou's trough,
+//! not its crest; the impact and the rise time of a breaking wave), the same numbers. [`WaveLoadModel::regular_records`] makes the records of N regular waves with rise times
 //! drawn from the seeded generator, one standard-normal draw per wave (so wave j always uses the
 //! j-th draw whatever the regime of the others).
 
@@ -25,7 +27,7 @@ use super::impact::{ImpactInput, ImpactPeriod, ImpactResult};
 use super::regime::{decide_with_limit, Regime, RegimeChoice, RegimeDecision, RegimeError};
 use super::risetime::{LoadRng, RiseTimeDistribution, RiseTimeParams};
 use super::safety::{safety_factors, SafetyFactors, SafetyInput};
-use super::sainflou::{SainflouInput, SainflouPeriod, SainflouResult};
+use super::sainflou::{SainflouInput, SainflouPeriod, SainflouResult, SainflouTrough};
 use super::shapes::{Impulse, LoadShape};
 use super::WaveForce;
 use crate::check::{interval, rule};
@@ -379,31 +381,51 @@ impl WaveLoadModel {
     /// The load event of one wave starting at `start_s` (totals). `rise_time_s` as in
     /// [`WaveRecord`].
     pub fn event(&self, loads: &WaveLoads, rise_time_s: Option<f64>, start_s: f64) -> WaveEvent {
+        let sf = &loads.sainflou;
+        let trough = SainflouTrough {
+            force_n_per_m: sf.trough_force_n_per_m,
+            lever_m: sf.trough_lever_m,
+            suction_n_per_m: sf.suction_uplift_n_per_m,
+            suction_from_heel_m: sf.suction_from_heel_m,
+        };
+        let breaking = loads.regime.regime == Regime::Breaking;
+        let rise_s = match (breaking, loads.rise_time) {
+            (true, Some(dist)) => Some(rise_time_s.unwrap_or_else(|| dist.median_clamped_s())),
+            _ => None,
+        };
+        self.event_of(start_s, loads.period_s, &loads.goda, &trough, breaking, rise_s.map(|r| (r, &loads.impact)))
+    }
+
+    /// [`Self::event`] from its parts: Goda's result, Sainflou's trough, the regime and, for an
+    /// impulsive breaking wave, its rise time and impact (the impact of any other wave is not
+    /// part of its event).
+    fn event_of(
+        &self,
+        start_s: f64,
+        period_s: f64,
+        goda: &GodaResult,
+        sf: &SainflouTrough,
+        breaking: bool,
+        impulsive: Option<(f64, &ImpactResult)>,
+    ) -> WaveEvent {
         let s = &self.site;
         let (l, b) = (s.length_m, s.width_m);
-        let sf = &loads.sainflou;
-        let (quasi, impact) = (self.quasi_component(&loads.goda), self.impact_component(&loads.impact));
+        let quasi = self.quasi_component(goda);
         let trough = LoadComponent::from_levers(
-            -sf.trough_force_n_per_m * l,
-            sf.trough_lever_m,
-            -sf.suction_uplift_n_per_m * l,
+            -sf.force_n_per_m * l,
+            sf.lever_m,
+            -sf.suction_n_per_m * l,
             sf.suction_from_heel_m,
             b,
         );
-        let breaking = loads.regime.regime == Regime::Breaking;
-        let impulse = match (breaking, loads.rise_time) {
-            (true, Some(dist)) => {
-                let rise_s = rise_time_s.unwrap_or_else(|| dist.median_clamped_s());
-                Some(Impulse {
-                    shape: self.options.load_shape,
-                    rise_s,
-                    duration_s: self.options.duration_ratio * rise_s.min(0.25 * loads.period_s),
-                })
-            }
-            _ => None,
-        };
+        let impulse = impulsive.map(|(rise_s, _)| Impulse {
+            shape: self.options.load_shape,
+            rise_s,
+            duration_s: self.options.duration_ratio * rise_s.min(0.25 * period_s),
+        });
+        let impact = impulsive.map_or_else(LoadComponent::default, |(_, im)| self.impact_component(im));
         let alpha_qs = if breaking { self.options.alpha_qs_breaking } else { self.options.alpha_qs_nonbreaking };
-        WaveEvent::new(start_s, loads.period_s, quasi, alpha_qs, trough, impact, impulse)
+        WaveEvent::new(start_s, period_s, quasi, alpha_qs, trough, impact, impulse)
     }
 
     /// The pulsating component F_qs+ (unscaled) of a wave's event (totals).
@@ -637,6 +659,24 @@ impl PeriodLoads<'_> {
         }
         Ok(PeakComponents { quasi, impact })
     }
+
+    /// The load event of a wave of incident height `height_m` starting at 0 (totals), whose
+    /// rise time is at the standard-normal `deviate` of its distribution: bit for bit
+    /// [`WaveLoadModel::event`] of [`Self::evaluate_with`] with the rise time
+    /// [`RiseTimeDistribution::at_deviate`], computing only what the event holds (Sainflou's
+    /// trough, not its crest; the impact and the rise-time distribution of a breaking wave only).
+    pub fn event(&self, height_m: f64, choice: RegimeChoice, deviate: f64) -> Result<WaveEvent, RegimeError> {
+        let (h, regime, _, goda) = self.goda_of(height_m, None, choice)?;
+        let trough = self.sainflou.trough(h);
+        let breaking = regime.regime == Regime::Breaking;
+        let mut impact = None;
+        if breaking {
+            let im = self.impact.at(h);
+            let rise = self.model.options.rise_time.distribution(f_star(&goda, &im), self.period_s);
+            impact = rise.map(|d| (d.at_deviate(deviate), im));
+        }
+        Ok(self.model.event_of(0.0, self.period_s, &goda, &trough, breaking, impact.as_ref().map(|(r, im)| (*r, im))))
+    }
 }
 
 /// F* = F_x,max / P (0 without a positive P).
@@ -709,5 +749,56 @@ pub(crate) mod tests {
         let e = d.with_angle_deg(90.0).unwrap_err();
         assert_eq!((e.quantity, e.value), ("angle_deg", 90.0));
         assert_eq!(d.with_angle_deg(30.0).unwrap().angle_rad, 30f64.to_radians());
+    }
+
+    /// A period's event is the event of the period's loads, to the bit (Debug prints every f64
+    /// exactly, signed zeros included): two sites (the PARI flume flat, and a prototype on a 1:50
+    /// slope with Sainflou at the wall and a berm), 4 periods, 40 heights from 1 % to 200 % of the
+    /// wall's breaker height, 3 regime choices and 3 rise-time deviates; breaking impulsive and
+    /// non-breaking waves both among them, and a forced regime refused by both alike.
+    #[test]
+    fn a_periods_event_is_the_event_of_its_loads_to_the_bit() {
+        let prototype = WaveSite {
+            rho_w: 1030.0,
+            depth_at_toe_m: 20.0,
+            depth_at_wall_m: 14.0,
+            base_depth_m: 17.5,
+            crest_freeboard_m: 7.0,
+            width_m: 20.0,
+            length_m: 1.0,
+            seabed_slope: 0.02,
+            berm_width_m: Some(10.0),
+        };
+        let wall = WaveLoadOptions { sainflou_depth: SainflouDepth::Wall, ..WaveLoadOptions::default() };
+        let sites = [
+            (pari_site(), WaveLoadOptions::default(), [1.5, 2.2, 3.04, 4.0]),
+            (prototype, wall, [6.0, 9.0, 12.0, 16.0]),
+        ];
+        let choices =
+            [RegimeChoice::Auto, RegimeChoice::Forced(Regime::Breaking), RegimeChoice::Forced(Regime::NonBreaking)];
+        let (mut checked, mut impulsive, mut refused) = (0, 0, 0);
+        for (site, options, periods) in sites {
+            let model = WaveLoadModel { site, options };
+            for period_s in periods {
+                let at = model.at_period(period_s);
+                for k in 1..=40 {
+                    let h = at.breaker_height_at_wall_m() * 0.05 * k as f64;
+                    for choice in choices {
+                        for z in [-1.7, 0.0, 2.3] {
+                            let old = at
+                                .evaluate_with(h, choice)
+                                .map(|loads| model.event(&loads, loads.rise_time.map(|d| d.at_deviate(z)), 0.0));
+                            let new = at.event(h, choice, z);
+                            assert_eq!(format!("{old:?}"), format!("{new:?}"), "T {period_s} H {h} {choice:?} z {z}");
+                            checked += 1;
+                            impulsive += usize::from(new.is_ok_and(|e| e.impulse.is_some()));
+                            refused += usize::from(new.is_err());
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 2 * 4 * 40 * 3 * 3);
+        assert!(impulsive > 100 && refused > 100 && checked - impulsive - refused > 100, "{impulsive} {refused}");
     }
 }

@@ -124,15 +124,51 @@ impl SainflouPeriod {
         let i = &self.input;
         let (hw, h, hp) = (height_m, i.depth_m, i.base_depth_m);
         let gw = i.rho_w * G_M_PER_S2;
-        // clapotis_quantities with the height-independent tanh and cosh.
-        let h0 = PI * hw * hw / i.wavelength_m / self.tanh_kh;
-        let pb = i.rho_w * G_M_PER_S2 * hw / self.cosh_kh;
+        let (h0, pb) = self.clapotis(hw);
         // Crest.
         let top = hw + h0;
         let p1c = (gw * h + pb) * top / (h + top);
         let crest_full = Profile::new(&[(-top, 0.0), (0.0, p1c), (h, pb)]);
         let crest = crest_full.clipped(-top.min(i.crest_freeboard_m), hp);
-        // Trough.
+        let t = self.trough_of(hw, h0, pb);
+        SainflouResult {
+            h0_m: h0,
+            pb_pa: pb,
+            crest_swl_pressure_pa: p1c,
+            crest_force_n_per_m: crest.force(),
+            crest_moment_base_nm_per_m: crest.moment_about(hp),
+            trough_base_pressure_pa: t.pt_base,
+            trough_force_n_per_m: t.loads.force_n_per_m,
+            trough_moment_base_nm_per_m: t.moment,
+            trough_lever_m: t.loads.lever_m,
+            suction_uplift_n_per_m: t.loads.suction_n_per_m,
+            suction_moment_heel_nm_per_m: t.loads.suction_from_heel_m * t.loads.suction_n_per_m,
+            suction_from_heel_m: t.loads.suction_from_heel_m,
+            crest,
+            trough: t.profile,
+        }
+    }
+
+    /// The trough's loads of [`Self::at`] for the incident height `height_m`, bit for bit,
+    /// without the crest (what a wave's load event takes from Sainflou).
+    pub fn trough(&self, height_m: f64) -> SainflouTrough {
+        let (h0, pb) = self.clapotis(height_m);
+        self.trough_of(height_m, h0, pb).loads
+    }
+
+    /// h0 and p_b: [`clapotis_quantities`] with the height-independent tanh and cosh.
+    #[inline]
+    fn clapotis(&self, hw: f64) -> (f64, f64) {
+        let i = &self.input;
+        (PI * hw * hw / i.wavelength_m / self.tanh_kh, i.rho_w * G_M_PER_S2 * hw / self.cosh_kh)
+    }
+
+    /// The trough's profile and loads for height `hw` with its `h0` and `pb`.
+    #[inline]
+    fn trough_of(&self, hw: f64, h0: f64, pb: f64) -> TroughParts {
+        let i = &self.input;
+        let (h, hp) = (i.depth_m, i.base_depth_m);
+        let gw = i.rho_w * G_M_PER_S2;
         let zt = hw - h0;
         let trough_full = if zt >= 0.0 {
             Profile::new(&[(0.0, 0.0), (zt, -gw * zt), (h, -pb)])
@@ -141,29 +177,39 @@ impl SainflouPeriod {
             Profile::new(&[(zt, 0.0), (0.0, p0), (h, -pb)])
         };
         let trough_top = if zt >= 0.0 { 0.0 } else { zt.max(-i.crest_freeboard_m) };
-        let trough = trough_full.clipped(trough_top, hp);
+        let profile = trough_full.clipped(trough_top, hp);
         let pt_base = trough_full.at(hp);
-        let tf = trough.force();
-        let tm = trough.moment_about(hp);
-        let suction = 0.5 * pt_base * i.width_m;
-        let xs = 2.0 * i.width_m / 3.0;
-        SainflouResult {
-            h0_m: h0,
-            pb_pa: pb,
-            crest_swl_pressure_pa: p1c,
-            crest_force_n_per_m: crest.force(),
-            crest_moment_base_nm_per_m: crest.moment_about(hp),
-            trough_base_pressure_pa: pt_base,
-            trough_force_n_per_m: tf,
-            trough_moment_base_nm_per_m: tm,
-            trough_lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
-            suction_uplift_n_per_m: suction,
-            suction_moment_heel_nm_per_m: xs * suction,
-            suction_from_heel_m: xs,
-            crest,
-            trough,
-        }
+        let tf = profile.force();
+        let tm = profile.moment_about(hp);
+        let loads = SainflouTrough {
+            force_n_per_m: tf,
+            lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
+            suction_n_per_m: 0.5 * pt_base * i.width_m,
+            suction_from_heel_m: 2.0 * i.width_m / 3.0,
+        };
+        TroughParts { profile, pt_base, moment: tm, loads }
     }
+}
+
+/// The trough's loads on the caisson (per metre; signs physical), as in [`SainflouResult`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SainflouTrough {
+    /// Trough (seaward) force, N/m (< 0).
+    pub force_n_per_m: f64,
+    /// Height of its resultant above the base, m.
+    pub lever_m: f64,
+    /// Suction under the base U_t = ½ p_t(h') B, N/m (< 0).
+    pub suction_n_per_m: f64,
+    /// Distance of the suction resultant from the heel, 2B/3, m.
+    pub suction_from_heel_m: f64,
+}
+
+/// The trough's part of [`SainflouPeriod::at`].
+struct TroughParts {
+    profile: Profile,
+    pt_base: f64,
+    moment: f64,
+    loads: SainflouTrough,
 }
 
 impl SainflouResult {
