@@ -15,11 +15,14 @@
 //! [`WaveLoadModel::evaluate`] returns all of it per metre ([`WaveLoads`]). The histories take
 //! per-wave [`WaveRecord`]s (H, T, regime, t_r): [`WaveLoadModel::train`] turns a list of records
 //! into a [`WaveTrain`] (totals: per-metre values × the alongshore length), one wave after the
-//! other. A storm's waves share a period's work ([`WaveLoadModel::at_period`]); its
-//! [`PeriodLoads::event`] builds a wave's event from what the event holds only (Sainflou's trough,
-//! not its crest; the impact and the rise time of a breaking wave), the same numbers. [`WaveLoadModel::regular_records`] makes the records of N regular waves with rise times
+//! other. [`WaveLoadModel::regular_records`] makes the records of N regular waves with rise times
 //! drawn from the seeded generator, one standard-normal draw per wave (so wave j always uses the
 //! j-th draw whatever the regime of the others).
+//!
+//! The waves of one period share its work ([`WaveLoadModel::at_period`]); a storm's wave takes
+//! its event from [`PeriodLoads::event`], which computes only what the event holds (Sainflou's
+//! trough, not its crest; the impact and the rise time of a breaking wave only), the same numbers
+//! as [`WaveLoadModel::event`] of the wave's full loads.
 
 use super::goda::{GodaInput, GodaPeriod, GodaResult};
 use super::history::{LoadComponent, TrainError, WaveEvent, WaveTrain};
