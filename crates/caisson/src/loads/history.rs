@@ -152,19 +152,49 @@ impl WaveEvent {
     /// 754 round to nearest: x + (±0) = x for x ≠ 0, +0 + (−0) = +0).
     #[inline]
     pub(crate) fn at_local_plain(&self, tau_s: f64) -> WaveForce {
+        PlainWave::new(self).at_local(tau_s)
+    }
+}
+
+/// A wave that [`WaveEvent::is_plain`], with what its evaluation needs held ready: the start,
+/// the period and its half, the crest's two parts and the trough's total.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct PlainWave {
+    start_s: f64,
+    period_s: f64,
+    half_s: f64,
+    crest: LoadComponent,
+    trough: WaveForce,
+}
+
+impl PlainWave {
+    #[inline]
+    fn new(e: &WaveEvent) -> Self {
+        PlainWave {
+            start_s: e.start_s,
+            period_s: e.period_s,
+            half_s: 0.5 * e.period_s,
+            crest: e.quasi,
+            trough: e.trough.total(),
+        }
+    }
+
+    /// [`WaveEvent::at_local_plain`].
+    #[inline]
+    fn at_local(&self, tau_s: f64) -> WaveForce {
         if !(tau_s >= 0.0 && tau_s < self.period_s) {
             return WaveForce::ZERO;
         }
         let s = (2.0 * PI * tau_s / self.period_s).sin();
-        if tau_s < 0.5 * self.period_s {
-            let (x, y) = (self.quasi.x, self.quasi.y);
+        if tau_s < self.half_s {
+            let (x, y) = (self.crest.x, self.crest.y);
             WaveForce {
                 fx_n: (x.fx_n * s + y.fx_n * s) + 0.0,
                 fy_n: (x.fy_n * s + y.fy_n * s) + 0.0,
                 m_nm: (x.m_nm * s + y.m_nm * s) + 0.0,
             }
         } else {
-            let t = self.trough.total();
+            let t = self.trough;
             WaveForce { fx_n: t.fx_n * s + 0.0, fy_n: t.fy_n * s + 0.0, m_nm: t.m_nm * s + 0.0 }
         }
     }
@@ -185,6 +215,9 @@ pub struct WaveTrain {
     events: Vec<WaveEvent>,
     /// [`WaveEvent::is_plain`] of each event.
     plain: Vec<bool>,
+    /// The one wave of a train of one plain wave (the lifetime's trains), evaluated without the
+    /// search for the wave and the checks of its kind.
+    single: Option<PlainWave>,
 }
 
 impl WaveTrain {
@@ -199,8 +232,9 @@ impl WaveTrain {
             }
             prev_end = e.end_s();
         }
-        let plain = events.iter().map(WaveEvent::is_plain).collect();
-        Ok(WaveTrain { events, plain })
+        let plain: Vec<bool> = events.iter().map(WaveEvent::is_plain).collect();
+        let single = (plain == [true]).then(|| PlainWave::new(&events[0]));
+        Ok(WaveTrain { events, plain, single })
     }
 
     /// Make this the train of the one wave `event` (checked as by [`Self::new`]), reusing the
@@ -209,7 +243,9 @@ impl WaveTrain {
         check_event(0, &event)?;
         self.events.clear();
         self.plain.clear();
-        self.plain.push(event.is_plain());
+        let plain = event.is_plain();
+        self.plain.push(plain);
+        self.single = plain.then(|| PlainWave::new(&event));
         self.events.push(event);
         Ok(())
     }
@@ -258,6 +294,10 @@ fn check_event(index: usize, e: &WaveEvent) -> Result<(), TrainError> {
 impl LoadHistory for WaveTrain {
     #[inline]
     fn at(&self, t_s: f64) -> WaveForce {
+        if let Some(w) = &self.single {
+            // The one wave: zero before its start, as the search below finds.
+            return if w.start_s <= t_s { w.at_local(t_s - w.start_s) } else { WaveForce::ZERO };
+        }
         let j = self.events.partition_point(|e| e.start_s <= t_s);
         if j == 0 {
             return WaveForce::ZERO;
@@ -366,6 +406,51 @@ mod tests {
         let mut e = WaveEvent::new(0.0, 3.0, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), LoadComponent::default(), None);
         e.impact.x.m_nm = -0.0;
         assert!(!e.is_plain());
+    }
+
+    /// A train of one plain wave (its own evaluation, [`PlainWave`]) gives the bits of the same
+    /// wave in a train of two (the search and the general dispatch) and of `at_local`: waves
+    /// starting at 0 and at 3.7 s, set by `new` and by `set_single`, at 4 001 times from before
+    /// the start to after the end plus the start, T/2 and the end themselves.
+    #[test]
+    fn a_single_plain_wave_gives_the_bits_of_the_general_path() {
+        let mut checked = 0;
+        for start in [0.0, 3.7] {
+            let e = WaveEvent::new(
+                start,
+                2.5,
+                comp(1234.5, -98.25),
+                0.8,
+                comp(-77.0, 3.0e-3),
+                LoadComponent::default(),
+                None,
+            );
+            let later = WaveEvent { start_s: start + 10.0, ..e };
+            let one = WaveTrain::new(vec![e]).unwrap();
+            let mut set = WaveTrain::default();
+            set.set_single(e).unwrap();
+            let two = WaveTrain::new(vec![e, later]).unwrap();
+            assert!(one.single.is_some() && set.single.is_some() && two.single.is_none());
+            let times = (0..=4000).map(|k| start - 0.5 + 3.5 * k as f64 / 4000.0);
+            for t in times.chain([start, start + 1.25, start + 2.5]) {
+                let (a, b, c, d) = (one.at(t), set.at(t), two.at(t), e.at_local(t - start));
+                let d = if t < start { WaveForce::ZERO } else { d };
+                for w in [b, c, d] {
+                    for (u, v) in [(a.fx_n, w.fx_n), (a.fy_n, w.fy_n), (a.m_nm, w.m_nm)] {
+                        assert_eq!(u.to_bits(), v.to_bits(), "start {start} t {t}: {u} vs {v}");
+                    }
+                }
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 2 * 4004);
+        // An impulsive wave alone takes the general path.
+        let imp = Impulse { shape: LoadShape::Seed, rise_s: 0.1, duration_s: 0.2 };
+        let e = WaveEvent::new(0.0, 3.0, comp(1.0, 1.0), 1.0, comp(1.0, 1.0), comp(5.0, 1.0), Some(imp));
+        let mut set = WaveTrain::default();
+        set.set_single(e).unwrap();
+        assert!(set.single.is_none());
+        assert_eq!(set.at(0.1), e.at_local(0.1));
     }
 
     #[test]
