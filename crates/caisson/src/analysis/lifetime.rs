@@ -141,6 +141,7 @@ use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
 use crate::loads::model::{PeakComponents, PeriodLoads, WaveLoadModel};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
+use crate::waves::dispersion::wavenumber;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
 use crate::waves::surf_zone::SlopeTerms;
@@ -708,7 +709,7 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, 0.0, false, &mut StormScratch::default())
+    storm_from(st, s, rng, 0.0, false, None, &mut StormScratch::default())
 }
 
 /// A storm that cannot be simulated.
@@ -741,7 +742,7 @@ struct StormSite {
 impl StormSite {
     fn new(st: &StormCase<'_>, s: &StormInput) -> Self {
         let mut model = *st.model;
-        model.site.depth_at_toe_m += s.tide_m;
+        model.site.depth_at_toe_m = toe_depth_m(st, s.tide_m);
         model.site.depth_at_wall_m += s.tide_m;
         model.site.base_depth_m += s.tide_m;
         model.site.crest_freeboard_m = (model.site.crest_freeboard_m - s.tide_m).max(0.0);
@@ -1072,20 +1073,29 @@ impl WaveRun<'_> {
     }
 }
 
+/// The depth at the toe at the water level `tide_m`, m.
+fn toe_depth_m(st: &StormCase<'_>, tide_m: f64) -> f64 {
+    st.model.site.depth_at_toe_m + tide_m
+}
+
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
 /// (for the life's largest excursion), `failed`: in a life that has failed already (module
-/// docs, "Failure": only the rigid block runs).
+/// docs, "Failure": only the rigid block runs). `toe_k`: the wave number of T1/3 at
+/// [`toe_depth_m`], if the caller has solved for it (the life, for the storm's shoaling).
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
     rng: &mut LoadRng,
     start_m: f64,
     failed: bool,
+    toe_k: Option<f64>,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
     let site = StormSite::new(st, s);
     // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
-    let (loads_t13, bound_t13) = (site.model.at_period(s.period_s), site.bound(s.period_s));
+    let k_toe = toe_k.unwrap_or_else(|| wavenumber(s.period_s, site.model.site.depth_at_toe_m));
+    let loads_t13 = site.model.at_period_with_toe_wavenumber(s.period_s, k_toe);
+    let bound_t13 = site.bound(s.period_s);
     let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
     let StormScratch { train, waves, still } = scratch;
@@ -1202,7 +1212,10 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
             let angle_rad = p.climate.direction.draw_rad(&mut rng);
             let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
-            let z = slope.surf_zone(h0, period_s, site.depth_at_toe_m + tide_m);
+            // The dispersion solve at the toe serves the shoaling and the storm's loads.
+            let depth_m = toe_depth_m(st, tide_m);
+            let k_toe = wavenumber(period_s, depth_m);
+            let z = slope.surf_zone_at_wavenumber(h0, period_s, depth_m, k_toe);
             let storm = StormInput {
                 h13_m: z.h13_m * e.transformation,
                 hmax_m: z.hmax_m * e.transformation,
@@ -1221,7 +1234,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             storm_index += 1;
             waves_rng.set_word_pos(storm_index << STORM_WAVE_WORDS_LOG2);
             let failed = st.failure.is_some_and(|f| life.failed(&f));
-            let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, &mut scratch)?;
+            let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, Some(k_toe), &mut scratch)?;
             life.add(&o);
         }
     }
@@ -1449,16 +1462,20 @@ impl LifeCounts {
 mod tests {
     use super::*;
 
+    /// The design example's scenario.
+    fn design_example() -> crate::scenario::Scenario {
+        let text = include_str!("../../../../examples/design_breakwater.toml");
+        crate::scenario::Scenario::from_toml(text, std::path::Path::new("design.toml"), std::path::Path::new("."))
+            .expect("the design example")
+    }
+
     /// The screen's grid leaves out the nodes the bound of the loads up to their height holds:
     /// the same grid as every node's loads, on the design example's site at 720 storms (heights
     /// from calm to past breaking at the wall, three periods, tides, angles and force errors),
     /// in most of which the bound leaves nodes out.
     #[test]
     fn the_bisected_screen_grid_is_every_nodes_grid() {
-        let text = include_str!("../../../../examples/design_breakwater.toml");
-        let sc =
-            crate::scenario::Scenario::from_toml(text, std::path::Path::new("design.toml"), std::path::Path::new("."))
-                .expect("the design example");
+        let sc = design_example();
         let st = sc.storm_case(true).expect("a design");
         let (mut storms, mut cut, mut sliding) = (0, 0, 0);
         for h13 in [0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 8.0, 10.0, 12.0] {
@@ -1497,6 +1514,45 @@ mod tests {
         assert_eq!(storms, 720);
         // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462.
         assert_eq!((sliding, cut), (451, 462));
+    }
+
+    /// A storm given the life's toe wave number (solved once for the shoaling and the loads)
+    /// is the storm that solves for it itself, to the bit: 12 storms of the design example's site
+    /// (three heights and periods, two tides, two force errors), 7 of them simulating waves.
+    #[test]
+    fn a_storm_given_the_toe_wave_number_is_the_storm_that_solves_for_it() {
+        let sc = design_example();
+        let st = sc.storm_case(true).expect("a design");
+        let (mut storms, mut simulating) = (0, 0);
+        for (h13, period_s) in [(3.0, 8.0), (6.0, 11.0), (9.0, 14.0)] {
+            for tide_m in [0.0, 2.0] {
+                for force_factor in [1.0, 1.3] {
+                    let s = StormInput {
+                        h13_m: h13,
+                        hmax_m: 1.8 * h13,
+                        period_s,
+                        periods: WavePeriods::Significant,
+                        waves: 300,
+                        tide_m,
+                        angle_rad: 0.0,
+                        force_factor,
+                        impact_factor: force_factor,
+                        friction_factor: 1.0,
+                    };
+                    let k = wavenumber(period_s, toe_depth_m(&st, tide_m));
+                    let run = |toe_k| {
+                        let mut rng = realization_rng(7, storms);
+                        storm_from(&st, &s, &mut rng, 0.0, false, toe_k, &mut StormScratch::default()).unwrap()
+                    };
+                    let (given, solved) = (run(Some(k)), run(None));
+                    assert_eq!(format!("{given:?}"), format!("{solved:?}"), "H1/3 {h13} m, tide {tide_m} m");
+                    storms += 1;
+                    simulating += usize::from(solved.simulated_waves > 0);
+                }
+            }
+        }
+        assert_eq!(storms, 12);
+        assert!(simulating >= 4, "{simulating} storms simulate waves");
     }
 
     #[test]

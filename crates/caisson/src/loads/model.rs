@@ -300,10 +300,16 @@ impl WaveLoadModel {
     /// breaker heights, the height-free parts of Goda, Sainflou and the impact) computed once,
     /// for many heights of one period (the waves of a storm).
     pub fn at_period(&self, period_s: f64) -> PeriodLoads<'_> {
+        self.at_period_with_toe_wavenumber(period_s, wavenumber(period_s, self.site.depth_at_toe_m))
+    }
+
+    /// [`Self::at_period`] with the wave number at the toe depth h_s given (rad/m; the same numbers
+    /// when it is [`wavenumber`]`(period_s, h_s)`: a caller that needs it too, for the storm's
+    /// shoaling, solves the dispersion relation once).
+    pub fn at_period_with_toe_wavenumber(&self, period_s: f64, k_toe: f64) -> PeriodLoads<'_> {
         let s = &self.site;
         let o = &self.options;
-        // Two dispersion solves: at the toe (L, Miche limit) and at the wall (Miche H_br).
-        let k_toe = wavenumber(period_s, s.depth_at_toe_m);
+        // Two dispersion solves: at the toe (L, Miche limit; given) and at the wall (Miche H_br).
         let l_toe = 2.0 * PI / k_toe;
         let hb_toe = miche_breaker_height_from_wavenumber_m(k_toe, period_s);
         let hbr = self.breaker_height_at_wall_m(period_s);

@@ -97,7 +97,14 @@ pub fn group_velocity_ratio(kh: f64) -> f64 {
 /// Linear shoaling coefficient K_si = [tanh(kh) · 2n]^{−1/2} (docs/model.md §3.3).
 #[inline]
 pub fn linear_shoaling_coefficient(period_s: f64, depth_m: f64) -> f64 {
-    let kh = wavenumber(period_s, depth_m) * depth_m;
+    shoaling_coefficient_from_wavenumber(wavenumber(period_s, depth_m), depth_m)
+}
+
+/// [`linear_shoaling_coefficient`] from the wave number k at the depth (rad/m; saves a
+/// dispersion solve when k is known).
+#[inline]
+pub fn shoaling_coefficient_from_wavenumber(k: f64, depth_m: f64) -> f64 {
+    let kh = k * depth_m;
     1.0 / (kh.tanh() * 2.0 * group_velocity_ratio(kh)).sqrt()
 }
 

@@ -15,7 +15,7 @@
 //! The design H_max for Goda's pressure formula is evaluated at h_b = h + 5 H1/3 tan θ
 //! ([`design_heights`]).
 
-use super::dispersion::{deep_water_wavelength_m, linear_shoaling_coefficient};
+use super::dispersion::{deep_water_wavelength_m, linear_shoaling_coefficient, shoaling_coefficient_from_wavenumber};
 
 /// Surf-zone heights at one depth.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -68,6 +68,13 @@ impl SlopeTerms {
         self.surf_zone_with(h0_prime_m, period_s, depth_m, linear_shoaling_coefficient(period_s, depth_m))
     }
 
+    /// [`Self::surf_zone`] with the wave number at `depth_m` given (rad/m; the same numbers when it
+    /// is [`crate::waves::dispersion::wavenumber`]`(period_s, depth_m)`: a caller that needs it too
+    /// solves the dispersion relation once).
+    pub fn surf_zone_at_wavenumber(&self, h0_prime_m: f64, period_s: f64, depth_m: f64, k: f64) -> SurfZoneHeights {
+        self.surf_zone_with(h0_prime_m, period_s, depth_m, shoaling_coefficient_from_wavenumber(k, depth_m))
+    }
+
     /// [`Self::surf_zone`] with the linear shoaling coefficient K_si at `depth_m` given (it does
     /// not depend on H0': a search over H0' solves the dispersion relation once).
     fn surf_zone_with(&self, h0_prime_m: f64, period_s: f64, depth_m: f64, ksi: f64) -> SurfZoneHeights {
@@ -78,10 +85,12 @@ impl SlopeTerms {
             return SurfZoneHeights { h13_m: shoaled, hmax_m: 1.8 * shoaled, shoaling: ks };
         }
         let steep = h0_prime_m / l0;
-        let beta0 = 0.028 * steep.powf(-0.38) * self.e20;
-        let beta_max = (0.32 * steep.powf(-0.29) * self.e24).max(0.92);
-        let beta0s = 0.052 * steep.powf(-0.38) * self.e20;
-        let beta_maxs = (0.53 * steep.powf(-0.29) * self.e24).max(1.65);
+        // (H0'/L0)^−0.38 and ^−0.29, each in two coefficients.
+        let (s38, s29) = (steep.powf(-0.38), steep.powf(-0.29));
+        let beta0 = 0.028 * s38 * self.e20;
+        let beta_max = (0.32 * s29 * self.e24).max(0.92);
+        let beta0s = 0.052 * s38 * self.e20;
+        let beta_maxs = (0.53 * s29 * self.e24).max(1.65);
         let h13_m = (beta0 * h0_prime_m + self.beta1 * depth_m).min(beta_max * h0_prime_m).min(shoaled);
         let hmax_m = (beta0s * h0_prime_m + self.beta1s * depth_m).min(beta_maxs * h0_prime_m).min(1.8 * shoaled);
         SurfZoneHeights { h13_m, hmax_m, shoaling: ks }
