@@ -291,13 +291,10 @@ fn check_event(index: usize, e: &WaveEvent) -> Result<(), TrainError> {
     Ok(())
 }
 
-impl LoadHistory for WaveTrain {
-    #[inline]
-    fn at(&self, t_s: f64) -> WaveForce {
-        if let Some(w) = &self.single {
-            // The one wave: zero before its start, as the search below finds.
-            return if w.start_s <= t_s { w.at_local(t_s - w.start_s) } else { WaveForce::ZERO };
-        }
+impl WaveTrain {
+    /// [`LoadHistory::at`] of a train that is not one plain wave: the wave by binary search.
+    #[inline(never)]
+    fn at_searched(&self, t_s: f64) -> WaveForce {
         let j = self.events.partition_point(|e| e.start_s <= t_s);
         if j == 0 {
             return WaveForce::ZERO;
@@ -307,6 +304,20 @@ impl LoadHistory for WaveTrain {
             e.at_local_plain(t_s - e.start_s)
         } else {
             e.at_local(t_s - e.start_s)
+        }
+    }
+}
+
+impl LoadHistory for WaveTrain {
+    /// The one plain wave of a train inline (the lifetime's waves, at every time step), any
+    /// other train out of line.
+    #[inline(always)]
+    fn at(&self, t_s: f64) -> WaveForce {
+        match &self.single {
+            // The one wave: zero before its start, as the search finds.
+            Some(w) if w.start_s <= t_s => w.at_local(t_s - w.start_s),
+            Some(_) => WaveForce::ZERO,
+            None => self.at_searched(t_s),
         }
     }
     fn end_time_s(&self) -> Option<f64> {
