@@ -164,7 +164,7 @@ impl SainflouPeriod {
     }
 
     /// The trough's profile and loads for height `hw` with its `h0` and `pb`.
-    #[inline]
+    #[inline(always)]
     fn trough_of(&self, hw: f64, h0: f64, pb: f64) -> TroughParts {
         let i = &self.input;
         let (h, hp) = (i.depth_m, i.base_depth_m);
