@@ -190,12 +190,10 @@ fn run_to(load: &Push, exact: bool, tolerance_m: f64, t_end_s: f64) -> ([f64; 4]
 
 /// A slip onset followed by a lift-off, the episode of most lifting waves of the design example
 /// (module docs of `dynamics`, "Adaptive stepping"): under the push of
-/// [`a_lifted_heel_is_crossed_in_exact_steps`] the seaward spring, its normal force nearly gone,
-/// starts to slip at 3.258 s (its dashpot's force reaches what friction holds) and lifts at
-/// 3.281 s; Newmark steps follow until the lifted set's exact steps take over at 3.40 s. To 3.7 s
-/// the run takes 10 Newmark steps and rejects 1 (results version 22: 11 and 2; the step after
-/// the landed lift-off no longer restarts its growth from the fragment to it, and the rejected
-/// one is retried by the estimate's growth as h^(5/2)). The state at 3.7 s against Newmark at
+/// [`a_lifted_heel_is_crossed_in_exact_steps`] a spring starts to slip at 3.258 s and the
+/// seaward spring lifts at 3.281 s; Newmark steps follow until the lifted set's exact steps take over at 3.40 s. To 3.7 s
+/// the run takes 10 Newmark steps and rejects 1 (results version 22, before the rules of the step
+/// after an event and of the retry: 11 and 2). The state at 3.7 s against Newmark at
 /// 1e-8 m, 100 times tighter (the oracle): u_x and the springs' mean slip position (what the
 /// tool reports as sliding) within 2e-6 m (measured 4.9e-7 m and 4.9e-8 m; version 22: 5.1e-7 m
 /// and 5.1e-8 m), u_y and θ·B/2 within 3e-5 m (measured 2.2e-6 m and 2.14e-5 m, as in version
