@@ -670,25 +670,44 @@ fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
     p > b.mu * (b.weight_n - u) || 6.0 * m / b.width_m * b.lift_factor >= b.weight_n - u
 }
 
-/// What the storms of one life reuse: the one-wave train of the simulated waves and the waves
-/// drawn above the screen's threshold.
+/// What the storms of one life reuse: the one-wave train of the simulated waves, the waves
+/// drawn above the screen's threshold, and the waves the linear bound answered whose rotation
+/// may still be the largest (of the storm, or of the life with the life's storms they belong to:
+/// module docs, "The screen").
 #[derive(Debug, Default)]
 struct StormScratch {
     train: WaveTrain,
     waves: Vec<DrawnWave>,
     still: Vec<StillWave>,
+    storms: Vec<StormInput>,
 }
 
 /// A wave the linear bound answered ([`super::stick_bound`]): the bound on its rotation, rad,
-/// and what runs it again (its height, rise-time deviate and period), should the storm's largest
-/// rotation need it (module docs, "The screen").
+/// and what runs it again (its storm's index among the life's storms, its height, rise-time
+/// deviate and period), should the storm's or the life's largest rotation need it (module docs,
+/// "The screen").
 #[derive(Debug, Clone, Copy)]
 struct StillWave {
     rotation_rad: f64,
+    storm: usize,
     height_m: f64,
     deviate: f64,
     period_s: f64,
 }
+
+/// Whose largest rotation the still waves settle (module docs, "The screen"): a storm's, at its
+/// end ([`simulate_storm`]: fragility reads every storm's), or only the life's
+/// ([`simulate_life`]), the life's largest rotation before the storm and the storm's index.
+#[derive(Debug, Clone, Copy)]
+enum Settle {
+    Storm,
+    Life { floor_rad: f64, storm: usize },
+}
+
+/// Most still waves a life keeps unsettled (module docs, "The screen"): beyond, they are settled
+/// at the end of the storm (which empties the list). Each is 40 bytes; the design example's lives
+/// keep a few.
+const MAX_STILL_WAVES: usize = 4096;
 
 /// A still wave whose rotation bound times this factor exceeds the storm's largest rotation so
 /// far is run after all (module docs, "The screen"): a margin for a bound below the rotation the
@@ -708,7 +727,7 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, 0.0, false, &mut StormScratch::default())
+    storm_from(st, s, rng, (0.0, false, Settle::Storm), &mut StormScratch::default())
 }
 
 /// A storm that cannot be simulated.
@@ -942,8 +961,11 @@ struct WaveRun<'a> {
     train: &'a mut WaveTrain,
     /// The linear bound at T1/3, built when a wave first needs it.
     stick_t13: OnceCell<Option<AtPeriod>>,
-    /// The waves the linear bound answered, in this storm.
+    /// The waves the linear bound answered whose rotation may be the storm's (or the life's)
+    /// largest.
     still: &'a mut Vec<StillWave>,
+    /// Whose largest rotation they settle.
+    settle: Settle,
 }
 
 impl WaveRun<'_> {
@@ -992,9 +1014,16 @@ impl WaveRun<'_> {
         if st.screen && st.stick_bound {
             if let Some(rotation_rad) = self.still_rotation_rad(&event, period_s) {
                 // Neither slides nor lifts (module docs, "The screen"): its rotation may still be
-                // the storm's largest, which [`Self::settle_rotation`] decides.
+                // the storm's (or the life's) largest, which [`Self::settle_rotation`] (or
+                // [`settle_life`]) decides, unless a larger one is known already.
                 out.screened_waves += 1;
-                self.still.push(StillWave { rotation_rad, height_m: h, deviate: z, period_s });
+                let (floor_rad, storm) = match self.settle {
+                    Settle::Storm => (out.max_rotation_rad, 0),
+                    Settle::Life { floor_rad, storm } => (floor_rad.max(out.max_rotation_rad), storm),
+                };
+                if rotation_rad * ROTATION_RESERVE > floor_rad {
+                    self.still.push(StillWave { rotation_rad, storm, height_m: h, deviate: z, period_s });
+                }
                 return Ok(());
             }
         }
@@ -1027,6 +1056,9 @@ impl WaveRun<'_> {
     /// storm's largest rotation is then what running every wave gives. Each wave run moves from
     /// the screened to the simulated count.
     fn settle_rotation(&mut self, out: &mut StormOutcome) -> Result<(), StormError> {
+        if matches!(self.settle, Settle::Life { .. }) {
+            return Ok(());
+        }
         let mut still = std::mem::take(self.still);
         still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
         for w in &still {
@@ -1075,13 +1107,13 @@ impl WaveRun<'_> {
 
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
 /// (for the life's largest excursion), `failed`: in a life that has failed already (module
-/// docs, "Failure": only the rigid block runs).
+/// docs, "Failure": only the rigid block runs), its still waves settled as `settle` says (with
+/// [`Settle::Life`] they are left in `scratch.still` for [`settle_life`]).
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
     rng: &mut LoadRng,
-    start_m: f64,
-    failed: bool,
+    (start_m, failed, settle): (f64, bool, Settle),
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
     let site = StormSite::new(st, s);
@@ -1089,8 +1121,10 @@ fn storm_from(
     let (loads_t13, bound_t13) = (site.model.at_period(s.period_s), site.bound(s.period_s));
     let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
-    let StormScratch { train, waves, still } = scratch;
-    still.clear();
+    let StormScratch { train, waves, still, .. } = scratch;
+    if matches!(settle, Settle::Storm) {
+        still.clear();
+    }
     let mut run = WaveRun {
         st,
         s,
@@ -1103,6 +1137,7 @@ fn storm_from(
         train,
         stick_t13: OnceCell::new(),
         still,
+        settle,
     };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
         draw_above_threshold(s, &screen, rng, waves, &mut run, &mut out)?;
@@ -1222,11 +1257,66 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             storm_index += 1;
             waves_rng.set_word_pos(storm_index << STORM_WAVE_WORDS_LOG2);
             let failed = st.failure.is_some_and(|f| life.failed(&f));
-            let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, &mut scratch)?;
+            let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
+            scratch.storms.push(storm);
+            let o = storm_from(st, &storm, &mut waves_rng, (life.sliding_m, failed, settle), &mut scratch)?;
             life.add(&o);
+            // The still waves the life's largest rotation so far exceeds cannot be its largest.
+            scratch.still.retain(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
+            if scratch.still.len() > MAX_STILL_WAVES {
+                settle_life(st, &mut scratch, &mut life)?;
+            }
         }
     }
+    settle_life(st, &mut scratch, &mut life)?;
     Ok(life)
+}
+
+/// Run the still waves of the life's storms whose rotation bound may exceed the life's largest
+/// rotation, largest bound first, until the bound of the next is below it (module docs, "The
+/// screen"): the life's largest rotation is then what running every wave gives. Each wave run
+/// moves from the screened to the simulated count; it neither slides nor lifts (its bound says
+/// so), so only the rotation and the counts can move. Empties `scratch.still`.
+fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormOutcome) -> Result<(), StormError> {
+    let StormScratch { train, still, storms, .. } = scratch;
+    still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+    // The site of the storm whose waves run (the waves of a storm are mostly together).
+    let mut site: Option<(usize, StormSite)> = None;
+    let mut none = Vec::new();
+    for w in still.iter() {
+        if w.rotation_rad * ROTATION_RESERVE <= life.max_rotation_rad {
+            break;
+        }
+        let s = &storms[w.storm];
+        if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
+            site = Some((w.storm, StormSite::new(st, s)));
+        }
+        let site = &site.as_ref().expect("the wave's storm's site").1;
+        let mut run = WaveRun {
+            st,
+            s,
+            site,
+            loads_t13: site.model.at_period(s.period_s),
+            bound_t13: site.bound(s.period_s),
+            start_m: 0.0,
+            ended: false,
+            sim: None,
+            train,
+            stick_t13: OnceCell::new(),
+            still: &mut none,
+            settle: Settle::Storm,
+        };
+        let (event, _) = run.event(w.height_m, w.deviate, w.period_s);
+        let mut o = StormOutcome::default();
+        run.simulate(event, w.height_m, w.period_s, &mut o)?;
+        life.simulated_waves += 1;
+        life.screened_waves -= 1;
+        life.rocking_waves += o.rocking_waves;
+        life.large_rotation_waves += o.large_rotation_waves;
+        life.max_rotation_rad = life.max_rotation_rad.max(o.max_rotation_rad);
+    }
+    still.clear();
+    Ok(())
 }
 
 /// A design run: the life model, how many lives, their seed, the reported thresholds and the

@@ -340,14 +340,38 @@ impl StickBound {
         if total_min <= 0.0 {
             return margins;
         }
-        let friction =
-            self.kappa_per_m * r.peak(UX) * self.weight_n / total_min + self.dashpot_ns_per_m * r.peak(VX) / n_min;
+        let (ux, vx) = (r.peak(UX), r.peak(VX));
+        let friction = self.kappa_per_m * ux * self.weight_n / total_min + self.dashpot_ns_per_m * vx / n_min;
         margins.friction_share = friction / self.mu_static;
         if margins.friction_share > SLIP_RESERVE {
-            return margins;
+            // The maxima over the wave come at different times: the demand interval by interval.
+            margins.friction_share = self.friction_by_interval(&r, (ux, vx, total_min, n_min)) / self.mu_static;
+            if margins.friction_share > SLIP_RESERVE {
+                return margins;
+            }
         }
         margins.rotation_rad = r.peak(THETA);
         margins
+    }
+}
+
+impl StickBound {
+    /// The friction demand of the wave (module docs, "slip") taken on each interval of each half
+    /// with the interval's own ranges of u_x, u̇_x, ΣΔN and the outer springs' ΔN, each no worse
+    /// than the wave's `(max|u_x|, max|u̇_x|, W' + min ΣΔN, N_min)`: the largest, N.
+    fn friction_by_interval(&self, r: &Response<'_>, (ux_max, vx_max, total_min, n_min): (f64, f64, f64, f64)) -> f64 {
+        let mut demand = 0.0_f64;
+        for half in 0..2 {
+            let [ux, vx, total, lo0, lo1] = [UX, VX, TOTAL, EDGES[0], EDGES[1]].map(|f| r.intervals(f, half));
+            for k in 0..INTERVALS {
+                let u = ux[k].0.abs().max(ux[k].1.abs()).min(ux_max);
+                let v = vx[k].0.abs().max(vx[k].1.abs()).min(vx_max);
+                let total_n = (self.weight_n + total[k].0).max(total_min);
+                let n = (self.n_ref + lo0[k].0.min(lo1[k].0)).max(n_min);
+                demand = demand.max(self.kappa_per_m * u * self.weight_n / total_n + self.dashpot_ns_per_m * v / n);
+            }
+        }
+        demand
     }
 }
 
@@ -431,6 +455,25 @@ impl<'a> Response<'a> {
             prev = next;
         }
         (lo, hi)
+    }
+
+    /// The range of functional f on each interval [t_k, t_k+1] of a half, as [`Self::fine_half`]
+    /// takes it before the free vibration dies down: the harmonic part within its ends' range plus
+    /// the slack, the free vibration within its modes' envelopes at t_k.
+    fn intervals(&self, f: usize, half: usize) -> [(f64, f64); INTERVALS] {
+        let at = self.at;
+        let excess = 1.0 - (0.5 * PI / INTERVALS as f64).cos();
+        let g = if half == 0 { self.harmonic(f, half) } else { -self.harmonic(f, half) };
+        let amp = self.amplitudes(f, half);
+        let slack = excess * modulus(g);
+        let mut prev = (g * at.phasor[0]).re;
+        std::array::from_fn(|k| {
+            let env: f64 = (0..6).map(|m| amp[m] * at.decay[k][m]).sum();
+            let next = (g * at.phasor[k + 1]).re;
+            let range = (prev.min(next) - slack - env, prev.max(next) + slack + env);
+            prev = next;
+            range
+        })
     }
 
     /// The largest |f| over the wave, from its fine ranges on both halves.
