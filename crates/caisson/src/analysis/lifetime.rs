@@ -65,12 +65,36 @@
 //! steady state of its crest and trough plus the modes' envelopes of the free vibration, at every
 //! instant of the wave): if that leaves the outer springs 5 % of their normal force at rest and
 //! the friction demand within 95 % of μ_s, no spring slips or lifts, the wave's sliding is
-//! exactly 0 and it is not run ([`StormCase::stick_bound`]). Only its rotation is not known; a
-//! storm's largest rotation may be such a wave's, so at the storm's end the answered waves whose
-//! rotation bound (0.2-4.2 % over the engine's rotation on the design example) exceeds the storm's
-//! largest rotation are run after all, largest bound first, until one's bound is below it. Every
-//! output is then the same to the last bit as without the bound but the counts of simulated and
-//! screened waves (`tests/equiv_lifetime.rs`). Impulsive waves are left to the engine.
+//! exactly 0 and it is not run ([`StormCase::stick_bound`]). Impulsive waves are left to the
+//! engine.
+//!
+//! Only such a still wave's rotation θ_w is not known; its bound b_w is 0.2-4.2 % over the
+//! engine's rotation on the design example, and [`ROTATION_RESERVE`] r = 1.01 is a margin for a
+//! bound below it (θ_w ≤ r b_w); a wave is answered only if r b_w is below the rotation limit.
+//! The largest rotation may be a still wave's, so the waves whose r b_w exceeds the largest
+//! rotation known are kept on a list and **settled**: run after all, largest bound first, until
+//! the next one's r b_w is at most the largest rotation so far. When depends on who reads it:
+//! - a storm alone ([`simulate_storm`]: fragility reads every storm's largest rotation) settles at
+//!   the storm's end;
+//! - a life ([`simulate_life`]: the design and sizing runs and the climates read only the life's
+//!   largest rotation: `lives.csv`, the JSON reports, the plots) settles once, at the life's end,
+//!   the still waves of all its storms (each kept with its storm's index; the storm's site is
+//!   rebuilt to run it). After each storm the list keeps only the waves whose r b_w exceeds the
+//!   life's largest rotation so far; should it hold more than [`MAX_STILL_WAVES`], it is settled
+//!   then (which empties it). The design example's lives run 617 still waves again (17 233 when
+//!   each storm settled).
+//!
+//! Why the settled largest rotation M is what running every wave gives, M*, to the bit: M is the
+//! largest rotation of the waves run, so M ≤ M*. A still wave not run was dropped or left when r
+//! b_w was at most the largest rotation known then, which is at most M (it only grows): θ_w ≤ r b_w
+//! ≤ M. So no wave's rotation exceeds M, M = M*, and a maximum of the same numbers does not depend
+//! on their order. **Failure** (below) is not moved either: a still wave's θ_w ≤ r b_w is below the
+//! rotation limit (and [`ROCKING_LIMIT_RAD`]), and it neither slides nor lifts, so it cannot fail a
+//! life, count as rocking or large-rotation, or move the sliding and the excursions; whether and at
+//! which wave a life fails is decided by the waves run, as when every wave runs, and settling at the
+//! life's end moves only `max_rotation_rad` (to M*) and the counts (a wave run moves from the
+//! screened to the simulated count). Every output is then the same to the last bit as without the
+//! bound but the counts of simulated and screened waves (`tests/equiv_lifetime.rs`).
 //!
 //! **Wave periods** ([`StormInput::periods`], [`crate::waves::periods`]). By default every wave
 //! has the storm's T1/3. With Longuet-Higgins' periods each wave's period τ is drawn given its
@@ -1314,6 +1338,8 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
         life.rocking_waves += o.rocking_waves;
         life.large_rotation_waves += o.large_rotation_waves;
         life.max_rotation_rad = life.max_rotation_rad.max(o.max_rotation_rad);
+        #[cfg(test)]
+        tests::SETTLED.with(|n| n.set(n.get() + 1));
     }
     still.clear();
     Ok(())
@@ -1539,6 +1565,50 @@ impl LifeCounts {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::cell::Cell;
+
+    thread_local! {
+        /// The still waves [`settle_life`] ran on this thread.
+        pub(super) static SETTLED: Cell<usize> = const { Cell::new(0) };
+    }
+
+    /// A life's largest rotation, settled once at its end, is that of running every wave the
+    /// screen lets through (the bound off): on 16 lives of 8 years of the small design's site
+    /// under small storms (H0's location 4 m), where a life's few simulated waves may all be
+    /// still and its largest rotation a still wave's, every output of every life is the same but
+    /// the counts, which move together, and [`settle_life`] runs waves.
+    #[test]
+    fn a_lifes_largest_rotation_settled_at_its_end_is_every_waves() {
+        let text = include_str!("../../tests/data/small_design.toml")
+            .replace("life_years = 5", "life_years = 8")
+            .replace("lives = 12", "lives = 16")
+            .replace("seed = 3", "seed = 9")
+            .replace("storm_location_m = 7.5", "storm_location_m = 4.0");
+        let sc =
+            crate::scenario::Scenario::from_toml(&text, std::path::Path::new("small.toml"), std::path::Path::new("."))
+                .unwrap();
+        let d = sc.design.clone().unwrap();
+        let st = sc.storm_case(true).unwrap();
+        let run = |stick_bound: bool| {
+            let st = StormCase { stick_bound, ..st };
+            (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect::<Vec<_>>()
+        };
+        SETTLED.with(|n| n.set(0));
+        let with = run(true);
+        let settled = SETTLED.with(Cell::get);
+        let without = run(false);
+        let (mut lives, mut answered) = (0, 0);
+        for (a, b) in with.iter().zip(&without) {
+            let moved = b.simulated_waves - a.simulated_waves;
+            assert_eq!(a.screened_waves, b.screened_waves + moved, "the counts move together");
+            assert_eq!(StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a }, *b);
+            lives += 1;
+            answered += moved;
+        }
+        eprintln!("{lives} lives compared, {answered} waves answered by the bound, {settled} run at the lives' ends");
+        assert_eq!(lives, 16);
+        assert!(answered > 0 && settled > 0, "{answered} answered, {settled} settled");
+    }
 
     /// The screen's grid leaves out the nodes the bound of the loads up to their height holds:
     /// the same grid as every node's loads, on the design example's site at 720 storms (heights
