@@ -113,8 +113,9 @@ struct Modes {
     /// parts.
     winv: [[f64; 6]; 6],
     winv_im: [[f64; 6]; 6],
-    /// The functionals in modal coordinates, f·w_m.
-    modal: [[C64; 6]; FUNCTIONALS],
+    /// The functionals' moduli in modal coordinates, |f·w_m| (a mode's amplitude in functional f
+    /// is |f·w_m| |α_m|).
+    modal_abs: [[f64; 6]; FUNCTIONALS],
     /// The functionals' q rows (u̇_x's is 0: it reads q̇_x).
     rows: [Vector3<f64>; FUNCTIONALS],
 }
@@ -258,7 +259,7 @@ impl Modes {
             lambda,
             winv: std::array::from_fn(|i| std::array::from_fn(|j| winv[(i, j)].re)),
             winv_im: std::array::from_fn(|i| std::array::from_fn(|j| winv[(i, j)].im)),
-            modal,
+            modal_abs: modal.map(|row: [C64; 6]| row.map(modulus)),
             rows,
         })
     }
@@ -399,13 +400,14 @@ impl StickBound {
 }
 
 /// The all-sticking response of one wave ([`StickBound::margins`]): the steady-state amplitudes
-/// X = Z⁻¹ P of its crest and trough, and the free vibration's modal coordinates at each half's
-/// start.
+/// X = Z⁻¹ P of its crest and trough, and the moduli of the free vibration's modal coordinates
+/// at each half's start (a mode's envelope needs no more).
 struct Response<'a> {
     md: &'a Modes,
     at: &'a AtPeriod,
     x: [Vector3<C64>; 2],
-    alpha: [[C64; 6]; 2],
+    /// The moduli |α_m| of the modal coordinates at each half's start.
+    alpha_abs: [[f64; 6]; 2],
 }
 
 impl<'a> Response<'a> {
@@ -428,7 +430,7 @@ impl<'a> Response<'a> {
         let (p1, p2) = (modal_p0(&x[0]), modal_p0(&x[1]));
         let alpha0: [C64; 6] = std::array::from_fn(|m| -p1[m]);
         let alpha = [alpha0, std::array::from_fn(|m| alpha0[m] * at.half[m] + p2[m] - p1[m])];
-        Response { md, at, x, alpha }
+        Response { md, at, x, alpha_abs: alpha.map(|a| a.map(modulus)) }
     }
 
     /// Functional f's harmonic part G on a half.
@@ -442,7 +444,7 @@ impl<'a> Response<'a> {
 
     /// The amplitudes |f·w_m α_m| of functional f's modes on a half.
     fn amplitudes(&self, f: usize, half: usize) -> [f64; 6] {
-        std::array::from_fn(|m| modulus(self.md.modal[f][m] * self.alpha[half][m]))
+        std::array::from_fn(|m| self.md.modal_abs[f][m] * self.alpha_abs[half][m])
     }
 
     /// The fine range of a functional over a half: on each interval [t_k, t_k+1], the harmonic
