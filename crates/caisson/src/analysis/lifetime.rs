@@ -472,6 +472,11 @@ pub struct StormCase<'a> {
     /// screen"; [`super::stick_bound`]): `false` runs them as up to results version 20 (the
     /// tests' reference).
     pub stick_bound: bool,
+    /// With the stick bound, run the answered waves whose rotation bound may exceed the largest
+    /// rotation (module docs, "The stick bound"), so that `max_rotation_rad` is every wave's:
+    /// `false` leaves it the largest of the waves run, for what reads only the counts (the work
+    /// estimate's screen pilot, whose short lives would run them far more often than a life).
+    pub settle_rotation: bool,
     /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
     /// wave is drawn and simulated.
     pub draws: WaveDraws,
@@ -1045,7 +1050,7 @@ impl WaveRun<'_> {
                     Settle::Storm => (out.max_rotation_rad, 0),
                     Settle::Life { floor_rad, storm } => (floor_rad.max(out.max_rotation_rad), storm),
                 };
-                if rotation_rad * ROTATION_RESERVE > floor_rad {
+                if st.settle_rotation && rotation_rad * ROTATION_RESERVE > floor_rad {
                     self.still.push(StillWave { rotation_rad, storm, height_m: h, deviate: z, period_s });
                 }
                 return Ok(());
