@@ -69,7 +69,7 @@
 //! engine.
 //!
 //! Only such a still wave's rotation θ_w is not known; its bound b_w is 0.2-4.2 % over the
-//! engine's rotation on the design example, and [`ROTATION_RESERVE`] r = 1.01 is a margin for a
+//! engine's rotation on the design example, and `ROTATION_RESERVE` r = 1.01 is a margin for a
 //! bound below it (θ_w ≤ r b_w); a wave is answered only if r b_w is below the rotation limit.
 //! The largest rotation may be a still wave's, so the waves whose r b_w exceeds the largest
 //! rotation known are kept on a list and **settled**: run after all, largest bound first, until
@@ -80,9 +80,9 @@
 //!   largest rotation: `lives.csv`, the JSON reports, the plots) settles once, at the life's end,
 //!   the still waves of all its storms (each kept with its storm's index; the storm's site is
 //!   rebuilt to run it). After each storm the list keeps only the waves whose r b_w exceeds the
-//!   life's largest rotation so far; should it hold more than [`MAX_STILL_WAVES`], it is settled
-//!   then (which empties it). The design example's lives run 617 still waves again (17 233 when
-//!   each storm settled).
+//!   life's largest rotation so far; should it hold more than `MAX_STILL_WAVES` (4096), it is
+//!   settled then (which empties it). The design example's lives run 617 still waves again
+//!   (17 233 when each storm settled).
 //!
 //! Why the settled largest rotation M is what running every wave gives, M*, to the bit: M is the
 //! largest rotation of the waves run, so M ≤ M*. A still wave not run was dropped or left when r
