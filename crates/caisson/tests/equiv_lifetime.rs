@@ -386,3 +386,46 @@ fn the_stick_bound_answers_only_still_waves() {
     }
     assert_eq!(checked, cases.len());
 }
+
+/// A life's still waves settle its largest rotation once, at its end (module docs of
+/// `lifetime`, "The screen"; `lifetime`'s unit test shows that it runs waves): on 8 lives of 8
+/// years of the small design, with the design's failure limits, with a rotation limit low enough
+/// that every life fails by rotation (a still wave's bound is kept below it, so whether and where
+/// a life fails is decided by the waves run, as without the bound), run to their end, and under
+/// milder storms, every life's largest rotation and every other output is the one of running
+/// every wave the screen lets through (the bound off), but the counts of simulated and screened
+/// waves, which move together (32 lives; 257 waves answered, 18 lives failed by rotation).
+#[test]
+fn a_lifes_largest_rotation_is_that_of_running_every_wave() {
+    let cases = [
+        ("design limits", ""),
+        ("rotation limit 2.2e-3 rad", "failure_rotation_rad = 2.2e-3"),
+        ("run to the end", "continue_after_failure = true"),
+        ("milder storms", "storm_location_m = 6.0"),
+    ];
+    let (mut lives_compared, mut answered, mut failed_by_rotation) = (0, 0, 0);
+    for (name, lines) in cases {
+        let text = site::with(site::SMALL_DESIGN, "design", &format!("life_years = 8\nlives = 8\nseed = 9\n{lines}"));
+        let sc = scenario(&text);
+        let d = sc.design.clone().unwrap();
+        let st = sc.storm_case(true).unwrap();
+        let limits = st.failure;
+        let run = |stick_bound: bool| {
+            let st = StormCase { stick_bound, ..st };
+            (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect::<Vec<_>>()
+        };
+        let (with, without) = (run(true), run(false));
+        for (a, b) in with.iter().zip(&without) {
+            let moved = b.simulated_waves - a.simulated_waves;
+            assert_eq!(a.screened_waves, b.screened_waves + moved, "{name}: the counts move together");
+            let same = StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a };
+            assert_eq!(same, *b, "{name}: every other output is the same");
+            lives_compared += 1;
+            answered += moved;
+            failed_by_rotation += usize::from(limits.is_some_and(|f| a.failed_by_rotation(&f)));
+        }
+    }
+    eprintln!("{lives_compared} lives compared, {answered} waves answered by the bound, {failed_by_rotation} failed by rotation");
+    assert_eq!(lives_compared, 32);
+    assert!(answered > 0 && failed_by_rotation > 0);
+}

@@ -65,12 +65,36 @@
 //! steady state of its crest and trough plus the modes' envelopes of the free vibration, at every
 //! instant of the wave): if that leaves the outer springs 5 % of their normal force at rest and
 //! the friction demand within 95 % of μ_s, no spring slips or lifts, the wave's sliding is
-//! exactly 0 and it is not run ([`StormCase::stick_bound`]). Only its rotation is not known; a
-//! storm's largest rotation may be such a wave's, so at the storm's end the answered waves whose
-//! rotation bound (0.2-4.2 % over the engine's rotation on the design example) exceeds the storm's
-//! largest rotation are run after all, largest bound first, until one's bound is below it. Every
-//! output is then the same to the last bit as without the bound but the counts of simulated and
-//! screened waves (`tests/equiv_lifetime.rs`). Impulsive waves are left to the engine.
+//! exactly 0 and it is not run ([`StormCase::stick_bound`]). Impulsive waves are left to the
+//! engine.
+//!
+//! Only such a still wave's rotation θ_w is not known; its bound b_w is 0.2-4.2 % over the
+//! engine's rotation on the design example, and `ROTATION_RESERVE` r = 1.01 is a margin for a
+//! bound below it (θ_w ≤ r b_w); a wave is answered only if r b_w is below the rotation limit.
+//! The largest rotation may be a still wave's, so the waves whose r b_w exceeds the largest
+//! rotation known are kept on a list and **settled**: run after all, largest bound first, until
+//! the next one's r b_w is at most the largest rotation so far. When depends on who reads it:
+//! - a storm alone ([`simulate_storm`]: fragility reads every storm's largest rotation) settles at
+//!   the storm's end;
+//! - a life ([`simulate_life`]: the design and sizing runs and the climates read only the life's
+//!   largest rotation: `lives.csv`, the JSON reports, the plots) settles once, at the life's end,
+//!   the still waves of all its storms (each kept with its storm's index; the storm's site is
+//!   rebuilt to run it). After each storm the list keeps only the waves whose r b_w exceeds the
+//!   life's largest rotation so far; should it hold more than `MAX_STILL_WAVES` (4096), it is
+//!   settled then (which empties it). The design example's lives run 617 still waves again
+//!   (17 233 when each storm settled).
+//!
+//! Why the settled largest rotation M is what running every wave gives, M*, to the bit: M is the
+//! largest rotation of the waves run, so M ≤ M*. A still wave not run was dropped or left when r
+//! b_w was at most the largest rotation known then, which is at most M (it only grows): θ_w ≤ r b_w
+//! ≤ M. So no wave's rotation exceeds M, M = M*, and a maximum of the same numbers does not depend
+//! on their order. **Failure** (below) is not moved either: a still wave's θ_w ≤ r b_w is below the
+//! rotation limit (and [`ROCKING_LIMIT_RAD`]), and it neither slides nor lifts, so it cannot fail a
+//! life, count as rocking or large-rotation, or move the sliding and the excursions; whether and at
+//! which wave a life fails is decided by the waves run, as when every wave runs, and settling at the
+//! life's end moves only `max_rotation_rad` (to M*) and the counts (a wave run moves from the
+//! screened to the simulated count). Every output is then the same to the last bit as without the
+//! bound but the counts of simulated and screened waves (`tests/equiv_lifetime.rs`).
 //!
 //! **Wave periods** ([`StormInput::periods`], [`crate::waves::periods`]). By default every wave
 //! has the storm's T1/3. With Longuet-Higgins' periods each wave's period τ is drawn given its
@@ -449,6 +473,11 @@ pub struct StormCase<'a> {
     /// screen"; [`super::stick_bound`]): `false` runs them as up to results version 20 (the
     /// tests' reference).
     pub stick_bound: bool,
+    /// With the stick bound, run the answered waves whose rotation bound may exceed the largest
+    /// rotation (module docs, "The stick bound"), so that `max_rotation_rad` is every wave's:
+    /// `false` leaves it the largest of the waves run, for what reads only the counts (the work
+    /// estimate's screen pilot, whose short lives would run them far more often than a life).
+    pub settle_rotation: bool,
     /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
     /// wave is drawn and simulated.
     pub draws: WaveDraws,
@@ -671,25 +700,44 @@ fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
     p > b.mu * (b.weight_n - u) || 6.0 * m / b.width_m * b.lift_factor >= b.weight_n - u
 }
 
-/// What the storms of one life reuse: the one-wave train of the simulated waves and the waves
-/// drawn above the screen's threshold.
+/// What the storms of one life reuse: the one-wave train of the simulated waves, the waves
+/// drawn above the screen's threshold, and the waves the linear bound answered whose rotation
+/// may still be the largest (of the storm, or of the life with the life's storms they belong to:
+/// module docs, "The screen").
 #[derive(Debug, Default)]
 struct StormScratch {
     train: WaveTrain,
     waves: Vec<DrawnWave>,
     still: Vec<StillWave>,
+    storms: Vec<StormInput>,
 }
 
 /// A wave the linear bound answered ([`super::stick_bound`]): the bound on its rotation, rad,
-/// and what runs it again (its height, rise-time deviate and period), should the storm's largest
-/// rotation need it (module docs, "The screen").
+/// and what runs it again (its storm's index among the life's storms, its height, rise-time
+/// deviate and period), should the storm's or the life's largest rotation need it (module docs,
+/// "The screen").
 #[derive(Debug, Clone, Copy)]
 struct StillWave {
     rotation_rad: f64,
+    storm: usize,
     height_m: f64,
     deviate: f64,
     period_s: f64,
 }
+
+/// Whose largest rotation the still waves settle (module docs, "The screen"): a storm's, at its
+/// end ([`simulate_storm`]: fragility reads every storm's), or only the life's
+/// ([`simulate_life`]), the life's largest rotation before the storm and the storm's index.
+#[derive(Debug, Clone, Copy)]
+enum Settle {
+    Storm,
+    Life { floor_rad: f64, storm: usize },
+}
+
+/// Most still waves a life keeps unsettled (module docs, "The screen"): beyond, they are settled
+/// at the end of the storm (which empties the list). Each is 40 bytes; the design example's lives
+/// keep a few.
+const MAX_STILL_WAVES: usize = 4096;
 
 /// A still wave whose rotation bound times this factor exceeds the storm's largest rotation so
 /// far is run after all (module docs, "The screen"): a margin for a bound below the rotation the
@@ -709,7 +757,7 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, 0.0, false, None, &mut StormScratch::default())
+    storm_from(st, s, rng, (0.0, false, Settle::Storm), None, &mut StormScratch::default())
 }
 
 /// A storm that cannot be simulated.
@@ -943,8 +991,11 @@ struct WaveRun<'a> {
     train: &'a mut WaveTrain,
     /// The linear bound at T1/3, built when a wave first needs it.
     stick_t13: OnceCell<Option<AtPeriod>>,
-    /// The waves the linear bound answered, in this storm.
+    /// The waves the linear bound answered whose rotation may be the storm's (or the life's)
+    /// largest.
     still: &'a mut Vec<StillWave>,
+    /// Whose largest rotation they settle.
+    settle: Settle,
 }
 
 impl WaveRun<'_> {
@@ -992,9 +1043,16 @@ impl WaveRun<'_> {
         if st.screen && st.stick_bound {
             if let Some(rotation_rad) = self.still_rotation_rad(&event, period_s) {
                 // Neither slides nor lifts (module docs, "The screen"): its rotation may still be
-                // the storm's largest, which [`Self::settle_rotation`] decides.
+                // the storm's (or the life's) largest, which [`Self::settle_rotation`] (or
+                // [`settle_life`]) decides, unless a larger one is known already.
                 out.screened_waves += 1;
-                self.still.push(StillWave { rotation_rad, height_m: h, deviate: z, period_s });
+                let (floor_rad, storm) = match self.settle {
+                    Settle::Storm => (out.max_rotation_rad, 0),
+                    Settle::Life { floor_rad, storm } => (floor_rad.max(out.max_rotation_rad), storm),
+                };
+                if st.settle_rotation && rotation_rad * ROTATION_RESERVE > floor_rad {
+                    self.still.push(StillWave { rotation_rad, storm, height_m: h, deviate: z, period_s });
+                }
                 return Ok(());
             }
         }
@@ -1027,6 +1085,9 @@ impl WaveRun<'_> {
     /// storm's largest rotation is then what running every wave gives. Each wave run moves from
     /// the screened to the simulated count.
     fn settle_rotation(&mut self, out: &mut StormOutcome) -> Result<(), StormError> {
+        if matches!(self.settle, Settle::Life { .. }) {
+            return Ok(());
+        }
         let mut still = std::mem::take(self.still);
         still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
         for w in &still {
@@ -1080,14 +1141,15 @@ fn toe_depth_m(st: &StormCase<'_>, tide_m: f64) -> f64 {
 
 /// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
 /// (for the life's largest excursion), `failed`: in a life that has failed already (module
-/// docs, "Failure": only the rigid block runs). `toe_k`: the wave number of T1/3 at
-/// [`toe_depth_m`], if the caller has solved for it (the life, for the storm's shoaling).
+/// docs, "Failure": only the rigid block runs), its still waves settled as `settle` says (with
+/// [`Settle::Life`] they are left in `scratch.still` for [`settle_life`]). `toe_k`: the wave
+/// number of T1/3 at [`toe_depth_m`], if the caller has solved for it (the life, for the storm's
+/// shoaling).
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
     rng: &mut LoadRng,
-    start_m: f64,
-    failed: bool,
+    (start_m, failed, settle): (f64, bool, Settle),
     toe_k: Option<f64>,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
@@ -1098,8 +1160,10 @@ fn storm_from(
     let bound_t13 = site.bound(s.period_s);
     let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
     let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
-    let StormScratch { train, waves, still } = scratch;
-    still.clear();
+    let StormScratch { train, waves, still, .. } = scratch;
+    if matches!(settle, Settle::Storm) {
+        still.clear();
+    }
     let mut run = WaveRun {
         st,
         s,
@@ -1112,6 +1176,7 @@ fn storm_from(
         train,
         stick_t13: OnceCell::new(),
         still,
+        settle,
     };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
         draw_above_threshold(s, &screen, rng, waves, &mut run, &mut out)?;
@@ -1234,11 +1299,68 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             storm_index += 1;
             waves_rng.set_word_pos(storm_index << STORM_WAVE_WORDS_LOG2);
             let failed = st.failure.is_some_and(|f| life.failed(&f));
-            let o = storm_from(st, &storm, &mut waves_rng, life.sliding_m, failed, Some(k_toe), &mut scratch)?;
+            let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
+            scratch.storms.push(storm);
+            let o = storm_from(st, &storm, &mut waves_rng, (life.sliding_m, failed, settle), Some(k_toe), &mut scratch)?;
             life.add(&o);
+            // The still waves the life's largest rotation so far exceeds cannot be its largest.
+            scratch.still.retain(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
+            if scratch.still.len() > MAX_STILL_WAVES {
+                settle_life(st, &mut scratch, &mut life)?;
+            }
         }
     }
+    settle_life(st, &mut scratch, &mut life)?;
     Ok(life)
+}
+
+/// Run the still waves of the life's storms whose rotation bound may exceed the life's largest
+/// rotation, largest bound first, until the bound of the next is below it (module docs, "The
+/// screen"): the life's largest rotation is then what running every wave gives. Each wave run
+/// moves from the screened to the simulated count; it neither slides nor lifts (its bound says
+/// so), so only the rotation and the counts can move. Empties `scratch.still`.
+fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormOutcome) -> Result<(), StormError> {
+    let StormScratch { train, still, storms, .. } = scratch;
+    still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+    // The site of the storm whose waves run (the waves of a storm are mostly together).
+    let mut site: Option<(usize, StormSite)> = None;
+    let mut none = Vec::new();
+    for w in still.iter() {
+        if w.rotation_rad * ROTATION_RESERVE <= life.max_rotation_rad {
+            break;
+        }
+        let s = &storms[w.storm];
+        if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
+            site = Some((w.storm, StormSite::new(st, s)));
+        }
+        let site = &site.as_ref().expect("the wave's storm's site").1;
+        let mut run = WaveRun {
+            st,
+            s,
+            site,
+            loads_t13: site.model.at_period(s.period_s),
+            bound_t13: site.bound(s.period_s),
+            start_m: 0.0,
+            ended: false,
+            sim: None,
+            train,
+            stick_t13: OnceCell::new(),
+            still: &mut none,
+            settle: Settle::Storm,
+        };
+        let (event, _) = run.event(w.height_m, w.deviate, w.period_s);
+        let mut o = StormOutcome::default();
+        run.simulate(event, w.height_m, w.period_s, &mut o)?;
+        life.simulated_waves += 1;
+        life.screened_waves -= 1;
+        life.rocking_waves += o.rocking_waves;
+        life.large_rotation_waves += o.large_rotation_waves;
+        life.max_rotation_rad = life.max_rotation_rad.max(o.max_rotation_rad);
+        #[cfg(test)]
+        tests::SETTLED.with(|n| n.set(n.get() + 1));
+    }
+    still.clear();
+    Ok(())
 }
 
 /// A design run: the life model, how many lives, their seed, the reported thresholds and the
@@ -1461,6 +1583,50 @@ impl LifeCounts {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::cell::Cell;
+
+    thread_local! {
+        /// The still waves [`settle_life`] ran on this thread.
+        pub(super) static SETTLED: Cell<usize> = const { Cell::new(0) };
+    }
+
+    /// A life's largest rotation, settled once at its end, is that of running every wave the
+    /// screen lets through (the bound off): on 16 lives of 8 years of the small design's site
+    /// under small storms (H0's location 4 m), where a life's few simulated waves may all be
+    /// still and its largest rotation a still wave's, every output of every life is the same but
+    /// the counts, which move together, and [`settle_life`] runs waves.
+    #[test]
+    fn a_lifes_largest_rotation_settled_at_its_end_is_every_waves() {
+        let text = include_str!("../../tests/data/small_design.toml")
+            .replace("life_years = 5", "life_years = 8")
+            .replace("lives = 12", "lives = 16")
+            .replace("seed = 3", "seed = 9")
+            .replace("storm_location_m = 7.5", "storm_location_m = 4.0");
+        let sc =
+            crate::scenario::Scenario::from_toml(&text, std::path::Path::new("small.toml"), std::path::Path::new("."))
+                .unwrap();
+        let d = sc.design.clone().unwrap();
+        let st = sc.storm_case(true).unwrap();
+        let run = |stick_bound: bool| {
+            let st = StormCase { stick_bound, ..st };
+            (0..d.lives).map(|i| simulate_life(&st, &d.life, d.seed, i).unwrap()).collect::<Vec<_>>()
+        };
+        SETTLED.with(|n| n.set(0));
+        let with = run(true);
+        let settled = SETTLED.with(Cell::get);
+        let without = run(false);
+        let (mut lives, mut answered) = (0, 0);
+        for (a, b) in with.iter().zip(&without) {
+            let moved = b.simulated_waves - a.simulated_waves;
+            assert_eq!(a.screened_waves, b.screened_waves + moved, "the counts move together");
+            assert_eq!(StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a }, *b);
+            lives += 1;
+            answered += moved;
+        }
+        eprintln!("{lives} lives compared, {answered} waves answered by the bound, {settled} run at the lives' ends");
+        assert_eq!(lives, 16);
+        assert!(answered > 0 && settled > 0, "{answered} answered, {settled} settled");
+    }
 
     /// The design example's scenario.
     fn design_example() -> crate::scenario::Scenario {
@@ -1542,7 +1708,7 @@ mod tests {
                     let k = wavenumber(period_s, toe_depth_m(&st, tide_m));
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
-                        storm_from(&st, &s, &mut rng, 0.0, false, toe_k, &mut StormScratch::default()).unwrap()
+                        storm_from(&st, &s, &mut rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default()).unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));
                     assert_eq!(format!("{given:?}"), format!("{solved:?}"), "H1/3 {h13} m, tide {tide_m} m");

@@ -739,6 +739,7 @@ impl Scenario {
             rigid_block_mu: w.rigid_block_mu(&self.structure.foundation),
             screen,
             stick_bound: true,
+            settle_rotation: true,
             draws: WaveDraws::AboveThreshold,
             failure: self.design.as_ref().and_then(|d| d.life_end(self.structure.caisson.width_m)),
         })
