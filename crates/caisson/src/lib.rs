@@ -50,7 +50,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// The version of the results: raised whenever a change moves any number the tool reports for
 /// the same input (a model, a default, a random stream). Outputs and checkpoints record it, so
 /// results of different versions are never mixed.
-pub const RESULTS_VERSION: u32 = 22;
+pub const RESULTS_VERSION: u32 = 23;
 
 /// Most worker threads a parallel driver may be given (the CLI's `--threads`, the Python
 /// `threads=`; 0 means one per core): more only costs memory and start-up time.

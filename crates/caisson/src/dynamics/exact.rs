@@ -39,23 +39,43 @@
 //! the middle y(h/2) follows exactly from the same interpolated force (the blocks of the
 //! exponential for h/2), R there against its interpolation there, δR, is a force through
 //! σ = 0, h/2, h vanishing at the ends, which moves the end by δR times the middle value's
-//! weights (the largest of the u_x, u_y and θ B/2 rows, m). Otherwise the Newmark step is taken
-//! from the same state (which locates the onset of slip).
+//! weights (the largest of the u_x, u_y and θ B/2 rows, m). The load's own interpolation error
+//! is not held to the tolerance, only guarded (results version 23, [`LOAD_GUARD`]): through the
+//! previous step's start, a fourth point of the load is known without evaluating it (the start of
+//! the step before that one, or its middle), the cubic through the four departs from the
+//! quadratic in the middle by −(3/8) h³ times their divided difference, and that with δR, through
+//! the same weights, refuses the step beyond 30 tolerances: a load the step cannot follow
+//! (measured: held to one tolerance, 24 % more instructions on the design example for 6e-6 m in
+//! E|S|). Otherwise the Newmark step is taken from the same state (which locates the onset of
+//! slip).
 //! Its end is committed as an all-sticking Newmark step would be.
 //!
 //! **The ladder** (results version 17; four rungs since results version 22): the step lengths
-//! are h_k = dt_max/2^k, k = 0 … 3 ([`RUNGS`]). A step tries the rung above the last accepted
-//! one (the longest at a run's start, and when the contact set changes), or the longest rung
-//! that ends by the load's next breakpoint (and by the run's end): the gap left before a
-//! breakpoint, shorter than dt_max/8, is one Newmark step. A step refused by its error estimate
-//! is retried on the next shorter rung. One refused because a spring slips, lifts or touches
-//! down in it is retried on the next shorter rung too, and until its end the steps go at most
+//! are h_k = dt_max/2^k, k = 0 … 3 ([`RUNGS`]). A step tries the rung its predecessor chose (the
+//! longest at a run's start and when full contact is entered, dt_max/4 when a set with springs
+//! lifted is: [`PARTIAL_ENTRY_RUNG`]), or the longest rung that ends by the load's next
+//! breakpoint (and by the run's end): the gap left before a breakpoint, shorter than dt_max/8,
+//! is one Newmark step. The rung follows the error estimate ε of the last step tried, as a
+//! fraction of the tolerance (results version 23, [`CLIMB`] = 2): after an accepted step the
+//! next climbs one rung, n rungs if ε ≤ 2^−n; a step refused by its estimate is retried one
+//! rung shorter, and one more per factor 2 that ε exceeds 2 (before: one rung up after every
+//! accepted step, one down after every refusal). A step refused because a spring slips, lifts or
+//! touches down in it is retried on the next shorter rung, and until its end the steps go at most
 //! half the way to it ([`Ladder`]'s ceiling), so that the event is bracketed by halving in exact
 //! steps (results version 22: measured on the design example, one rung more and this refusal
 //! rule take 9 % fewer instructions than Newmark from h/2 of the refused step on three rungs).
-//! A step refused on the shortest rung is taken by Newmark from the same state, starting at h/2
-//! (no exact step is tried again before the refused step's end; the Newmark steps locate the
-//! event), and the exact steps resume from the rung they left. Before (results versions 14-16) only dt_max was exact: the
+//! A step refused on the shortest rung is taken by Newmark from the same state, starting at h/2,
+//! and no exact step is tried again in the same contact set before the refused step's end (the
+//! Newmark steps locate the event). **The hand-over back** (results version 23): once the event
+//! has come, a spring slipping at a committed step or the contact set changed, that wait and the
+//! ceiling end, so the first committed state after it in which every spring in contact sticks
+//! is advanced exactly again (before, the Newmark steps went on to the refused step's end and
+//! until half the way to the ceiling was a whole rung: on the design example's lifting waves 22
+//! Newmark steps a wave, of which 4.7 fell to exact steps; design_500 2.971 G → 2.721 G
+//! instructions together with the rung rules above). Shorter rungs (dt_max/16 … dt_max/128) were
+//! measured and do not pay: used for the gap before a breakpoint, +8 % instructions; for the
+//! steps under the ceiling, +4 %; to bracket an event one rung further, +0.8 %; entered after an
+//! event at the rung of the Newmark step, +0.4 %. Before (results versions 14-16) only dt_max was exact: the
 //! stretch between the last step of dt_max and a breakpoint, and every step after a refused
 //! one, were Newmark steps from the stepper's last Newmark length (at a wave's start the first
 //! step, 1 ms), which then doubled step by step.
@@ -79,9 +99,9 @@
 //! positions: two models with equal Σx and Σx² share the full set's matrices, not a partial
 //! set's). A step may start from any committed state with springs lifted and none of those in
 //! contact slipping (with [`super::SolverParams::locate_contact`], whose Newmark steps locate
-//! the contact changes: re-contact and the dashpots' jump stay on their side), and the rung and
-//! the interpolation through the previous step's start ([`Third::Before`]) start afresh when
-//! the set changes. The events the step checks, besides the error estimate:
+//! the contact changes: re-contact and the dashpots' jump stay on their side), and the rung
+//! (dt_max/4, "The ladder") and the interpolation through the previous step's start
+//! ([`Third::Before`]) start afresh when the set changes. The events the step checks, besides the error estimate:
 //!
 //! 1. every spring of C sticks, by the spring law's own test, at σ = h/4, h/2, 3h/4 and h;
 //! 2. the set holds: the springs at its boundaries (the innermost lifted and the outermost
@@ -214,6 +234,14 @@ const PARTIAL_ENTRY_RUNG: usize = 2;
 /// results version 22: 2.7938 G).
 const CLIMB: f64 = 2.0;
 
+/// The exact step's error estimate with the load's interpolation error in it refuses a step only
+/// beyond this many tolerances: a load that the step cannot follow (a dip of 2 s under a step of
+/// 0.5 s, 24 % of it: `tests/verify_partial_contact.rs`). Below that it is not held to the
+/// tolerance (module docs, the error estimate): held to 1 tolerance, the design example takes
+/// 24 % more instructions (design_500) for a change of 6e-6 m in E|S|; at 30 none more, at 10
+/// 0.5 % more.
+const LOAD_GUARD: f64 = 30.0;
+
 /// M, K_L, C_L and dt_max, the numbers the propagators of a ladder come from (with the spring
 /// positions: those of the partial contact sets).
 type Key = [f64; 28];
@@ -238,6 +266,9 @@ pub(super) struct Previous {
     r_start_n: f64,
     /// The load (gravity included) at its start, N.
     p_start: Vector3<f64>,
+    /// One more point of the load before its end, and its time: the start of the step before it
+    /// (a step through the previous step's start), or its middle (s, N).
+    extra: (f64, Vector3<f64>),
 }
 
 /// Where the step's load is known besides its start and end: at its middle, or at the start of
@@ -708,10 +739,36 @@ impl Simulation {
         let dr = r_of(&qm) - r_mid;
         let w = &pr.middle[1][0];
         let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
+        // Through the previous step's start, the load's departure from its interpolation in the
+        // middle: the cubic through a fourth point of the load (the start of the step before, or
+        // its middle), −(3/8) h³ times its leading coefficient (the divided difference), with δR
+        // through the middle's weights: a step whose load the interpolation misses by more than
+        // LOAD_GUARD tolerances is refused too (module docs, the error estimate).
+        let err = match (third, prev) {
+            (Third::Before(pb), Some(p)) => {
+                let (a, pa) = (p.extra.0 - self.state.t_s, p.extra.1);
+                let (k, h2) = (-0.375 * h * h * h, 2.0 * h * h);
+                let dp = pa * (k / ((a + h) * a * (a - h))) - pb * (k / ((h + a) * h2))
+                    + p0 * (2.0 * k / (a * h2))
+                    + p1 * (k / ((h - a) * h2));
+                let dy = rows::<3, 3>(&pr.middle[1], &[dp[0] - dr, dp[1], dp[2]]);
+                let load_err = dy[0].abs().max(dy[1].abs()).max(dy[2].abs() * 0.5 * self.model.width_m);
+                if load_err > LOAD_GUARD * tolerance_m {
+                    load_err
+                } else {
+                    err
+                }
+            }
+            _ => err,
+        };
         ladder.ratio.set(err / tolerance_m);
         if err > tolerance_m || err.is_nan() {
             return Err(Refused::Error);
         }
+        let extra = match third {
+            Third::Before(pb) => (self.state.t_s - h, pb),
+            Third::Middle(pm) => (self.state.t_s + 0.5 * h, pm),
+        };
         // The acceleration at the end (not for a step refused by its error estimate).
         let acc = pr.minv * (Vector3::from(g1) - pr.k_l * q1 - pr.c_l * v1);
         let converged = Converged { u, v, a: [acc[0], acc[1], acc[2]], iterations: 0, residual: 0.0 };
@@ -754,7 +811,7 @@ impl Simulation {
             }
         }
         self.exact_prev =
-            Some(Previous { t_end_s: self.state.t_s + h, h_s: h, set: set.index, r_start_n: r0, p_start: p0 });
+            Some(Previous { t_end_s: self.state.t_s + h, h_s: h, set: set.index, r_start_n: r0, p_start: p0, extra });
         Ok(converged)
     }
 }
@@ -892,8 +949,10 @@ mod tests {
     /// diagonal mass matrix under a pulsating wave through its base centre (R = 0, so no error
     /// estimate refuses a step) reaching a fifth of μ W', T = 2.03 s, dt_max = 50 ms. Counted:
     /// 20 steps of dt_max and one of dt_max/4 to T/2 = 1.015 s, the 2.5 ms left in one Newmark
-    /// step; after it the rungs climb again, dt_max/4, dt_max/2, then 19 steps of dt_max and one
-    /// of dt_max/2 to T, and one Newmark step of 2.5 ms: 43 exact steps; no spring slips.
+    /// step; after it one step of dt_max/4, whose error estimate (0: R = 0) lets the next climb
+    /// to the top (results version 23; one rung a step before: dt_max/2, then 19 steps of
+    /// dt_max), 20 steps of dt_max to 2.0275 s, and one Newmark step of 2.5 ms to T: 42 exact
+    /// steps; no spring slips.
     #[test]
     fn a_sticking_wave_takes_exact_steps_to_its_breakpoints() {
         use crate::loads::history::{LoadComponent, WaveEvent, WaveTrain};
@@ -909,9 +968,62 @@ mod tests {
         sim.run_until(period, &train, &mut ()).unwrap();
         let s = sim.stats;
         assert!((sim.state.t_s - period).abs() < 1e-12, "t = {}", sim.state.t_s);
-        assert_eq!(s.exact_steps, 21 + 22, "{s:?}");
+        assert_eq!(s.exact_steps, 21 + 21, "{s:?}");
         assert_eq!(s.steps - s.exact_steps, 2, "{s:?}");
         assert_eq!(s.rejected_steps, 0, "{s:?}");
         assert!(sim.state.springs.iter().all(|c| c.slip_m == 0.0 && !c.sliding), "no spring slips");
+    }
+
+    /// The hand-over back to exact steps after a slip (results version 23, module docs, "The
+    /// ladder"): the Table 5 caisson (diagonal mass matrix) under a pulsating wave through its
+    /// base centre reaching 1.2 μ W' (T = 2.03 s, dt_max = 50 ms, tolerance 1e-6 m) slides 55 mm
+    /// in one episode near the crest (0.32 s to 0.895 s, Newmark steps). The committed state that
+    /// ends the slip is advanced by an exact step at once (counted: the one episode, 0 Newmark
+    /// steps between its end and the next exact step; 32 exact steps of 85). The run agrees with
+    /// Newmark steps alone at a 100 times tighter tolerance (1e-8 m, the oracle) within 0.5 % of
+    /// the slip (measured 0.21 %, 1.1e-4 m: the Newmark steps of the slip at 1e-6 m).
+    #[test]
+    fn exact_steps_resume_as_soon_as_a_slip_ends() {
+        use crate::loads::history::{LoadComponent, WaveEvent, WaveTrain};
+        /// Every committed step: whether it was exact (no Newton iteration) and any spring slips.
+        #[derive(Default)]
+        struct Steps(Vec<(f64, bool, bool)>);
+        impl Observer for Steps {
+            fn observe(&mut self, s: &super::super::StepView<'_>) {
+                self.0.push((s.t_s, s.iterations == 0, s.state.springs.iter().any(|c| c.sliding)));
+            }
+            fn reads_reaction(&self) -> bool {
+                false
+            }
+        }
+        let (dt_max, period) = (0.05, 2.03);
+        let run = |exact: bool, tolerance_m: f64| {
+            let solver = SolverParams { dt_s: 1e-4, exact_sticking: exact, ..SolverParams::default() }
+                .with_adaptive(AdaptiveParams { dt_max_s: dt_max, tolerance_m, ..AdaptiveParams::for_first_step(1e-4) })
+                .unwrap();
+            let mut sim = simulation_with(DampingMode::Elastic, VerticalDamping::Springs, MassMatrix::Diagonal, solver);
+            let push = LoadComponent::from_levers(1.2 * 0.6 * sim.model.weight_n, 0.0, 0.0, 0.39, 0.78);
+            let wave = WaveEvent::new(0.0, period, push, 1.0, LoadComponent::default(), LoadComponent::default(), None);
+            let train = WaveTrain::new(vec![wave]).unwrap();
+            sim.reset(&train);
+            let mut steps = Steps::default();
+            sim.run_until(period, &train, &mut steps).unwrap();
+            (sim.state.u[0], sim.state.springs[0].slip_m, sim.stats, steps.0)
+        };
+        let (ux, slip, stats, steps) = run(true, 1e-6);
+        let (ux_ref, slip_ref, _, _) = run(false, 1e-8);
+        println!("{stats:?}; slip {slip:e} m, oracle {slip_ref:e} m; u_x {ux:e}, {ux_ref:e}");
+        let mut ends = 0;
+        for (i, w) in steps.windows(2).enumerate() {
+            if w[0].2 && !w[1].2 {
+                // The slip is over at step i + 1: the next step is exact.
+                ends += 1;
+                let next = steps[i + 2..].iter().position(|s| s.1).expect("exact steps again");
+                assert_eq!(next, 0, "Newmark steps after the slip ended at {} s", w[1].0);
+            }
+        }
+        assert!(ends >= 1 && slip.abs() > 1e-6, "{ends} slip episodes, slip {slip:e} m");
+        assert_eq!(ends, 1, "one slip episode");
+        assert!((slip - slip_ref).abs() < 5e-3 * slip_ref.abs(), "slip {slip:e} m, oracle {slip_ref:e} m");
     }
 }

@@ -1307,10 +1307,7 @@ impl Simulation {
             // From a state where every spring in contact sticks, an exact step if one fits before
             // the breakpoint (`exact`); where a spring would slip, lift or touch down, the
             // Newmark step instead.
-            if level == 0
-                && !at_event
-                && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs)
-            {
+            if level == 0 && !at_event && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs) {
                 continue;
             }
             // After a Newton failure the halved step may go below dt_min.
