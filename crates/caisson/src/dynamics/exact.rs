@@ -58,7 +58,7 @@
 //! is one Newmark step. The rung follows the error estimate ε of the last step tried, as a
 //! fraction of the tolerance (results version 23, [`CLIMB`] = 2): after an accepted step the
 //! next climbs one rung, n rungs if ε ≤ 2^−n; a step refused by its estimate is retried one
-//! rung shorter, and one more per factor 2 that ε exceeds 2 (before: one rung up after every
+//! rung shorter, n + 1 rungs if ε > 2^n (before: one rung up after every
 //! accepted step, one down after every refusal). A step refused because a spring slips, lifts or
 //! touches down in it is retried on the next shorter rung, and until its end the steps go at most
 //! half the way to it ([`Ladder`]'s ceiling), so that the event is bracketed by halving in exact
@@ -70,9 +70,9 @@
 //! has come, a spring slipping at a committed step or the contact set changed, that wait and the
 //! ceiling end, so the first committed state after it in which every spring in contact sticks
 //! is advanced exactly again (before, the Newmark steps went on to the refused step's end and
-//! until half the way to the ceiling was a whole rung: on the design example's lifting waves 22
-//! Newmark steps a wave, of which 4.7 fell to exact steps; design_500 2.971 G → 2.721 G
-//! instructions together with the rung rules above). Shorter rungs (dt_max/16 … dt_max/128) were
+//! until half the way to the ceiling was a whole rung: on the design example's lifting waves
+//! 22.1 Newmark steps a wave, now 17.5; design_500 2.971 G → 2.721 G instructions together with
+//! the rung rules above, 2.773 G with the load guard below). Shorter rungs (dt_max/16 … dt_max/128) were
 //! measured and do not pay: used for the gap before a breakpoint, +8 % instructions; for the
 //! steps under the ceiling, +4 %; to bracket an event one rung further, +0.8 %; entered after an
 //! event at the rung of the Newmark step, +0.4 %. Before (results versions 14-16) only dt_max was exact: the
@@ -221,17 +221,17 @@ pub(super) struct Ladder {
 }
 
 /// The rung a set with springs lifted is entered on: dt_max/4 (measured on the design example,
-/// results version 23, design_500: 2.7808 G instructions against 2.7862 G from dt_max/2 and
-/// 2.8049 G from dt_max/8).
+/// design_500 on a build with the rules switchable: 2.7808 G instructions against 2.7862 G from
+/// dt_max/2 and 2.8049 G from dt_max/8).
 const PARTIAL_ENTRY_RUNG: usize = 2;
 
 /// The error estimate's growth per doubling of the step assumed by the rung choice: an accepted
 /// step climbs one rung, n rungs if its estimate is within CLIMB^−n of the tolerance; a refused
-/// one descends one rung, and one more per factor CLIMB its estimate is above the tolerance
-/// beyond the first (module docs, "The ladder"). The estimate grows as h⁵ where the force is smooth, but the design
-/// example measures best with a factor 2 (design_500: 2.7626 G instructions; 4: 2.7680 G;
-/// 32: 2.7808 G; one rung up after every accepted step and one down after every refusal,
-/// results version 22: 2.7938 G).
+/// one descends one rung, n + 1 rungs if its estimate exceeds CLIMB^n tolerances (module docs,
+/// "The ladder"). The estimate grows as h⁵ where the force is smooth, but the design example
+/// measures best with a factor 2 (design_500 on a build with the rules switchable: 2.7626 G
+/// instructions; 4: 2.7680 G; 32, nearly always one rung as before: 2.7808 G; never climbing
+/// while the estimate is above 1/32 of the tolerance: 9 % more).
 const CLIMB: f64 = 2.0;
 
 /// The exact step's error estimate with the load's interpolation error in it refuses a step only
@@ -570,8 +570,7 @@ impl Simulation {
                     return true;
                 }
                 Err(Refused::Error) if k + 1 < RUNGS => {
-                    // One rung shorter, and one more per factor CLIMB the estimate is above the
-                    // tolerance.
+                    // One rung shorter, n + 1 if the estimate exceeds CLIMB^n tolerances.
                     let ladder = self.exact.as_mut().expect("checked above");
                     let r = ladder.ratio.get();
                     k += 1;
