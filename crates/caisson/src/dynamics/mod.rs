@@ -532,8 +532,6 @@ pub struct Simulation {
     exact: Option<exact::Ladder>,
     /// The last committed step, if it was exact (its end and R at its start: `exact`).
     exact_prev: Option<exact::Previous>,
-    /// An exact step is not tried again before this time after one that failed, s.
-    exact_retry_s: f64,
     /// The load (gravity included) of the last step committed by the adaptive stepping, and its
     /// time.
     last_load: Option<(f64, Vector3<f64>)>,
@@ -578,7 +576,6 @@ impl Simulation {
             fast,
             exact: None,
             exact_prev: None,
-            exact_retry_s: f64::NEG_INFINITY,
             last_load: None,
             event_step: false,
             restarted_at_s: f64::NEG_INFINITY,
@@ -602,7 +599,6 @@ impl Simulation {
         self.h_next = self.solver.dt_s;
         self.fast.invalidate();
         self.exact_prev = None;
-        self.exact_retry_s = f64::NEG_INFINITY;
         if let Some(l) = self.exact.as_mut() {
             l.restart();
         }
@@ -1320,12 +1316,7 @@ impl Simulation {
             // From a state where every spring in contact sticks, an exact step if one fits before
             // the breakpoint (`exact`); where a spring would slip, lift or touch down, the
             // Newmark step instead.
-            if level == 0
-                && !at_event
-                && t >= self.exact_retry_s
-                && self.exact_may_start()
-                && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs)
-            {
+            if level == 0 && !at_event && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs) {
                 continue;
             }
             // After a Newton failure the halved step may go below dt_min.
