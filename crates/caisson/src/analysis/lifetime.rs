@@ -1301,7 +1301,8 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let failed = st.failure.is_some_and(|f| life.failed(&f));
             let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
             scratch.storms.push(storm);
-            let o = storm_from(st, &storm, &mut waves_rng, (life.sliding_m, failed, settle), Some(k_toe), &mut scratch)?;
+            let o =
+                storm_from(st, &storm, &mut waves_rng, (life.sliding_m, failed, settle), Some(k_toe), &mut scratch)?;
             life.add(&o);
             // The still waves the life's largest rotation so far exceeds cannot be its largest.
             scratch.still.retain(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
@@ -1708,7 +1709,8 @@ mod tests {
                     let k = wavenumber(period_s, toe_depth_m(&st, tide_m));
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
-                        storm_from(&st, &s, &mut rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default()).unwrap()
+                        storm_from(&st, &s, &mut rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
+                            .unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));
                     assert_eq!(format!("{given:?}"), format!("{solved:?}"), "H1/3 {h13} m, tide {tide_m} m");
