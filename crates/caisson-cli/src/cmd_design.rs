@@ -255,6 +255,8 @@ struct CheckpointWriter {
     header_line: String,
     len: u64,
     syncer: Syncer,
+    /// The lines appended by this run, by life: the ordered rewrite at the end reuses them.
+    lines: Lines,
 }
 
 impl CheckpointWriter {
@@ -285,13 +287,14 @@ impl CheckpointWriter {
         }
         let len = file.metadata().with_context(ctx)?.len();
         let syncer = Syncer::start(file.try_clone().with_context(ctx)?);
-        Ok(CheckpointWriter { path: path.to_path_buf(), file, header_line, len, syncer })
+        Ok(CheckpointWriter { path: path.to_path_buf(), file, header_line, len, syncer, lines: BTreeMap::new() })
     }
 
-    /// Flush the last lines to disk and stop flushing; an error of any flush names the file.
-    fn finish(mut self) -> Result<()> {
+    /// Flush the last lines to disk and stop flushing; an error of any flush names the file. The
+    /// lines appended, by life.
+    fn finish(mut self) -> Result<Lines> {
         match self.syncer.finish() {
-            None => Ok(()),
+            None => Ok(std::mem::take(&mut self.lines)),
             Some(e) => Err(anyhow::Error::new(e).context(format!("writing the checkpoint {}", self.path.display()))),
         }
     }
@@ -302,6 +305,7 @@ impl CheckpointWriter {
             Ok(()) => {
                 self.len += line.len() as u64;
                 self.syncer.written();
+                self.lines.insert(life, line);
                 Ok(())
             }
             Err(e) => {
@@ -539,9 +543,10 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let case = sc.storm_case(design.screen).map_err(input_err)?;
     let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
-    // The lives this run computes: a shard's range, not the scenario's whole count.
-    let estimate =
-        caisson::analysis::work::design(&case, &DesignParams { lives: range.len(), ..design.clone() }, waves);
+    // The lives this run computes: a shard's range, not the scenario's whole count. Its pilots
+    // run on the run's threads.
+    let pilot = DesignParams { lives: range.len(), ..design.clone() };
+    let estimate = with_threads(args.threads, || caisson::analysis::work::design(&case, &pilot, waves))?;
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = design_fingerprint(&case, &design);
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
@@ -570,14 +575,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let pb = progress(range.len() as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
-    let results = compute_lives(&case, &design, &todo, writer, &pb, args.threads, stop_after)?;
+    let (results, lines) = compute_lives(&case, &design, &todo, writer, &pb, args.threads, stop_after)?;
     done.extend(results);
     let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
     refuse_incomplete(done.len(), range.len(), &kept())?;
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);
     if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
-        rewrite_checkpoint(path, header_line, &done, &outside)?;
+        rewrite_checkpoint(path, header_line, &done, &outside, lines)?;
     }
     if shard {
         let dir = args.out.as_deref().expect("--life-range requires --out");
@@ -588,9 +593,12 @@ pub fn run(args: DesignArgs) -> Result<()> {
     report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, args.out.as_deref(), &keep)
 }
 
+/// Checkpoint lines as written, by life.
+type Lines = BTreeMap<usize, String>;
+
 /// The lives `todo` on `threads` workers, each appended to the checkpoint as it finishes, and the
-/// checkpoint finished (every life on disk) before they are returned; stops early after
-/// `stop_after` lives or at Ctrl-C.
+/// checkpoint finished (every life on disk) before they are returned with the lines written, by
+/// life; stops early after `stop_after` lives or at Ctrl-C.
 fn compute_lives(
     case: &StormCase,
     design: &DesignParams,
@@ -599,7 +607,7 @@ fn compute_lives(
     pb: &indicatif::ProgressBar,
     threads: usize,
     stop_after: usize,
-) -> Result<Vec<(usize, StormOutcome)>> {
+) -> Result<(Vec<(usize, StormOutcome)>, Lines)> {
     let finished_now = AtomicUsize::new(0);
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
     let on_life = |i: usize, o: &StormOutcome| {
@@ -623,26 +631,36 @@ fn compute_lives(
         return Err(e);
     }
     // Every finished life on disk before the outputs are written (or the run stops).
-    if let Some(w) = writer {
-        w.into_inner().unwrap_or_else(|e| e.into_inner()).finish()?;
-    }
-    Ok(results)
+    let lines = match writer {
+        Some(w) => w.into_inner().unwrap_or_else(|e| e.into_inner()).finish()?,
+        None => BTreeMap::new(),
+    };
+    Ok((results, lines))
 }
 
 /// The checkpoint rewritten with the lives in index order, whatever the order they finished in:
 /// the same file for any --threads and after any resume (`outside`: lives of the file outside
-/// this run's range, kept).
+/// this run's range, kept). `written`: the lines this run appended, by life, used as they are (the
+/// same bytes as [`life_line`] of the life); the other lives' lines are made again.
 fn rewrite_checkpoint(
     path: &Path,
     header_line: &str,
     done: &BTreeMap<usize, StormOutcome>,
     outside: &BTreeMap<usize, StormOutcome>,
+    mut written: Lines,
 ) -> Result<()> {
-    let mut text = format!("{header_line}\n");
     let mut all: Vec<(&usize, &StormOutcome)> = done.iter().chain(outside.iter()).collect();
     all.sort_by_key(|(i, _)| **i);
+    let line_bytes: usize = written.values().map(String::len).sum();
+    let mut text =
+        String::with_capacity(header_line.len() + 1 + line_bytes + 512 * (all.len() - written.len().min(all.len())));
+    text.push_str(header_line);
+    text.push('\n');
     for (i, o) in all {
-        text.push_str(&life_line(header_line, *i, o));
+        match written.remove(i) {
+            Some(line) => text.push_str(&line),
+            None => text.push_str(&life_line(header_line, *i, o)),
+        }
     }
     write_atomic(path, text.as_bytes())
 }
