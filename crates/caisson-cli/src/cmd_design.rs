@@ -692,14 +692,25 @@ pub(crate) fn report_lives(
     if let Some(dir) = out {
         // Merge and design opened the set before writing their checkpoint into it.
         let _set = (!crate::output::set_open()).then(|| crate::output::OutSet::open(dir));
-        write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes())?;
-        write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?)?;
         let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         // The values of the statistics: a failed life at the sliding limit.
         let dynamic: Vec<f64> =
             lives.iter().map(|l| if l.failed(&failure) { failure_m } else { l.sliding_m.abs() }).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
-        plots(dir, title, &dynamic, &rigid, failure_m)?;
+        // The files are independent: made and synced at once (each to its temporary file; the
+        // set renames them into place together), the first error in this order reported.
+        let (json_file, csv_file, plot_files) = std::thread::scope(|s| {
+            let json_file = s.spawn(|| write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes()));
+            let csv_file = s.spawn(|| write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?));
+            let plot_files = plots(dir, title, &dynamic, &rigid, failure_m);
+            let joined = |h: std::thread::ScopedJoinHandle<'_, Result<()>>| {
+                h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+            };
+            (joined(json_file), joined(csv_file), plot_files)
+        });
+        json_file?;
+        csv_file?;
+        plot_files?;
         crate::output::tidy_out_dir(dir, "design", keep)?;
         if !json {
             crate::sayln!(
