@@ -651,18 +651,20 @@ fn rewrite_checkpoint(
 ) -> Result<()> {
     let mut all: Vec<(&usize, &StormOutcome)> = done.iter().chain(outside.iter()).collect();
     all.sort_by_key(|(i, _)| **i);
-    let line_bytes: usize = written.values().map(String::len).sum();
-    let mut text =
-        String::with_capacity(header_line.len() + 1 + line_bytes + 512 * (all.len() - written.len().min(all.len())));
-    text.push_str(header_line);
-    text.push('\n');
-    for (i, o) in all {
-        match written.remove(i) {
-            Some(line) => text.push_str(&line),
-            None => text.push_str(&life_line(header_line, *i, o)),
-        }
-    }
-    write_atomic(path, text.as_bytes())
+    // Streamed to the temporary file: the lines are not held a second time as one text.
+    let (tmp, file) = crate::output::TempFile::create(path)?;
+    let mut w = std::io::BufWriter::with_capacity(1 << 16, file);
+    let mut put = |bytes: &[u8]| w.write_all(bytes);
+    let streamed = put(header_line.as_bytes()).and_then(|_| put(b"\n")).and_then(|_| {
+        all.into_iter().try_for_each(|(i, o)| match written.remove(i) {
+            Some(line) => put(line.as_bytes()),
+            None => put(life_line(header_line, *i, o).as_bytes()),
+        })
+    });
+    streamed.and_then(|_| w.flush()).with_context(|| format!("writing {}", path.display()))?;
+    drop(w);
+    // Synced, then renamed into place (or staged in the out set), as `write_atomic` does.
+    tmp.commit(path)
 }
 
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
