@@ -255,6 +255,8 @@ struct CheckpointWriter {
     header_line: String,
     len: u64,
     syncer: Syncer,
+    /// The lines appended by this run, by life: the ordered rewrite at the end reuses them.
+    lines: Lines,
 }
 
 impl CheckpointWriter {
@@ -285,13 +287,14 @@ impl CheckpointWriter {
         }
         let len = file.metadata().with_context(ctx)?.len();
         let syncer = Syncer::start(file.try_clone().with_context(ctx)?);
-        Ok(CheckpointWriter { path: path.to_path_buf(), file, header_line, len, syncer })
+        Ok(CheckpointWriter { path: path.to_path_buf(), file, header_line, len, syncer, lines: BTreeMap::new() })
     }
 
-    /// Flush the last lines to disk and stop flushing; an error of any flush names the file.
-    fn finish(mut self) -> Result<()> {
+    /// Flush the last lines to disk and stop flushing; an error of any flush names the file. The
+    /// lines appended, by life.
+    fn finish(mut self) -> Result<Lines> {
         match self.syncer.finish() {
-            None => Ok(()),
+            None => Ok(std::mem::take(&mut self.lines)),
             Some(e) => Err(anyhow::Error::new(e).context(format!("writing the checkpoint {}", self.path.display()))),
         }
     }
@@ -302,6 +305,7 @@ impl CheckpointWriter {
             Ok(()) => {
                 self.len += line.len() as u64;
                 self.syncer.written();
+                self.lines.insert(life, line);
                 Ok(())
             }
             Err(e) => {
@@ -539,9 +543,10 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let case = sc.storm_case(design.screen).map_err(input_err)?;
     let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
-    // The lives this run computes: a shard's range, not the scenario's whole count.
-    let estimate =
-        caisson::analysis::work::design(&case, &DesignParams { lives: range.len(), ..design.clone() }, waves);
+    // The lives this run computes: a shard's range, not the scenario's whole count. Its pilots
+    // run on the run's threads.
+    let pilot = DesignParams { lives: range.len(), ..design.clone() };
+    let estimate = with_threads(args.threads, || caisson::analysis::work::design(&case, &pilot, waves))?;
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = design_fingerprint(&case, &design);
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
@@ -570,14 +575,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let pb = progress(range.len() as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
-    let results = compute_lives(&case, &design, &todo, writer, &pb, args.threads, stop_after)?;
+    let (results, lines) = compute_lives(&case, &design, &todo, writer, &pb, args.threads, stop_after)?;
     done.extend(results);
     let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
     refuse_incomplete(done.len(), range.len(), &kept())?;
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);
     if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
-        rewrite_checkpoint(path, header_line, &done, &outside)?;
+        rewrite_checkpoint(path, header_line, &done, &outside, lines)?;
     }
     if shard {
         let dir = args.out.as_deref().expect("--life-range requires --out");
@@ -588,9 +593,12 @@ pub fn run(args: DesignArgs) -> Result<()> {
     report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, args.out.as_deref(), &keep)
 }
 
+/// Checkpoint lines as written, by life.
+type Lines = BTreeMap<usize, String>;
+
 /// The lives `todo` on `threads` workers, each appended to the checkpoint as it finishes, and the
-/// checkpoint finished (every life on disk) before they are returned; stops early after
-/// `stop_after` lives or at Ctrl-C.
+/// checkpoint finished (every life on disk) before they are returned with the lines written, by
+/// life; stops early after `stop_after` lives or at Ctrl-C.
 fn compute_lives(
     case: &StormCase,
     design: &DesignParams,
@@ -599,7 +607,7 @@ fn compute_lives(
     pb: &indicatif::ProgressBar,
     threads: usize,
     stop_after: usize,
-) -> Result<Vec<(usize, StormOutcome)>> {
+) -> Result<(Vec<(usize, StormOutcome)>, Lines)> {
     let finished_now = AtomicUsize::new(0);
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
     let on_life = |i: usize, o: &StormOutcome| {
@@ -623,28 +631,40 @@ fn compute_lives(
         return Err(e);
     }
     // Every finished life on disk before the outputs are written (or the run stops).
-    if let Some(w) = writer {
-        w.into_inner().unwrap_or_else(|e| e.into_inner()).finish()?;
-    }
-    Ok(results)
+    let lines = match writer {
+        Some(w) => w.into_inner().unwrap_or_else(|e| e.into_inner()).finish()?,
+        None => BTreeMap::new(),
+    };
+    Ok((results, lines))
 }
 
 /// The checkpoint rewritten with the lives in index order, whatever the order they finished in:
 /// the same file for any --threads and after any resume (`outside`: lives of the file outside
-/// this run's range, kept).
+/// this run's range, kept). `written`: the lines this run appended, by life, used as they are (the
+/// same bytes as [`life_line`] of the life); the other lives' lines are made again.
 fn rewrite_checkpoint(
     path: &Path,
     header_line: &str,
     done: &BTreeMap<usize, StormOutcome>,
     outside: &BTreeMap<usize, StormOutcome>,
+    mut written: Lines,
 ) -> Result<()> {
-    let mut text = format!("{header_line}\n");
     let mut all: Vec<(&usize, &StormOutcome)> = done.iter().chain(outside.iter()).collect();
     all.sort_by_key(|(i, _)| **i);
-    for (i, o) in all {
-        text.push_str(&life_line(header_line, *i, o));
-    }
-    write_atomic(path, text.as_bytes())
+    // Streamed to the temporary file: the lines are not held a second time as one text.
+    let (tmp, file) = crate::output::TempFile::create(path)?;
+    let mut w = std::io::BufWriter::with_capacity(1 << 16, file);
+    let mut put = |bytes: &[u8]| w.write_all(bytes);
+    let streamed = put(header_line.as_bytes()).and_then(|_| put(b"\n")).and_then(|_| {
+        all.into_iter().try_for_each(|(i, o)| match written.remove(i) {
+            Some(line) => put(line.as_bytes()),
+            None => put(life_line(header_line, *i, o).as_bytes()),
+        })
+    });
+    streamed.and_then(|_| w.flush()).with_context(|| format!("writing {}", path.display()))?;
+    drop(w);
+    // Synced, then renamed into place (or staged in the out set), as `write_atomic` does.
+    tmp.commit(path)
 }
 
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
@@ -674,14 +694,25 @@ pub(crate) fn report_lives(
     if let Some(dir) = out {
         // Merge and design opened the set before writing their checkpoint into it.
         let _set = (!crate::output::set_open()).then(|| crate::output::OutSet::open(dir));
-        write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes())?;
-        write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?)?;
         let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         // The values of the statistics: a failed life at the sliding limit.
         let dynamic: Vec<f64> =
             lives.iter().map(|l| if l.failed(&failure) { failure_m } else { l.sliding_m.abs() }).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
-        plots(dir, title, &dynamic, &rigid, failure_m)?;
+        // The files are independent: made and synced at once (each to its temporary file; the
+        // set renames them into place together), the first error in this order reported.
+        let (json_file, csv_file, plot_files) = std::thread::scope(|s| {
+            let json_file = s.spawn(|| write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes()));
+            let csv_file = s.spawn(|| write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?));
+            let plot_files = plots(dir, title, &dynamic, &rigid, failure_m);
+            let joined = |h: std::thread::ScopedJoinHandle<'_, Result<()>>| {
+                h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+            };
+            (joined(json_file), joined(csv_file), plot_files)
+        });
+        json_file?;
+        csv_file?;
+        plot_files?;
         crate::output::tidy_out_dir(dir, "design", keep)?;
         if !json {
             crate::sayln!(

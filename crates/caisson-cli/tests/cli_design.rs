@@ -162,6 +162,11 @@ fn an_interrupted_run_resumes_to_the_identical_result() {
         .clone();
     assert_eq!(resumed, reference, "resume must give exactly the uninterrupted result");
     assert_eq!(std::fs::read(part.join("lives.csv")).unwrap(), std::fs::read(full.join("lives.csv")).unwrap());
+    // The ordered checkpoint: 3 lives read back and made again, 7 lines as this run wrote them.
+    let (resumed_cp, full_cp) =
+        (std::fs::read(part.join("checkpoint.jsonl")).unwrap(), std::fs::read(full.join("checkpoint.jsonl")).unwrap());
+    assert_eq!(String::from_utf8_lossy(&full_cp).lines().count(), 1 + 10, "header + 10 lives");
+    assert_eq!(resumed_cp, full_cp, "the resumed checkpoint is the uninterrupted one, byte for byte");
 }
 
 #[test]

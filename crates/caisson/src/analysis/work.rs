@@ -66,6 +66,7 @@ use crate::loads::history::WaveTrain;
 use crate::loads::regime::RegimeChoice;
 use crate::loads::LoadHistory;
 use crate::waves::periods::MEAN_PERIOD_RATIO;
+use rayon::prelude::*;
 
 /// Most steps of a pilot run (about 0.1 s).
 pub const PILOT_MAX_STEPS: u64 = 200_000;
@@ -516,9 +517,12 @@ pub fn design(case: &StormCase<'_>, p: &DesignParams, waves: &WaveSetup) -> Work
         (0..64).map(|k| (life.storm_duration_s / period((k as f64 + 0.5) / 64.0)).round().max(1.0)).sum::<f64>() / 64.0;
     let storms = p.lives as f64 * life.life_years as f64 * life.climate.storms.mean_storms_per_year();
     let waves_drawn = storms * per_storm;
-    let share = if case.screen { design_screen_share(case, p) } else { 1.0 };
     let (h, t) = design_wave(waves);
-    let steps_from = steps_from(case.structure, || storm_pilot(case, h, t));
+    // The two pilots at once (on the caller's rayon threads): each is deterministic.
+    let (share, steps_from) = rayon::join(
+        || if case.screen { design_screen_share(case, p) } else { 1.0 },
+        || steps_from(case.structure, || storm_pilot(case, h, t)),
+    );
     let simulated_s = storms * life.storm_duration_s * share * simulated_period_ratio(&life.climate.periods);
     WorkEstimate {
         steps: simulated_s * steps_from.steps_per_s(),
@@ -575,20 +579,18 @@ fn design_screen_share(case: &StormCase<'_>, p: &DesignParams) -> f64 {
         storm_duration_s: (PILOT_WAVES_PER_STORM * t_median).min(life.storm_duration_s),
         ..life.clone()
     };
-    let (mut waves, mut simulated) = (0u64, 0u64);
-    for i in 0..PILOT_LIVES {
-        match simulate_life(&pilot_case, &pilot, p.seed, i) {
-            Ok(o) => {
-                waves += o.waves;
-                simulated += o.simulated_waves;
-            }
+    // The lives in parallel (on the caller's rayon threads); whole counts, so their sums do not
+    // depend on the order.
+    let (waves, simulated) = (0..PILOT_LIVES)
+        .into_par_iter()
+        .map(|i| match simulate_life(&pilot_case, &pilot, p.seed, i) {
+            Ok(o) => (o.waves, o.simulated_waves),
             Err(_) => {
                 let n = (storms as f64 * PILOT_WAVES_PER_STORM) as u64;
-                waves += n;
-                simulated += n;
+                (n, n)
             }
-        }
-    }
+        })
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     if waves == 0 {
         1.0
     } else {
