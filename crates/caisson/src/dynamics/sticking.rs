@@ -392,11 +392,10 @@ impl Simulation {
 
     /// Whether the springs lo..hi, none of them slipping at the committed state, are in contact
     /// and stick at the trial displacement `u` of a step of length `h`: the spring law's own test
-    /// of each ([`Self::all_stick`]'s for a partial contact set, `exact`).
-    pub(super) fn set_sticks(&mut self, lo: usize, hi: usize, u: [f64; 3], h: f64) -> bool {
-        if !self.fast.valid {
-            self.refresh_fast_path();
-        }
+    /// of each ([`Self::all_stick`]'s for a partial contact set, `exact`). The committed slip
+    /// positions must be up to date ([`Self::set_slip_sums`] makes them so).
+    pub(super) fn set_sticks(&self, lo: usize, hi: usize, u: [f64; 3], h: f64) -> bool {
+        debug_assert!(self.fast.valid, "set_slip_sums first");
         let law = self.model.law;
         let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
         let (ux_n, shift) = (self.state.u[0], 0.5 * h * self.state.v[0]);
