@@ -787,10 +787,10 @@ impl Simulation {
         if full {
             // Every spring must stick in the middle of the step and at its end (the spring law's
             // own test; the last one records the sums of the commit and the base reaction).
-            if !self.all_stick([qm[0] + s1, qm[1], qm[2]], 0.5 * h) {
+            if !self.all_stick_at([([qm[0] + s1, qm[1], qm[2]], 0.5 * h), (u, h)]) {
                 return Err(Refused::Stick);
             }
-            self.sticking_force(u, v, h).ok_or(Refused::Stick)?;
+            self.stick_sums(u, v, h);
         } else {
             // The springs of the set stick, and the set holds, at the quarter points, the middle
             // and the end; the set holds between them too (module docs, "Partial contact"). The

@@ -162,6 +162,13 @@ impl Simulation {
     /// length `h` (the test of [`Self::sticking_force`], module docs), without its sums.
     #[inline]
     pub(super) fn all_stick(&mut self, u: [f64; 3], h: f64) -> bool {
+        self.all_stick_at([(u, h)])
+    }
+
+    /// [`Self::all_stick`] at each of the trial displacements and step lengths `points`, in
+    /// turn (the same tests, one preamble): the exact step's middle and end (`exact`).
+    #[inline]
+    pub(super) fn all_stick_at<const P: usize>(&mut self, points: [([f64; 3], f64); P]) -> bool {
         if !self.fast.valid {
             // A lifted spring needs the general path: the sums are not needed yet.
             if self.solver.locate_contact && self.committed_lifted() {
@@ -170,8 +177,6 @@ impl Simulation {
             self.refresh_fast_path();
         }
         let law = self.model.law;
-        let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
-        let half_h = 0.5 * h;
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let fs = &self.fast;
         if fs.any_lifted {
@@ -181,36 +186,42 @@ impl Simulation {
         let n = fs.slip_m.len();
         let (x_m, slip_m, limit_m) = (&self.model.x_m[..n], &fs.slip_m[..n], &fs.limit_m[..n]);
         let (rate_m, follows_v) = (&fs.rate_m[..n], &fs.follows_v[..n]);
-        // Shared slip position and limit: κ N_i is monotonic in x_i (each rounded operation of
-        // N_i = −k_y (u_y − θ x_i) is), so the outermost springs have its extremes, and their
-        // test with a margin decides for every spring ([`SpringLaw::sticks_with_margin`]).
-        // Otherwise, or within the margin, every spring's own test.
-        //
-        // [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
-        let outer_stick = fs.same_slips && !fs.any_sliding && {
-            let (s, limit) = (slip_m[0], limit_m[0]);
-            let e_bar = ux_n - s + half_h * vx_n;
-            let sticks = |x: f64| law.sticks_with_margin(s, limit, u[0], u[1] - u[2] * x, e_bar, c_prime);
-            sticks(x_m[0]) & sticks(x_m[n - 1])
-        };
-        if !outer_stick {
-            let mut fails = 0u32;
-            if fs.any_sliding {
-                for i in 0..n {
-                    let (x, s) = (x_m[i], slip_m[i]);
-                    let e_bar = ux_n - s + half_h * (rate_m[i] + follows_v[i] * vx_n);
-                    fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+        for (u, h) in points {
+            let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
+            let half_h = 0.5 * h;
+            // Shared slip position and limit: κ N_i is monotonic in x_i (each rounded operation of
+            // N_i = −k_y (u_y − θ x_i) is), so the outermost springs have its extremes, and their
+            // test with a margin decides for every spring ([`SpringLaw::sticks_with_margin`]).
+            // Otherwise, or within the margin, every spring's own test.
+            //
+            // [`SpringLaw::sticks_with_margin`]: crate::foundation::SpringLaw::sticks_with_margin
+            let outer_stick = fs.same_slips && !fs.any_sliding && {
+                let (s, limit) = (slip_m[0], limit_m[0]);
+                let e_bar = ux_n - s + half_h * vx_n;
+                let sticks = |x: f64| law.sticks_with_margin(s, limit, u[0], u[1] - u[2] * x, e_bar, c_prime);
+                sticks(x_m[0]) & sticks(x_m[n - 1])
+            };
+            if !outer_stick {
+                let mut fails = 0u32;
+                if fs.any_sliding {
+                    for i in 0..n {
+                        let (x, s) = (x_m[i], slip_m[i]);
+                        let e_bar = ux_n - s + half_h * (rate_m[i] + follows_v[i] * vx_n);
+                        fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                    }
+                } else {
+                    // Every rate is u̇_x,n: the same operations without the slices of the rates.
+                    let shift = half_h * vx_n;
+                    for i in 0..n {
+                        let (x, s) = (x_m[i], slip_m[i]);
+                        let e_bar = ux_n - s + shift;
+                        fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                    }
                 }
-            } else {
-                // Every rate is u̇_x,n: the same operations without the slices of the rates.
-                let shift = half_h * vx_n;
-                for i in 0..n {
-                    let (x, s) = (x_m[i], slip_m[i]);
-                    let e_bar = ux_n - s + shift;
-                    fails += u32::from(!law.sticks(s, limit_m[i], u[0], u[1] - u[2] * x, e_bar, c_prime));
+                if fails != 0 {
+                    return false;
                 }
             }
-            return fails == 0;
         }
         true
     }
@@ -223,6 +234,13 @@ impl Simulation {
         if !self.all_stick(u, h) {
             return None;
         }
+        Some(self.stick_sums(u, v, h))
+    }
+
+    /// [`Self::sticking_force`] at a trial where every spring is known to stick
+    /// ([`Self::all_stick`]): f_S, and the sums recorded.
+    #[inline]
+    pub(super) fn stick_sums(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
         let law = self.model.law;
         let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
         let half_h = 0.5 * h;
@@ -244,7 +262,7 @@ impl Simulation {
         }
         self.fast.iterate = Some(StickIterate { sum_n, sum_xn, sum_e, sum_xe, shear_n, c_prime });
         self.stats.sticking_iterates += 1;
-        Some(Vector3::new(shear_n, f1, f2))
+        Vector3::new(shear_n, f1, f2)
     }
 
     /// The Newmark step of length `h` to load `p` solved directly while every spring sticks
