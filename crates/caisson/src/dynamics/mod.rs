@@ -1030,10 +1030,15 @@ impl Simulation {
         if self.fast.iterate.is_some() {
             return 0.0;
         }
+        let recontact = self.solver.locate_contact && self.committed_lifted();
+        if !recontact && !self.trial_slips {
+            // No spring slips at the step's end (`trial_slips` is false only then) and none
+            // touches down within it: the sums below would be 0.
+            return 0.0;
+        }
         let cd = self.model.spring_dashpot_ns_per_m;
         let (un, vx_n) = (self.state.u, self.state.v[0]);
         let chord = (h * vx_n - (c.u[0] - un[0])).abs();
-        let recontact = self.solver.locate_contact && self.committed_lifted();
         let (mut rate, mut touch) = (0.0f64, 0.0f64);
         let mut slipping = false;
         for ((&x, s), r) in self.model.x_m.iter().zip(&self.state.springs).zip(&self.trial) {
