@@ -706,10 +706,23 @@ impl Simulation {
     #[inline]
     fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
         match (self.solver.locate_contact && self.committed_lifted(), self.event_step) {
-            (true, false) => self.springs_force::<true, false>(u, v, h),
-            (false, false) => self.springs_force::<false, false>(u, v, h),
-            (true, true) => self.springs_force::<true, true>(u, v, h),
-            (false, true) => self.springs_force::<false, true>(u, v, h),
+            (true, false) => self.springs_force::<true, false, true>(u, v, h),
+            (false, false) => self.springs_force::<false, false, true>(u, v, h),
+            (true, true) => self.springs_force::<true, true, true>(u, v, h),
+            (false, true) => self.springs_force::<false, true, true>(u, v, h),
+        }
+    }
+
+    /// The springs' trial responses at the displacement `u` of a step of length `h`, as
+    /// [`Self::general_force`] leaves them in `self.trial` (and `self.trial_slips`), without
+    /// summing the force: for a step whose force is known otherwise (an exact step, `exact`),
+    /// committed spring by spring.
+    #[inline]
+    pub(super) fn general_trial(&mut self, u: [f64; 3], h: f64) {
+        if self.solver.locate_contact && self.committed_lifted() {
+            self.springs_force::<true, false, false>(u, [0.0; 3], h);
+        } else {
+            self.springs_force::<false, false, false>(u, [0.0; 3], h);
         }
     }
 
@@ -726,9 +739,10 @@ impl Simulation {
 
     /// [`Self::general_force`]; with `RECONTACT` a spring lifted at the step's start and in
     /// contact at the trial touches within the step (module docs, "Events"); `EVENT` is
-    /// `self.event_step` ([`dashpot_acts`]).
+    /// `self.event_step` ([`dashpot_acts`]); without `SUMS` only the trial responses (and
+    /// `trial_slips`), the force returned 0 ([`Self::general_trial`]).
     #[inline]
-    fn springs_force<const RECONTACT: bool, const EVENT: bool>(
+    fn springs_force<const RECONTACT: bool, const EVENT: bool, const SUMS: bool>(
         &mut self,
         u: [f64; 3],
         v: [f64; 3],
@@ -741,6 +755,7 @@ impl Simulation {
         let law = self.model.law;
         let (ux_n, vx_n) = (self.state.u[0], self.state.v[0]);
         let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
+        let mut slips = false;
         for ((&x, c), out) in self.model.x_m.iter().zip(&self.state.springs).zip(self.trial.iter_mut()) {
             let uy = u[1] - u[2] * x;
             let uy_start = uy_n - th_n * x;
@@ -757,11 +772,17 @@ impl Simulation {
             if cd > 0.0 && r.state.sliding {
                 r.state.rate_m_per_s = 2.0 * (u[0] - r.state.slip_m - e_bar) / (rho * h);
             }
+            if !SUMS {
+                slips |= r.state.sliding;
+            }
             *out = r;
+        }
+        if !SUMS {
+            self.trial_slips = slips;
+            return Vector3::zeros();
         }
         // The sums, spring by spring in a second pass (fewer values live in the first).
         let (mut f0, mut f1, mut f2) = (0.0, 0.0, 0.0);
-        let mut slips = false;
         for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
             slips |= r.state.sliding;
             if cdy > 0.0 && dashpot_acts(EVENT, uy_n - th_n * x, r.normal_n) {
