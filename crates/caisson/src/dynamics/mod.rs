@@ -715,8 +715,9 @@ impl Simulation {
 
     /// The springs' trial responses at the displacement `u` of a step of length `h`, as
     /// [`Self::general_force`] leaves them in `self.trial` (and `self.trial_slips`), without
-    /// summing the force: for a step whose force is known otherwise (an exact step, `exact`),
-    /// committed spring by spring.
+    /// summing the force: for a step whose force is known otherwise, committed spring by spring
+    /// (an exact step with springs lifted, `exact`; an all-sticking step from a state with
+    /// slipping springs, [`Self::commit`]).
     #[inline]
     pub(super) fn general_trial(&mut self, u: [f64; 3], h: f64) {
         if self.solver.locate_contact && self.committed_lifted() {
@@ -1143,7 +1144,7 @@ impl Simulation {
         if self.fast.iterate.is_some() && !self.sticking_commit_possible() {
             // All-sticking from a state with slipping springs: their responses need their own
             // committed rates, so the step is committed spring by spring (`sticking`).
-            self.general_force(c.u, c.v, h);
+            self.general_trial(c.u, h);
         }
         if self.fast.iterate.is_some() {
             self.commit_sticking(h, self.state.u[0], self.state.v[0]);
