@@ -1093,9 +1093,6 @@ impl Simulation {
         let un = Vector3::from(self.state.u);
         let vn = Vector3::from(self.state.v);
         let an = Vector3::from(self.state.a);
-        let m = self.model.mass;
-        let c = self.model.damping;
-        let k_dyn = m * c1 + c * (gamma * c2);
         let tol = self.solver.tolerance * self.model.weight_n;
         let inv_b = 1.0 / self.model.width_m;
         if self.solver.sticking_fast_path && self.fast.direct {
@@ -1103,6 +1100,8 @@ impl Simulation {
                 return Ok(c);
             }
         }
+        // M and C read in place (not copied per step), K_dyn only for a step that iterates.
+        let k_dyn = self.model.mass * c1 + self.model.damping * (gamma * c2);
         let mut delta = match self.solver.predictor {
             Predictor::LastDisplacement => Vector3::zeros(),
             Predictor::ConstantAcceleration => vn * h + an * (0.5 * h * h),
@@ -1118,7 +1117,7 @@ impl Simulation {
             // with a spring slipping or lifted).
             let stick_first = if it == 0 { !self.fast.direct } else { self.fast.iterate.is_some() };
             let fs = self.resisting_force([u[0], u[1], u[2]], [v[0], v[1], v[2]], h, stick_first);
-            let r = p - m * a - c * v - fs;
+            let r = p - self.model.mass * a - self.model.damping * v - fs;
             norm = r[0].abs().max(r[1].abs()).max(r[2].abs() * inv_b);
             if !norm.is_finite() {
                 return Err((it, norm));
