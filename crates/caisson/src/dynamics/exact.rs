@@ -822,8 +822,8 @@ impl Simulation {
                 }
             }
             // Committed spring by spring (the lifted springs' slip positions follow u_x).
-            self.general_force(u, v, h);
-            if self.trial.iter().any(|r| r.state.sliding) {
+            self.general_trial(u, h);
+            if self.trial_slips {
                 return Err(Refused::Stick);
             }
         }

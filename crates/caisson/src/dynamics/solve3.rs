@@ -6,8 +6,12 @@
 //! diagonal, the multipliers are a_ri · (1/a_ii), the updates a_rk + (−a_ik) l_ri, forward
 //! substitution with a unit diagonal, back substitution dividing by u_ii — so its answers are
 //! identical to the last bit (tested against nalgebra below), without the generic loops and views
-//! that made the factorisation cost more than the rest of an iteration's arithmetic. A zero pivot
-//! column is skipped in the factorisation and makes the solve fail (`None`), as in nalgebra.
+//! that made the factorisation cost more than the rest of an iteration's arithmetic. Each
+//! column's step is compiled for its column (a const parameter), so that its loops are unrolled
+//! and the row interchanges go straight into the right-hand side (on the design example about 134
+//! fewer instructions per solve than the loop over the columns: 23.4 M over 173 976 solves). A
+//! zero pivot column is skipped in the factorisation and makes the solve fail (`None`), as in
+//! nalgebra.
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -17,43 +21,11 @@ pub(crate) fn lu_solve(a: &Matrix3<f64>, b: &Vector3<f64>) -> Option<Vector3<f64
     // Row-major copy: m[r][c].
     let mut m =
         [[a[(0, 0)], a[(0, 1)], a[(0, 2)]], [a[(1, 0)], a[(1, 1)], a[(1, 2)]], [a[(2, 0)], a[(2, 1)], a[(2, 2)]]];
-    // Row interchanges (i, pivot row) in the order they were made.
-    let mut swaps = [(0usize, 0usize); 3];
-    let mut n_swaps = 0;
-    for i in 0..3 {
-        let mut piv = i;
-        let mut largest = m[i][i].abs();
-        for (r, row) in m.iter().enumerate().skip(i + 1) {
-            let v = row[i].abs();
-            if v > largest {
-                largest = v;
-                piv = r;
-            }
-        }
-        let diag = m[piv][i];
-        if diag == 0.0 {
-            continue;
-        }
-        if piv != i {
-            swaps[n_swaps] = (i, piv);
-            n_swaps += 1;
-            m.swap(i, piv);
-        }
-        let inv_diag = 1.0 / diag;
-        for row in &mut m[i + 1..] {
-            row[i] *= inv_diag;
-        }
-        for k in i + 1..3 {
-            let p = -m[i][k];
-            for row in &mut m[i + 1..] {
-                row[k] += p * row[i];
-            }
-        }
-    }
     let mut x = [b[0], b[1], b[2]];
-    for &(i, piv) in &swaps[..n_swaps] {
-        x.swap(i, piv);
-    }
+    // Column by column, each a constant: the loops within are unrolled.
+    eliminate::<0>(&mut m, &mut x);
+    eliminate::<1>(&mut m, &mut x);
+    eliminate::<2>(&mut m, &mut x);
     // Forward substitution, unit diagonal (x_i / 1 is x_i).
     for i in 0..2 {
         let c = -x[i];
@@ -74,6 +46,41 @@ pub(crate) fn lu_solve(a: &Matrix3<f64>, b: &Vector3<f64>) -> Option<Vector3<f64
         }
     }
     Some(Vector3::new(x[0], x[1], x[2]))
+}
+
+/// The factorisation's step for column `I`: the pivot (the first largest |m_rI| at or below the
+/// diagonal; a zero pivot column is skipped), the row interchange (made in `x` too: the right-hand
+/// side takes the interchanges in the order they are made, as nalgebra applies them before the
+/// substitutions, and nothing else touches it meanwhile), the multipliers and the updates.
+#[inline(always)]
+fn eliminate<const I: usize>(m: &mut [[f64; 3]; 3], x: &mut [f64; 3]) {
+    let mut piv = I;
+    let mut largest = m[I][I].abs();
+    for (r, row) in m.iter().enumerate().skip(I + 1) {
+        let v = row[I].abs();
+        if v > largest {
+            largest = v;
+            piv = r;
+        }
+    }
+    let diag = m[piv][I];
+    if diag == 0.0 {
+        return;
+    }
+    if piv != I {
+        m.swap(I, piv);
+        x.swap(I, piv);
+    }
+    let inv_diag = 1.0 / diag;
+    for row in &mut m[I + 1..] {
+        row[I] *= inv_diag;
+    }
+    for k in I + 1..3 {
+        let p = -m[I][k];
+        for row in &mut m[I + 1..] {
+            row[k] += p * row[I];
+        }
+    }
 }
 
 #[cfg(test)]
