@@ -937,7 +937,8 @@ impl StormScreen {
                 row[(i + 1).min(SCREEN_CELLS)] |= flag;
             }
         }
-        let any = node.iter().flatten().any(|&f| f);
+        // Only the rows of the period nodes can hold a flag (the others stay false).
+        let any = node[..periods].iter().any(|row| row.contains(&true));
         StormScreen { node, periods, any, dh, mean_period_s, u0, du, bound_nodes }
     }
 
