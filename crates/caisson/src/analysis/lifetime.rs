@@ -855,8 +855,9 @@ struct StormScreen {
     node: [[bool; SCREEN_CELLS + 1]; PERIOD_CELLS + 1],
     /// Period nodes: 1 (every wave at T1/3) or `PERIOD_CELLS + 1`.
     periods: usize,
-    /// Whether any node may slide (none in a calm storm, or without the screen).
-    any: bool,
+    /// The lowest height node that may slide at any period node (`None`: no node may, in a calm
+    /// storm or without the screen).
+    first_node: Option<usize>,
     dh: f64,
     /// τ̄, and u = 1 − τ̄/τ at the first period node and its step.
     mean_period_s: f64,
@@ -938,11 +939,12 @@ impl StormScreen {
             }
         }
         // Only the rows of the period nodes can hold a flag (the others stay false).
-        let any = node[..periods].iter().any(|row| row.contains(&true));
-        StormScreen { node, periods, any, dh, mean_period_s, u0, du, bound_nodes }
+        let first_node = node[..periods].iter().filter_map(|row| row.iter().position(|&f| f)).min();
+        StormScreen { node, periods, first_node, dh, mean_period_s, u0, du, bound_nodes }
     }
 
     /// The period cells of the grid.
+    #[cfg(test)]
     fn period_cells(&self) -> usize {
         (self.periods - 1).max(1)
     }
@@ -966,11 +968,18 @@ impl StormScreen {
         self.cell_may_slide(c, j)
     }
 
-    /// The lowest height cell that may slide at some period.
+    /// The lowest height cell that may slide at some period: two cells below the lowest node that
+    /// may. Cell c reads the nodes c − 1 to c + 2 ([`Self::cell_may_slide`]), and the period cells
+    /// together read every period node, so c may slide if and only if a node from c − 1 to c + 2
+    /// may at some period: the lowest is max(0, i − 2) for the lowest such node i (at most
+    /// `SCREEN_CELLS` − 2, a cell of the grid).
     fn lowest_cell(&self) -> Option<usize> {
-        if !self.any {
-            return None;
-        }
+        self.first_node.map(|i| i.saturating_sub(2))
+    }
+
+    /// [`Self::lowest_cell`] cell by cell (the tests' reference).
+    #[cfg(test)]
+    fn lowest_cell_by_cells(&self) -> Option<usize> {
         (0..SCREEN_CELLS).find(|&c| (0..self.period_cells()).any(|j| self.cell_may_slide(c, j)))
     }
 }
@@ -1645,7 +1654,7 @@ mod tests {
     fn the_bisected_screen_grid_is_every_nodes_grid() {
         let sc = design_example();
         let st = sc.storm_case(true).expect("a design");
-        let (mut storms, mut cut, mut sliding) = (0, 0, 0);
+        let (mut storms, mut cut, mut sliding, mut lowest) = (0, 0, 0, 0);
         for h13 in [0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 8.0, 10.0, 12.0] {
             for period_s in [7.0, 10.0, 14.0] {
                 for tide_m in [0.0, 1.5, 3.0] {
@@ -1671,7 +1680,11 @@ mod tests {
                             );
                             assert_eq!(a.node, b.node, "H1/3 {h13} m, T {period_s} s, tide {tide_m} m");
                             storms += 1;
-                            sliding += usize::from(b.any);
+                            sliding += usize::from(b.first_node.is_some());
+                            for g in [&a, &b] {
+                                assert_eq!(g.lowest_cell(), g.lowest_cell_by_cells());
+                                lowest += usize::from(g.lowest_cell().is_some_and(|c| c > 0));
+                            }
                             assert_eq!(b.bound_nodes, 0);
                             cut += usize::from(a.bound_nodes > 0);
                         }
@@ -1680,8 +1693,10 @@ mod tests {
             }
         }
         assert_eq!(storms, 720);
-        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462.
-        assert_eq!((sliding, cut), (451, 462));
+        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462. The
+        // lowest cell that may slide is the one found cell by cell (above the first in each of
+        // the 451, on both grids).
+        assert_eq!((sliding, cut, lowest), (451, 462, 2 * 451));
     }
 
     /// A storm given the life's toe wave number (solved once for the shoaling and the loads)
