@@ -160,11 +160,13 @@ use super::stick_bound::{AtPeriod, StickBound};
 use super::Structure;
 use crate::check::{self, count, interval};
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
+use crate::foundation::Foundation;
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
 use crate::loads::model::{PeakComponents, PeriodLoads, WaveLoadModel};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
+use crate::structure::Caisson;
 use crate::waves::dispersion::wavenumber;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
@@ -710,6 +712,15 @@ struct StormScratch {
     waves: Vec<DrawnWave>,
     still: Vec<StillWave>,
     storms: Vec<StormInput>,
+    /// [`ScreenModes::still_water`], taken at the life's first storm.
+    modes: Option<ScreenModes>,
+}
+
+impl StormScratch {
+    /// [`ScreenModes::still_water`] of `st`, once.
+    fn modes(&mut self, st: &StormCase<'_>) -> ScreenModes {
+        *self.modes.get_or_insert_with(|| ScreenModes::still_water(st))
+    }
 }
 
 /// A wave the linear bound answered ([`super::stick_bound`]): the bound on its rotation, rad,
@@ -771,15 +782,43 @@ pub enum StormError {
     Wave { height_m: f64, period_s: f64, source: TrainError },
 }
 
+/// What the screen's bound reads of the dynamic model ([`StormSite::bound`]): the same at every
+/// storm of a caisson, whose tide and friction error change the caisson's weight in water, its
+/// base depth and its friction, not its mass, added mass, stiffness or springs' places (the
+/// still-water model's numbers to the bit, `tests::the_screen_reads_the_still_water_modes`), so
+/// taken once per life from the still-water model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct ScreenModes {
+    /// T0 of the horizontal mode, and the longer of T0 and the rocking period, s.
+    t0_s: f64,
+    t_moment_s: f64,
+    /// f of [`Model::lift_off_factor`].
+    lift_factor: f64,
+}
+
+impl ScreenModes {
+    fn of(m: &Model) -> Self {
+        let t0_s = m.natural_period_s();
+        ScreenModes { t0_s, t_moment_s: t0_s.max(m.rocking_period_s()), lift_factor: m.lift_off_factor() }
+    }
+
+    /// Those of the still-water model of `st`'s caisson.
+    fn still_water(st: &StormCase<'_>) -> Self {
+        Self::of(&Model::new(&st.structure.caisson, &st.structure.foundation))
+    }
+}
+
 /// The site and the caisson at a storm's water level (module docs, step 3), with its friction
 /// error: both models and what the screen's bound needs of them.
 struct StormSite {
     model: WaveLoadModel,
     block: RigidBlock,
-    dyn_model: Model,
-    /// T0 of the horizontal mode, and the longer of T0 and the rocking period, s.
-    t0_s: f64,
-    t_moment_s: f64,
+    /// The caisson and its foundation at the storm's water level and friction, and the dynamic
+    /// model of them, built when a wave first needs it (most storms run no wave through it).
+    caisson: Caisson,
+    foundation: Foundation,
+    dyn_model: OnceCell<Model>,
+    modes: ScreenModes,
     weight_n: f64,
     mu: f64,
     width_m: f64,
@@ -788,7 +827,8 @@ struct StormSite {
 }
 
 impl StormSite {
-    fn new(st: &StormCase<'_>, s: &StormInput) -> Self {
+    /// The site of storm `s`; `modes`: [`ScreenModes::still_water`] of `st`.
+    fn new(st: &StormCase<'_>, s: &StormInput, modes: ScreenModes) -> Self {
         let mut model = *st.model;
         model.site.depth_at_toe_m = toe_depth_m(st, s.tide_m);
         model.site.depth_at_wall_m += s.tide_m;
@@ -802,31 +842,35 @@ impl StormSite {
         foundation.mu_static *= s.friction_factor;
         foundation.mu_dynamic *= s.friction_factor;
         let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
-        let dyn_model = Model::new(&caisson, &foundation);
-        let t0_s = dyn_model.natural_period_s();
         StormSite {
-            t_moment_s: t0_s.max(dyn_model.rocking_period_s()),
-            t0_s,
             weight_n: caisson.weight_in_water_n,
             mu: foundation.mu_static.min(block.mu_static),
             width_m: caisson.width_m,
             stick: OnceCell::new(),
             model,
             block,
-            dyn_model,
+            caisson,
+            foundation,
+            dyn_model: OnceCell::new(),
+            modes,
         }
+    }
+
+    /// The dynamic model at the storm's water level and friction.
+    fn dyn_model(&self) -> &Model {
+        self.dyn_model.get_or_init(|| Model::new(&self.caisson, &self.foundation))
     }
 
     /// The screen's bound for a wave of period `period_s`: Ψ = 1 + T/(π t_q), t_q = T_w/4.
     fn bound(&self, period_s: f64) -> ScreenBound {
         let ramp = |t0: f64| 1.0 + t0 / (PI * 0.25 * period_s);
         ScreenBound {
-            psi_q: ramp(self.t0_s),
-            psi_m: ramp(self.t_moment_s),
+            psi_q: ramp(self.modes.t0_s),
+            psi_m: ramp(self.modes.t_moment_s),
             weight_n: self.weight_n,
             mu: self.mu,
             width_m: self.width_m,
-            lift_factor: self.dyn_model.lift_off_factor(),
+            lift_factor: self.modes.lift_factor,
         }
     }
 }
@@ -1077,7 +1121,7 @@ impl WaveRun<'_> {
             return None;
         }
         let site = self.site;
-        let bound = site.stick.get_or_init(|| StickBound::new(&site.dyn_model)).as_ref()?;
+        let bound = site.stick.get_or_init(|| StickBound::new(site.dyn_model())).as_ref()?;
         let own;
         let at = if self.s.periods.is_significant() {
             self.stick_t13.get_or_init(|| bound.at_period(self.s.period_s)).as_ref()?
@@ -1123,7 +1167,7 @@ impl WaveRun<'_> {
                 x.reset(&*train);
                 x
             }
-            None => self.sim.insert(Simulation::new(site.dyn_model.clone(), st.structure.solver, &*train)),
+            None => self.sim.insert(Simulation::new(site.dyn_model().clone(), st.structure.solver, &*train)),
         };
         let mut watch = WaveWatch::default();
         sim.run_until(period_s, &*train, &mut watch)?;
@@ -1163,7 +1207,7 @@ fn storm_from(
     toe_k: Option<f64>,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
-    let site = StormSite::new(st, s);
+    let site = StormSite::new(st, s, scratch.modes(st));
     // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
     let k_toe = toe_k.unwrap_or_else(|| wavenumber(s.period_s, site.model.site.depth_at_toe_m));
     let loads_t13 = site.model.at_period_with_toe_wavenumber(s.period_s, k_toe);
@@ -1331,6 +1375,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
 /// moves from the screened to the simulated count; it neither slides nor lifts (its bound says
 /// so), so only the rotation and the counts can move. Empties `scratch.still`.
 fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormOutcome) -> Result<(), StormError> {
+    let modes = scratch.modes(st);
     let StormScratch { train, still, storms, .. } = scratch;
     still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
     // The site of the storm whose waves run (the waves of a storm are mostly together).
@@ -1342,7 +1387,7 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
         }
         let s = &storms[w.storm];
         if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
-            site = Some((w.storm, StormSite::new(st, s)));
+            site = Some((w.storm, StormSite::new(st, s, modes)));
         }
         let site = &site.as_ref().expect("the wave's storm's site").1;
         let mut run = WaveRun {
@@ -1646,6 +1691,41 @@ mod tests {
             .expect("the design example")
     }
 
+    /// What the screen reads of the dynamic model (T0, the rocking period, the lift-off factor)
+    /// is the still-water model's to the bit at every water level and friction error, though the
+    /// storm's model weighs less: 5 tides by 3 friction factors on the design example.
+    #[test]
+    fn the_screen_reads_the_still_water_modes() {
+        let sc = design_example();
+        let st = sc.storm_case(true).expect("a design");
+        let still = ScreenModes::still_water(&st);
+        let mut checked = 0;
+        for tide_m in [-1.0, 0.0, 0.7, 1.5, 3.0] {
+            for friction_factor in [0.7, 1.0, 1.3] {
+                let s = StormInput {
+                    h13_m: 5.0,
+                    hmax_m: 9.0,
+                    period_s: 11.0,
+                    periods: WavePeriods::Significant,
+                    waves: 1000,
+                    tide_m,
+                    angle_rad: 0.0,
+                    force_factor: 1.0,
+                    impact_factor: 1.0,
+                    friction_factor,
+                };
+                let site = StormSite::new(&st, &s, still);
+                let own = ScreenModes::of(site.dyn_model());
+                let bits = |m: ScreenModes| [m.t0_s, m.t_moment_s, m.lift_factor].map(f64::to_bits);
+                assert_eq!(bits(own), bits(still), "tide {tide_m} m, friction x {friction_factor}");
+                let weighs_less = site.dyn_model().weight_n < st.structure.caisson.weight_in_water_n;
+                assert_eq!(weighs_less, tide_m > 0.0, "tide {tide_m} m");
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 15);
+    }
+
     /// The screen's grid leaves out the nodes the bound of the loads up to their height holds:
     /// the same grid as every node's loads, on the design example's site at 720 storms (heights
     /// from calm to past breaking at the wall, three periods, tides, angles and force errors),
@@ -1672,7 +1752,7 @@ mod tests {
                                 impact_factor: force_factor,
                                 friction_factor: 1.0,
                             };
-                            let site = StormSite::new(&st, &s);
+                            let site = StormSite::new(&st, &s, ScreenModes::still_water(&st));
                             let t13 = (&site.model.at_period(period_s), site.bound(period_s));
                             let (a, b) = (
                                 StormScreen::grid(&st, &s, &site, t13, true),
