@@ -1036,7 +1036,7 @@ struct WaveRun<'a> {
     s: &'a StormInput,
     site: &'a StormSite,
     /// The loads and the screen's bound at the storm's T1/3 (every wave's period by default).
-    loads_t13: PeriodLoads<'a>,
+    loads_t13: &'a PeriodLoads<'a>,
     bound_t13: ScreenBound,
     start_m: f64,
     /// Whether the dynamic model's life has ended at failure (module docs, "Failure").
@@ -1059,7 +1059,7 @@ impl WaveRun<'_> {
         let (s, site) = (self.s, self.site);
         let own;
         let (loads_at, bound) = if s.periods.is_significant() {
-            (&self.loads_t13, self.bound_t13)
+            (self.loads_t13, self.bound_t13)
         } else {
             own = site.model.at_period(period_s);
             (&own, site.bound(period_s))
@@ -1222,7 +1222,7 @@ fn storm_from(
         st,
         s,
         site: &site,
-        loads_t13,
+        loads_t13: &loads_t13,
         bound_t13,
         start_m,
         ended: failed,
@@ -1394,7 +1394,7 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
             st,
             s,
             site,
-            loads_t13: site.model.at_period(s.period_s),
+            loads_t13: &site.model.at_period(s.period_s),
             bound_t13: site.bound(s.period_s),
             start_m: 0.0,
             ended: false,
