@@ -895,8 +895,8 @@ impl StormInput {
 /// the caisson, at the nodes of a grid over the heights [0, H_max] (plus the breaker height at the
 /// wall) and, for waves with periods of their own, over the storm's periods.
 struct StormScreen {
-    /// `node[j][i]`: at period node j, height i · dh.
-    node: [[bool; SCREEN_CELLS + 1]; PERIOD_CELLS + 1],
+    /// Bit i of `node[j]`: at period node j, height i · dh (`SCREEN_CELLS` + 1 bits a row).
+    node: [u128; PERIOD_CELLS + 1],
     /// Period nodes: 1 (every wave at T1/3) or `PERIOD_CELLS + 1`.
     periods: usize,
     /// The lowest height node that may slide at any period node (`None`: no node may, in a calm
@@ -937,7 +937,7 @@ impl StormScreen {
         };
         let mean_period_s = periods::MEAN_PERIOD_RATIO * s.period_s;
         let du = (u1 - u0) / PERIOD_CELLS as f64;
-        let mut node = [[false; SCREEN_CELLS + 1]; PERIOD_CELLS + 1];
+        let mut node = [0_u128; PERIOD_CELLS + 1];
         let mut bound_nodes = 0;
         for (j, row) in node.iter_mut().enumerate().take(if st.screen { periods } else { 0 }) {
             let own;
@@ -971,19 +971,18 @@ impl StormScreen {
             let node_may_slide =
                 |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&s.scaled(&p), &bound));
             bound_nodes += first;
-            for (i, flag) in row.iter_mut().enumerate().skip(first) {
-                *flag = node_may_slide(node_h(i));
+            for i in first..=SCREEN_CELLS {
+                *row |= u128::from(node_may_slide(node_h(i))) << i;
             }
             let hbr = loads_at.breaker_height_at_wall_m();
             if hbr < hmax {
                 let i = (hbr / dh) as usize;
                 let flag = node_may_slide(hbr);
-                row[i] |= flag;
-                row[(i + 1).min(SCREEN_CELLS)] |= flag;
+                *row |= (u128::from(flag) << i) | (u128::from(flag) << (i + 1).min(SCREEN_CELLS));
             }
         }
         // Only the rows of the period nodes can hold a flag (the others stay false).
-        let first_node = node[..periods].iter().filter_map(|row| row.iter().position(|&f| f)).min();
+        let first_node = node[..periods].iter().map(|row| row.trailing_zeros() as usize).min().filter(|&i| i < 128);
         StormScreen { node, periods, first_node, dh, mean_period_s, u0, du, bound_nodes }
     }
 
@@ -996,9 +995,10 @@ impl StormScreen {
     /// Cell (c, j) = [c dh, (c + 1) dh] × [period node j, j + 1] may slide if a node within one
     /// cell of it may, in both directions.
     fn cell_may_slide(&self, c: usize, j: usize) -> bool {
-        self.node[j.saturating_sub(1)..=(j + 2).min(self.periods - 1)]
-            .iter()
-            .any(|row| row[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f))
+        // Nodes c − 1 to c + 2 (within the grid): the bits below c + 3 less those below c − 1.
+        let below = |i: usize| (1_u128 << i) - 1;
+        let window = below((c + 3).min(SCREEN_CELLS + 1)) & !below(c.saturating_sub(1));
+        self.node[j.saturating_sub(1)..=(j + 2).min(self.periods - 1)].iter().any(|row| row & window != 0)
     }
 
     /// Whether the cell of a wave of height `h` and period `period_s` may slide.
