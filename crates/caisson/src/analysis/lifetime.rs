@@ -768,7 +768,31 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, (0.0, false, Settle::Storm), None, &mut StormScratch::default())
+    storm_from(st, s, &mut StormRng::Given(rng), (0.0, false, Settle::Storm), None, &mut StormScratch::default())
+}
+
+/// The random stream a storm draws its waves from (module docs, "Random numbers").
+enum StormRng<'r> {
+    /// The caller's, drawn from where it stands.
+    Given(&'r mut LoadRng),
+    /// The life's stream `life` at word `word` (the storm's own part), positioned when the storm
+    /// first draws: most storms of a life draw no wave (none can pass their screen), and
+    /// positioning costs a ChaCha block. The same numbers as positioning it at once: the words
+    /// of a stream depend on its key, stream number and position only, not on where `life` is.
+    Storm { life: &'r LoadRng, word: u128, rng: Option<LoadRng> },
+}
+
+impl StormRng<'_> {
+    fn get(&mut self) -> &mut LoadRng {
+        match self {
+            StormRng::Given(rng) => rng,
+            StormRng::Storm { life, word, rng } => rng.get_or_insert_with(|| {
+                let mut r = (*life).clone();
+                r.set_word_pos(*word);
+                r
+            }),
+        }
+    }
 }
 
 /// A storm that cannot be simulated.
@@ -1202,7 +1226,7 @@ fn toe_depth_m(st: &StormCase<'_>, tide_m: f64) -> f64 {
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
-    rng: &mut LoadRng,
+    rng: &mut StormRng<'_>,
     (start_m, failed, settle): (f64, bool, Settle),
     toe_k: Option<f64>,
     scratch: &mut StormScratch,
@@ -1237,6 +1261,7 @@ fn storm_from(
     } else {
         // Every wave (the screen tested wave by wave, or off).
         let (low_m, hmax) = height_limits(s);
+        let rng = rng.get();
         for _ in 0..s.waves {
             let h = sample_rayleigh_m(s.h13_m, rng).clamp(low_m, hmax);
             let z: f64 = rng.sample(StandardNormal);
@@ -1263,7 +1288,7 @@ fn height_limits(s: &StormInput) -> (f64, f64) {
 fn draw_above_threshold(
     s: &StormInput,
     screen: &StormScreen,
-    rng: &mut LoadRng,
+    rng: &mut StormRng<'_>,
     waves: &mut Vec<DrawnWave>,
     run: &mut WaveRun<'_>,
     out: &mut StormOutcome,
@@ -1278,6 +1303,7 @@ fn draw_above_threshold(
     let threshold_m = lowest as f64 * screen.dh * (1.0 - 1e-9);
     let all = threshold_m <= low_m;
     let q = rayleigh_exceedance(threshold_m, s.h13_m);
+    let rng = rng.get();
     let mut sample = DescendingRayleigh::new(out.waves);
     waves.clear();
     while let Some(e) = sample.next_exceedance(rng) {
@@ -1349,9 +1375,8 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             };
             // The storm's waves from their own part of the stream: how many it draws does not move
             // the next storm's numbers (common random numbers across caissons, docs/size.md).
-            let mut waves_rng = rng.clone();
             storm_index += 1;
-            waves_rng.set_word_pos(storm_index << STORM_WAVE_WORDS_LOG2);
+            let mut waves_rng = StormRng::Storm { life: &rng, word: storm_index << STORM_WAVE_WORDS_LOG2, rng: None };
             let failed = st.failure.is_some_and(|f| life.failed(&f));
             let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
             scratch.storms.push(storm);
@@ -1805,7 +1830,8 @@ mod tests {
                     let k = wavenumber(period_s, toe_depth_m(&st, tide_m));
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
-                        storm_from(&st, &s, &mut rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
+                        let rng = &mut StormRng::Given(&mut rng);
+                        storm_from(&st, &s, rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
                             .unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));
