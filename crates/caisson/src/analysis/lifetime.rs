@@ -775,11 +775,12 @@ pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> 
 enum StormRng<'r> {
     /// The caller's, drawn from where it stands.
     Given(&'r mut LoadRng),
-    /// The life's stream `life` at word `word` (the storm's own part), positioned when the storm
-    /// first draws: most storms of a life draw no wave (none can pass their screen), and
-    /// positioning costs a ChaCha block. The same numbers as positioning it at once: the words
-    /// of a stream depend on its key, stream number and position only, not on where `life` is.
-    Storm { life: &'r LoadRng, word: u128, rng: Option<LoadRng> },
+    /// The life's stream `life` at word `word` (the storm's own part), positioned into `rng`
+    /// when the storm first draws: most storms of a life draw no wave (none can pass their
+    /// screen), and positioning costs a ChaCha block. The same numbers as positioning it at once:
+    /// the words of a stream depend on its key, stream number and position only, not on where
+    /// `life` is.
+    Storm { life: &'r LoadRng, word: u128, rng: &'r mut Option<LoadRng> },
 }
 
 impl StormRng<'_> {
@@ -1376,7 +1377,9 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             // The storm's waves from their own part of the stream: how many it draws does not move
             // the next storm's numbers (common random numbers across caissons, docs/size.md).
             storm_index += 1;
-            let mut waves_rng = StormRng::Storm { life: &rng, word: storm_index << STORM_WAVE_WORDS_LOG2, rng: None };
+            let mut positioned = None;
+            let word = storm_index << STORM_WAVE_WORDS_LOG2;
+            let mut waves_rng = StormRng::Storm { life: &rng, word, rng: &mut positioned };
             let failed = st.failure.is_some_and(|f| life.failed(&f));
             let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
             scratch.storms.push(storm);
