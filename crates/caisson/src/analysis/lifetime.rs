@@ -160,11 +160,13 @@ use super::stick_bound::{AtPeriod, StickBound};
 use super::Structure;
 use crate::check::{self, count, interval};
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
+use crate::foundation::Foundation;
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
 use crate::loads::model::{PeakComponents, PeriodLoads, WaveLoadModel};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
+use crate::structure::Caisson;
 use crate::waves::dispersion::wavenumber;
 use crate::waves::periods::{self, WavePeriods};
 use crate::waves::statistics::{rayleigh_exceedance, rayleigh_quantile_m, sample_rayleigh_m, DescendingRayleigh};
@@ -710,6 +712,15 @@ struct StormScratch {
     waves: Vec<DrawnWave>,
     still: Vec<StillWave>,
     storms: Vec<StormInput>,
+    /// [`ScreenModes::still_water`], taken at the life's first storm.
+    modes: Option<ScreenModes>,
+}
+
+impl StormScratch {
+    /// [`ScreenModes::still_water`] of `st`, once.
+    fn modes(&mut self, st: &StormCase<'_>) -> ScreenModes {
+        *self.modes.get_or_insert_with(|| ScreenModes::still_water(st))
+    }
 }
 
 /// A wave the linear bound answered ([`super::stick_bound`]): the bound on its rotation, rad,
@@ -757,7 +768,32 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, rng, (0.0, false, Settle::Storm), None, &mut StormScratch::default())
+    storm_from(st, s, &mut StormRng::Given(rng), (0.0, false, Settle::Storm), None, &mut StormScratch::default())
+}
+
+/// The random stream a storm draws its waves from (module docs, "Random numbers").
+enum StormRng<'r> {
+    /// The caller's, drawn from where it stands.
+    Given(&'r mut LoadRng),
+    /// The life's stream `life` at word `word` (the storm's own part), positioned into `rng`
+    /// when the storm first draws: most storms of a life draw no wave (none can pass their
+    /// screen), and positioning costs a ChaCha block. The same numbers as positioning it at once:
+    /// the words of a stream depend on its key, stream number and position only, not on where
+    /// `life` is.
+    Storm { life: &'r LoadRng, word: u128, rng: &'r mut Option<LoadRng> },
+}
+
+impl StormRng<'_> {
+    fn get(&mut self) -> &mut LoadRng {
+        match self {
+            StormRng::Given(rng) => rng,
+            StormRng::Storm { life, word, rng } => rng.get_or_insert_with(|| {
+                let mut r = (*life).clone();
+                r.set_word_pos(*word);
+                r
+            }),
+        }
+    }
 }
 
 /// A storm that cannot be simulated.
@@ -771,15 +807,43 @@ pub enum StormError {
     Wave { height_m: f64, period_s: f64, source: TrainError },
 }
 
+/// What the screen's bound reads of the dynamic model ([`StormSite::bound`]): the same at every
+/// storm of a caisson, whose tide and friction error change the caisson's weight in water, its
+/// base depth and its friction, not its mass, added mass, stiffness or springs' places (the
+/// still-water model's numbers to the bit, `tests::the_screen_reads_the_still_water_modes`), so
+/// taken once per life from the still-water model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct ScreenModes {
+    /// T0 of the horizontal mode, and the longer of T0 and the rocking period, s.
+    t0_s: f64,
+    t_moment_s: f64,
+    /// f of [`Model::lift_off_factor`].
+    lift_factor: f64,
+}
+
+impl ScreenModes {
+    fn of(m: &Model) -> Self {
+        let t0_s = m.natural_period_s();
+        ScreenModes { t0_s, t_moment_s: t0_s.max(m.rocking_period_s()), lift_factor: m.lift_off_factor() }
+    }
+
+    /// Those of the still-water model of `st`'s caisson.
+    fn still_water(st: &StormCase<'_>) -> Self {
+        Self::of(&Model::new(&st.structure.caisson, &st.structure.foundation))
+    }
+}
+
 /// The site and the caisson at a storm's water level (module docs, step 3), with its friction
 /// error: both models and what the screen's bound needs of them.
 struct StormSite {
     model: WaveLoadModel,
     block: RigidBlock,
-    dyn_model: Model,
-    /// T0 of the horizontal mode, and the longer of T0 and the rocking period, s.
-    t0_s: f64,
-    t_moment_s: f64,
+    /// The caisson and its foundation at the storm's water level and friction, and the dynamic
+    /// model of them, built when a wave first needs it (most storms run no wave through it).
+    caisson: Caisson,
+    foundation: Foundation,
+    dyn_model: OnceCell<Model>,
+    modes: ScreenModes,
     weight_n: f64,
     mu: f64,
     width_m: f64,
@@ -788,7 +852,8 @@ struct StormSite {
 }
 
 impl StormSite {
-    fn new(st: &StormCase<'_>, s: &StormInput) -> Self {
+    /// The site of storm `s`; `modes`: [`ScreenModes::still_water`] of `st`.
+    fn new(st: &StormCase<'_>, s: &StormInput, modes: ScreenModes) -> Self {
         let mut model = *st.model;
         model.site.depth_at_toe_m = toe_depth_m(st, s.tide_m);
         model.site.depth_at_wall_m += s.tide_m;
@@ -802,31 +867,35 @@ impl StormSite {
         foundation.mu_static *= s.friction_factor;
         foundation.mu_dynamic *= s.friction_factor;
         let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
-        let dyn_model = Model::new(&caisson, &foundation);
-        let t0_s = dyn_model.natural_period_s();
         StormSite {
-            t_moment_s: t0_s.max(dyn_model.rocking_period_s()),
-            t0_s,
             weight_n: caisson.weight_in_water_n,
             mu: foundation.mu_static.min(block.mu_static),
             width_m: caisson.width_m,
             stick: OnceCell::new(),
             model,
             block,
-            dyn_model,
+            caisson,
+            foundation,
+            dyn_model: OnceCell::new(),
+            modes,
         }
+    }
+
+    /// The dynamic model at the storm's water level and friction.
+    fn dyn_model(&self) -> &Model {
+        self.dyn_model.get_or_init(|| Model::new(&self.caisson, &self.foundation))
     }
 
     /// The screen's bound for a wave of period `period_s`: Ψ = 1 + T/(π t_q), t_q = T_w/4.
     fn bound(&self, period_s: f64) -> ScreenBound {
         let ramp = |t0: f64| 1.0 + t0 / (PI * 0.25 * period_s);
         ScreenBound {
-            psi_q: ramp(self.t0_s),
-            psi_m: ramp(self.t_moment_s),
+            psi_q: ramp(self.modes.t0_s),
+            psi_m: ramp(self.modes.t_moment_s),
             weight_n: self.weight_n,
             mu: self.mu,
             width_m: self.width_m,
-            lift_factor: self.dyn_model.lift_off_factor(),
+            lift_factor: self.modes.lift_factor,
         }
     }
 }
@@ -851,12 +920,13 @@ impl StormInput {
 /// the caisson, at the nodes of a grid over the heights [0, H_max] (plus the breaker height at the
 /// wall) and, for waves with periods of their own, over the storm's periods.
 struct StormScreen {
-    /// `node[j][i]`: at period node j, height i · dh.
-    node: [[bool; SCREEN_CELLS + 1]; PERIOD_CELLS + 1],
+    /// Bit i of `node[j]`: at period node j, height i · dh (`SCREEN_CELLS` + 1 bits a row).
+    node: [u128; PERIOD_CELLS + 1],
     /// Period nodes: 1 (every wave at T1/3) or `PERIOD_CELLS + 1`.
     periods: usize,
-    /// Whether any node may slide (none in a calm storm, or without the screen).
-    any: bool,
+    /// The lowest height node that may slide at any period node (`None`: no node may, in a calm
+    /// storm or without the screen).
+    first_node: Option<usize>,
     dh: f64,
     /// τ̄, and u = 1 − τ̄/τ at the first period node and its step.
     mean_period_s: f64,
@@ -892,7 +962,7 @@ impl StormScreen {
         };
         let mean_period_s = periods::MEAN_PERIOD_RATIO * s.period_s;
         let du = (u1 - u0) / PERIOD_CELLS as f64;
-        let mut node = [[false; SCREEN_CELLS + 1]; PERIOD_CELLS + 1];
+        let mut node = [0_u128; PERIOD_CELLS + 1];
         let mut bound_nodes = 0;
         for (j, row) in node.iter_mut().enumerate().take(if st.screen { periods } else { 0 }) {
             let own;
@@ -926,22 +996,23 @@ impl StormScreen {
             let node_may_slide =
                 |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&s.scaled(&p), &bound));
             bound_nodes += first;
-            for (i, flag) in row.iter_mut().enumerate().skip(first) {
-                *flag = node_may_slide(node_h(i));
+            for i in first..=SCREEN_CELLS {
+                *row |= u128::from(node_may_slide(node_h(i))) << i;
             }
             let hbr = loads_at.breaker_height_at_wall_m();
             if hbr < hmax {
                 let i = (hbr / dh) as usize;
                 let flag = node_may_slide(hbr);
-                row[i] |= flag;
-                row[(i + 1).min(SCREEN_CELLS)] |= flag;
+                *row |= (u128::from(flag) << i) | (u128::from(flag) << (i + 1).min(SCREEN_CELLS));
             }
         }
-        let any = node.iter().flatten().any(|&f| f);
-        StormScreen { node, periods, any, dh, mean_period_s, u0, du, bound_nodes }
+        // Only the rows of the period nodes can hold a flag (the others stay false).
+        let first_node = node[..periods].iter().map(|row| row.trailing_zeros() as usize).min().filter(|&i| i < 128);
+        StormScreen { node, periods, first_node, dh, mean_period_s, u0, du, bound_nodes }
     }
 
     /// The period cells of the grid.
+    #[cfg(test)]
     fn period_cells(&self) -> usize {
         (self.periods - 1).max(1)
     }
@@ -949,9 +1020,10 @@ impl StormScreen {
     /// Cell (c, j) = [c dh, (c + 1) dh] × [period node j, j + 1] may slide if a node within one
     /// cell of it may, in both directions.
     fn cell_may_slide(&self, c: usize, j: usize) -> bool {
-        self.node[j.saturating_sub(1)..=(j + 2).min(self.periods - 1)]
-            .iter()
-            .any(|row| row[c.saturating_sub(1)..=(c + 2).min(SCREEN_CELLS)].iter().any(|&f| f))
+        // Nodes c − 1 to c + 2 (within the grid): the bits below c + 3 less those below c − 1.
+        let below = |i: usize| (1_u128 << i) - 1;
+        let window = below((c + 3).min(SCREEN_CELLS + 1)) & !below(c.saturating_sub(1));
+        self.node[j.saturating_sub(1)..=(j + 2).min(self.periods - 1)].iter().any(|row| row & window != 0)
     }
 
     /// Whether the cell of a wave of height `h` and period `period_s` may slide.
@@ -965,11 +1037,18 @@ impl StormScreen {
         self.cell_may_slide(c, j)
     }
 
-    /// The lowest height cell that may slide at some period.
+    /// The lowest height cell that may slide at some period: two cells below the lowest node that
+    /// may. Cell c reads the nodes c − 1 to c + 2 ([`Self::cell_may_slide`]), and the period cells
+    /// together read every period node, so c may slide if and only if a node from c − 1 to c + 2
+    /// may at some period: the lowest is max(0, i − 2) for the lowest such node i (at most
+    /// `SCREEN_CELLS` − 2, a cell of the grid).
     fn lowest_cell(&self) -> Option<usize> {
-        if !self.any {
-            return None;
-        }
+        self.first_node.map(|i| i.saturating_sub(2))
+    }
+
+    /// [`Self::lowest_cell`] cell by cell (the tests' reference).
+    #[cfg(test)]
+    fn lowest_cell_by_cells(&self) -> Option<usize> {
         (0..SCREEN_CELLS).find(|&c| (0..self.period_cells()).any(|j| self.cell_may_slide(c, j)))
     }
 }
@@ -982,7 +1061,7 @@ struct WaveRun<'a> {
     s: &'a StormInput,
     site: &'a StormSite,
     /// The loads and the screen's bound at the storm's T1/3 (every wave's period by default).
-    loads_t13: PeriodLoads<'a>,
+    loads_t13: &'a PeriodLoads<'a>,
     bound_t13: ScreenBound,
     start_m: f64,
     /// Whether the dynamic model's life has ended at failure (module docs, "Failure").
@@ -1005,7 +1084,7 @@ impl WaveRun<'_> {
         let (s, site) = (self.s, self.site);
         let own;
         let (loads_at, bound) = if s.periods.is_significant() {
-            (&self.loads_t13, self.bound_t13)
+            (self.loads_t13, self.bound_t13)
         } else {
             own = site.model.at_period(period_s);
             (&own, site.bound(period_s))
@@ -1067,7 +1146,7 @@ impl WaveRun<'_> {
             return None;
         }
         let site = self.site;
-        let bound = site.stick.get_or_init(|| StickBound::new(&site.dyn_model)).as_ref()?;
+        let bound = site.stick.get_or_init(|| StickBound::new(site.dyn_model())).as_ref()?;
         let own;
         let at = if self.s.periods.is_significant() {
             self.stick_t13.get_or_init(|| bound.at_period(self.s.period_s)).as_ref()?
@@ -1113,7 +1192,7 @@ impl WaveRun<'_> {
                 x.reset(&*train);
                 x
             }
-            None => self.sim.insert(Simulation::new(site.dyn_model.clone(), st.structure.solver, &*train)),
+            None => self.sim.insert(Simulation::new(site.dyn_model().clone(), st.structure.solver, &*train)),
         };
         let mut watch = WaveWatch::default();
         sim.run_until(period_s, &*train, &mut watch)?;
@@ -1148,12 +1227,12 @@ fn toe_depth_m(st: &StormCase<'_>, tide_m: f64) -> f64 {
 fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
-    rng: &mut LoadRng,
+    rng: &mut StormRng<'_>,
     (start_m, failed, settle): (f64, bool, Settle),
     toe_k: Option<f64>,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
-    let site = StormSite::new(st, s);
+    let site = StormSite::new(st, s, scratch.modes(st));
     // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
     let k_toe = toe_k.unwrap_or_else(|| wavenumber(s.period_s, site.model.site.depth_at_toe_m));
     let loads_t13 = site.model.at_period_with_toe_wavenumber(s.period_s, k_toe);
@@ -1168,7 +1247,7 @@ fn storm_from(
         st,
         s,
         site: &site,
-        loads_t13,
+        loads_t13: &loads_t13,
         bound_t13,
         start_m,
         ended: failed,
@@ -1183,6 +1262,7 @@ fn storm_from(
     } else {
         // Every wave (the screen tested wave by wave, or off).
         let (low_m, hmax) = height_limits(s);
+        let rng = rng.get();
         for _ in 0..s.waves {
             let h = sample_rayleigh_m(s.h13_m, rng).clamp(low_m, hmax);
             let z: f64 = rng.sample(StandardNormal);
@@ -1209,7 +1289,7 @@ fn height_limits(s: &StormInput) -> (f64, f64) {
 fn draw_above_threshold(
     s: &StormInput,
     screen: &StormScreen,
-    rng: &mut LoadRng,
+    rng: &mut StormRng<'_>,
     waves: &mut Vec<DrawnWave>,
     run: &mut WaveRun<'_>,
     out: &mut StormOutcome,
@@ -1224,6 +1304,7 @@ fn draw_above_threshold(
     let threshold_m = lowest as f64 * screen.dh * (1.0 - 1e-9);
     let all = threshold_m <= low_m;
     let q = rayleigh_exceedance(threshold_m, s.h13_m);
+    let rng = rng.get();
     let mut sample = DescendingRayleigh::new(out.waves);
     waves.clear();
     while let Some(e) = sample.next_exceedance(rng) {
@@ -1295,9 +1376,10 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             };
             // The storm's waves from their own part of the stream: how many it draws does not move
             // the next storm's numbers (common random numbers across caissons, docs/size.md).
-            let mut waves_rng = rng.clone();
             storm_index += 1;
-            waves_rng.set_word_pos(storm_index << STORM_WAVE_WORDS_LOG2);
+            let mut positioned = None;
+            let word = storm_index << STORM_WAVE_WORDS_LOG2;
+            let mut waves_rng = StormRng::Storm { life: &rng, word, rng: &mut positioned };
             let failed = st.failure.is_some_and(|f| life.failed(&f));
             let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
             scratch.storms.push(storm);
@@ -1321,6 +1403,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
 /// moves from the screened to the simulated count; it neither slides nor lifts (its bound says
 /// so), so only the rotation and the counts can move. Empties `scratch.still`.
 fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormOutcome) -> Result<(), StormError> {
+    let modes = scratch.modes(st);
     let StormScratch { train, still, storms, .. } = scratch;
     still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
     // The site of the storm whose waves run (the waves of a storm are mostly together).
@@ -1332,14 +1415,14 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
         }
         let s = &storms[w.storm];
         if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
-            site = Some((w.storm, StormSite::new(st, s)));
+            site = Some((w.storm, StormSite::new(st, s, modes)));
         }
         let site = &site.as_ref().expect("the wave's storm's site").1;
         let mut run = WaveRun {
             st,
             s,
             site,
-            loads_t13: site.model.at_period(s.period_s),
+            loads_t13: &site.model.at_period(s.period_s),
             bound_t13: site.bound(s.period_s),
             start_m: 0.0,
             ended: false,
@@ -1636,6 +1719,41 @@ mod tests {
             .expect("the design example")
     }
 
+    /// What the screen reads of the dynamic model (T0, the rocking period, the lift-off factor)
+    /// is the still-water model's to the bit at every water level and friction error, though the
+    /// storm's model weighs less: 5 tides by 3 friction factors on the design example.
+    #[test]
+    fn the_screen_reads_the_still_water_modes() {
+        let sc = design_example();
+        let st = sc.storm_case(true).expect("a design");
+        let still = ScreenModes::still_water(&st);
+        let mut checked = 0;
+        for tide_m in [-1.0, 0.0, 0.7, 1.5, 3.0] {
+            for friction_factor in [0.7, 1.0, 1.3] {
+                let s = StormInput {
+                    h13_m: 5.0,
+                    hmax_m: 9.0,
+                    period_s: 11.0,
+                    periods: WavePeriods::Significant,
+                    waves: 1000,
+                    tide_m,
+                    angle_rad: 0.0,
+                    force_factor: 1.0,
+                    impact_factor: 1.0,
+                    friction_factor,
+                };
+                let site = StormSite::new(&st, &s, still);
+                let own = ScreenModes::of(site.dyn_model());
+                let bits = |m: ScreenModes| [m.t0_s, m.t_moment_s, m.lift_factor].map(f64::to_bits);
+                assert_eq!(bits(own), bits(still), "tide {tide_m} m, friction x {friction_factor}");
+                let weighs_less = site.dyn_model().weight_n < st.structure.caisson.weight_in_water_n;
+                assert_eq!(weighs_less, tide_m > 0.0, "tide {tide_m} m");
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 15);
+    }
+
     /// The screen's grid leaves out the nodes the bound of the loads up to their height holds:
     /// the same grid as every node's loads, on the design example's site at 720 storms (heights
     /// from calm to past breaking at the wall, three periods, tides, angles and force errors),
@@ -1644,7 +1762,7 @@ mod tests {
     fn the_bisected_screen_grid_is_every_nodes_grid() {
         let sc = design_example();
         let st = sc.storm_case(true).expect("a design");
-        let (mut storms, mut cut, mut sliding) = (0, 0, 0);
+        let (mut storms, mut cut, mut sliding, mut lowest) = (0, 0, 0, 0);
         for h13 in [0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 8.0, 10.0, 12.0] {
             for period_s in [7.0, 10.0, 14.0] {
                 for tide_m in [0.0, 1.5, 3.0] {
@@ -1662,7 +1780,7 @@ mod tests {
                                 impact_factor: force_factor,
                                 friction_factor: 1.0,
                             };
-                            let site = StormSite::new(&st, &s);
+                            let site = StormSite::new(&st, &s, ScreenModes::still_water(&st));
                             let t13 = (&site.model.at_period(period_s), site.bound(period_s));
                             let (a, b) = (
                                 StormScreen::grid(&st, &s, &site, t13, true),
@@ -1670,7 +1788,11 @@ mod tests {
                             );
                             assert_eq!(a.node, b.node, "H1/3 {h13} m, T {period_s} s, tide {tide_m} m");
                             storms += 1;
-                            sliding += usize::from(b.any);
+                            sliding += usize::from(b.first_node.is_some());
+                            for g in [&a, &b] {
+                                assert_eq!(g.lowest_cell(), g.lowest_cell_by_cells());
+                                lowest += usize::from(g.lowest_cell().is_some_and(|c| c > 0));
+                            }
                             assert_eq!(b.bound_nodes, 0);
                             cut += usize::from(a.bound_nodes > 0);
                         }
@@ -1679,8 +1801,10 @@ mod tests {
             }
         }
         assert_eq!(storms, 720);
-        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462.
-        assert_eq!((sliding, cut), (451, 462));
+        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462. The
+        // lowest cell that may slide is the one found cell by cell (above the first in each of
+        // the 451, on both grids).
+        assert_eq!((sliding, cut, lowest), (451, 462, 2 * 451));
     }
 
     /// A storm given the life's toe wave number (solved once for the shoaling and the loads)
@@ -1709,7 +1833,8 @@ mod tests {
                     let k = wavenumber(period_s, toe_depth_m(&st, tide_m));
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
-                        storm_from(&st, &s, &mut rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
+                        let rng = &mut StormRng::Given(&mut rng);
+                        storm_from(&st, &s, rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
                             .unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));

@@ -61,12 +61,17 @@ impl RigidBlock {
         let (mut p, mut u) = force(0.0);
         let mut moving = p > self.mu_static * (self.weight_n - u);
         let calm_from = if stop_at_rest { self.rest_from(e, span) } else { f64::INFINITY };
+        // The first breakpoint after τ, found again only once τ reaches it (τ grows: the first of
+        // the breakpoints after a later τ below it is the same one).
+        let mut next_bp = f64::NEG_INFINITY;
         while tau < t {
             if !moving && tau >= calm_from {
                 break;
             }
             let mut h = if tau < span { h_fast } else { h_slow };
-            let next_bp = crate::loads::first_after(tau, &bps);
+            if next_bp <= tau {
+                next_bp = crate::loads::first_after(tau, &bps);
+            }
             if next_bp < tau + h {
                 h = next_bp - tau;
             }

@@ -39,6 +39,7 @@ use crate::waves::dispersion::{deep_water_wavelength_m, wavelength_m, wavenumber
 use crate::ParamError;
 use rand::Rng;
 use rand_distr::StandardNormal;
+use std::cell::OnceCell;
 use std::f64::consts::PI;
 use thiserror::Error;
 
@@ -297,8 +298,9 @@ impl WaveLoadModel {
     }
 
     /// The model at one period: what does not depend on the height (the dispersion solves, the
-    /// breaker heights, the height-free parts of Goda, Sainflou and the impact) computed once,
-    /// for many heights of one period (the waves of a storm).
+    /// breaker heights, the height-free parts of Goda, Sainflou and the impact) computed once
+    /// (Sainflou's and the impact's when a height first needs them), for many heights of one
+    /// period (the waves of a storm).
     pub fn at_period(&self, period_s: f64) -> PeriodLoads<'_> {
         self.at_period_with_toe_wavenumber(period_s, wavenumber(period_s, self.site.depth_at_toe_m))
     }
@@ -331,7 +333,7 @@ impl WaveLoadModel {
             SainflouDepth::Toe => (s.depth_at_toe_m, l_toe),
             SainflouDepth::Wall => (s.depth_at_wall_m, wavelength_m(period_s, s.depth_at_wall_m)),
         };
-        let sainflou = SainflouPeriod::new(&SainflouInput {
+        let sainflou_input = SainflouInput {
             height_m: f64::NAN,
             wavelength_m: sf_l,
             depth_m: sf_depth,
@@ -339,23 +341,20 @@ impl WaveLoadModel {
             crest_freeboard_m: s.crest_freeboard_m,
             width_m: s.width_m,
             rho_w: s.rho_w,
-        });
-        let impact = ImpactPeriod::new(
-            &ImpactInput {
-                height_m: f64::NAN,
-                period_s,
-                toe_wavelength_m: l_toe,
-                wall_depth_m: s.depth_at_wall_m,
-                base_depth_m: s.base_depth_m,
-                crest_freeboard_m: s.crest_freeboard_m,
-                width_m: s.width_m,
-                criterion: o.criterion,
-                alpha_max: o.alpha_max,
-                a_imp: o.a_imp,
-                rho_w: s.rho_w,
-            },
-            hbr,
-        );
+        };
+        let impact_input = ImpactInput {
+            height_m: f64::NAN,
+            period_s,
+            toe_wavelength_m: l_toe,
+            wall_depth_m: s.depth_at_wall_m,
+            base_depth_m: s.base_depth_m,
+            crest_freeboard_m: s.crest_freeboard_m,
+            width_m: s.width_m,
+            criterion: o.criterion,
+            alpha_max: o.alpha_max,
+            a_imp: o.a_imp,
+            rho_w: s.rho_w,
+        };
         PeriodLoads {
             model: self,
             period_s,
@@ -365,8 +364,10 @@ impl WaveLoadModel {
             l0: deep_water_wavelength_m(period_s),
             sf_depth,
             goda,
-            sainflou,
-            impact,
+            sainflou_input,
+            sainflou: OnceCell::new(),
+            impact_input,
+            impact: OnceCell::new(),
         }
     }
 
@@ -506,8 +507,10 @@ impl WaveLoadModel {
 
 /// A [`WaveLoadModel`] at one period ([`WaveLoadModel::at_period`]): the loads of any height by
 /// the same floating-point operations as [`WaveLoadModel::evaluate_with`], without repeating
-/// the work that depends on the period only.
-#[derive(Debug, Clone, Copy)]
+/// the work that depends on the period only. Sainflou's and the impact's parts are computed when
+/// a wave first needs them (a storm's screen needs neither Sainflou nor, below the breaker height
+/// at the wall, the impact).
+#[derive(Debug, Clone)]
 pub struct PeriodLoads<'a> {
     model: &'a WaveLoadModel,
     period_s: f64,
@@ -522,8 +525,10 @@ pub struct PeriodLoads<'a> {
     /// Depth used for Sainflou, m.
     sf_depth: f64,
     goda: GodaPeriod,
-    sainflou: SainflouPeriod,
-    impact: ImpactPeriod,
+    sainflou_input: SainflouInput,
+    sainflou: OnceCell<SainflouPeriod>,
+    impact_input: ImpactInput,
+    impact: OnceCell<ImpactPeriod>,
 }
 
 /// The peak load components of one wave that decide whether it can slide or lift the caisson
@@ -545,6 +550,18 @@ impl PeakComponents {
 }
 
 impl PeriodLoads<'_> {
+    /// Sainflou's height-free parts.
+    #[inline]
+    fn sainflou(&self) -> &SainflouPeriod {
+        self.sainflou.get_or_init(|| SainflouPeriod::new(&self.sainflou_input))
+    }
+
+    /// The impact's height-free parts.
+    #[inline]
+    fn impact(&self) -> &ImpactPeriod {
+        self.impact.get_or_init(|| ImpactPeriod::new(&self.impact_input, self.hbr))
+    }
+
     /// The wave period, s.
     pub fn period_s(&self) -> f64 {
         self.period_s
@@ -588,8 +605,8 @@ impl PeriodLoads<'_> {
         choice: RegimeChoice,
     ) -> Result<WaveLoads, RegimeError> {
         let (h, regime, depth_5h, goda) = self.goda_of(height_m, depth_5h_m, choice)?;
-        let sainflou = self.sainflou.at(h);
-        let impact = self.impact.at(h);
+        let sainflou = self.sainflou().at(h);
+        let impact = self.impact().at(h);
         let f_star = f_star(&goda, &impact);
         Ok(WaveLoads {
             height_incident_m: height_m,
@@ -632,7 +649,7 @@ impl PeriodLoads<'_> {
         let [p, m, u] = self.goda.upper_bounds(h, depth_5h * MARGIN)?;
         let may_break = h >= self.hbr;
         let alpha_qs = if may_break { o.alpha_qs_breaking.max(o.alpha_qs_nonbreaking) } else { o.alpha_qs_nonbreaking };
-        let [ix, im, iy] = if may_break { self.impact.upper_bounds(h)? } else { [0.0; 3] };
+        let [ix, im, iy] = if may_break { self.impact().upper_bounds(h)? } else { [0.0; 3] };
         let (l, k) = (s.length_m, MARGIN * MARGIN);
         let component = |fx: f64, m: f64, fy: f64| LoadComponent {
             x: WaveForce { fx_n: k * fx * l, fy_n: 0.0, m_nm: k * (m + fy * s.width_m / 6.0) * l },
@@ -660,7 +677,7 @@ impl PeriodLoads<'_> {
         // of a non-breaking wave is not even computed.
         let mut impact = LoadComponent::default();
         if breaking {
-            let im = self.impact.at(h);
+            let im = self.impact().at(h);
             let fs = f_star(&goda, &im);
             if fs > 1.0 && fs.is_finite() {
                 impact = self.model.impact_component(&im);
@@ -676,11 +693,11 @@ impl PeriodLoads<'_> {
     /// trough, not its crest; the impact and the rise-time distribution of a breaking wave only).
     pub fn event(&self, height_m: f64, choice: RegimeChoice, deviate: f64) -> Result<WaveEvent, RegimeError> {
         let (h, regime, _, goda) = self.goda_of(height_m, None, choice)?;
-        let trough = self.sainflou.trough(h);
+        let trough = self.sainflou().trough(h);
         let breaking = regime.regime == Regime::Breaking;
         let mut impact = None;
         if breaking {
-            let im = self.impact.at(h);
+            let im = self.impact().at(h);
             let rise = self.model.options.rise_time.distribution(f_star(&goda, &im), self.period_s);
             impact = rise.map(|d| (d.at_deviate(deviate), im));
         }
