@@ -977,17 +977,23 @@ mod tests {
     /// to the top (results version 23; one rung a step before: dt_max/2, then 19 steps of
     /// dt_max), 20 steps of dt_max to 2.0275 s, and one Newmark step of 2.5 ms to T: 42 exact
     /// steps; no spring slips.
+    /// One pulsating wave of period `period_s` pushing the caisson of `sim` shoreward with a peak
+    /// of `share` μ W′ (μ = 0.6), its resultant at the levers of the tests below.
+    fn push_wave(sim: &Simulation, share: f64, period_s: f64) -> crate::loads::history::WaveTrain {
+        use crate::loads::history::{LoadComponent, WaveEvent, WaveTrain};
+        let push = LoadComponent::from_levers(share * 0.6 * sim.model.weight_n, 0.0, 0.0, 0.39, 0.78);
+        let wave = WaveEvent::new(0.0, period_s, push, 1.0, LoadComponent::default(), LoadComponent::default(), None);
+        WaveTrain::new(vec![wave]).unwrap()
+    }
+
     #[test]
     fn a_sticking_wave_takes_exact_steps_to_its_breakpoints() {
-        use crate::loads::history::{LoadComponent, WaveEvent, WaveTrain};
         let (dt_max, period) = (0.05, 2.03);
         let solver = SolverParams { dt_s: 1e-4, ..SolverParams::default() }
             .with_adaptive(AdaptiveParams { dt_max_s: dt_max, ..AdaptiveParams::for_first_step(1e-4) })
             .unwrap();
         let mut sim = simulation_with(DampingMode::Elastic, VerticalDamping::Springs, MassMatrix::Diagonal, solver);
-        let push = LoadComponent::from_levers(0.2 * 0.6 * sim.model.weight_n, 0.0, 0.0, 0.39, 0.78);
-        let wave = WaveEvent::new(0.0, period, push, 1.0, LoadComponent::default(), LoadComponent::default(), None);
-        let train = WaveTrain::new(vec![wave]).unwrap();
+        let train = push_wave(&sim, 0.2, period);
         sim.reset(&train);
         sim.run_until(period, &train, &mut ()).unwrap();
         let s = sim.stats;
@@ -1008,7 +1014,6 @@ mod tests {
     /// the slip (measured 0.21 %, 1.1e-4 m: the Newmark steps of the slip at 1e-6 m).
     #[test]
     fn exact_steps_resume_as_soon_as_a_slip_ends() {
-        use crate::loads::history::{LoadComponent, WaveEvent, WaveTrain};
         /// Every committed step: whether it was exact (no Newton iteration) and any spring slips.
         #[derive(Default)]
         struct Steps(Vec<(f64, bool, bool)>);
@@ -1026,9 +1031,7 @@ mod tests {
                 .with_adaptive(AdaptiveParams { dt_max_s: dt_max, tolerance_m, ..AdaptiveParams::for_first_step(1e-4) })
                 .unwrap();
             let mut sim = simulation_with(DampingMode::Elastic, VerticalDamping::Springs, MassMatrix::Diagonal, solver);
-            let push = LoadComponent::from_levers(1.2 * 0.6 * sim.model.weight_n, 0.0, 0.0, 0.39, 0.78);
-            let wave = WaveEvent::new(0.0, period, push, 1.0, LoadComponent::default(), LoadComponent::default(), None);
-            let train = WaveTrain::new(vec![wave]).unwrap();
+            let train = push_wave(&sim, 1.2, period);
             sim.reset(&train);
             let mut steps = Steps::default();
             sim.run_until(period, &train, &mut steps).unwrap();
