@@ -13,6 +13,7 @@ use crate::plot::{panels, Panel, Series};
 use anyhow::Result;
 use caisson::analysis::conventional::{static_check, DesignWave, DesignWaveRule, StaticCheck};
 use caisson::analysis::site::WaveSetup;
+use caisson::loads::breaking_load::BreakingLoad;
 use caisson::loads::history::{LoadComponent, WaveEvent, WaveTrain};
 use caisson::loads::model::{WaveLoadOptions, WaveLoads, WaveRecord};
 use caisson::loads::regime::Regime;
@@ -104,7 +105,7 @@ pub fn loads_text(sc: &Scenario, ws: &WaveSetup, c: &StaticCheck) -> String {
     let mut t = String::new();
     wave_lines(&mut t, ws, &c.loads, &c.design_wave);
     let _ = writeln!(t);
-    pressure_lines(&mut t, &c.loads, &ws.model.options);
+    pressure_lines(&mut t, &c.loads, &ws.model.options, ws.model.site.berm_width_m);
     let _ = writeln!(t);
     let (site, sf) = (&ws.model.site, &c.safety);
     let _ = writeln!(
@@ -171,8 +172,9 @@ fn wave_lines(t: &mut String, ws: &WaveSetup, l: &WaveLoads, dw: &DesignWave) {
     );
 }
 
-/// The pressures and forces of Goda, Sainflou and the impact, and the rise time.
-fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions) {
+/// The pressures and forces of Goda, Sainflou and the impact, the breaking-wave load of the
+/// rule, and the rise time.
+fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions, berm_width_m: Option<f64>) {
     let (g, s, i) = (&l.goda, &l.sainflou, &l.impact);
     let breaking = l.regime.regime == Regime::Breaking;
     let _ = writeln!(
@@ -182,7 +184,10 @@ fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions) {
         g.alpha2,
         g.alpha3,
         g.alpha_star,
-        g.alpha_i.map_or(String::new(), |a| format!("  (α_I = {a:.4})"))
+        g.alpha_i.map_or(String::new(), |a| format!(
+            "  (α_I = {a:.4}, B_M = {:.3} m: α* = max(α2, α_I))",
+            berm_width_m.unwrap_or(0.0)
+        ))
     );
     let _ = writeln!(
         t,
@@ -195,6 +200,13 @@ fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions) {
     );
     let _ = writeln!(t, "  P = {:.4} kN/m at {:.4} m above the base (M_P = {:.4} kN·m/m)   U = {:.4} kN/m (M_U = {:.4} kN·m/m about the heel)",
         g.horizontal_force_n_per_m / 1e3, g.horizontal_lever_m, g.horizontal_moment_base_nm_per_m / 1e3, g.uplift_force_n_per_m / 1e3, g.uplift_moment_heel_nm_per_m / 1e3);
+    if g.alpha_i.is_some() {
+        let _ = writeln!(
+            t,
+            "  (Goda's static check; the pulsating load of the dynamic model takes α* = α2: P = {:.4} kN/m)",
+            l.pulsating.horizontal_force_n_per_m / 1e3
+        );
+    }
     let _ = writeln!(t, "Sainflou (h = {:.3} m)     h0 = {:.4} m   crest F = {:.4} kN/m   trough F = {:.4} kN/m at {:.4} m (M = {:.4} kN·m/m)",
         l.sainflou_depth_m, s.h0_m, s.crest_force_n_per_m / 1e3, s.trough_force_n_per_m / 1e3, s.trough_lever_m, s.trough_moment_base_nm_per_m / 1e3);
     let _ = writeln!(
@@ -203,13 +215,18 @@ fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions) {
         s.trough_base_pressure_pa / 1e3,
         s.suction_uplift_n_per_m / 1e3
     );
+    let cuomo = o.breaking_load == BreakingLoad::Cuomo2010;
     let _ = writeln!(
         t,
         "Impact (seed Eq. 30, 32)  d_b = {} m   H_br = {:.4} m   1 − |d_b − d|/d = {:.4}{}",
         opt(i.breaking_depth_m, 4),
         i.breaker_height_m,
         i.reduction,
-        if breaking { "" } else { "   (not applied: non-breaking)" }
+        match (cuomo, breaking) {
+            (false, _) => format!("   (not applied: breaking_load = \"{}\")", o.breaking_load.name()),
+            (true, false) => "   (not applied: non-breaking)".to_string(),
+            (true, true) => String::new(),
+        }
     );
     let _ = writeln!(
         t,
@@ -218,9 +235,40 @@ fn pressure_lines(t: &mut String, l: &WaveLoads, o: &WaveLoadOptions) {
         i.horizontal_lever_m,
         i.uplift_force_n_per_m / 1e3
     );
+    let p = &l.peak;
+    match (o.breaking_load, &l.impulsive_goda) {
+        (BreakingLoad::GodaTakahashi, Some(gi)) => {
+            let _ = writeln!(
+                t,
+                "Breaking load \"goda-takahashi\"  Goda's P for the wave with α* = max(α2, α_I) = {:.4} (α_I = {:.4}, B_M = {:.3} m{})",
+                gi.alpha_star,
+                gi.alpha_i.unwrap_or(f64::NAN),
+                berm_width_m.unwrap_or(0.0),
+                if berm_width_m.is_none() { ": no [water] berm_width_m" } else { "" }
+            );
+            let _ = writeln!(
+                t,
+                "  F_x,peak = {:.4} kN/m at {:.4} m above the base   F_y,peak = U = {:.4} kN/m   (pulsating P with α2: {:.4} kN/m)",
+                p.horizontal_force_n_per_m / 1e3,
+                p.horizontal_lever_m,
+                p.uplift_force_n_per_m / 1e3,
+                l.pulsating.horizontal_force_n_per_m / 1e3
+            );
+        }
+        (BreakingLoad::None, _) => {
+            let _ = writeln!(t, "Breaking load \"none\"  no impulsive peak: every wave is pulsating (seed Eq. 29)");
+        }
+        _ => {
+            let _ = writeln!(t, "Breaking load \"cuomo-2010\"  the impact of seed Eq. 30 and 32 above");
+        }
+    }
     match l.rise_time {
         _ if !breaking => {
-            let _ = writeln!(t, "  F* = {:.4} (no impact and no rise time: non-breaking wave, seed Eq. 29)", l.f_star);
+            let _ = writeln!(
+                t,
+                "  F* = {:.4} (no impulsive peak and no rise time: non-breaking wave, seed Eq. 29)",
+                l.f_star
+            );
         }
         Some(d) => {
             let _ = writeln!(
@@ -293,10 +341,11 @@ fn write_history(
         times.iter().map(|&t| (t, pick(pulsating.at(t)) / 1e3)).collect()
     };
     let shape = ws.model.options.load_shape;
+    let rule = ws.model.options.breaking_load.name();
     let label = match (loads.regime.regime, shape) {
         (Regime::NonBreaking, _) => "total wave force (seed Eq. 29)".to_string(),
-        (Regime::Breaking, LoadShape::Seed) => "total wave force (seed Eq. 31)".to_string(),
-        (Regime::Breaking, s) => format!("total wave force, {} shape (seed Table 2)", s.name()),
+        (Regime::Breaking, LoadShape::Seed) => format!("total wave force (seed Eq. 31, {rule} peak)"),
+        (Regime::Breaking, s) => format!("total wave force, {} shape (seed Table 2), {rule} peak", s.name()),
     };
     let ref_label = "pulsating part (α_qs F_qs+, F_qs−)";
     let title = format!(

@@ -12,7 +12,7 @@ import pytest
 import math
 
 import caisson
-from conftest import EXAMPLES, assert_same_json, cli, cli_json, short_design_toml, short_size_toml
+from conftest import EXAMPLES, assert_replace_error_is_the_clis, assert_same_json, cli, cli_json, short_design_toml, short_size_toml
 
 
 def heavy_triangle(tmp_path):
@@ -104,3 +104,45 @@ def test_size_candidates_without_a_goda_value_are_the_clis_nulls_and_empty_cells
     col = header.index("goda_heel_pressure_kpa")
     empty = [float(r.split(",")[0]) for r in rows[1:] if r.split(",")[col] == ""]
     assert empty == tipping
+
+
+@pytest.mark.parametrize("rule", ["cuomo-2010", "goda-takahashi", "none"])
+def test_the_breaking_load_gives_the_clis_loads_and_design(tmp_path, rule):
+    # The 15 m site of the study (a berm: Goda's check with α_I; impulsive waves under both
+    # rules with a peak) under each `[waves] breaking_load`, through `Scenario.replace`: the loads
+    # report and a short design are the CLI's key for key and bit for bit (warnings included),
+    # and each records the rule.
+    sc = caisson.Scenario.from_toml(EXAMPLES / "study" / "site_15m.toml").replace(
+        waves={"breaking_load": rule}, design={"lives": 6, "life_years": 10}
+    )
+    p = tmp_path / "site.toml"
+    p.write_text(sc.to_toml())
+    want = cli_json("loads", p)
+    got = caisson.loads.report(sc)
+    assert got["breaking_load"]["rule"] == rule
+    assert assert_same_json(got, want) > 80
+    table = caisson.loads.evaluate(sc, [3.0, 6.0, 9.0])
+    assert list(table["breaking_load.rule"]) == [rule] * 3
+    want = cli_json("design", p)
+    got = caisson.Design(sc).run()[0].report
+    assert got["model"]["breaking_load"] == rule
+    assert assert_same_json(got, want) > 40
+
+
+def test_goda_takahashi_without_the_berm_raises_the_clis_error(tmp_path):
+    # `breaking_load = "goda-takahashi"` needs `[water] berm_width_m` (Takahashi's α_I): Python
+    # raises the words the CLI prints for the same file, naming the key.
+    sc = caisson.Scenario.from_toml(EXAMPLES / "design_breakwater.toml")
+    with pytest.raises(caisson.ScenarioError) as err:
+        sc.replace(waves={"breaking_load": "goda-takahashi"})
+    assert err.value.key == "[water] berm_width_m"
+    d = sc.to_dict()
+    d["waves"] = {**d["waves"], "breaking_load": "goda-takahashi"}
+    bad = tmp_path / "scenario.toml"
+    bad.write_text(caisson._toml.dumps(d))
+    for command in ("loads", "design"):
+        r = cli(command, bad, check=False)
+        assert r.returncode == 2 and "[water] berm_width_m" in r.stderr
+        assert_replace_error_is_the_clis(err.value, "waves", r.stderr)
+    # With the berm given it is accepted.
+    assert sc.replace(water={"berm_width_m": 10.0}, waves={"breaking_load": "goda-takahashi"}) is not None

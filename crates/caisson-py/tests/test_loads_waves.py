@@ -100,6 +100,7 @@ def test_every_column_of_every_row_is_the_report_of_its_height():
         "design_wave.rule",
         "regime.regime",
         "regime.breaker_criterion",
+        "breaking_load.rule",
         "rise_time.model",
         "time_history.load_shape",
     ]

@@ -1,7 +1,8 @@
 //! `LoadsReport::columns` (the Python package's `caisson.loads.evaluate` table) against the
 //! report's JSON (`caisson loads --json`): the same keys, none missing and none extra, and every
 //! value exactly (numbers bit for bit, `null` as `None`), for the bundled wave examples over
-//! heights that cover both regimes, nulls and numbers, and both rise-time models.
+//! heights that cover both regimes, nulls and numbers, both rise-time models and the three
+//! breaking-wave loads.
 
 mod support;
 
@@ -60,6 +61,12 @@ fn columns_are_the_json_keys_and_values() {
             .map(|n| support::example(n))
             .collect();
     scenarios.push(Scenario::from_toml(&literal, Path::new("literal.toml"), &dir).unwrap());
+    // The 15 m site of the study (a berm: Goda's check with α_I) under the other breaking loads.
+    let site = std::fs::read_to_string(dir.join("study/site_15m.toml")).unwrap();
+    for rule in ["goda-takahashi", "none"] {
+        let text = site.replace("[waves]\n", &format!("[waves]\nbreaking_load = \"{rule}\"\n"));
+        scenarios.push(Scenario::from_toml(&text, Path::new("site.toml"), &dir).unwrap());
+    }
     let (mut rows, mut values, mut nulls) = (0, 0, 0);
     let mut seen = std::collections::BTreeSet::new();
     for sc in &scenarios {
@@ -74,7 +81,7 @@ fn columns_are_the_json_keys_and_values() {
             r.columns(&mut got);
             let mut got: Vec<(String, Value)> = got.0.into_iter().map(|(k, v)| (k.to_string(), v)).collect();
             got.sort_by(|a, b| a.0.cmp(&b.0));
-            assert_eq!(got.len(), 85, "h = {h}");
+            assert_eq!(got.len(), 95, "h = {h}");
             assert_eq!(got, want, "h = {h}");
             rows += 1;
             values += got.len();
@@ -82,7 +89,7 @@ fn columns_are_the_json_keys_and_values() {
             seen.extend(got.iter().filter_map(|(k, v)| v.as_str().map(|s| format!("{k}={s}"))));
         }
     }
-    assert_eq!((rows, values), (35, 35 * 85));
+    assert_eq!((rows, values), (49, 49 * 95));
     assert!(nulls > 0, "no null value was checked");
     for text in [
         "regime.regime=breaking",
@@ -92,6 +99,9 @@ fn columns_are_the_json_keys_and_values() {
         "design_wave.rule=regular-height",
         "design_wave.rule=goda-breaking-limited",
         "wave.kind=irregular",
+        "breaking_load.rule=cuomo-2010",
+        "breaking_load.rule=goda-takahashi",
+        "breaking_load.rule=none",
     ] {
         assert!(seen.contains(text), "{text} not checked: {seen:?}");
     }

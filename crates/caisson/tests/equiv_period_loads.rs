@@ -4,8 +4,10 @@
 //! wider than the examples': toe depth 3-40 m, wall depth 0.3-1.0 of it, base depth from the wall
 //! depth to 1.2 times the toe depth (α3 < 0 included), crest 0-10 m, width 3-40 m, seabed slope
 //! 0-0.1, with or without a berm (Takahashi's α_I), wave angle 0-40°, all three breaking
-//! criteria, α_qs 0.5-1.2 each, a_imp 0.5-2, α_max 0.3-1, T 3-18 s, heights up to 40 m.
+//! criteria, all three breaking-wave loads (`goda-takahashi` also without a berm: B_M = 0),
+//! α_qs 0.5-1.2 each, a_imp 0.5-2, α_max 0.3-1, T 3-18 s, heights up to 40 m.
 
+use caisson::loads::breaking_load::BreakingLoad;
 use caisson::loads::model::{PeakComponents, WaveLoadModel, WaveLoadOptions, WaveSite};
 use caisson::loads::regime::RegimeChoice;
 use caisson::waves::breaking::BreakerCriterion;
@@ -32,6 +34,7 @@ fn random_model(rng: &mut ChaCha8Rng) -> WaveLoadModel {
         _ => BreakerCriterion::McCowan { gamma: 0.78 },
     };
     let options = WaveLoadOptions {
+        breaking_load: BreakingLoad::ALL[rng.gen_range(0..3)].1,
         criterion,
         alpha_qs_nonbreaking: rng.gen_range(0.5..1.2),
         alpha_qs_breaking: rng.gen_range(0.5..1.2),
@@ -53,9 +56,10 @@ fn numbers(p: &PeakComponents) -> [f64; 6] {
 #[test]
 fn the_peak_components_are_those_of_the_full_evaluation() {
     let mut rng = ChaCha8Rng::seed_from_u64(21);
-    let (mut checked, mut impulsive) = (0, 0);
+    let (mut checked, mut impulsive) = (0, [0; 3]);
     for _ in 0..2000 {
         let model = random_model(&mut rng);
+        let rule = BreakingLoad::ALL.iter().position(|(_, r)| *r == model.options.breaking_load).unwrap();
         let period_s = rng.gen_range(3.0..18.0);
         let at = model.at_period(period_s);
         for _ in 0..20 {
@@ -64,12 +68,14 @@ fn the_peak_components_are_those_of_the_full_evaluation() {
             let event = model.event(&full, None, 0.0);
             let peaks = at.peaks(h, RegimeChoice::Auto).unwrap();
             assert_eq!(numbers(&peaks), numbers(&PeakComponents { quasi: event.quasi, impact: event.impact }));
-            impulsive += usize::from(event.impulse.is_some());
+            impulsive[rule] += usize::from(event.impulse.is_some());
             checked += 1;
         }
     }
     assert_eq!(checked, 40_000);
-    assert!(impulsive > 1000 && impulsive < 39_000, "both regimes seen: {impulsive} impulsive");
+    // Impulsive waves under the two rules with a peak, none under `none`.
+    let [cuomo, goda_takahashi, none] = impulsive;
+    assert!(cuomo > 300 && goda_takahashi > 300 && none == 0, "impulsive waves by rule: {impulsive:?}");
 }
 
 /// `PeriodLoads::peak_bound(H_max)` is at least each of the six numbers of `peaks` at every

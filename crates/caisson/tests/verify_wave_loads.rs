@@ -468,3 +468,208 @@ mod properties {
         }
     }
 }
+
+/// The 15 m site of docs/model.md §5.5's worked check (issue 33): h 15 m, d 8.5 m, a 10 m berm,
+/// h' 10 m, crest 4 m above still water, a 1/50 seabed, sea water; a caisson 20 m wide.
+fn site_15m() -> WaveSite {
+    WaveSite {
+        rho_w: 1030.0,
+        depth_at_toe_m: 15.0,
+        depth_at_wall_m: 8.5,
+        base_depth_m: 10.0,
+        crest_freeboard_m: 4.0,
+        width_m: 20.0,
+        length_m: 1.0,
+        seabed_slope: 0.02,
+        berm_width_m: Some(10.0),
+    }
+}
+
+/// Goda's force and uplift by hand (docs/model.md §1.2-§1.5, normal incidence, λ = 1): L from
+/// the dispersion relation by Newton's method, written here; α* = max(α2, α_I) when `impulsive`,
+/// else α2. Returns (L, α2, α_I, P, lever M_P/P, U), per metre (N/m, m).
+fn goda_by_hand(s: &WaveSite, h: f64, t: f64, impulsive: bool) -> (f64, f64, f64, f64, f64, f64) {
+    let (hs, d, hp, hc, rho) = (s.depth_at_toe_m, s.depth_at_wall_m, s.base_depth_m, s.crest_freeboard_m, s.rho_w);
+    // ω² = g k tanh(k h_s), Newton from the deep-water k.
+    let omega = 2.0 * std::f64::consts::PI / t;
+    let mut k = omega * omega / 9.81;
+    for _ in 0..50 {
+        let f = 9.81 * k * (k * hs).tanh() - omega * omega;
+        let df = 9.81 * (k * hs).tanh() + 9.81 * k * hs / (k * hs).cosh().powi(2);
+        k -= f / df;
+    }
+    let l = 2.0 * std::f64::consts::PI / k;
+    let x = 4.0 * std::f64::consts::PI * hs / l;
+    let alpha1 = 0.6 + 0.5 * (x / x.sinh()).powi(2);
+    let hb = hs + 5.0 * h * s.seabed_slope;
+    let alpha2 = ((hb - d) / (3.0 * hb) * (h / d).powi(2)).min(2.0 * d / h);
+    let alpha3 = 1.0 - hp / hs * (1.0 - 1.0 / (2.0 * std::f64::consts::PI * hs / l).cosh());
+    // Takahashi, Tanimoto & Shimosako (1994).
+    let bl = s.berm_width_m.unwrap() / l - 0.12;
+    let dh = (hs - d) / hs - 0.6;
+    let (d11, d22) = (0.93 * bl + 0.36 * dh, -0.36 * bl + 0.93 * dh);
+    let d1 = if d11 <= 0.0 { 20.0 * d11 } else { 15.0 * d11 };
+    let d2 = if d22 <= 0.0 { 4.9 * d22 } else { 3.0 * d22 };
+    let alpha_i1 = if d22 <= 0.0 { d2.cos() / d1.cosh() } else { 1.0 / (d1.cosh() * d2.cosh().sqrt()) };
+    let alpha_i0 = if h <= 2.0 * d { h / d } else { 2.0 };
+    let alpha_i = alpha_i0 * alpha_i1;
+    let alpha_star = if impulsive { alpha2.max(alpha_i) } else { alpha2 };
+    let eta = 1.5 * h;
+    let p1 = (alpha1 + alpha_star) * rho * 9.81 * h;
+    let p3 = alpha3 * p1;
+    let p4 = if eta > hc { p1 * (1.0 - hc / eta) } else { 0.0 };
+    let hcs = eta.min(hc);
+    let force = 0.5 * (p1 + p3) * hp + 0.5 * (p1 + p4) * hcs;
+    let moment = (2.0 * p1 + p3) * hp * hp / 6.0 + 0.5 * (p1 + p4) * hp * hcs + (p1 + 2.0 * p4) * hcs * hcs / 6.0;
+    let pu = alpha1 * alpha3 * rho * 9.81 * h;
+    (l, alpha2, alpha_i, force, moment / force, 0.5 * pu * s.width_m)
+}
+
+/// `breaking_load = "goda-takahashi"`: the peak of one regular breaking wave is Goda's force for
+/// its height with α* = max(α2, α_I), computed here by hand from the published formulas (Goda
+/// 2000; Takahashi, Tanimoto & Shimosako 1994), and docs/model.md §5.5's worked check is a second
+/// oracle (H = 10.48 m, T = 12 s: L = 135.35 m, α2 = 0.2383, α_I = 0.2413, P = 1511.2 kN/m, to
+/// their printed digits). The event's pulsating part is Goda's with α2 (α_qs = 1 for a breaking
+/// wave), its impulsive uplift Goda's U (α_I does not enter pu), F* = P(α*)/P(α2) and its
+/// median rise time 0.34 F*^−3.42 T (seed Eq. 35), clamped to T/4. The wave history peaks at
+/// t_r with P(α*) (Eq. 31's shape: the triangle above the sine there), moment P(α*) y_L + U B/6.
+#[test]
+fn goda_takahashi_peak_of_a_breaking_wave_is_godas_force_with_alpha_star_by_hand() {
+    use caisson::loads::breaking_load::BreakingLoad;
+    use caisson::loads::regime::RegimeChoice;
+    let site = site_15m();
+    let options = WaveLoadOptions { breaking_load: BreakingLoad::GodaTakahashi, ..WaveLoadOptions::default() };
+    let model = WaveLoadModel { site, options };
+    let (h, t) = (10.48, 12.0);
+    let (l, alpha2, alpha_i, p_star, lever_star, u) = goda_by_hand(&site, h, t, true);
+    let (_, _, _, p2, lever2, u2) = goda_by_hand(&site, h, t, false);
+    // The worked check of docs/model.md §5.5, to its printed digits.
+    close("L", l, 135.35, 0.0, 2);
+    close("α2", alpha2, 0.2383, 0.0, 4);
+    close("α_I", alpha_i, 0.2413, 0.0, 4);
+    close("P (kN/m)", p_star / 1e3, 1511.2, 0.0, 1);
+    assert!(alpha_i > alpha2 && p_star > p2 && u == u2, "the premise: an impulsive wave");
+    // The tool's loads and its event, against the hand calculation (1e-9 relative: the same
+    // formulas, another order of operations and another dispersion solver).
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+    let loads = model.evaluate(h, t).unwrap();
+    assert_eq!(loads.regime.regime, Regime::Breaking);
+    assert!(rel(loads.peak.horizontal_force_n_per_m, p_star) < 1e-9, "{:?}", loads.peak);
+    assert!(rel(loads.peak.horizontal_lever_m, lever_star) < 1e-9);
+    assert!(rel(loads.peak.uplift_force_n_per_m, u) < 1e-9);
+    assert!(rel(loads.pulsating.horizontal_force_n_per_m, p2) < 1e-9);
+    let f_star = p_star / p2;
+    assert!(rel(loads.f_star, f_star) < 1e-9, "F* {} vs {f_star}", loads.f_star);
+    let median = (0.34 * f_star.powf(-3.42) * t).min(t / 4.0);
+    assert!(rel(loads.rise_time.unwrap().median_clamped_s(), median) < 1e-9);
+    let event = model.at_period(t).event(h, RegimeChoice::Auto, 0.0).unwrap();
+    let impulse = event.impulse.expect("impulsive");
+    assert!(rel(event.impact.x.fx_n, p_star) < 1e-9 && rel(event.impact.y.fy_n, u) < 1e-9);
+    assert!(rel(event.quasi.x.fx_n, p2) < 1e-9 && rel(event.quasi.x.m_nm, p2 * lever2) < 1e-9);
+    let peak = event.at_local(impulse.rise_s);
+    assert!(rel(peak.fx_n, p_star) < 1e-9, "{peak:?}");
+    assert!(rel(peak.m_nm, p_star * lever_star + u * site.width_m / 6.0) < 1e-9, "{peak:?}");
+    // Goda's static check takes the same α* (the berm is given): its P is the peak's.
+    assert!(rel(loads.goda.horizontal_force_n_per_m, p_star) < 1e-9);
+}
+
+/// Which waves `goda-takahashi` makes impulsive: a breaking wave whose α_I exceeds α2 (F* > 1);
+/// not a breaking wave whose α2 exceeds α_I (a narrow berm, a high H/d: the pulsating load with
+/// α_qs of breaking waves), nor a wave below the breaker height at the wall (non-breaking:
+/// Eq. 29 whatever its α_I); the berm width's α_I by hand. And `none` makes no wave impulsive.
+#[test]
+fn goda_takahashi_makes_impulsive_the_breaking_waves_whose_alpha_i_exceeds_alpha2() {
+    use caisson::loads::breaking_load::BreakingLoad;
+    let gt = WaveLoadOptions { breaking_load: BreakingLoad::GodaTakahashi, ..WaveLoadOptions::default() };
+    let t = 12.0;
+    let mut checked = 0;
+    // (berm, H, breaking, α_I > α2 by hand).
+    for (berm, h) in [(10.0, 8.0), (10.0, 10.48), (2.0, 10.48), (10.0, 6.0)] {
+        let site = WaveSite { berm_width_m: Some(berm), ..site_15m() };
+        let (_, alpha2, alpha_i, ..) = goda_by_hand(&site, h, t, true);
+        let loads = WaveLoadModel { site, options: gt }.evaluate(h, t).unwrap();
+        let breaking = loads.regime.regime == Regime::Breaking;
+        assert_eq!(loads.rise_time.is_some(), alpha_i > alpha2, "B_M {berm} H {h}: F* = {}", loads.f_star);
+        let event = WaveLoadModel { site, options: gt }.event(&loads, None, 0.0);
+        assert_eq!(event.impulse.is_some(), breaking && alpha_i > alpha2, "B_M {berm} H {h}");
+        let none = WaveLoadOptions { breaking_load: BreakingLoad::None, ..gt };
+        let plain = WaveLoadModel { site, options: none };
+        assert!(plain.event(&plain.evaluate(h, t).unwrap(), None, 0.0).impulse.is_none());
+        checked += 1;
+    }
+    assert_eq!(checked, 4);
+    // The four cases cover each outcome: impulsive (10 m berm, 8 and 10.48 m), breaking but not
+    // impulsive (2 m berm), and non-breaking (6 m, below H_br = 6.99 m at d = 8.5 m).
+    let outcome = |berm: f64, h: f64| {
+        let site = WaveSite { berm_width_m: Some(berm), ..site_15m() };
+        let l = WaveLoadModel { site, options: gt }.evaluate(h, t).unwrap();
+        (l.regime.regime == Regime::Breaking, l.rise_time.is_some())
+    };
+    assert_eq!(outcome(10.0, 8.0), (true, true));
+    assert_eq!(outcome(2.0, 10.48), (true, false));
+    assert!(!outcome(10.0, 6.0).0);
+}
+
+/// The time shape of `goda-takahashi` (docs/model.md §5.5): a breaking wave whose α_I barely
+/// exceeds α2 (F* = 1.0097, t_r clamped to T/4) must not slide less than the same wave without
+/// its impulse (`none`: Eq. 29 with α_qs = 1). Under the default shape (Eq. 31, the triangle on
+/// the pulsating sine: the larger of the two at every instant) it cannot, and it slides the rigid
+/// block and the dynamic model no less (to the solver's tolerance, 1 µm); under the bare triangle
+/// of seed Table 2 (`shimosako-takahashi-1994`: zero after 2 t_r, no sine) the same wave's load
+/// lasts half as long and both models slide less than half as far. One regular wave H = 10.48 m,
+/// T = 12 s, the 15 m site's caisson at W' = 3000 kN/m (it slides under the pulsating load alone).
+#[test]
+fn the_default_shape_of_goda_takahashi_slides_no_less_than_the_wave_without_impulse() {
+    let text = |rule: &str, shape: &str| {
+        format!(
+            r#"
+[caisson]
+width_m = 20.0
+length_m = 1.0
+height_m = 14.0
+base_depth_m = 10.0
+weight_in_water_kn = 3000.0
+[foundation]
+mu_static = 0.6
+e100_kpa = 3.5e5
+density_kg_per_m3 = 2000
+[water]
+density_kg_per_m3 = 1030.0
+depth_at_toe_m = 15.0
+depth_at_wall_m = 8.5
+seabed_slope = 0.02
+berm_width_m = 10.0
+[waves]
+kind = "regular"
+height_m = 10.48
+period_s = 12.0
+height_variability = "none"
+waves = 1
+realizations = 1
+breaking_load = "{rule}"
+load_shape = "{shape}"
+[solver]
+dt_s = 1e-3
+error_tolerance_m = 1e-6
+"#
+        )
+    };
+    let run = |rule: &str, shape: &str| {
+        let sc = support::scenario(&text(rule, shape));
+        let r = sc.train_case().unwrap().run(0, None).unwrap();
+        (r.sliding_m, r.rigid_block_sliding_m)
+    };
+    let sc = support::scenario(&text("goda-takahashi", "seed"));
+    let w = sc.waves.as_ref().unwrap();
+    let l = w.model.evaluate(10.48, 12.0).unwrap();
+    assert!(l.f_star > 1.0 && l.f_star < 1.02 && l.rise_time.unwrap().median_clamped_s() == 3.0, "{}", l.f_star);
+    let (none, none_rigid) = run("none", "seed");
+    let (eq31, eq31_rigid) = run("goda-takahashi", "seed");
+    let (bare, bare_rigid) = run("goda-takahashi", "shimosako-takahashi-1994");
+    assert!(none > 0.1 && none_rigid > 0.1, "the premise: the wave slides ({none} m, rigid block {none_rigid} m)");
+    assert!(
+        eq31 >= none - 1e-6 && eq31_rigid >= none_rigid,
+        "Eq. 31: {eq31} / {eq31_rigid} m vs {none} / {none_rigid} m"
+    );
+    assert!(bare < 0.5 * none && bare_rigid < 0.5 * none_rigid, "bare triangle: {bare} / {bare_rigid} m");
+}

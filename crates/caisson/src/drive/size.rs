@@ -158,6 +158,6 @@ impl<'a> Sizer<'a> {
             let checks = goda_checks(c.width_m).map(|sf| ChecksAtWidth::new(c.width_m, &sf));
             (design.failure_limit_m(c.width_m), checks)
         };
-        Ok(SizeReport::new(p, design, self.sc.structure(), &sizing, goda, &extra))
+        Ok(SizeReport::new(p, design, self.sc.structure(), self.sc.waves.as_ref(), &sizing, goda, &extra))
     }
 }

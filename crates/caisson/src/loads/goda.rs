@@ -7,7 +7,7 @@
 //! α2 = min{ (h_b − d)/(3 h_b) · (H_D/d)²,  2d/H_D }
 //! α3 = 1 − (h'/h) [ 1 − 1/cosh(2πh/L) ]
 //! η* = 0.75 (1 + cos β) λ1 H_D
-//! p1 = ½ (1 + cos β)(λ1 α1 + λ2 α* cos²β) ρ_w g H_D        α* = α2, or max(α2, α_I) with a berm
+//! p1 = ½ (1 + cos β)(λ1 α1 + λ2 α* cos²β) ρ_w g H_D        α* = α2, or max(α2, α_I)
 //! p2 = p1 / cosh(2πh/L)     p3 = α3 p1     p4 = p1 (1 − h_c/η*) if η* > h_c, else 0
 //! pu = ½ (1 + cos β) λ3 α1 α3 ρ_w g H_D                     (front toe; zero at the heel)
 //! P   = ½ (p1 + p3) h' + ½ (p1 + p4) h_c*,   h_c* = min(η*, h_c)
@@ -20,7 +20,9 @@
 //! freeboard, B the base width. β is rotated by up to 15° toward the normal:
 //! β_use = max(0, |β| − 15°) (docs/model.md §1.1). λ1 = λ2 = λ3 = 1 for a plain caisson.
 //!
-//! Takahashi's α_I (docs/model.md §1.4), used when the berm width B_M is given:
+//! Takahashi's α_I (docs/model.md §1.4), in Goda's static check when the berm width B_M is given
+//! ([`GodaPeriod::at`]), and in the impulsive peak of a breaking wave under `goda-takahashi`
+//! ([`GodaPeriod::at_with`] with the rule's α_I1, [`super::breaking_load`]):
 //! δ11 = 0.93 (B_M/L − 0.12) + 0.36 (0.4 − d/h), δ22 = −0.36 (B_M/L − 0.12) + 0.93 (0.4 − d/h);
 //! δ1 = 20 δ11 (δ11 ≤ 0) or 15 δ11; δ2 = 4.9 δ22 (δ22 ≤ 0) or 3 δ22;
 //! α_I1 = cos δ2 / cosh δ1 (δ22 ≤ 0) or 1/(cosh δ1 √cosh δ2); α_I0 = H/d (H ≤ 2d) or 2;
@@ -68,7 +70,7 @@ pub struct GodaResult {
     pub alpha1: f64,
     pub alpha2: f64,
     pub alpha3: f64,
-    /// Takahashi's α_I, when a berm width was given.
+    /// Takahashi's α_I, when it was evaluated (a berm width given).
     pub alpha_i: Option<f64>,
     /// α* used in p1: α2 or max(α2, α_I).
     pub alpha_star: f64,
@@ -114,8 +116,9 @@ fn takahashi_alpha_i0(height_m: f64, wall_depth_m: f64) -> f64 {
     }
 }
 
-/// α_I1, the part of α_I that does not depend on the height.
-fn takahashi_alpha_i1(wavelength_m: f64, depth_m: f64, wall_depth_m: f64, berm_width_m: f64) -> f64 {
+/// α_I1, the part of α_I that does not depend on the height: B_M `berm_width_m` and L
+/// `wavelength_m` at the toe depth h `depth_m`, d `wall_depth_m` (docs/model.md §1.4).
+pub fn takahashi_alpha_i1(wavelength_m: f64, depth_m: f64, wall_depth_m: f64, berm_width_m: f64) -> f64 {
     let bl = berm_width_m / wavelength_m - 0.12;
     let dh = 0.4 - wall_depth_m / depth_m;
     let d11 = 0.93 * bl + 0.36 * dh;
@@ -146,7 +149,7 @@ pub struct GodaPeriod {
     alpha1: f64,
     cosh_kh: f64,
     alpha3: f64,
-    /// α_I1 of Takahashi's α_I = α_I0 α_I1, when a berm width was given.
+    /// α_I1 of Takahashi's α_I = α_I0 α_I1, when a berm width was given ([`Self::at`]).
     alpha_i1: Option<f64>,
     gamma_w: f64,
 }
@@ -166,15 +169,23 @@ impl GodaPeriod {
         GodaPeriod { input: *i, beta, cb, alpha1, cosh_kh, alpha3, alpha_i1, gamma_w: i.rho_w * G_M_PER_S2 }
     }
 
+    /// α_I1 of Takahashi's α_I = α_I0 α_I1 at this period and site for a berm `berm_width_m` wide
+    /// (m): what [`Self::at_with`] takes.
+    pub fn alpha_i1_for(&self, berm_width_m: f64) -> f64 {
+        let i = &self.input;
+        takahashi_alpha_i1(i.wavelength_m, i.depth_m, i.wall_depth_m, berm_width_m)
+    }
+
     /// Upper bounds [P, M_P, U] (per metre, each ≥ 0) of Goda's force, its moment about the base
     /// and the uplift over every design height 0 < H_D ≤ `max_height_m` whose h_b ≤
-    /// `max_depth_5h_m`, or `None` unless λ ≥ 0, h' ≥ 0, h_c ≥ 0 and d > 0 (what the bounds
+    /// `max_depth_5h_m`, with α* = max(α2, α_I0 `alpha_i1`) (α2 alone for `None`, as
+    /// [`Self::at_with`]), or `None` unless λ ≥ 0, h' ≥ 0, h_c ≥ 0 and d > 0 (what the bounds
     /// assume). Term by term (module docs' formulas): α1 H_D and η* grow with H_D;
     /// α2 H_D ≤ min{2d, (h_b − d)/(3 h_b) · H_D³/d²}, whose factor grows with h_b;
     /// α_I H_D = α_I0 α_I1 H_D ≤ 2 |α_I1| H_D (α_I0 ≤ 2); so p1 ≤ p̄1 at the largest H_D and h_b;
     /// p3 = α3 p1 ≤ max(α3, 0) p̄1; p4 = p1 (1 − h_c/η*) ≤ p1; h_c* ≤ min(η̄*, h_c);
     /// pu ≤ its value at the largest H_D with max(α3, 0).
-    pub fn upper_bounds(&self, max_height_m: f64, max_depth_5h_m: f64) -> Option<[f64; 3]> {
+    pub fn upper_bounds(&self, max_height_m: f64, max_depth_5h_m: f64, alpha_i1: Option<f64>) -> Option<[f64; 3]> {
         let i = &self.input;
         let (d, hc, hp) = (i.wall_depth_m, i.crest_freeboard_m, i.base_depth_m);
         if !(i.lambda.iter().all(|&l| l >= 0.0) && hp >= 0.0 && hc >= 0.0 && d > 0.0 && max_depth_5h_m > 0.0) {
@@ -182,7 +193,7 @@ impl GodaPeriod {
         }
         let (cb, [l1, l2, l3], h) = (self.cb, i.lambda, max_height_m.max(0.0));
         let a2h = (((max_depth_5h_m - d) / (3.0 * max_depth_5h_m)).max(0.0) * h.powi(3) / (d * d)).min(2.0 * d);
-        let aih = self.alpha_i1.map_or(0.0, |a1| 2.0 * a1.abs() * h);
+        let aih = alpha_i1.map_or(0.0, |a1| 2.0 * a1.abs() * h);
         let p1 = 0.5 * (1.0 + cb) * (l1 * self.alpha1 * h + l2 * a2h.max(aih) * cb * cb) * self.gamma_w;
         let alpha3 = self.alpha3.max(0.0);
         let p3 = alpha3 * p1;
@@ -193,9 +204,18 @@ impl GodaPeriod {
         Some([force, moment, uplift.max(0.0)])
     }
 
-    /// Goda's formula for the design height `height_m` (H_D) with h_b = `depth_5h_seaward_m`.
+    /// Goda's formula for the design height `height_m` (H_D) with h_b = `depth_5h_seaward_m`:
+    /// with Takahashi's α_I when the input's berm width was given (Goda's static check).
     #[inline(always)]
     pub fn at(&self, height_m: f64, depth_5h_seaward_m: f64) -> GodaResult {
+        self.at_with(height_m, depth_5h_seaward_m, self.alpha_i1)
+    }
+
+    /// Goda's formula for the design height `height_m` (H_D) with h_b = `depth_5h_seaward_m` and
+    /// α* = max(α2, α_I) with α_I = α_I0 `alpha_i1` ([`Self::alpha_i1_for`]), or α* = α2 for
+    /// `None` (the same floating-point operations as [`goda`] with and without a berm width).
+    #[inline(always)]
+    pub fn at_with(&self, height_m: f64, depth_5h_seaward_m: f64, alpha_i1: Option<f64>) -> GodaResult {
         let i = &self.input;
         let (hd, d) = (height_m, i.wall_depth_m);
         let (cb, [l1, l2, l3]) = (self.cb, i.lambda);
@@ -203,7 +223,7 @@ impl GodaPeriod {
         let hb = depth_5h_seaward_m;
         let alpha2 = ((hb - d) / (3.0 * hb) * (hd / d).powi(2)).min(2.0 * d / hd);
         let alpha3 = self.alpha3;
-        let alpha_i = self.alpha_i1.map(|a1| takahashi_alpha_i0(hd, d) * a1);
+        let alpha_i = alpha_i1.map(|a1| takahashi_alpha_i0(hd, d) * a1);
         let alpha_star = alpha_i.map_or(alpha2, |ai| alpha2.max(ai));
         let gamma_w = self.gamma_w;
         let eta_star_m = 0.75 * (1.0 + cb) * l1 * hd;

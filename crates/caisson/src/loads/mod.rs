@@ -13,6 +13,7 @@
 //!
 //! The engine (`dynamics`) only sees the [`LoadHistory`] trait; new load models plug in there.
 
+pub mod breaking_load;
 pub mod generator;
 pub mod goda;
 pub mod history;

@@ -6,11 +6,14 @@
 //!
 //! 1. H is limited at the toe by Miche, H_toe = min(H, H_b,Miche(h_s)) (seed §4.2.1).
 //! 2. Regime: breaking criterion at the wall, or forced ([`super::regime`]).
-//! 3. Goda (F_qs+, [`super::goda`]) with H_D = H_toe, L at h_s, h_b = h_s + 5 H_toe tan θ, and
-//!    Takahashi's α_I if a berm width is given.
+//! 3. Goda ([`super::goda`]) with H_D = H_toe, L at h_s, h_b = h_s + 5 H_toe tan θ: the
+//!    pulsating load F_qs+ with α* = α2, and Goda's static check, with Takahashi's
+//!    α* = max(α2, α_I) if a berm width is given.
 //! 4. Sainflou (F_qs−, [`super::sainflou`]) at h = h_s (default) or h = d.
 //! 5. Impact (F_x,max, F_y,max, [`super::impact`]) with d_b and H_br from the breaking criterion.
-//! 6. F* = F_x,max / P and the rise-time distribution ([`super::risetime`]).
+//! 6. The impulsive peak of a breaking wave by the rule of `breaking_load`
+//!    ([`super::breaking_load`]: the impact of step 5, Goda's force with Takahashi's α*, or none),
+//!    F* = F_x,peak / P(α2) and the rise-time distribution ([`super::risetime`]).
 //!
 //! [`WaveLoadModel::evaluate`] returns all of it per metre ([`WaveLoads`]). The histories take
 //! per-wave [`WaveRecord`]s (H, T, regime, t_r): [`WaveLoadModel::train`] turns a list of records
@@ -24,6 +27,7 @@
 //! trough, not its crest; the impact and the rise time of a breaking wave only), the same numbers
 //! as [`WaveLoadModel::event`] of the wave's full loads.
 
+use super::breaking_load::{BreakingLoad, ImpulsivePeak};
 use super::goda::{GodaInput, GodaPeriod, GodaResult};
 use super::history::{LoadComponent, TrainError, WaveEvent, WaveTrain};
 use super::impact::{ImpactInput, ImpactPeriod, ImpactResult};
@@ -72,7 +76,8 @@ pub struct WaveSite {
     pub length_m: f64,
     /// tan θ of the seabed seaward of the structure.
     pub seabed_slope: f64,
-    /// B_M, berm width, m (enables Takahashi's α_I).
+    /// B_M, berm width, m: Takahashi's α_I in Goda's static check, and in the breaking-wave peak
+    /// of `goda-takahashi` (B_M = 0 there without it).
     pub berm_width_m: Option<f64>,
 }
 
@@ -140,6 +145,9 @@ impl WaveSite {
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct WaveLoadOptions {
     pub regime: RegimeChoice,
+    /// The rule of a breaking wave's impulsive peak ([`super::breaking_load`]; default the
+    /// seed's, `cuomo-2010`: a scenario takes its profile's).
+    pub breaking_load: BreakingLoad,
     /// Breaking criterion for d_b, H_br and the regime (default Miche).
     pub criterion: BreakerCriterion,
     /// α_max of Eq. 30 (default 1/1.8, regular waves).
@@ -166,6 +174,7 @@ impl Default for WaveLoadOptions {
     fn default() -> Self {
         WaveLoadOptions {
             regime: RegimeChoice::Auto,
+            breaking_load: BreakingLoad::Cuomo2010,
             criterion: BreakerCriterion::Miche,
             alpha_max: 1.0 / 1.8,
             a_imp: 1.0,
@@ -232,10 +241,19 @@ pub struct WaveLoads {
     /// Depth used for Sainflou, m.
     pub sainflou_depth_m: f64,
     pub regime: RegimeDecision,
+    /// Goda's formula as its static check takes it: α* = max(α2, α_I) with a berm width, else α2.
     pub goda: GodaResult,
+    /// The pulsating load F_qs+ of the dynamic model: Goda with α* = α2 (= `goda` without a berm).
+    pub pulsating: GodaResult,
     pub sainflou: SainflouResult,
+    /// The impact of seed Eq. 30 and 32 (the peak of `cuomo-2010`; evaluated under every rule).
     pub impact: ImpactResult,
-    /// F* = F_x,max / P.
+    /// Goda with the α* = max(α2, α_I) of `goda-takahashi` (B_M = 0 without a berm width): the
+    /// peak of that rule, `None` under the others.
+    pub impulsive_goda: Option<GodaResult>,
+    /// The impulsive peak of the rule (zero under `none`), whether the wave breaks or not.
+    pub peak: ImpulsivePeak,
+    /// F* = F_x,peak / P(α2).
     pub f_star: f64,
     /// Rise-time distribution; `None` if non-impulsive (F* ≤ 1).
     pub rise_time: Option<RiseTimeDistribution>,
@@ -355,6 +373,10 @@ impl WaveLoadModel {
             a_imp: o.a_imp,
             rho_w: s.rho_w,
         };
+        let alpha_i1_rule = match o.breaking_load {
+            BreakingLoad::GodaTakahashi => Some(goda.alpha_i1_for(s.berm_width_m.unwrap_or(0.0))),
+            BreakingLoad::Cuomo2010 | BreakingLoad::None => None,
+        };
         PeriodLoads {
             model: self,
             period_s,
@@ -364,6 +386,7 @@ impl WaveLoadModel {
             l0: deep_water_wavelength_m(period_s),
             sf_depth,
             goda,
+            alpha_i1_rule,
             sainflou_input,
             sainflou: OnceCell::new(),
             impact_input,
@@ -403,12 +426,12 @@ impl WaveLoadModel {
             (true, Some(dist)) => Some(rise_time_s.unwrap_or_else(|| dist.median_clamped_s())),
             _ => None,
         };
-        self.event_of(start_s, loads.period_s, &loads.goda, &trough, breaking, rise_s.map(|r| (r, &loads.impact)))
+        self.event_of(start_s, loads.period_s, &loads.pulsating, &trough, breaking, rise_s.map(|r| (r, &loads.peak)))
     }
 
-    /// [`Self::event`] from its parts: Goda's result, Sainflou's trough, the regime and, for an
-    /// impulsive breaking wave, its rise time and impact (the impact of any other wave is not
-    /// part of its event).
+    /// [`Self::event`] from its parts: the pulsating Goda load, Sainflou's trough, the regime and,
+    /// for an impulsive breaking wave, its rise time and impulsive peak (the peak of any other
+    /// wave is not part of its event).
     fn event_of(
         &self,
         start_s: f64,
@@ -416,7 +439,7 @@ impl WaveLoadModel {
         goda: &GodaResult,
         sf: &SainflouTrough,
         breaking: bool,
-        impulsive: Option<(f64, &ImpactResult)>,
+        impulsive: Option<(f64, &ImpulsivePeak)>,
     ) -> WaveEvent {
         let s = &self.site;
         let (l, b) = (s.length_m, s.width_m);
@@ -451,9 +474,9 @@ impl WaveLoadModel {
         )
     }
 
-    /// The impact component of a wave's event (totals).
+    /// The impulsive component of a wave's event (totals).
     #[inline]
-    fn impact_component(&self, im: &ImpactResult) -> LoadComponent {
+    fn impact_component(&self, im: &ImpulsivePeak) -> LoadComponent {
         let (l, b) = (self.site.length_m, self.site.width_m);
         LoadComponent::from_levers(
             im.horizontal_force_n_per_m * l,
@@ -524,7 +547,10 @@ pub struct PeriodLoads<'a> {
     l0: f64,
     /// Depth used for Sainflou, m.
     sf_depth: f64,
+    /// Goda's height-free parts, with the berm width's α_I1 for the static check.
     goda: GodaPeriod,
+    /// α_I1 of the `goda-takahashi` peak (`None` under the other rules).
+    alpha_i1_rule: Option<f64>,
     sainflou_input: SainflouInput,
     sainflou: OnceCell<SainflouPeriod>,
     impact_input: ImpactInput,
@@ -538,7 +564,7 @@ pub struct PeriodLoads<'a> {
 pub struct PeakComponents {
     /// α_qs F_qs+.
     pub quasi: LoadComponent,
-    /// F_x,max and F_y,max (zero unless the wave is breaking and impulsive, F* > 1).
+    /// The impulsive peak (zero unless the wave is breaking and impulsive, F* > 1).
     pub impact: LoadComponent,
 }
 
@@ -572,11 +598,11 @@ impl PeriodLoads<'_> {
         self.hbr
     }
 
-    /// The Miche-limited height at the toe, the regime and Goda's result: the steps every load
-    /// of a wave starts from.
+    /// The Miche-limited height at the toe, the regime, h_b and the pulsating Goda load (α* = α2):
+    /// the steps every load of a wave starts from. `depth_5h_m`: Goda's h_b if given (an
+    /// irregular sea's design wave takes it 5 H1/3 seaward, [`crate::analysis::conventional`]);
+    /// `None`: h_s + 5 H tan θ with the wave's own height.
     #[inline]
-    /// `depth_5h_m`: Goda's h_b if given (an irregular sea's design wave takes it 5 H1/3 seaward,
-    /// [`crate::analysis::conventional`]); `None`: h_s + 5 H tan θ with the wave's own height.
     fn goda_of(
         &self,
         height_m: f64,
@@ -587,7 +613,19 @@ impl PeriodLoads<'_> {
         let h = height_m.min(self.hb_toe);
         let regime = decide_with_limit(choice, h, self.hbr, s.depth_at_wall_m, self.model.options.criterion)?;
         let depth_5h = depth_5h_m.unwrap_or(s.depth_at_toe_m + 5.0 * h * s.seabed_slope);
-        Ok((h, regime, depth_5h, self.goda.at(h, depth_5h)))
+        Ok((h, regime, depth_5h, self.goda.at_with(h, depth_5h, None)))
+    }
+
+    /// The impulsive peak of a breaking wave of height `h` at the toe under the model's rule
+    /// ([`super::breaking_load`]) and its F* over the pulsating Goda force of `pulsating`.
+    #[inline]
+    fn peak_of(&self, h: f64, depth_5h: f64, pulsating: &GodaResult) -> (ImpulsivePeak, f64) {
+        let peak = match self.model.options.breaking_load {
+            BreakingLoad::Cuomo2010 => ImpulsivePeak::of_impact(&self.impact().at(h)),
+            BreakingLoad::GodaTakahashi => ImpulsivePeak::of_goda(&self.goda.at_with(h, depth_5h, self.alpha_i1_rule)),
+            BreakingLoad::None => ImpulsivePeak::default(),
+        };
+        (peak, f_star(pulsating, &peak))
     }
 
     /// All loads of a wave of incident height `height_m` at this period (as
@@ -604,10 +642,12 @@ impl PeriodLoads<'_> {
         depth_5h_m: Option<f64>,
         choice: RegimeChoice,
     ) -> Result<WaveLoads, RegimeError> {
-        let (h, regime, depth_5h, goda) = self.goda_of(height_m, depth_5h_m, choice)?;
+        let (h, regime, depth_5h, pulsating) = self.goda_of(height_m, depth_5h_m, choice)?;
+        let goda = self.goda.at(h, depth_5h);
         let sainflou = self.sainflou().at(h);
         let impact = self.impact().at(h);
-        let f_star = f_star(&goda, &impact);
+        let impulsive_goda = self.alpha_i1_rule.map(|a| self.goda.at_with(h, depth_5h, Some(a)));
+        let (peak, f_star) = self.peak_of(h, depth_5h, &pulsating);
         Ok(WaveLoads {
             height_incident_m: height_m,
             height_m: h,
@@ -620,8 +660,11 @@ impl PeriodLoads<'_> {
             sainflou_depth_m: self.sf_depth,
             regime,
             goda,
+            pulsating,
             sainflou,
             impact,
+            impulsive_goda,
+            peak,
             f_star,
             rise_time: self.model.options.rise_time.distribution(f_star, self.period_s),
         })
@@ -629,13 +672,14 @@ impl PeriodLoads<'_> {
 
     /// Upper bounds of the components [`Self::peaks`] gives with the automatic regime, for every
     /// incident height up to `max_height_m`, each ≥ 0 and with a relative margin of 1e-9 for
-    /// rounding: the pulsating component from [`GodaPeriod::upper_bounds`] at the largest height
-    /// at the toe (min(H, H_b,toe)) and its h_b, times the larger α_qs; the impact from
-    /// [`ImpactPeriod::upper_bounds`] if that height reaches the breaker height at the wall (a
-    /// lower wave is non-breaking: no impact), else zero. The moments use the levers of
-    /// [`WaveLoadModel::event`] (uplift B/6 shoreward of the base centre). `None` where the
-    /// bounds' assumptions do not hold (negative λ, α_qs, a_imp α_max, seabed slope, depths or
-    /// widths): then only the heights themselves tell.
+    /// rounding: the pulsating component from [`GodaPeriod::upper_bounds`] (α* = α2) at the
+    /// largest height at the toe (min(H, H_b,toe)) and its h_b, times the larger α_qs; the
+    /// impulsive peak, if that height reaches the breaker height at the wall (a lower wave is
+    /// non-breaking: no peak), by the rule: [`ImpactPeriod::upper_bounds`] (`cuomo-2010`),
+    /// [`GodaPeriod::upper_bounds`] with the rule's α_I (`goda-takahashi`), zero (`none`); else
+    /// zero. The moments use the levers of [`WaveLoadModel::event`] (uplift B/6 shoreward of the
+    /// base centre). `None` where the bounds' assumptions do not hold (negative λ, α_qs,
+    /// a_imp α_max, seabed slope, depths or widths): then only the heights themselves tell.
     pub fn peak_bound(&self, max_height_m: f64) -> Option<PeakComponents> {
         let s = &self.model.site;
         let o = &self.model.options;
@@ -645,11 +689,15 @@ impl PeriodLoads<'_> {
             return None;
         }
         let h = (max_height_m * MARGIN).min(self.hb_toe * MARGIN);
-        let depth_5h = s.depth_at_toe_m + 5.0 * h * s.seabed_slope;
-        let [p, m, u] = self.goda.upper_bounds(h, depth_5h * MARGIN)?;
+        let depth_5h = (s.depth_at_toe_m + 5.0 * h * s.seabed_slope) * MARGIN;
+        let [p, m, u] = self.goda.upper_bounds(h, depth_5h, None)?;
         let may_break = h >= self.hbr;
         let alpha_qs = if may_break { o.alpha_qs_breaking.max(o.alpha_qs_nonbreaking) } else { o.alpha_qs_nonbreaking };
-        let [ix, im, iy] = if may_break { self.impact().upper_bounds(h)? } else { [0.0; 3] };
+        let [ix, im, iy] = match (may_break, o.breaking_load) {
+            (false, _) | (true, BreakingLoad::None) => [0.0; 3],
+            (true, BreakingLoad::Cuomo2010) => self.impact().upper_bounds(h)?,
+            (true, BreakingLoad::GodaTakahashi) => self.goda.upper_bounds(h, depth_5h, self.alpha_i1_rule)?,
+        };
         let (l, k) = (s.length_m, MARGIN * MARGIN);
         let component = |fx: f64, m: f64, fy: f64| LoadComponent {
             x: WaveForce { fx_n: k * fx * l, fy_n: 0.0, m_nm: k * (m + fy * s.width_m / 6.0) * l },
@@ -667,20 +715,19 @@ impl PeriodLoads<'_> {
     /// and the rise-time distribution.
     #[inline]
     pub fn peaks(&self, height_m: f64, choice: RegimeChoice) -> Result<PeakComponents, RegimeError> {
-        let (h, regime, _, goda) = self.goda_of(height_m, None, choice)?;
+        let (h, regime, depth_5h, goda) = self.goda_of(height_m, None, choice)?;
         let o = &self.model.options;
         let breaking = regime.regime == Regime::Breaking;
         let alpha_qs = if breaking { o.alpha_qs_breaking } else { o.alpha_qs_nonbreaking };
         let quasi = self.model.quasi_component(&goda).scaled(alpha_qs);
-        // WaveLoadModel::event keeps the impact of a breaking wave with a rise-time distribution,
-        // which exists exactly when F* > 1 and finite (RiseTimeParams::distribution): the impact
+        // WaveLoadModel::event keeps the peak of a breaking wave with a rise-time distribution,
+        // which exists exactly when F* > 1 and finite (RiseTimeParams::distribution): the peak
         // of a non-breaking wave is not even computed.
         let mut impact = LoadComponent::default();
         if breaking {
-            let im = self.impact().at(h);
-            let fs = f_star(&goda, &im);
+            let (peak, fs) = self.peak_of(h, depth_5h, &goda);
             if fs > 1.0 && fs.is_finite() {
-                impact = self.model.impact_component(&im);
+                impact = self.model.impact_component(&peak);
             }
         }
         Ok(PeakComponents { quasi, impact })
@@ -690,26 +737,27 @@ impl PeriodLoads<'_> {
     /// rise time is at the standard-normal `deviate` of its distribution: bit for bit
     /// [`WaveLoadModel::event`] of [`Self::evaluate_with`] with the rise time
     /// [`RiseTimeDistribution::at_deviate`], computing only what the event holds (Sainflou's
-    /// trough, not its crest; the impact and the rise-time distribution of a breaking wave only).
+    /// trough, not its crest; the impulsive peak and the rise-time distribution of a breaking
+    /// wave only).
     pub fn event(&self, height_m: f64, choice: RegimeChoice, deviate: f64) -> Result<WaveEvent, RegimeError> {
-        let (h, regime, _, goda) = self.goda_of(height_m, None, choice)?;
+        let (h, regime, depth_5h, goda) = self.goda_of(height_m, None, choice)?;
         let trough = self.sainflou().trough(h);
         let breaking = regime.regime == Regime::Breaking;
-        let mut impact = None;
+        let mut impulsive = None;
         if breaking {
-            let im = self.impact().at(h);
-            let rise = self.model.options.rise_time.distribution(f_star(&goda, &im), self.period_s);
-            impact = rise.map(|d| (d.at_deviate(deviate), im));
+            let (peak, fs) = self.peak_of(h, depth_5h, &goda);
+            let rise = self.model.options.rise_time.distribution(fs, self.period_s);
+            impulsive = rise.map(|d| (d.at_deviate(deviate), peak));
         }
-        Ok(self.model.event_of(0.0, self.period_s, &goda, &trough, breaking, impact.as_ref().map(|(r, im)| (*r, im))))
+        Ok(self.model.event_of(0.0, self.period_s, &goda, &trough, breaking, impulsive.as_ref().map(|(r, p)| (*r, p))))
     }
 }
 
-/// F* = F_x,max / P (0 without a positive P).
+/// F* = F_x,peak / P (0 without a positive P).
 #[inline]
-fn f_star(goda: &GodaResult, impact: &ImpactResult) -> f64 {
+fn f_star(goda: &GodaResult, peak: &ImpulsivePeak) -> f64 {
     if goda.horizontal_force_n_per_m > 0.0 {
-        impact.horizontal_force_n_per_m / goda.horizontal_force_n_per_m
+        peak.horizontal_force_n_per_m / goda.horizontal_force_n_per_m
     } else {
         0.0
     }

@@ -42,7 +42,7 @@ impl ConditionReport {
             nominal_regime: r.nominal.regime.regime,
             goda_horizontal_force_kn_per_m: kn(r.nominal.goda.horizontal_force_n_per_m),
             goda_uplift_force_kn_per_m: kn(r.nominal.goda.uplift_force_n_per_m),
-            impact_horizontal_force_kn_per_m: kn(r.nominal.impact.horizontal_force_n_per_m),
+            impact_horizontal_force_kn_per_m: kn(r.nominal.peak.horizontal_force_n_per_m),
             sliding_m: SpreadReport::scaled(&s.sliding_m, 1.0),
             rigid_block_sliding_m: SpreadReport::scaled(&s.rigid_block_sliding_m, 1.0),
             max_horizontal_reaction_kn: SpreadReport::scaled(&s.max_horizontal_reaction_n, 1e-3),
@@ -86,7 +86,7 @@ impl CampaignReport {
         let t = &first.waves.train;
         CampaignReport {
             provenance: Provenance::CURRENT,
-            model: ModelReport::from(&first.structure),
+            model: ModelReport::new(&first.structure, Some(&first.waves)),
             title: c.title.clone(),
             waves: CampaignWavesReport {
                 description: describe_train(t, true),

@@ -315,7 +315,7 @@ impl DesignReport {
         let width_m = case.structure.caisson.width_m;
         let failure = p.failure_limits(width_m);
         let mut report = DesignReport::statistics(p, case.rigid_block_mu, failure.sliding_m, lives);
-        report.model = Some(ModelReport::from(case.structure));
+        report.model = Some(ModelReport::new(case.structure, waves));
         report.warnings = structure_warnings(case.structure);
         report.warnings.extend(life_warnings(lives, &failure, width_m));
         if let Some(ws) = waves {

@@ -178,7 +178,7 @@ impl FragilityReport {
         let (h, t) = (waves.height_m(), waves.period_s());
         FragilityReport {
             provenance: Provenance::CURRENT,
-            model: ModelReport::from(structure),
+            model: ModelReport::new(structure, Some(waves)),
             scenario: name.to_string(),
             period_s: p.period_s,
             storm_duration_h: p.storm_duration_s / 3600.0,

@@ -9,6 +9,7 @@ use crate::analysis::checks::{structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::conventional::{DesignWaveRule, StaticCheck};
 use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
+use crate::loads::breaking_load::BreakingLoad;
 use crate::loads::regime::Regime;
 use crate::loads::risetime::RiseTimeModel;
 use serde::Serialize;
@@ -114,6 +115,26 @@ pub struct ImpactInfo {
     pub uplift_from_heel_m: f64,
 }
 
+/// The impulsive peak of a breaking wave under the rule of `[waves] breaking_load`
+/// ([`crate::loads::breaking_load`]), beside the pulsating force F* divides it by.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BreakingLoadInfo {
+    pub rule: BreakingLoad,
+    /// Whether the wave gets it: breaking, and impulsive (F* > 1).
+    pub applied: bool,
+    /// B_M of Takahashi's α_I under `goda-takahashi` (0 where no berm width is given), m.
+    pub berm_width_m: Option<f64>,
+    /// α_I and α* = max(α2, α_I) of `goda-takahashi`.
+    pub alpha_i: Option<f64>,
+    pub alpha_star: Option<f64>,
+    pub horizontal_force_kn_per_m: f64,
+    pub horizontal_lever_m: f64,
+    pub uplift_force_kn_per_m: f64,
+    pub uplift_from_heel_m: f64,
+    /// P with α* = α2: the pulsating force of the dynamic model (F* = peak / this).
+    pub pulsating_force_kn_per_m: f64,
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct RiseTimeInfo {
     pub model: RiseTimeModel,
@@ -163,6 +184,7 @@ pub struct LoadsReport {
     pub goda: GodaInfo,
     pub sainflou: SainflouInfo,
     pub impact: ImpactInfo,
+    pub breaking_load: BreakingLoadInfo,
     pub rise_time: RiseTimeInfo,
     pub time_history: TimeHistoryInfo,
     pub safety: SafetyInfo,
@@ -283,7 +305,7 @@ impl LoadsReport {
                 suction_moment_heel_kn_m_per_m: kn(s.suction_moment_heel_nm_per_m),
             },
             impact: ImpactInfo {
-                applied: breaking && l.rise_time.is_some(),
+                applied: breaking && l.rise_time.is_some() && o.breaking_load == BreakingLoad::Cuomo2010,
                 breaking_depth_m: i.breaking_depth_m,
                 breaker_height_m: i.breaker_height_m,
                 reduction: i.reduction,
@@ -296,6 +318,18 @@ impl LoadsReport {
                 uplift_force_kn_per_m: kn(i.uplift_force_n_per_m),
                 uplift_moment_heel_kn_m_per_m: kn(i.uplift_moment_heel_nm_per_m),
                 uplift_from_heel_m: i.uplift_from_heel_m,
+            },
+            breaking_load: BreakingLoadInfo {
+                rule: o.breaking_load,
+                applied: breaking && l.rise_time.is_some(),
+                berm_width_m: l.impulsive_goda.map(|_| site.berm_width_m.unwrap_or(0.0)),
+                alpha_i: l.impulsive_goda.and_then(|g| g.alpha_i),
+                alpha_star: l.impulsive_goda.map(|g| g.alpha_star),
+                horizontal_force_kn_per_m: kn(l.peak.horizontal_force_n_per_m),
+                horizontal_lever_m: l.peak.horizontal_lever_m,
+                uplift_force_kn_per_m: kn(l.peak.uplift_force_n_per_m),
+                uplift_from_heel_m: l.peak.uplift_from_heel_m,
+                pulsating_force_kn_per_m: kn(l.pulsating.horizontal_force_n_per_m),
             },
             rise_time: RiseTimeInfo {
                 model: o.rise_time.model,
@@ -377,6 +411,13 @@ impl Column for DesignWaveRule {
     }
 }
 
+impl Column for BreakingLoad {
+    #[inline(always)]
+    fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
+        sink.text(name, self.name())
+    }
+}
+
 impl Column for RiseTimeModel {
     #[inline(always)]
     fn put<S: ColumnSink>(self, name: &'static str, sink: &mut S) {
@@ -431,6 +472,10 @@ impl LoadsReport {
                 applied, breaking_depth_m, breaker_height_m, reduction, alpha_max, a_imp,
                 horizontal_force_kn_per_m, p1_kpa, horizontal_moment_base_kn_m_per_m, horizontal_lever_m,
                 uplift_force_kn_per_m, uplift_moment_heel_kn_m_per_m, uplift_from_heel_m,
+            }
+            breaking_load {
+                rule, applied, berm_width_m, alpha_i, alpha_star, horizontal_force_kn_per_m, horizontal_lever_m,
+                uplift_force_kn_per_m, uplift_from_heel_m, pulsating_force_kn_per_m,
             }
             rise_time { model, f_star, impulsive, median_s, log_std, max_s }
             time_history { load_shape, alpha_qs, duration_ratio }

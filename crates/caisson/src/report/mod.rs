@@ -22,9 +22,11 @@ pub mod spectrum;
 pub mod train;
 
 use crate::analysis::run::FoundationSummary;
+use crate::analysis::site::WaveSetup;
 use crate::analysis::train::Spread;
 use crate::analysis::Structure;
 use crate::foundation::{DampingMode, VerticalDamping};
+use crate::loads::breaking_load::BreakingLoad;
 use crate::structure::MassMatrix;
 use crate::Profile;
 pub use encode::{to_json, to_json_pretty, to_json_text, NotFinite};
@@ -66,10 +68,15 @@ pub struct ModelReport {
     /// Static and dynamic friction coefficients of the base.
     pub mu_static: f64,
     pub mu_dynamic: f64,
+    /// The impulsive peak of a breaking wave (`[waves] breaking_load`); absent from the report of
+    /// a run without waves.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub breaking_load: Option<BreakingLoad>,
 }
 
-impl From<&Structure> for ModelReport {
-    fn from(s: &Structure) -> Self {
+impl ModelReport {
+    /// The model of a run on `s` under the wave loads of `waves`, if any.
+    pub fn new(s: &Structure, waves: Option<&WaveSetup>) -> Self {
         ModelReport {
             profile: s.profile,
             damping_mode: s.foundation.damping_mode,
@@ -77,6 +84,7 @@ impl From<&Structure> for ModelReport {
             mass_matrix: s.caisson.mass_matrix,
             mu_static: s.foundation.mu_static,
             mu_dynamic: s.foundation.mu_dynamic,
+            breaking_load: waves.map(|w| w.model.options.breaking_load),
         }
     }
 }

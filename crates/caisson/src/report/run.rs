@@ -56,7 +56,7 @@ impl RunReport {
         let spring_positions_m = structure.foundation.spring_positions(structure.caisson.width_m);
         RunReport {
             provenance: Provenance::CURRENT,
-            model: ModelReport::from(structure),
+            model: ModelReport::new(structure, None),
             permanent_sliding_m: s.permanent_sliding_m,
             max_horizontal_displacement_m: s.max_horizontal_displacement_m,
             max_rotation_rad: s.max_rotation_rad,

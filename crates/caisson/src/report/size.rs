@@ -5,6 +5,7 @@ use crate::analysis::checks::{candidate_warnings, structure_warnings, Warning};
 use crate::analysis::conventional::Reached;
 use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
 use crate::analysis::lifetime::DesignParams;
+use crate::analysis::site::WaveSetup;
 use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Required, SizeParams, Sizing};
 use crate::analysis::Structure;
 use serde::Serialize;
@@ -93,6 +94,7 @@ impl SizeReport {
         p: &SizeParams,
         design: &DesignParams,
         structure: &Structure,
+        waves: Option<&WaveSetup>,
         sizing: &Sizing,
         goda: GodaWidth,
         extra: &dyn Fn(&Candidate) -> (f64, Option<ChecksAtWidth>),
@@ -118,7 +120,7 @@ impl SizeReport {
             .collect();
         let mut report = SizeReport {
             provenance: Provenance::CURRENT,
-            model: ModelReport::from(structure),
+            model: ModelReport::new(structure, waves),
             variable: "width_m",
             range_m: p.range_m,
             criteria: p.criteria,

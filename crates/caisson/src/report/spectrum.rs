@@ -61,7 +61,7 @@ impl SpectrumReport {
         let resistance_n = structure.foundation.mu_static * structure.caisson.weight_in_water_n;
         SpectrumReport {
             provenance: Provenance::CURRENT,
-            model: ModelReport::from(structure),
+            model: ModelReport::new(structure, None),
             natural_period_s: structure.model().natural_period_s(),
             peak_horizontal_kn: kn(base.peak.fx_n),
             peak_uplift_kn: kn(base.peak.fy_n),

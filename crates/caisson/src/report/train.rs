@@ -161,7 +161,7 @@ impl TrainRunReport {
         let f = FoundationSummary::new(&structure.caisson, &structure.foundation, &model);
         TrainRunReport {
             provenance: Provenance::CURRENT,
-            model: ModelReport::from(structure),
+            model: ModelReport::new(structure, Some(waves)),
             sliding_m: SpreadReport::scaled(&s.sliding_m, 1.0),
             rigid_block_sliding_m: SpreadReport::scaled(&s.rigid_block_sliding_m, 1.0),
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),

@@ -30,6 +30,7 @@ use crate::analysis::train::TrainCase;
 use crate::analysis::Structure;
 use crate::dynamics::SolverParams;
 use crate::foundation::{Foundation, FoundationSpec};
+use crate::loads::breaking_load::BreakingLoad;
 use crate::loads::LoadSpec;
 use crate::structure::{Caisson, CaissonSpec};
 use crate::{ParamError, Profile};
@@ -557,6 +558,8 @@ pub struct Scenario {
     pub duration_s: f64,
     /// `[water]` and `[waves]`.
     pub waves: Option<WaveSetup>,
+    /// `[waves] breaking_load` as the file gives it (`None`: the profile's rule).
+    breaking_load: Option<BreakingLoad>,
     /// `[campaign]`: its title and conditions ([`Self::campaign`] builds their setups).
     pub campaign: Option<campaign::CampaignSpec>,
     /// `[design]`.
@@ -593,6 +596,9 @@ impl Scenario {
     pub fn with_profile(mut self, profile: Profile) -> Result<Scenario, ScenarioError> {
         self.profile = profile;
         self.structure.solver = self.structure.solver.for_profile(profile);
+        if let Some(w) = self.waves.as_mut() {
+            w.model.options.breaking_load = waves::breaking_load(self.breaking_load, profile);
+        }
         let (c, f) = (self.caisson_spec, self.foundation_spec);
         self.rebuilt(c, f)
     }

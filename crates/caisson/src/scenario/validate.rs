@@ -68,9 +68,12 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
     let foundation_spec = foundation_spec(f)?;
     let foundation =
         foundation_spec.build(&caisson, rho_w, profile).map_err(|e| keyed("[foundation]", FOUNDATION_KEYS, e))?;
-    let wave_setup = match f.waves {
-        Some(_) => Some(waves::validate_waves(f, &caisson, rho_w)?),
-        None => None,
+    let (wave_setup, breaking_load) = match f.waves {
+        Some(_) => {
+            let (w, given) = waves::validate_waves(f, &caisson, rho_w, profile)?;
+            (Some(w), given)
+        }
+        None => (None, None),
     };
     if let Some(w) = &wave_setup {
         coherence::check_waves(&caisson, w)?;
@@ -86,6 +89,7 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         load,
         duration_s,
         waves: wave_setup,
+        breaking_load,
         campaign: None,
         design: None,
         fragility: None,

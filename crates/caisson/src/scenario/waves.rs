@@ -11,6 +11,7 @@
 
 use super::{ScenarioError, ScenarioFile};
 use crate::analysis::site::{place_caisson, WaveSetup};
+use crate::loads::breaking_load::BreakingLoad;
 use crate::loads::generator::{HeightVariability, TrainKind, TrainSpec};
 use crate::loads::model::{SainflouDepth, WaveLoadModel, WaveLoadOptions, WaveParamError, WaveSite};
 use crate::loads::regime::{Regime, RegimeChoice};
@@ -18,6 +19,7 @@ use crate::loads::risetime::{RiseTimeModel, RiseTimeParams};
 use crate::loads::shapes::LoadShape;
 use crate::structure::Caisson;
 use crate::waves::breaking::{BreakerCriterion, GODA_BREAKER_A, MCCOWAN_GAMMA};
+use crate::Profile;
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
@@ -36,6 +38,9 @@ pub struct WavesTable {
     pub angle_deg: Option<f64>,
     /// `"auto"` (default), `"breaking"` or `"non-breaking"`.
     pub regime: Option<String>,
+    /// The impulsive peak of a breaking wave: `"cuomo-2010"`, `"goda-takahashi"` or `"none"`.
+    /// Default: the profile's.
+    pub breaking_load: Option<String>,
     /// `"miche"` (default), `"goda"` or `"mccowan"`.
     pub breaker_criterion: Option<String>,
     /// α_max of seed Eq. 30. Default 1/1.8 (regular waves).
@@ -167,16 +172,45 @@ fn keyed_waves(e: WaveParamError) -> ScenarioError {
 }
 
 /// Read `[water]` (depths, slope, berm) and `[waves]` and build their [`WaveSetup`] at `caisson`
-/// (the validated caisson) in water of density `rho_w` (kg/m³, validated).
-pub(super) fn validate_waves(file: &ScenarioFile, caisson: &Caisson, rho_w: f64) -> R<WaveSetup> {
+/// (the validated caisson) in water of density `rho_w` (kg/m³, validated), with the breaking-wave
+/// rule of `[waves] breaking_load` or else of `profile`; also returns the rule as given.
+pub(super) fn validate_waves(
+    file: &ScenarioFile,
+    caisson: &Caisson,
+    rho_w: f64,
+    profile: Profile,
+) -> R<(WaveSetup, Option<BreakingLoad>)> {
     let t = file.waves.as_ref().ok_or_else(|| {
         ScenarioError::missing("[waves]", "add a [waves] table with kind = \"regular\", height_m and period_s")
     })?;
     let mut site = site(&file.water, rho_w)?;
     place_caisson(&mut site, caisson);
     let train = train(t)?;
-    let options = options(t, site.seabed_slope)?;
-    WaveSetup::new(WaveLoadModel { site, options }, train, t.rigid_block_mu).map_err(keyed_waves)
+    let mut options = options(t, site.seabed_slope)?;
+    let given = breaking_load_given(t, site.berm_width_m)?;
+    options.breaking_load = breaking_load(given, profile);
+    let setup = WaveSetup::new(WaveLoadModel { site, options }, train, t.rigid_block_mu).map_err(keyed_waves)?;
+    Ok((setup, given))
+}
+
+/// `[waves] breaking_load` as given (`None`: the profile's), refused where it is
+/// `"goda-takahashi"` without `[water] berm_width_m` (`berm_width_m`): Takahashi's α_I depends on
+/// the berm width, which only the file knows.
+fn breaking_load_given(t: &WavesTable, berm_width_m: Option<f64>) -> R<Option<BreakingLoad>> {
+    let Some(name) = &t.breaking_load else { return Ok(None) };
+    let rule = pick("[waves] breaking_load", Some(name), BreakingLoad::Cuomo2010, &BreakingLoad::ALL)?;
+    if rule == BreakingLoad::GodaTakahashi && berm_width_m.is_none() {
+        return Err(ScenarioError::missing(
+            "[water] berm_width_m",
+            "`[waves] breaking_load = \"goda-takahashi\"` takes Takahashi's impulsive coefficient α_I, which depends on B_M, the width of the mound's berm in front of the caisson (docs/model.md §1.4): add `berm_width_m` (m; 0 for no berm) to [water], or choose breaking_load = \"cuomo-2010\" or \"none\"",
+        ));
+    }
+    Ok(Some(rule))
+}
+
+/// The breaking-wave rule: as given, or the profile's ([`BreakingLoad::for_profile`]).
+pub(super) fn breaking_load(given: Option<BreakingLoad>, profile: Profile) -> BreakingLoad {
+    given.unwrap_or_else(|| BreakingLoad::for_profile(profile))
 }
 
 /// The site of `[water]` (the caisson is placed on it after).
@@ -409,6 +443,42 @@ period_s = 3.04
             run(&PARI.replace("period_s = 3.04", "period_s = 3.04\nduration_ratio = 3")),
             Err(ScenarioError::Conflict { .. })
         ));
+    }
+
+    /// `[waves] breaking_load`: read by name; `"goda-takahashi"` refused without `[water]
+    /// berm_width_m`, naming that key and what to add; absent, the profile's rule, which
+    /// [`Scenario::with_profile`] changes, while a rule the file gives stays.
+    #[test]
+    fn the_breaking_load_is_read_and_goda_takahashi_needs_the_berm() {
+        let rule = |text: &str| run(text).map(|w| w.model.options.breaking_load);
+        let given = |r: &str| PARI.replace("period_s = 3.04", &format!("period_s = 3.04\nbreaking_load = \"{r}\""));
+        let berm = |text: &str| text.replace("depth_at_wall_m = 0.4", "depth_at_wall_m = 0.4\nberm_width_m = 0.5");
+        assert_eq!(rule(&given("none")), Ok(BreakingLoad::None));
+        assert_eq!(rule(&given("cuomo-2010")), Ok(BreakingLoad::Cuomo2010));
+        assert_eq!(rule(&berm(&given("goda-takahashi"))), Ok(BreakingLoad::GodaTakahashi));
+        match rule(&given("goda-takahashi")) {
+            Err(e @ ScenarioError::Missing { .. }) => {
+                assert_eq!(e.key(), Some("[water] berm_width_m"));
+                let m = e.to_string();
+                assert!(m.contains("breaking_load = \"goda-takahashi\"") && m.contains("add `berm_width_m`"), "{m}");
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(key_of(&given("takahashi")), "[waves] breaking_load");
+        // The profile's rule where the file gives none, and with_profile follows it.
+        let from = |text: &str| Scenario::from_toml(text, Path::new("t.toml"), Path::new(".")).unwrap();
+        let of = |s: &Scenario| s.waves.as_ref().unwrap().model.options.breaking_load;
+        let default = from(PARI);
+        assert_eq!(of(&default), BreakingLoad::for_profile(Profile::Consistent));
+        assert_eq!(of(&default.with_profile(Profile::Seed2011).unwrap()), BreakingLoad::Cuomo2010);
+        let seed = from(&format!("[model]\nprofile = \"seed-2011\"\n{PARI}"));
+        assert_eq!(of(&seed), BreakingLoad::Cuomo2010);
+        assert_eq!(
+            of(&seed.with_profile(Profile::Consistent).unwrap()),
+            BreakingLoad::for_profile(Profile::Consistent)
+        );
+        let none = from(&given("none"));
+        assert_eq!(of(&none.with_profile(Profile::Seed2011).unwrap()), BreakingLoad::None);
     }
 
     #[test]
