@@ -18,6 +18,9 @@ fn size_text(criterion: &str) -> String {
     );
     let text = site::without(&text, "foundation", &["mu_dynamic", "damping_mode", "vertical_damping"]);
     let text = site::with(&text, "solver", "dt_max_s = 0.2");
+    // The seed's impact: its short pushes rock the narrow caissons, so that the dynamic model's
+    // width moves with the allowed sliding (the tests were written for them).
+    let text = site::with(&text, "waves", "breaking_load = \"cuomo-2010\"");
     site::with(&text, "size", &format!("range_m = [8.0, 30.0]\n{criterion}\ntolerance_m = 0.5\ncurve_points = 4"))
 }
 

@@ -12,7 +12,7 @@ use caisson::analysis::run::run;
 use caisson::analysis::run::Response;
 use caisson::scenario::Scenario;
 use caisson::Profile;
-use support::{example, scenario};
+use support::{example, scenario, site};
 
 fn codes(w: &[caisson::analysis::checks::Warning]) -> Vec<&'static str> {
     w.iter().map(|w| w.code).collect()
@@ -283,4 +283,29 @@ fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
     assert_eq!(codes(&w), ["sliding-beyond-width"]);
     assert!(w[0].message.starts_with("1 of 3 storms slid the caisson beyond its base width"), "{}", w[0].message);
     assert!(storm_warnings(storms[1..].iter(), b).is_empty());
+}
+
+/// `impulsive-coefficient-without-berm`: the default breaking-wave load (`goda-takahashi`) takes
+/// B_M = 0 where the file gives no berm width. On a high mound (d/h = 0.45) whose design wave
+/// breaks at the wall, a berm of 0.12 L would make Takahashi's α_I (by hand: about 1.3) exceed
+/// α2 (about 0.4): it warns, naming the key to give. Silent with the berm given, under the seed's
+/// impact (explicit or by the `seed-2011` profile), and on the design example's low mound (d/h =
+/// 0.825: α_I ≤ 0 for every berm).
+#[test]
+fn the_default_breaking_load_warns_where_a_berm_would_make_it_impulsive() {
+    let high = site::with(site::SMALL_DESIGN, "water", "depth_at_wall_m = 9.0");
+    let warned = |text: &str| {
+        let sc = scenario(text);
+        let w = wave_load_warnings(sc.structure(), sc.waves.as_ref().unwrap());
+        w.into_iter().find(|w| w.code == "impulsive-coefficient-without-berm")
+    };
+    let w = warned(&high).expect("the high mound without a berm warns");
+    assert!(w.message.contains("`[water] berm_width_m`") && w.message.contains("B_M = 0"), "{}", w.message);
+    let n = |k: &str| w.numbers[k];
+    assert!(n("alpha_i_with_berm_of_0_12_l") > 1.0 && n("alpha2") < 0.6, "{:?}", w.numbers);
+    assert!(n("alpha_i_without_berm") < n("alpha2"), "B_M = 0 leaves the wave pulsating: {:?}", w.numbers);
+    assert!(warned(&site::with(&high, "water", "berm_width_m = 12.0")).is_none());
+    assert!(warned(&site::with(&high, "waves", "breaking_load = \"cuomo-2010\"")).is_none());
+    assert!(warned(&format!("[model]\nprofile = \"seed-2011\"\n{high}")).is_none());
+    assert!(warned(site::SMALL_DESIGN).is_none());
 }

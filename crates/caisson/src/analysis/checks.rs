@@ -258,11 +258,52 @@ pub fn wave_load_warnings(s: &Structure, waves: &WaveSetup) -> Vec<Warning> {
     out
 }
 
-/// Warnings of the static checks: an overturning safety factor below 1 under the design wave.
+/// Warnings of the static checks: an overturning safety factor below 1 under the design wave;
+/// and the breaking-wave load `goda-takahashi` taken without a berm width (B_M = 0, the profile's
+/// default) where the design wave breaks at the wall and a berm of 0.12 L, the most impulsive of
+/// Takahashi's coefficient, would make α_I exceed α2 (docs/model.md §5.5).
 pub fn design_wave_warnings(structure: &Structure, waves: &WaveSetup) -> Vec<Warning> {
     let Ok(c) = static_check(structure, waves) else { return Vec::new() };
+    let mut out = without_berm_warning(waves, &c.loads).into_iter().collect::<Vec<_>>();
+    out.extend(overturning_warning(&c));
+    out
+}
+
+/// `impulsive-coefficient-without-berm` ([`design_wave_warnings`]).
+fn without_berm_warning(waves: &WaveSetup, l: &crate::loads::model::WaveLoads) -> Option<Warning> {
+    use crate::loads::breaking_load::BreakingLoad;
+    use crate::loads::goda::takahashi_alpha_i;
+    let site = &waves.model.site;
+    let breaking = l.regime.regime == crate::loads::regime::Regime::Breaking;
+    if waves.model.options.breaking_load != BreakingLoad::GodaTakahashi || site.berm_width_m.is_some() || !breaking {
+        return None;
+    }
+    let berm_m = 0.12 * l.toe_wavelength_m;
+    let (h, d) = (l.height_m, site.depth_at_wall_m);
+    let with_berm = takahashi_alpha_i(h, l.toe_wavelength_m, site.depth_at_toe_m, d, berm_m);
+    let without = l.impulsive_goda.and_then(|g| g.alpha_i).unwrap_or(f64::NAN);
+    let alpha2 = l.pulsating.alpha2;
+    (with_berm > alpha2).then(|| Warning {
+        code: "impulsive-coefficient-without-berm",
+        message: format!(
+            "the breaking-wave load (`[waves] breaking_load = \"goda-takahashi\"`, the profile's default) takes Takahashi's impulsive coefficient with no berm, B_M = 0, as no `[water] berm_width_m` is given: α_I = {without:.3} under the design wave (H_D = {h:.2} m, α2 = {alpha2:.3}); a berm of 0.12 L = {berm_m:.1} m would give α_I = {with_berm:.3} and an impulsive peak above Goda's pulsating load: give the mound's `berm_width_m`"
+        ),
+        numbers: [
+            ("alpha_i_without_berm", without),
+            ("alpha_i_with_berm_of_0_12_l", with_berm),
+            ("alpha2", alpha2),
+            ("berm_width_0_12_l_m", berm_m),
+            ("design_height_m", h),
+        ]
+        .into_iter()
+        .collect(),
+    })
+}
+
+/// `overturning-under-design-wave` ([`design_wave_warnings`]).
+fn overturning_warning(c: &crate::analysis::conventional::StaticCheck) -> Option<Warning> {
     match c.safety.overturning {
-        Some(sf) if sf < 1.0 => vec![Warning {
+        Some(sf) if sf < 1.0 => Some(Warning {
             code: "overturning-under-design-wave",
             message: format!(
                 "Goda's overturning safety factor under the design wave (H_D = {:.2} m) is {sf:.2}: the caisson would tip about its heel, and the dynamic model does not follow overturning (its rotations are small, its foundation elastic); widen the caisson (Goda requires 1.2) before reading its sliding",
@@ -271,8 +312,8 @@ pub fn design_wave_warnings(structure: &Structure, waves: &WaveSetup) -> Vec<War
             numbers: [("overturning_safety_factor", sf), ("design_height_m", c.design_wave.design_height_m)]
                 .into_iter()
                 .collect(),
-        }],
-        _ => Vec::new(),
+        }),
+        _ => None,
     }
 }
 

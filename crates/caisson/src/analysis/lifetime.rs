@@ -20,7 +20,8 @@
 //!    with a rise time from the seed's log-normal model, each at T1/3 or at a period of its own
 //!    given its height ("Wave periods" below);
 //! 6. per wave: the loads of [`crate::loads::model::WaveLoadModel`] (regime by the breaking
-//!    criterion) times the wave-force error; friction coefficients times the friction error;
+//!    criterion; the impulsive peak of a breaking wave by `[waves] breaking_load`) times the
+//!    wave-force error; friction coefficients times the friction error;
 //!    the wave is run through the dynamic model from rest (static equilibrium) and its permanent
 //!    sliding added; the rigid block (Shimosako model, [`super::rigid::RigidBlock`]) beside it.
 //!
@@ -50,8 +51,9 @@
 //! not: they are screened too). The grid is skipped (every node false) in a storm where upper
 //! bounds of the loads over all heights up to H_max pass neither test
 //! ([`crate::loads::model::PeriodLoads::peak_bound`]: Goda's loads grow with the height, the
-//! impact is at most its value at Eq. 30's reduction 1, and none below the breaker height at the
-//! wall); in the other storms the nodes up to the highest node height where those bounds up to it
+//! impulsive peak of each breaking-wave load is bounded too, Eq. 30's impact by its value at the
+//! reduction 1, Goda's force with Takahashi's α* term by term, and there is none below the breaker
+//! height at the wall); in the other storms the nodes up to the highest node height where those bounds up to it
 //! pass neither test (found by bisection) are false without their loads, the same grid for a
 //! seventh of the loads (design example). The friction used is the smaller of μ_s and the rigid block's μ, so a screened wave
 //! slides neither model. The share of waves screened is reported; `screen = false`
@@ -1714,8 +1716,13 @@ mod tests {
 
     /// The design example's scenario.
     fn design_example() -> crate::scenario::Scenario {
-        let text = include_str!("../../../../examples/design_breakwater.toml");
-        crate::scenario::Scenario::from_toml(text, std::path::Path::new("design.toml"), std::path::Path::new("."))
+        design_example_with(|t| t.to_string())
+    }
+
+    /// The design example's scenario with its text changed by `change`.
+    fn design_example_with(change: impl Fn(&str) -> String) -> crate::scenario::Scenario {
+        let text = change(include_str!("../../../../examples/design_breakwater.toml"));
+        crate::scenario::Scenario::from_toml(&text, std::path::Path::new("design.toml"), std::path::Path::new("."))
             .expect("the design example")
     }
 
@@ -1757,11 +1764,28 @@ mod tests {
     /// The screen's grid leaves out the nodes the bound of the loads up to their height holds:
     /// the same grid as every node's loads, on the design example's site at 720 storms (heights
     /// from calm to past breaking at the wall, three periods, tides, angles and force errors),
-    /// in most of which the bound leaves nodes out.
+    /// in most of which the bound leaves nodes out; under the seed's impact (`cuomo-2010`) and
+    /// under `goda-takahashi` on a high mound with a berm (d = 11 m, B_M = 18 m: impulsive
+    /// breaking waves).
     #[test]
     fn the_bisected_screen_grid_is_every_nodes_grid() {
-        let sc = design_example();
-        let st = sc.storm_case(true).expect("a design");
+        let cuomo = design_example_with(|t| t.replace("[waves]\n", "[waves]\nbreaking_load = \"cuomo-2010\"\n"));
+        let high_mound = design_example_with(|t| {
+            t.replace("[waves]\n", "[waves]\nbreaking_load = \"goda-takahashi\"\n")
+                .replace("depth_at_wall_m = 16.5", "depth_at_wall_m = 11.0\nberm_width_m = 18.0")
+        });
+        let counts = |sc: &crate::scenario::Scenario| grid_counts(&sc.storm_case(true).expect("a design"));
+        // Under cuomo-2010, 451 storms may slide somewhere on their grid; the bound leaves nodes
+        // out in 462. The lowest cell that may slide is the one found cell by cell (above the
+        // first in each of the 451, on both grids).
+        assert_eq!(counts(&cuomo), (720, 451, 462, 2 * 451));
+        // On the high mound, 429 and 447.
+        assert_eq!(counts(&high_mound), (720, 429, 447, 2 * 429));
+    }
+
+    /// The storms of the grid test on `st`, checked: (storms, storms that may slide somewhere,
+    /// storms whose bound leaves nodes out, grids whose lowest sliding cell is above the first).
+    fn grid_counts(st: &StormCase<'_>) -> (usize, usize, usize, usize) {
         let (mut storms, mut cut, mut sliding, mut lowest) = (0, 0, 0, 0);
         for h13 in [0.5, 1.5, 2.5, 3.5, 4.5, 5.5, 6.5, 8.0, 10.0, 12.0] {
             for period_s in [7.0, 10.0, 14.0] {
@@ -1780,11 +1804,11 @@ mod tests {
                                 impact_factor: force_factor,
                                 friction_factor: 1.0,
                             };
-                            let site = StormSite::new(&st, &s, ScreenModes::still_water(&st));
+                            let site = StormSite::new(st, &s, ScreenModes::still_water(st));
                             let t13 = (&site.model.at_period(period_s), site.bound(period_s));
                             let (a, b) = (
-                                StormScreen::grid(&st, &s, &site, t13, true),
-                                StormScreen::grid(&st, &s, &site, t13, false),
+                                StormScreen::grid(st, &s, &site, t13, true),
+                                StormScreen::grid(st, &s, &site, t13, false),
                             );
                             assert_eq!(a.node, b.node, "H1/3 {h13} m, T {period_s} s, tide {tide_m} m");
                             storms += 1;
@@ -1800,11 +1824,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(storms, 720);
-        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462. The
-        // lowest cell that may slide is the one found cell by cell (above the first in each of
-        // the 451, on both grids).
-        assert_eq!((sliding, cut, lowest), (451, 462, 2 * 451));
+        (storms, sliding, cut, lowest)
     }
 
     /// A storm given the life's toe wave number (solved once for the shoaling and the loads)

@@ -17,8 +17,8 @@
 //! the seed's log-normal model at that F* (Eqs. 34-36, [`super::risetime`]) and its time shape is
 //! `[waves] load_shape`; any other wave, breaking or not, is the pulsating sine of Eq. 29 (with
 //! `alpha_qs_breaking` if it breaks). α_I takes the berm width B_M of `[water] berm_width_m`, or
-//! B_M = 0 where the model is built without one (a valid input of Takahashi's formula: no berm in
-//! front of the wall; docs/model.md §5.5).
+//! B_M = 0 where the rule is the profile's default and no berm is given (a valid input of
+//! Takahashi's formula: no berm in front of the wall; docs/model.md §5.5).
 
 use super::goda::GodaResult;
 use super::impact::ImpactResult;
@@ -55,11 +55,11 @@ impl BreakingLoad {
         }
     }
 
-    /// The rule a profile takes where the scenario gives none: the seed's own under both
-    /// (docs/model.md §5.5).
+    /// The rule a profile takes where the scenario gives none: the seed's own under `seed-2011`;
+    /// the load of the published expected-sliding method under `consistent` (docs/model.md §5.5).
     pub fn for_profile(profile: Profile) -> BreakingLoad {
         match profile {
-            Profile::Consistent => BreakingLoad::Cuomo2010,
+            Profile::Consistent => BreakingLoad::GodaTakahashi,
             Profile::Seed2011 => BreakingLoad::Cuomo2010,
         }
     }
@@ -113,5 +113,6 @@ mod tests {
             assert_eq!(serde_json::to_value(r).unwrap(), serde_json::Value::String(n.into()));
         }
         assert_eq!(BreakingLoad::for_profile(Profile::Seed2011), BreakingLoad::Cuomo2010);
+        assert_eq!(BreakingLoad::for_profile(Profile::Consistent), BreakingLoad::GodaTakahashi);
     }
 }
