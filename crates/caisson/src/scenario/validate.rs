@@ -6,8 +6,8 @@
 //! types check their own, wider ranges after).
 
 use super::{
-    campaign, coherence, design, fragility, keyed, keyed_as_read, size, waves, Scenario, ScenarioError, ScenarioFile,
-    CAISSON_KEYS, FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
+    campaign, coherence, design, fragility, keyed, size, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
+    FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
 use crate::dynamics::{AdaptiveParams, SolverParams};
@@ -33,6 +33,7 @@ fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str) -> R<f64> {
     if v.is_finite() && v >= lo && v <= hi {
         Ok(v)
     } else {
+        let (lo, hi) = (crate::fmt_number(lo), crate::fmt_number(hi));
         Err(ScenarioError::range(key, super::fmt_value(v), format!("must be between {lo} and {hi} ({unit})")))
     }
 }
@@ -317,9 +318,12 @@ fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
     let kilo = |key: &str, v: Option<f64>, unit: &str, allow_zero: bool| -> R<Option<f64>> {
         match v {
             None => Ok(None),
-            Some(v) if allow_zero => {
-                within(&format!("[foundation] {key}"), v, 0.0, f64::MAX, unit).map(|v| Some(v * 1e3))
-            }
+            Some(v) if allow_zero && v.is_finite() && v >= 0.0 => Ok(Some(v * 1e3)),
+            Some(v) if allow_zero => Err(ScenarioError::range(
+                &format!("[foundation] {key}"),
+                super::fmt_value(v),
+                format!("must be a finite number ≥ 0 ({unit})"),
+            )),
             Some(v) => positive(&format!("[foundation] {key}"), v, unit).map(|v| Some(v * 1e3)),
         }
     };
@@ -508,7 +512,7 @@ fn peak(t: &super::LoadTable, c: &Caisson) -> R<WaveForce> {
     let lever = t.horizontal_lever_m.unwrap_or(c.base_depth_m);
     let uplift_lever = t.uplift_lever_m.unwrap_or(2.0 * c.width_m / 3.0);
     WaveForce::from_levers_on(fx_kn * 1e3, lever, fy_kn * 1e3, uplift_lever, c.height_m, c.width_m)
-        .map_err(|e| keyed_as_read("[load]", LOAD_KEYS, e))
+        .map_err(|e| keyed("[load]", LOAD_KEYS, e))
 }
 
 /// Largest force-series file read, bytes (a file that never ends, `/dev/zero`, is refused).
