@@ -175,7 +175,7 @@ impl CoreScenario {
     }
     #[getter]
     fn has_campaign(&self) -> bool {
-        self.sc.campaign.is_some()
+        self.sc.has_campaign_table()
     }
     #[getter]
     fn has_design(&self) -> bool {

@@ -198,13 +198,7 @@ fn grid(c: &CampaignTable, default_regime: RegimeChoice) -> R<Placed> {
 /// The setup of every condition of the scenario's campaign: the scenario's caisson with the
 /// condition's weight in water (the mass, and a soil-derived foundation, follow), its waves with
 /// the condition's height and regime. Errors are prefixed with the condition's place in the file.
-pub(super) fn build(sc: &Scenario) -> R<Campaign> {
-    let spec = sc.campaign.as_ref().ok_or_else(|| {
-        ScenarioError::missing(
-            "[campaign]",
-            "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
-        )
-    })?;
+pub(super) fn build(sc: &Scenario, spec: &CampaignSpec) -> R<Campaign> {
     let mut setups = Vec::with_capacity(spec.conditions.len());
     for (i, cond) in spec.conditions.iter().enumerate() {
         let place = spec.places.get(i).cloned().unwrap_or_else(|| format!("[campaign] conditions[{i}]"));

@@ -602,8 +602,12 @@ pub struct Scenario {
     /// Why a `[fragility]` table was refused: only a fragility run says so
     /// ([`Self::fragility_for`]); the other commands do not use the table.
     fragility_refused: Option<ScenarioError>,
+    /// Why a `[campaign]` table was refused: only a campaign says so ([`Self::campaign`]).
+    campaign_refused: Option<ScenarioError>,
     /// `[size]`.
     pub size: Option<SizeParams>,
+    /// Why a `[size]` table was refused: only a sizing says so ([`Self::size_for`]).
+    size_refused: Option<ScenarioError>,
 }
 
 impl Scenario {
@@ -747,6 +751,9 @@ impl Scenario {
 
     /// The `[size]` of the scenario, or an error saying it is missing.
     pub fn size_for(&self, what: &str) -> Result<&SizeParams, ScenarioError> {
+        if let Some(e) = &self.size_refused {
+            return Err(e.clone());
+        }
         self.size.as_ref().ok_or_else(|| {
             ScenarioError::missing(
                 "[size]",
@@ -784,6 +791,20 @@ impl Scenario {
     /// The conditions of `[campaign]` with their structures and waves (each condition's height,
     /// weight in water and regime set on this scenario's typed parameters).
     pub fn campaign(&self) -> Result<Campaign, ScenarioError> {
-        campaign::build(self)
+        if let Some(e) = &self.campaign_refused {
+            return Err(e.clone());
+        }
+        let spec = self.campaign.as_ref().ok_or_else(|| {
+            ScenarioError::missing(
+                "[campaign]",
+                "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
+            )
+        })?;
+        campaign::build(self, spec)
+    }
+
+    /// Whether the file has a `[campaign]` table (valid or not: [`Self::campaign`] says).
+    pub fn has_campaign_table(&self) -> bool {
+        self.campaign.is_some() || self.campaign_refused.is_some()
     }
 }

@@ -91,7 +91,9 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         design: None,
         fragility: None,
         fragility_refused: None,
+        campaign_refused: None,
         size: None,
+        size_refused: None,
     };
     coherence::check_time_step(&sc.structure)?;
     with_studies(f, sc)
@@ -123,15 +125,14 @@ fn load_and_duration(
 
 /// The scenario with the studies of the file: `[campaign]`, `[design]`, `[fragility]`, `[size]`.
 fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
+    // A `[campaign]`, `[fragility]` or `[size]` table is refused only when its command asks for
+    // it: a `run` or `loads` of the same file is not told to remove its `[load]`, or to add a
+    // `[design]`, for another command's sake.
     if f.campaign.is_some() {
-        if sc.caisson_spec.construction().is_some() {
-            return Err(ScenarioError::Conflict {
-                message: "a campaign gives the caisson's weight in water in each condition (`[campaign] weights_in_water_kn` or `weight_in_water_kn` of its conditions), which would replace the construction of `[caisson]` (`wall_thickness_m`, ...): give the caisson by its weight in water instead".into(),
-            });
+        match campaign_of(f, &sc) {
+            Ok(spec) => sc.campaign = Some(spec),
+            Err(e) => sc.campaign_refused = Some(e),
         }
-        sc.campaign = Some(campaign::validate_campaign(f)?);
-        // Every condition must build (its height, weight and regime on this scenario).
-        sc.campaign()?;
     }
     if f.design.is_some() {
         let d = design::validate_design(f)?;
@@ -139,20 +140,39 @@ fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
         sc.design = Some(d);
     }
     if f.fragility.is_some() {
-        // Refused only when a fragility run asks for it: a `run` or `loads` of the same file
-        // must not be told to remove its `[load]` for a fragility's sake.
         match fragility::validate_fragility(f, &sc) {
             Ok(p) => sc.fragility = Some(p),
             Err(e) => sc.fragility_refused = Some(e),
         }
     }
     if f.size.is_some() {
-        let lives = sc.design.as_ref().map(|d| d.lives).ok_or_else(|| {
-            ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
-        })?;
-        sc.size = Some(size::validate_size(f, lives)?);
+        let size = sc
+            .design
+            .as_ref()
+            .map(|d| d.lives)
+            .ok_or_else(|| {
+                ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
+            })
+            .and_then(|lives| size::validate_size(f, lives));
+        match size {
+            Ok(p) => sc.size = Some(p),
+            Err(e) => sc.size_refused = Some(e),
+        }
     }
     Ok(sc)
+}
+
+/// The `[campaign]` of the file, every condition built on the rest of the scenario `sc`.
+fn campaign_of(f: &ScenarioFile, sc: &Scenario) -> R<campaign::CampaignSpec> {
+    if sc.caisson_spec.construction().is_some() {
+        return Err(ScenarioError::Conflict {
+            message: "a campaign gives the caisson's weight in water in each condition (`[campaign] weights_in_water_kn` or `weight_in_water_kn` of its conditions), which would replace the construction of `[caisson]` (`wall_thickness_m`, ...): give the caisson by its weight in water instead".into(),
+        });
+    }
+    let spec = campaign::validate_campaign(f)?;
+    // Every condition must build (its height, weight and regime on this scenario).
+    campaign::build(sc, &spec)?;
+    Ok(spec)
 }
 
 fn caisson_spec(f: &ScenarioFile) -> R<CaissonSpec> {
