@@ -99,6 +99,13 @@ pub(super) fn validate_campaign(file: &ScenarioFile) -> R<CampaignSpec> {
             "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
         )
     })?;
+    if let Some(t) = c.title.as_deref().filter(|t| t.chars().any(char::is_control)) {
+        return Err(ScenarioError::range(
+            "[campaign] title",
+            format!("{t:?}"),
+            "must be text without control characters (line breaks, tabs, escape sequences): it titles the plots and the text output",
+        ));
+    }
     if file.load.is_some() {
         return Err(ScenarioError::Conflict {
             message: "a campaign runs wave trains from [waves]; remove the [load] table".into(),
