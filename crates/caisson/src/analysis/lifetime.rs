@@ -12,8 +12,9 @@
 //! 2. period T1/3 = a H0^b (Goda & Takagi: a = 3.3, b = 0.63) and N = duration / T1/3 waves;
 //! 3. tide at the peak ζ = (R/2)(1 + cos φ), φ uniform: every depth (toe, wall, base) grows by ζ,
 //!    the crest freeboard shrinks by ζ, and the weight in water falls by ρ_w g B l ζ (the caisson
-//!    is more submerged); the foundation stiffness and the added mass stay at their still-water
-//!    values (a simplification);
+//!    is more submerged); the foundation stiffness and the dynamic model's added mass stay at
+//!    their still-water values (a simplification), while the rigid block's added mass, 1.0855
+//!    ρ_w h'² l ([`super::rigid`]), is that of the storm's base depth h' + ζ;
 //! 4. H1/3 and H_max at the structure by Goda's surf-zone formulas at the toe depth
 //!    ([`crate::waves::surf_zone`]), times the transformation error;
 //! 5. N Rayleigh heights of that H1/3, each limited to H_max (Goda's random-wave breaking), each
