@@ -62,6 +62,24 @@ truncate -s +256M "$work/o5/checkpoint.jsonl"
 check "design --resume, 256 MiB NUL tail" "$BIN" design "$work/design.toml" --resume --out "$work/o5"
 check "merge a shard with a NUL tail" "$BIN" merge "$work/design.toml" "$work/o5" --out "$work/o8"
 
+# The third fuzz round's findings (issue 37): each finishes finite or is refused naming its key.
+sed 's/^tidal_range_m = 2.0/tidal_range_m = 2.0\nerror_truncated = false\nfriction_cov = 0.25/' \
+    $E/design_breakwater.toml >"$work/friction.toml"
+sed 's/^width_m = 20.0 .*/width_m = 1.0/' $E/design_breakwater.toml >"$work/slender.toml"
+sed 's/^storm_shape = 1.4 .*/storm_shape = 0.12/' $E/design_breakwater.toml >"$work/tail.toml"
+sed 's/^e100_kpa = 3.5e5/e100_kpa = 3.5e5\nky_kn_per_m = 1e-200/' $E/table5_triangle.toml >"$work/ky.toml"
+sed 's/^e100_kpa = 3.5e5/e100_kpa = 3.5e5\nkx_kn_per_m = 5e-324/' "$work/fragility.toml" >"$work/kx.toml"
+sed 's/^significant_heights_m = \[7.0,/significant_heights_m = [1e-300, 7.0,/' "$work/fragility.toml" >"$work/heights.toml"
+sed 's/^title = .*/title = "PARI\\u001b[31m\\ttab"/' $E/pari_breaking_campaign.toml >"$work/title.toml"
+check "design friction error <= 0, shard 4278..4280" "$BIN" design "$work/friction.toml" --life-range 4278..4280 --out "$work/o9"
+check "design friction shard --resume" "$BIN" design "$work/friction.toml" --life-range 4278..4280 --resume --out "$work/o9"
+check "design 1 m wide, shard 1898..1900" "$BIN" design "$work/slender.toml" --life-range 1898..1900 --out "$work/o10"
+check "design storm_shape 0.12 (refused)" "$BIN" design "$work/tail.toml"
+check "run ky 1e-200 (refused)" "$BIN" run "$work/ky.toml"
+check "fragility kx 5e-324 (refused)" "$BIN" fragility "$work/kx.toml"
+check "fragility height 1e-300 (refused)" "$BIN" fragility "$work/heights.toml"
+check "campaign, control characters in its title (refused)" "$BIN" campaign "$work/title.toml"
+
 PY=.venv/bin/python
 if [ -x "$PY" ]; then
     export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
@@ -76,6 +94,8 @@ if [ -x "$PY" ]; then
     pycase "Fragility 4 storms" "caisson.Fragility(caisson.Scenario.from_toml('$work/fragility.toml')).run(threads=2)"
     pycase "Scenario.from_toml /dev/zero" "caisson.Scenario.from_toml('/dev/zero')"
     pycase "threads=10**6" "caisson.run(caisson.Scenario.from_toml(E+'/fifteen_waves.toml'), threads=10**6)"
+    pycase "Design friction error <= 0, life 4278" "print(caisson.Design(caisson.Scenario.from_toml('$work/friction.toml')).simulate_lives([4278]).rigid_block_sliding_m[0])"
+    pycase "Design.statistics of another seed's lives" "d=caisson.Design(caisson.Scenario.from_toml('$work/design.toml')); d.statistics(caisson.Design(d.scenario.replace(design={'seed': 2})).simulate_lives([0]))"
 else
     echo "(no .venv: the Python cases are skipped; scripts/test.sh creates it)"
 fi

@@ -29,7 +29,8 @@ pub fn load_campaign(path: &Path, damping_mode: Option<&str>) -> Result<Campaign
     }
     let mut c = sc.campaign().map_err(input_err)?;
     if sc.campaign.as_ref().is_some_and(|s| s.title.is_none()) {
-        c.title = path.file_stem().and_then(|s| s.to_str()).unwrap_or("campaign").to_string();
+        let stem = path.file_stem().and_then(|s| s.to_str()).filter(|s| !s.chars().any(char::is_control));
+        c.title = stem.unwrap_or("campaign").to_string();
     }
     Ok(c)
 }

@@ -145,6 +145,10 @@ fn checkpoint_error(path: &Path, reader: &Reader, e: CheckpointError) -> anyhow:
         CheckpointError::Fingerprint { found, expected } => input_err(format!(
             "{who}: the checkpoint {path_text} was written for a different scenario or options (fingerprint {found}, {this} {expected}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}"
         )),
+        // Converted line ends: converting them back is the fix, not removing lines.
+        CheckpointError::Line { line, fault: fault @ LineFault::CrLf } => {
+            input_err(format!("{who}: {path_text} line {line} {fault}"))
+        }
         CheckpointError::Line { line, fault } => {
             let why = match fault {
                 LineFault::TooLong { len } => format!(

@@ -92,23 +92,40 @@ fn refuse_if_running(shard: &Shard) -> Result<()> {
     }
 }
 
+/// The lives a shard holds, in words: `lives 0..8`, or `6 lives from 0 to 11` with gaps (a shard
+/// resumed for other lives keeps those it held: its header's range is the first run's).
+fn holds(lives: &std::collections::BTreeMap<usize, StormOutcome>) -> String {
+    match (lives.keys().next(), lives.keys().next_back()) {
+        (Some(&a), Some(&b)) if b - a + 1 == lives.len() => format!("lives {a}..{}", b + 1),
+        (Some(&a), Some(&b)) => format!("{} lives from {a} to {b}", lives.len()),
+        _ => "no lives".to_string(),
+    }
+}
+
 /// A refusal of the merge rules in the words of `caisson merge`: the shards by name and by the
-/// lives they were run for (`ranges`, in the order read), the `n` lives to merge.
-fn merge_error(e: MergeError, shards: &[Shard], ranges: &[Range<usize>], n: usize, args: &MergeArgs) -> anyhow::Error {
+/// lives they hold (`held`), or were run for (`ranges`, their headers'), in the order read; the
+/// `n` lives to merge.
+fn merge_error(
+    e: MergeError,
+    shards: &[Shard],
+    (ranges, held): (&[Range<usize>], &[String]),
+    n: usize,
+    args: &MergeArgs,
+) -> anyhow::Error {
     let file = args.scenario.display();
     input_err(match e {
         MergeError::Beyond { shard, life, .. } => format!(
-            "{} (lives {}) holds life {life}, beyond the lives to merge, 0..{n} ({}); give --lives N to merge lives 0..N",
+            "{} (holding {}) holds life {life}, beyond the lives to merge, 0..{n} ({}); give --lives N to merge lives 0..N",
             shards[shard].name(),
-            text(&ranges[shard]),
+            held[shard],
             if args.lives.is_some() { format!("--lives {n}") } else { format!("`[design] lives` = {n} of {file}") }
         ),
         MergeError::Overlap { life, first, second } => format!(
-            "life {life} is in two shards: {} (lives {}) and {} (lives {}); shards must not overlap: give each life to one shard",
+            "life {life} is in two shards: {} (holding {}) and {} (holding {}); shards must not overlap: give each life to one shard",
             shards[first].name(),
-            text(&ranges[first]),
+            held[first],
             shards[second].name(),
-            text(&ranges[second])
+            held[second]
         ),
         MergeError::Missing { start, end, missing, gaps, incomplete } => {
             let more = if gaps > 1 { format!(", {missing} lives missing in {gaps} gaps") } else { String::new() };
@@ -197,6 +214,7 @@ fn read_shards(shards: &[Shard], fingerprint: &str, n: usize, args: &MergeArgs) 
     let mut merge = Merge::new(n);
     // The lives each shard was run for (its header).
     let mut ranges: Vec<Range<usize>> = Vec::with_capacity(shards.len());
+    let mut held: Vec<String> = Vec::with_capacity(shards.len());
     for s in shards {
         let reader = Reader {
             who: s.name(),
@@ -219,11 +237,12 @@ fn read_shards(shards: &[Shard], fingerprint: &str, n: usize, args: &MergeArgs) 
             )));
         }
         ranges.push(range.clone());
-        merge.add(Some(range), cp.lives).map_err(|e| merge_error(e, shards, &ranges, n, args))?;
+        held.push(holds(&cp.lives));
+        merge.add(Some(range), cp.lives).map_err(|e| merge_error(e, shards, (&ranges, &held), n, args))?;
     }
     pb.finish_and_clear();
     // Every life 0..N in some shard.
-    merge.finish().map_err(|e| merge_error(e, shards, &ranges, n, args))
+    merge.finish().map_err(|e| merge_error(e, shards, (&ranges, &held), n, args))
 }
 
 /// The merged checkpoint: the header and the lines of one run of lives 0..N, written whole or

@@ -30,12 +30,24 @@ pub fn forget_pending(path: &Path) {
     pending().retain(|p| p != path);
 }
 
-/// Remove every registered file and exit with `code`, holding the registry's lock so that no
-/// temporary file is renamed into place after it was removed (called on Ctrl-C).
+/// Directories this process created (an `--out` and its missing parents, innermost first) to
+/// remove if the process is stopped while they are still empty.
+static PENDING_DIRS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn pending_dirs() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    PENDING_DIRS.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Remove every registered file, then every registered directory left empty, and exit with
+/// `code`, holding the registry's lock so that no temporary file is renamed into place after it
+/// was removed (called on Ctrl-C): a run stopped at once leaves no empty `--out` behind.
 pub fn remove_pending_and_exit(code: i32) -> ! {
     let files = pending();
     for p in files.iter() {
         let _ = std::fs::remove_file(p);
+    }
+    for d in pending_dirs().iter() {
+        let _ = std::fs::remove_dir(d);
     }
     std::process::exit(code)
 }
@@ -383,6 +395,7 @@ pub struct OutLock {
 impl Drop for OutLock {
     fn drop(&mut self) {
         drop(self.lock.take());
+        pending_dirs().retain(|d| !self.created.contains(d));
         for d in &self.created {
             if std::fs::remove_dir(d).is_err() {
                 break;
@@ -397,7 +410,7 @@ pub const OUT_LOCK: &str = ".caisson.lock";
 impl OutLock {
     /// Create `dir` (as [`ensure_dir`]) and take its lock for `command`.
     pub fn acquire(dir: &Path, command: &str) -> Result<OutLock> {
-        let created = dir
+        let created: Vec<PathBuf> = dir
             .ancestors()
             .filter(|p| !p.as_os_str().is_empty())
             .take_while(|p| std::fs::symlink_metadata(p).is_err())
@@ -412,6 +425,7 @@ impl OutLock {
         )?;
         remove_stale_temporaries(dir, &|name| OUTPUTS.iter().any(|(_, p)| p.iter().any(|p| matches(p, name))));
         remove_stale_temporaries(&dir.join("figures"), &|name| matches("validation_*.svg", name));
+        pending_dirs().extend(created.iter().cloned());
         Ok(OutLock { lock: Some(lock), created })
     }
 }

@@ -111,6 +111,9 @@ fn log_range(lo: f64, hi: f64) -> (f64, f64) {
 /// [`panels`] with logarithmic axes where `scales` says: points with a coordinate ≤ 0 on a
 /// logarithmic axis are left out (say so in the caption).
 pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], scales: Scales) -> Result<()> {
+    // Every text drawn passes through [`svg_text`]: the title and x label here, the panels'
+    // labels where each panel is copied as drawn (`shown`).
+    let (title, x_label) = (&svg_text(title), &svg_text(x_label));
     let (tmp, _) = crate::output::TempFile::create(path)?;
     {
         let height = 60 + 220 * panels.len() as u32;
@@ -122,16 +125,15 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
         for (panel, row) in panels.iter().zip(areas.iter()) {
             // The legend beside the panel, never on its data.
             let (area, legend_area) = row.split_horizontally(CHART_WIDTH);
-            legend(&legend_area, panel)?;
             let area = &area;
             let keep = |&(x, y): &(f64, f64)| (!scales.log_x || x > 0.0) && (!scales.log_y || y > 0.0);
             let shown = Panel {
-                y_label: panel.y_label.clone(),
+                y_label: svg_text(&panel.y_label),
                 series: panel
                     .series
                     .iter()
                     .map(|s| Series {
-                        label: s.label.clone(),
+                        label: svg_text(&s.label),
                         points: s.points.iter().copied().filter(keep).collect(),
                         dashed: s.dashed,
                         markers: s.markers,
@@ -139,6 +141,7 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                     })
                     .collect(),
             };
+            legend(&legend_area, &shown)?;
             let (xr, yr) = bounds(&shown);
             let look = Look {
                 x_label,
@@ -190,6 +193,13 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
     }
     tmp.commit(path).context("writing an SVG plot")?;
     Ok(())
+}
+
+/// `text` as an SVG file may hold it: each character XML 1.0 does not allow, or that a
+/// drawn label cannot show (control characters, U+FFFE and U+FFFF), replaced by a space (plotters
+/// escapes the markup characters `<`, `&` and quotes itself).
+fn svg_text(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}') { ' ' } else { c }).collect()
 }
 
 /// How a panel is drawn: its x label, the x-buckets of its lines and its (linear) data ranges.
@@ -574,5 +584,27 @@ mod tests {
         let short: Vec<(f64, f64)> = pts[..2002].to_vec();
         assert_eq!(decimate(&short, 1000), short);
         assert_eq!(line_buckets(&[]), MAX_BUCKETS);
+    }
+
+    /// Issue 37 item 6: control characters in a title (a campaign's, before it was refused) made
+    /// the SVG invalid XML. Every text the writer draws passes through `svg_text`: the file holds
+    /// no character XML 1.0 forbids, and the words around the controls are kept.
+    #[test]
+    fn svg_text_keeps_every_drawn_text_valid_xml() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("p.svg");
+        let panel = Panel {
+            y_label: "y\u{0}label".into(),
+            series: vec![Series::line("a\u{b}line <&>", vec![(0.0, 0.0), (1.0, 1.0)])],
+        };
+        panels(&path, "title\u{1b}[31m red\u{7}", "x\tlabel\u{fffe}", &[panel]).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let bad: Vec<char> =
+            svg.chars().filter(|&c| (c.is_control() && c != '\n') || matches!(c, '\u{fffe}' | '\u{ffff}')).collect();
+        assert!(bad.is_empty(), "{bad:?}");
+        for text in ["title [31m red", "x label", "y label", "a line &lt;&amp;&gt;"] {
+            assert!(svg.contains(text), "`{text}` drawn");
+        }
+        assert_eq!(svg_text("a\u{1b}b\u{9f}c\u{ffff}"), "a b c ");
     }
 }

@@ -1,15 +1,22 @@
 //! Property test over generated scenarios (issue 12): mutations of the bundled examples (numbers
-//! scaled by 10^±k, signs flipped, 0, NaN/inf, the extremes of f64, keys dropped). For each:
+//! scaled by 10^±k, signs flipped, 0, NaN/inf, the extremes of f64, a whole number beyond TOML's,
+//! keys dropped; each number of a one-line list too), and of the examples with the keys they
+//! leave at their defaults written out ([`EXAMPLES`]: the foundation given directly, the reference
+//! stress, the rigid block's μ, untruncated friction errors, the climate, the sizing example;
+//! issue 37). For each:
 //!
-//! * **in process** (thousands of cases, fast): `Scenario::from_toml` either refuses with an
-//!   error naming a key (`[table] key`) or gives a scenario whose short run (at most
+//! * **in process** (thousands of cases, fast): `Scenario::from_toml` (and the `[campaign]`,
+//!   `[fragility]` or `[size]` that only its command reads) either refuses with an error naming a
+//!   key (`[table] key`) and printing no number in full ([`MAX_DIGITS_IN_A_ROW`]) or gives a
+//!   scenario whose short run (at most
 //!   [`SHORT_STEPS`] steps of `dt_s` of a `[load]` run, one wave of one realization of a wave
 //!   train, the storm case of a design) succeeds with finite numbers; never a panic, never a
 //!   failed run on a scenario that validation accepted, and each case within [`CASE_BUDGET`].
 //! * **through the binary** (a smaller sample): `caisson run|loads|campaign|design|fragility
 //!   --json` under a time limit ([`CHILD_TIMEOUT`], then it is killed) and an address-space limit
 //!   ([`CHILD_MEMORY_KB`], `ulimit -v`): exit 0 with finite JSON, or exit 2 with `Error:` naming a
-//!   key; never a panic (101), a signal, a hang or the memory limit.
+//!   key, and no message (nor warning) printing a number in full; never a panic (101), a signal, a
+//!   hang or the memory limit.
 //!
 //! Size: `CAISSON_FUZZ_CASES` (default 8000) in-process cases and `CAISSON_FUZZ_BIN_CASES`
 //! (default 80) binary cases; CI runs the defaults (20 to 30 s on 2 cores). To search longer:
@@ -46,8 +53,13 @@ fn examples_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
 }
 
-/// The bundled examples that are scenarios, and the command each is run with in the binary sample.
-const EXAMPLES: [(&str, &str); 10] = [
+/// The bundled examples that are scenarios, and the command each is run with in the binary
+/// sample; then the examples with keys they leave at their defaults written out (each edit
+/// replaces its text once), so that those keys are mutated too: the foundation's numbers given
+/// directly and the soil's reference stress, the rigid block's μ, untruncated friction errors, the
+/// climate (`design_climate.toml`) and the sizing example (its `[size]` checked in process, its
+/// `[design]` run by the binary).
+const EXAMPLES: [(&str, &str); 16] = [
     ("table5_triangle.toml", "run"),
     ("table5_series.toml", "run"),
     ("fifteen_waves.toml", "run"),
@@ -58,23 +70,58 @@ const EXAMPLES: [(&str, &str); 10] = [
     ("design_breakwater.toml", "design"),
     ("fragility.toml", "fragility"),
     ("caisson_geometry.toml", "run"),
+    ("table5_triangle.toml", "run"),
+    ("fifteen_waves.toml", "run"),
+    ("design_breakwater.toml", "design"),
+    ("design_climate.toml", "design"),
+    ("fragility.toml", "fragility"),
+    ("size_breakwater.toml", "design"),
 ];
 
-fn example_text(i: usize) -> String {
-    std::fs::read_to_string(examples_dir().join(EXAMPLES[i].0)).unwrap()
+/// The edits of the example `EXAMPLES[i]` (none for the first ten).
+fn edits(i: usize) -> &'static [(&'static str, &'static str)] {
+    const DIRECT: &str = "e100_kpa = 3.5e5\nkx_kn_per_m = 1.511e5\nky_kn_per_m = 1.404e5\ndamping_kns_per_m = 598.0\nreference_stress_kpa = 100.0";
+    match i {
+        10 => &[("e100_kpa = 3.5e5", DIRECT)],
+        11 => &[("e100_kpa = 3.5e5", "e100_kpa = 3.5e5\nreference_stress_kpa = 100.0")],
+        12 => &[
+            ("period_s = 12.8\n", "period_s = 12.8\nrigid_block_mu = 0.6\n"),
+            (
+                "tidal_range_m = 2.0",
+                "tidal_range_m = 2.0\nerror_truncated = false\nfriction_bias = 0.0\nfriction_cov = 0.25",
+            ),
+        ],
+        14 | 15 => &[(
+            "e100_kpa = 3.5e5",
+            "e100_kpa = 3.5e5\nkx_kn_per_m = 2.9e5\nky_kn_per_m = 2.7e5\ndamping_kns_per_m = 2e4",
+        )],
+        _ => &[],
+    }
 }
 
-/// One mutation of a numeric `key = value` line.
+fn example_text(i: usize) -> String {
+    let text = std::fs::read_to_string(examples_dir().join(EXAMPLES[i].0)).unwrap();
+    edits(i).iter().fold(text, |t, (from, to)| {
+        assert!(t.contains(from), "{}: `{from}` is in the text", EXAMPLES[i].0);
+        t.replacen(from, to, 1)
+    })
+}
+
+/// One mutation of a numeric `key = value` line (or of one number of a `key = [...]` list).
 #[derive(Debug, Clone)]
 enum Op {
     /// × 10^k.
     Scale(i32),
     Negate,
     Zero,
-    /// `nan`, `inf`, `-inf`, 5e-324, 1.7976931348623157e308.
+    /// `nan`, `inf`, `-inf`, 5e-324, 1.7976931348623157e308, 99999999999999999999 (a whole
+    /// number beyond TOML's).
     Special(usize),
     Drop,
 }
+
+/// The special values of [`Op::Special`].
+const SPECIALS: [&str; 6] = ["nan", "inf", "-inf", "5e-324", "1.7976931348623157e308", "99999999999999999999"];
 
 fn op() -> impl Strategy<Value = Op> {
     prop_oneof![
@@ -83,13 +130,24 @@ fn op() -> impl Strategy<Value = Op> {
         1 => prop_oneof![Just(-300i32), Just(-160), Just(160), Just(300)].prop_map(Op::Scale),
         2 => Just(Op::Negate),
         1 => Just(Op::Zero),
-        2 => (0usize..5).prop_map(Op::Special),
+        2 => (0usize..SPECIALS.len()).prop_map(Op::Special),
         2 => Just(Op::Drop),
     ]
 }
 
-/// The (table, key, line index, value) of every line `key = <number>` in `text`.
-fn numeric_lines(text: &str) -> Vec<(String, String, usize, String)> {
+/// A number of the text: its (table, key, line index, value, element), `element` its index in a
+/// one-line list of numbers `key = [a, b, ...]` (`None`: the line's value).
+type Numeric = (String, String, usize, String, Option<usize>);
+
+/// The numbers of a one-line list of numbers `[a, b, ...]`, or `None`.
+fn number_list(v: &str) -> Option<Vec<&str>> {
+    let inner = v.strip_prefix('[')?.strip_suffix(']')?;
+    let items: Vec<&str> = inner.split(',').map(str::trim).filter(|x| !x.is_empty()).collect();
+    (!items.is_empty() && items.iter().all(|x| x.parse::<f64>().is_ok())).then_some(items)
+}
+
+/// Every number of `text`: each line `key = <number>` and each number of a line `key = [...]`.
+fn numeric_lines(text: &str) -> Vec<Numeric> {
     let mut table = String::new();
     let mut out = Vec::new();
     for (i, line) in text.lines().enumerate() {
@@ -101,7 +159,11 @@ fn numeric_lines(text: &str) -> Vec<(String, String, usize, String)> {
         let Some((k, v)) = l.split_once('=') else { continue };
         let v = v.trim();
         if v.parse::<f64>().is_ok() {
-            out.push((table.clone(), k.trim().to_string(), i, v.to_string()));
+            out.push((table.clone(), k.trim().to_string(), i, v.to_string(), None));
+        } else if let Some(items) = number_list(v) {
+            for (j, x) in items.iter().enumerate() {
+                out.push((table.clone(), k.trim().to_string(), i, x.to_string(), Some(j)));
+            }
         }
     }
     out
@@ -114,10 +176,27 @@ fn mutate(text: &str, ops: &[(usize, Op)]) -> (String, Vec<String>) {
     let mut lines: Vec<Option<String>> = text.lines().map(|l| Some(l.to_string())).collect();
     let mut what = Vec::new();
     for (sel, op) in ops {
-        let (table, key, i, v) = &nums[sel % nums.len()];
+        let (table, key, i, v, element) = &nums[sel % nums.len()];
         let Some(current) = lines[*i].clone() else { continue };
         let value = current.split_once('=').map(|(_, v)| v.split('#').next().unwrap_or("").trim().to_string());
         let value = value.unwrap_or_else(|| v.clone());
+        if let Some(j) = element {
+            // One number of a list: mutated as a number (dropped from the list by `Drop`).
+            let Some(items) = number_list(&value) else { continue };
+            let Some(&x) = items.get(*j) else { continue };
+            let (new, _) = mutate(&format!("[t]\nk = {x}\n"), &[(0, op.clone())]);
+            let new = new.lines().nth(1).and_then(|l| l.strip_prefix("k = ")).map(str::to_string);
+            let mut list: Vec<String> = items.iter().map(|s| s.to_string()).collect();
+            match &new {
+                Some(n) => list[*j] = n.clone(),
+                None => {
+                    list.remove(*j);
+                }
+            }
+            what.push(format!("{table} {key}[{j}]: {x} -> {}", new.as_deref().unwrap_or("(dropped)")));
+            lines[*i] = Some(format!("{key} = [{}]", list.join(", ")));
+            continue;
+        }
         let integer = value.parse::<i64>().is_ok();
         let x: f64 = value.parse().unwrap_or(0.0);
         let new = match op {
@@ -134,7 +213,7 @@ fn mutate(text: &str, ops: &[(usize, Op)]) -> (String, Vec<String>) {
             Op::Negate if integer => Some(format!("{}", -value.parse::<i64>().unwrap())),
             Op::Negate => Some(format!("{:e}", -x)),
             Op::Zero => Some(if integer { "0".into() } else { "0.0".into() }),
-            Op::Special(s) => Some(["nan", "inf", "-inf", "5e-324", "1.7976931348623157e308"][*s].to_string()),
+            Op::Special(s) => Some(SPECIALS[*s].to_string()),
         };
         what.push(format!("{table} {key}: {value} -> {}", new.as_deref().unwrap_or("(dropped)")));
         lines[*i] = new.map(|n| format!("{key} = {n}"));
@@ -146,6 +225,15 @@ fn mutate(text: &str, ops: &[(usize, Op)]) -> (String, Vec<String>) {
 /// of a TOML type error with its text (`line 48, column 14: ... (in `life_years = nan`)`).
 fn names_a_key(msg: &str) -> bool {
     (msg.contains('[') && msg.contains(']')) || (msg.contains(" line ") && msg.contains("(in `"))
+}
+
+/// The most digits in a row a message may print: a 20-digit whole number given in the file is shown
+/// as given; a number printed in full (1e-300 written out: 300 digits) is a defect of the message.
+const MAX_DIGITS_IN_A_ROW: usize = 20;
+
+/// Whether `msg` prints a number in full (more than [`MAX_DIGITS_IN_A_ROW`] digits in a row).
+fn prints_a_long_number(msg: &str) -> bool {
+    msg.split(|c: char| !c.is_ascii_digit()).any(|d| d.len() > MAX_DIGITS_IN_A_ROW)
 }
 
 /// Refuse a non-finite number (null: serde_json's NaN) anywhere in `v`.
@@ -164,13 +252,28 @@ fn all_finite(v: &serde_json::Value) -> bool {
 fn check_in_process(name: &str, text: &str) -> Result<&'static str, String> {
     use caisson::scenario::Scenario;
     let path = examples_dir().join(name);
-    let sc = match Scenario::from_toml(text, &path, &examples_dir()) {
-        Err(e) => {
-            let msg = e.to_string();
-            return if names_a_key(&msg) { Ok("refused") } else { Err(format!("error names no key: {msg}")) };
+    let refusal = |msg: String| {
+        if !names_a_key(&msg) {
+            Err(format!("error names no key: {msg}"))
+        } else if prints_a_long_number(&msg) {
+            Err(format!("error prints a number in full: {msg}"))
+        } else {
+            Ok("refused")
         }
+    };
+    let sc = match Scenario::from_toml(text, &path, &examples_dir()) {
+        Err(e) => return refusal(e.to_string()),
         Ok(sc) => sc,
     };
+    // The tables only their command reads are refused when it asks for them.
+    let deferred = [
+        sc.has_campaign_table().then(|| sc.campaign().err()).flatten(),
+        sc.has_fragility_table().then(|| sc.fragility_for("a fragility run").err()).flatten(),
+        text.contains("\n[size]").then(|| sc.size_for("a sizing run").err()).flatten(),
+    ];
+    if let Some(e) = deferred.into_iter().flatten().next() {
+        return refusal(e.to_string());
+    }
     if let Some(load) = &sc.load {
         let duration = sc.duration_s.min(SHORT_STEPS * sc.solver().dt_s);
         let r = caisson::analysis::run::run(sc.structure(), load, duration, false)
@@ -387,6 +490,7 @@ fn check_binary(dir: &Path, cmd: &str, text: &str) -> Result<(i32, String), Stri
             }
             Ok((0, err))
         }
+        Some(_) if prints_a_long_number(&err) => Err(format!("a message prints a number in full: {err}")),
         Some(2) if err.starts_with("Error:") && names_a_key(&err) => Ok((2, err)),
         Some(c) => Err(format!("exit {c}: {err}")),
         None => Err(format!("killed by a signal (memory limit {CHILD_MEMORY_KB} KiB?): {err}")),

@@ -121,7 +121,7 @@ fn merge_refuses_overlaps_gaps_and_foreign_or_edited_shards_and_says_which() {
     let o = dir.path().join("o");
     shard(&st.file, "5..12", &o, &[]);
     let o_name = format!("shard {}", o.display());
-    let a_name = format!("shard {} (lives 0..7)", a.display());
+    let a_name = format!("shard {} (holding lives 0..7)", a.display());
     merge_refused(&st.file, &[a, &o, b, c], &out, &["life 5 is in two shards", &a_name, &o_name, "5..12"]);
     cases += 1;
     // Gaps: a missing middle shard, and a missing last one (the file's 24 lives).

@@ -175,7 +175,7 @@ impl CoreScenario {
     }
     #[getter]
     fn has_campaign(&self) -> bool {
-        self.sc.campaign.is_some()
+        self.sc.has_campaign_table()
     }
     #[getter]
     fn has_design(&self) -> bool {
@@ -658,19 +658,19 @@ fn run_load<'py>(
     if !(duration.is_finite() && duration > 0.0) {
         return Err(scenario_error(
             py,
-            format!("`duration_s` = {duration}: must be a finite number > 0 (s)"),
+            format!("`duration_s` = {}: must be a finite number > 0 (s)", caisson::fmt_value(duration)),
             Some("duration_s".into()),
-            Some(duration.to_string()),
+            Some(caisson::fmt_value(duration)),
             Some("must be a finite number > 0 (s)".into()),
         ));
     }
     sc.solver().check_run(duration).map_err(|e| {
-        let allowed = e.allowed.describe(1.0, "");
+        let (allowed, value) = (e.allowed.describe(1.0, ""), caisson::fmt_value(e.value));
         scenario_error(
             py,
-            format!("`[solver] {}` = {}: {allowed}", e.quantity, e.value),
+            format!("`[solver] {}` = {value}: {allowed}", e.quantity),
             Some(format!("[solver] {}", e.quantity)),
-            Some(e.value.to_string()),
+            Some(value),
             Some(allowed),
         )
     })?;

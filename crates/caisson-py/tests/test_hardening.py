@@ -1,4 +1,4 @@
-"""Hardening, second round (issue 21): long calls stop on Ctrl-C within a second (a design keeps
+"""Hardening, second round (issue 21) and third (issue 37): long calls stop on Ctrl-C within a second (a design keeps
 its finished lives); every entry point goes through the CLI's bounds (threads, the 1 MiB scenario,
 no FIFO or /dev/zero read for ever, the load bound of a force series, its length, the memory of
 a loads table); numpy scalars are numbers; life indices are whole numbers within `lives`; and a
@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import os
 import random
+import re
 import signal
 import threading
 import time
@@ -194,19 +195,46 @@ def _mutate(rng: random.Random, v):
     return v
 
 
+def _numbers(v) -> bool:
+    """A one-dimensional list of numbers (`significant_heights_m`, `range_m`, ...)."""
+    return isinstance(v, list) and bool(v) and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in v)
+
+
+def _bases() -> list:
+    """The fuzz's scenarios: examples, and examples with the keys they leave at their defaults
+    written out (issue 37): the foundation given directly and the reference stress, the rigid
+    block's μ and untruncated friction errors, a short fragility."""
+    t5 = load("table5_triangle.toml")
+    design = load("design_breakwater.toml")
+    return [
+        t5,
+        design,
+        load("pari_breaking_loads.toml"),
+        t5.replace(foundation={"kx_kn_per_m": 1.511e5, "ky_kn_per_m": 1.404e5, "damping_kns_per_m": 598.0, "reference_stress_kpa": 100.0}),
+        design.replace(waves={"rigid_block_mu": 0.6}, design={"error_truncated": False, "friction_cov": 0.25}),
+        load("fragility.toml").replace(fragility={"storms": 2, "significant_heights_m": [7.0, 9.0]}),
+    ]
+
+
 def test_fuzz_replace_series_and_indices():
     rng = random.Random(SEED)
-    bases = [load(n) for n in ("table5_triangle.toml", "design_breakwater.toml", "pari_breaking_loads.toml")]
+    bases = _bases()
     counts = {"ok": 0, "refused": 0, "numpy": 0}
     for _ in range(CASES):
         sc = rng.choice(bases)
         d = sc.to_dict()
         table = rng.choice([t for t, v in d.items() if isinstance(v, dict)])
-        keys = [k for k, v in d[table].items() if isinstance(v, (int, float)) and not isinstance(v, bool)]
+        keys = [k for k, v in d[table].items() if (isinstance(v, (int, float)) and not isinstance(v, bool)) or _numbers(v)]
         if not keys:
             continue
         key = rng.choice(keys)
-        value = _mutate(rng, d[table][key])
+        if _numbers(d[table][key]):
+            # One number of a list.
+            value = list(d[table][key])
+            j = rng.randrange(len(value))
+            value[j] = _mutate(rng, value[j])
+        else:
+            value = _mutate(rng, d[table][key])
         if type(value).__module__ == "numpy":
             # A numpy scalar is the number it holds: the same scenario, or the same refusal.
             assert _outcome(sc, table, key, value) == _outcome(sc, table, key, value.item()), (table, key, value)
@@ -214,7 +242,9 @@ def test_fuzz_replace_series_and_indices():
         try:
             new = sc.replace(**{table: {key: value}})
             what = rng.randrange(3)
-            if what == 0 and new.has_design:
+            if new.has_fragility and not new.has_design:
+                caisson.Fragility(new).run()
+            elif what == 0 and new.has_design:
                 caisson.Design(new, lives=3).simulate_lives(rng.choice([[0], [2, 1], range(3)]))
             elif what == 1 and new.has_waves:
                 caisson.loads.evaluate(new, rng.choice([[0.1], np.geomspace(1e-3, 1e3, 7), [5e-324]]))
@@ -227,6 +257,8 @@ def test_fuzz_replace_series_and_indices():
         except (caisson.ScenarioError, caisson.RunError, ValueError, TypeError) as e:
             assert str(e), f"an empty message for {table}.{key}"
             assert "panick" not in str(e).lower(), str(e)
+            # No number printed in full (a message of 1e-300 written out has 300 digits).
+            assert max((len(r) for r in re.findall(r"[0-9]+", str(e))), default=0) <= 20, str(e)
             counts["refused"] += 1
     assert counts["ok"] + counts["refused"] >= CASES * 0.9, counts
     assert counts["ok"] > 0 and counts["refused"] > 0 and counts["numpy"] > 0, counts
@@ -238,3 +270,77 @@ def _outcome(sc, table, key, value):
         return sc.replace(**{table: {key: value}}).to_toml()
     except (caisson.ScenarioError, ValueError, TypeError) as e:
         return f"{type(e).__name__}: {e}"
+
+
+# Issue 37 (hardening, third round): Python refuses what the CLI refuses.
+
+
+def test_statistics_refuse_lives_another_design_simulated():
+    """`caisson merge` refuses a shard of another scenario; `Design.statistics` took lives of
+    another seed or another caisson (E|S| 1.11 m instead of 0.258 m). Each frame names its design."""
+    sc = load("design_breakwater.toml")
+    d = caisson.Design(sc, lives=3)
+    ours = d.simulate_lives()
+    assert ours.attrs[caisson.LIVES_OF] == {"fingerprint": d.fingerprint, "results_version": caisson.RESULTS_VERSION}
+    assert d.statistics(ours).lives == 3
+    for other in (sc.replace(design={"seed": 2}), sc.replace(caisson={"width_m": 16.0})):
+        foreign = caisson.Design(other, lives=3).simulate_lives()
+        with pytest.raises(ValueError, match=r"^the lives were simulated by another design \(fingerprint "):
+            d.statistics(foreign)
+        with pytest.raises(ValueError, match=r"^shard 1 \(of 2\) was simulated by another design"):
+            d.statistics([ours.iloc[:2], foreign.iloc[2:]])
+    # A frame built by hand (or read from lives.csv) names no design.
+    with pytest.raises(ValueError, match=r"^the lives name no design"):
+        d.statistics(ours.copy().pipe(lambda f: f.__class__(f.to_dict("list"))))
+    stamped = ours.copy()
+    stamped.attrs[caisson.LIVES_OF] = {"fingerprint": d.fingerprint, "results_version": caisson.RESULTS_VERSION - 1}
+    with pytest.raises(ValueError, match=r"^the lives are of results version"):
+        d.statistics(stamped)
+    # Pickled (a Dask or Ray worker's), filtered and concatenated lives keep their design.
+    import pickle
+
+    again = pickle.loads(pickle.dumps(ours))
+    assert d.statistics([again.iloc[:1], again.iloc[1:]]).lives == 3
+
+
+def test_replace_with_a_table_that_is_not_a_dict_is_a_type_error():
+    sc = load("table5_triangle.toml")
+    with pytest.raises(TypeError, match=r"^`caisson` = 'x': must be a dict of the table's keys"):
+        sc.replace(caisson="x")
+    with pytest.raises(TypeError, match=r"`design` = \[1, 2\]"):
+        sc.replace(design=[1, 2])
+
+
+def test_a_tiny_duration_is_refused_in_short_numbers():
+    """`caisson.run(sc, duration_s=5e-324)`: the message held the duration in 320 digits."""
+    sc = load("table5_triangle.toml")
+    with pytest.raises(caisson.ScenarioError) as e:
+        caisson.run(sc, duration_s=5e-324)
+    assert "5e-324" in str(e.value) and len(str(e.value)) < 120, str(e.value)
+    with pytest.raises(caisson.ScenarioError) as e:
+        sc.replace(solver={"dt_s": 1e-300})
+    assert max(len(r) for r in re.findall(r"[0-9]+", str(e.value))) <= 20, str(e.value)
+
+
+def test_the_foundation_and_storm_bounds_are_the_cli_s():
+    t5 = load("table5_triangle.toml")
+    for key, value in [("ky_kn_per_m", 1e-200), ("kx_kn_per_m", 5e-324), ("damping_kns_per_m", 1e300), ("reference_stress_kpa", 1e-300)]:
+        with pytest.raises(caisson.ScenarioError) as e:
+            t5.replace(foundation={key: value})
+        assert e.value.key == f"[foundation] {key}", str(e.value)
+    design = load("design_breakwater.toml")
+    with pytest.raises(caisson.ScenarioError) as e:
+        design.replace(design={"storm_shape": 0.12})
+    assert e.value.key == "[design] storm_shape"
+    with pytest.raises(caisson.ScenarioError) as e:
+        design.replace(waves={"rigid_block_mu": 6e-301})
+    assert e.value.key == "[waves] rigid_block_mu"
+
+
+def test_untruncated_friction_errors_give_finite_lives():
+    """Item 1: a friction multiplier drawn ≤ 0 gave the rigid block μ = 0 and an infinite slide:
+    life 4278 of the design example with `error_truncated = false` and `friction_cov = 0.25`."""
+    sc = load("design_breakwater.toml").replace(design={"error_truncated": False, "friction_cov": 0.25})
+    lives = caisson.Design(sc).simulate_lives([4278])
+    assert np.isfinite(lives.drop(columns="life").to_numpy(dtype=float)).all()
+    assert lives["rigid_block_sliding_m"].iloc[0] > 1e3

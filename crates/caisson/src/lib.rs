@@ -52,6 +52,10 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// results of different versions are never mixed.
 pub const RESULTS_VERSION: u32 = 23;
 
+/// The largest magnitude of a number in a scenario file or a force series: beyond it a value in
+/// kN or kPa overflows to infinity once converted to SI, and the messages could only say `inf`.
+pub const MAX_MAGNITUDE: f64 = 1e300;
+
 /// Most worker threads a parallel driver may be given (the CLI's `--threads`, the Python
 /// `threads=`; 0 means one per core): more only costs memory and start-up time.
 pub const MAX_THREADS: usize = 256;
@@ -89,11 +93,39 @@ impl Profile {
     }
 }
 
+/// A value as a message shows it: its shortest decimal from 10⁻⁴ to 10⁶ (where that is at most
+/// 16 characters), and from 10⁶ to 10¹⁵ where that is no longer than its scientific notation;
+/// else in scientific notation (1e-9, 1e9, 5e-324 and 8.24e200, not rows of zeros or hundreds of
+/// digits). Every digit of the value is kept. `inf` and `NaN` as Rust writes them.
+pub fn fmt_value(v: f64) -> String {
+    let (s, e) = (v.to_string(), format!("{v:e}"));
+    let a = v.abs();
+    let decimal = !v.is_finite()
+        || v == 0.0
+        || ((1e-4..1e6).contains(&a) && s.len() <= 16)
+        || ((1e6..1e15).contains(&a) && s.len() <= e.len());
+    if decimal {
+        s
+    } else {
+        e
+    }
+}
+
+/// A number a message computes (a bound from other values, a product of units) as it prints
+/// it: [`fmt_value`] of the number rounded to 12 significant digits, so that the rounding of the
+/// computation does not show (3.071000000000001e-6 is 3.071e-6, 0.30000000000000004 is 0.3).
+pub fn fmt_number(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return v.to_string();
+    }
+    fmt_value(format!("{v:.11e}").parse().unwrap_or(v))
+}
+
 /// A parameter outside what the model allows: the quantity (as named in its parameter type, SI
 /// units), its value and what is allowed. The [`scenario`] module reports it under the name of
 /// the file key, in the key's unit.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{quantity} = {value}: {}", allowed.describe(1.0, ""))]
+#[error("{quantity} = {}: {}", fmt_value(*value), allowed.describe(1.0, ""))]
 pub struct ParamError {
     pub quantity: &'static str,
     pub value: f64,
@@ -115,6 +147,9 @@ pub enum Allowed {
     PositiveUpTo { hi: f64 },
     /// A finite number above `lo` (or at least `lo`, when `lo_open` is false) and at most `hi`.
     Interval { lo: f64, hi: f64, lo_open: bool },
+    /// A finite number from `lo` · `per` to `hi` · `per`, both included: from `lo` to `hi` per
+    /// unit of `of` (a total of a caisson `per` metres long, say).
+    Per { lo: f64, hi: f64, per: f64, of: &'static str },
     /// A whole number from `lo` to `hi`.
     Count { lo: u64, hi: u64 },
     /// A rule in words (its numbers in SI units).
@@ -126,15 +161,19 @@ impl Allowed {
     /// file key, e.g. kN for a force given in N here).
     pub fn describe(&self, scale: f64, unit: &str) -> String {
         let u = if unit.is_empty() { String::new() } else { format!(" ({unit})") };
+        let n = |v: f64| fmt_number(v * scale);
         match self {
             Allowed::Finite => "must be a finite number".to_string(),
             Allowed::Positive => format!("must be a finite number > 0{u}"),
             Allowed::NonNegative => format!("must be a finite number ≥ 0{u}"),
-            Allowed::Between { lo, hi } => format!("must be between {} and {}{u}", lo * scale, hi * scale),
-            Allowed::PositiveUpTo { hi } => format!("must be a finite number > 0 and at most {}{u}", hi * scale),
+            Allowed::Between { lo, hi } => format!("must be between {} and {}{u}", n(*lo), n(*hi)),
+            Allowed::PositiveUpTo { hi } => format!("must be a finite number > 0 and at most {}{u}", n(*hi)),
             Allowed::Interval { lo, hi, lo_open } => {
                 let low = if *lo_open { ">" } else { "≥" };
-                format!("must be a finite number {low} {} and ≤ {}{u}", lo * scale, hi * scale)
+                format!("must be a finite number {low} {} and ≤ {}{u}", n(*lo), n(*hi))
+            }
+            Allowed::Per { lo, hi, per, of } => {
+                format!("must be between {} and {}{u}: {} to {} per {of}", n(lo * per), n(hi * per), n(*lo), n(*hi))
             }
             Allowed::Count { lo, hi } => format!("must be a whole number from {lo} to {hi}"),
             Allowed::Rule(s) => s.clone(),
@@ -178,6 +217,20 @@ pub(crate) mod check {
             Ok(v)
         } else {
             Err(fail(quantity, v, Allowed::Between { lo, hi }))
+        }
+    }
+    /// A finite number from `lo` · `per` to `hi` · `per` ([`Allowed::Per`]).
+    pub(crate) fn between_per(
+        quantity: &'static str,
+        v: f64,
+        (lo, hi): (f64, f64),
+        per: f64,
+        of: &'static str,
+    ) -> Result<f64, ParamError> {
+        if v.is_finite() && v >= lo * per && v <= hi * per {
+            Ok(v)
+        } else {
+            Err(fail(quantity, v, Allowed::Per { lo, hi, per, of }))
         }
     }
     pub(crate) fn positive_up_to(quantity: &'static str, v: f64, hi: f64) -> Result<f64, ParamError> {

@@ -134,9 +134,11 @@ fn incomplete_or_misfit_constructions_name_their_key() {
     assert!(e.to_string().contains("floats"), "{e}");
 }
 
+/// A campaign gives each condition's weight in water, which would replace the construction: the
+/// campaign refuses it (the scenario's other commands do not read `[campaign]`).
 #[test]
 fn a_campaign_that_sets_weights_refuses_a_construction() {
     let text = format!("{EXAMPLE}\n[campaign]\nheights_m = [6.0]\nweights_in_water_kn = [5000.0]\n");
-    let msg = parse(&text).unwrap_err().to_string();
+    let msg = parse(&text).unwrap().campaign().unwrap_err().to_string();
     assert!(msg.contains("[campaign]") && msg.contains("[caisson]") && msg.contains("wall_thickness_m"), "{msg}");
 }

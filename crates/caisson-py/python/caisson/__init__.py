@@ -62,6 +62,7 @@ __all__ = [
     "waves",
     "__version__",
     "RESULTS_VERSION",
+    "LIVES_OF",
 ]
 
 __version__: str = _core.VERSION
@@ -136,6 +137,11 @@ class Scenario:
             if keys is None:
                 d.pop(table, None)
                 continue
+            if not isinstance(keys, Mapping):
+                raise TypeError(
+                    f"`{table}` = {keys!r}: must be a dict of the table's keys and values "
+                    f"(replace({table}={{'key': value}})), or None to remove the table"
+                )
             t = dict(d.get(table, {}))
             for k, v in keys.items():
                 if v is None:
@@ -449,6 +455,15 @@ BUDGET: dict = dict(json.loads(_core.budget_json()))
 
 _LIFE_COLUMNS = tuple(_core.life_columns())
 
+#: The key of ``DataFrame.attrs`` that names the design a frame of lives was simulated by (its
+#: fingerprint and results version): ``Design.statistics`` joins only lives of its own design, as
+#: ``caisson merge`` joins only shards of its scenario.
+LIVES_OF = "caisson_design"
+
+
+def _lives_of(design: "Design") -> dict:
+    return {"fingerprint": design.fingerprint, "results_version": RESULTS_VERSION}
+
 
 class Design:
     """Performance-based design (``caisson design``, docs/design.md): lives of the scenario's
@@ -506,9 +521,15 @@ class Design:
         except KeyboardInterrupt as e:
             # The lives finished before Ctrl-C, as the CLI keeps them in its checkpoint.
             if isinstance(getattr(e, "lives", None), dict):
-                e.lives = pd.DataFrame(e.lives)
+                e.lives = self._frame(e.lives)
             raise
-        return pd.DataFrame(cols)
+        return self._frame(cols)
+
+    def _frame(self, cols: dict) -> pd.DataFrame:
+        """Lives as a DataFrame that names this design (``attrs[LIVES_OF]``)."""
+        frame = pd.DataFrame(cols)
+        frame.attrs[LIVES_OF] = _lives_of(self)
+        return frame
 
     def _indices(self, indices: Any) -> list:
         """Life indices as a list of ints: whole numbers from 0 to lives − 1, each once."""
@@ -536,16 +557,41 @@ class Design:
         0 .. N − 1 are exactly those of ``caisson design`` with N lives. Raises ``ValueError``
         for a life given twice, a missing column (``life`` and those of ``lives.csv``), no lives,
         a non-finite length or a count that is not a whole number ≥ 0, and a gap (lives 0 .. N − 1 must all
-        be given, N − 1 the largest life given: the rule of ``caisson merge``)."""
+        be given, N − 1 the largest life given: the rule of ``caisson merge``), and for lives of
+        another design: each frame names the design that simulated it (``attrs[caisson.LIVES_OF]``,
+        set by :meth:`simulate_lives`, ``read_checkpoint``, ``resume`` and ``merge``), which must
+        be this one (its fingerprint and results version), as ``caisson merge`` refuses a shard of
+        another scenario."""
         frames = [lives] if isinstance(lives, pd.DataFrame) else list(lives)
         need = ("life",) + _LIFE_COLUMNS
+        ours = _lives_of(self)
         for k, f in enumerate(frames):
             if not isinstance(f, pd.DataFrame):
                 raise TypeError(f"the lives must be DataFrames of simulate_lives, got {type(f).__name__}")
+            one = len(frames) == 1
+            whose = "the lives" if one else f"shard {k} (of {len(frames)})"
+            has, names, are, were = ("have", "name", "are", "were") if one else ("has", "names", "is", "was")
             missing = [c for c in need if c not in f.columns]
             if missing:
-                which = "the lives have" if len(frames) == 1 else f"shard {k} (of {len(frames)}) has"
-                raise ValueError(f"{which} no column {missing[0]!r} (the lives need {', '.join(need)})")
+                raise ValueError(f"{whose} {has} no column {missing[0]!r} (the lives need {', '.join(need)})")
+            theirs = f.attrs.get(LIVES_OF)
+            if not isinstance(theirs, dict):
+                raise ValueError(
+                    f"{whose} {names} no design (DataFrame.attrs[{LIVES_OF!r}]): give lives that simulate_lives, "
+                    "read_checkpoint, resume or merge of this Design returned (a frame built by hand, or "
+                    "concatenated from lives of different designs, names none)"
+                )
+            if theirs.get("results_version") != ours["results_version"]:
+                raise ValueError(
+                    f"{whose} {are} of results version {theirs.get('results_version')}, this caisson computes "
+                    f"results version {ours['results_version']}: the lives would not match"
+                )
+            if theirs.get("fingerprint") != ours["fingerprint"]:
+                raise ValueError(
+                    f"{whose} {were} simulated by another design (fingerprint {theirs.get('fingerprint')}, this "
+                    f"design {ours['fingerprint']}: the caisson, foundation, solver, waves, [design] life model "
+                    "or seed differ), as `caisson merge` refuses a shard of another scenario"
+                )
         frame = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=list(need))
         if len(frame) == 0:
             raise ValueError("no lives given: the statistics need at least one life (a DataFrame of simulate_lives)")

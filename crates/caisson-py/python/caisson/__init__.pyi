@@ -16,6 +16,7 @@ from .results import (
 
 __version__: str
 RESULTS_VERSION: int
+LIVES_OF: str
 
 Progress = Optional[Callable[[int, int], Any]]
 

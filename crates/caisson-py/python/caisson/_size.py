@@ -57,7 +57,7 @@ def read_checkpoint(design, path: PathLike) -> pd.DataFrame:
     a life given twice. A last line cut short (the run was stopped while writing it) is left out."""
     name, data = _checkpoint_bytes(path)
     cols = _core.read_design_checkpoint(design.scenario._core, name, data)
-    return pd.DataFrame(cols)
+    return design._frame(cols)
 
 
 def resume(design, path: PathLike, *, threads: int = 1, progress: Progress = None) -> tuple:
@@ -83,4 +83,4 @@ def merge(design, shards: Sequence[PathLike]) -> tuple:
     lives). Returns (:class:`DesignStatistics`, lives DataFrame): what ``caisson merge`` writes."""
     files = [_checkpoint_bytes(s) for s in shards]
     text, cols = _core.merge_checkpoints(design.scenario._core, files, design.lives)
-    return DesignStatistics.of(json.loads(text)), pd.DataFrame(cols)
+    return DesignStatistics.of(json.loads(text)), design._frame(cols)

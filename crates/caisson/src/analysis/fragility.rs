@@ -84,7 +84,7 @@ use super::conventional::DesignWave;
 use super::lifetime::{failure_rotation_rad, simulate_storm, StormCase, StormError, StormInput, StormOutcome};
 use super::Progress;
 use crate::check::{self, count, interval};
-use crate::loads::model::WaveLoadModel;
+use crate::loads::model::{WaveLoadModel, MIN_LENGTH_M, MIN_PERIOD_S};
 use crate::loads::risetime::LoadRng;
 use crate::waves::breaking::MICHE_STEEPNESS;
 use crate::waves::dispersion::deep_water_wavelength_m;
@@ -298,22 +298,32 @@ pub fn fit_lognormal(im: &[f64], k: &[u64], n: &[u64]) -> Result<LognormalFit, F
 
 /// A non-empty, strictly increasing list of at most [`MAX_LEVELS`] finite numbers in (0, `hi`)
 /// (`unit`: the words after the bound).
-fn increasing(quantity: &'static str, v: &[f64], hi: f64, unit: &str) -> Result<(), FragilityParamError> {
+/// A list of 1 to [`MAX_LEVELS`] increasing values, each from `lo` (above it with `lo_open`, else
+/// at least it) to below `hi` (shown as `hi_shown`); `unit`: the unit and what the upper bound is.
+fn increasing(
+    quantity: &'static str,
+    v: &[f64],
+    (lo, lo_open): (f64, bool),
+    (hi, hi_shown): (f64, &str),
+    unit: &str,
+) -> Result<(), FragilityParamError> {
     if v.is_empty() {
         return Err(FragilityParamError::Empty { quantity });
     }
     if v.len() > MAX_LEVELS {
         return Err(FragilityParamError::TooMany { quantity, count: v.len() });
     }
+    let low = if lo_open { ">" } else { "≥" };
     for (index, &x) in v.iter().enumerate() {
         let at = |words: String| FragilityParamError::Element { index, error: check::rule(quantity, x, words) };
-        if !(x.is_finite() && x > 0.0 && x < hi) {
-            return Err(at(format!("must be a finite number > 0 and < {hi} ({unit})")));
+        if !(x.is_finite() && (if lo_open { x > lo } else { x >= lo }) && x < hi) {
+            let lo = crate::fmt_number(lo);
+            return Err(at(format!("must be a finite number {low} {lo} and < {hi_shown} ({unit})")));
         }
         if index > 0 && x <= v[index - 1] {
             return Err(at(format!(
                 "must be larger than the value before it ({}): the list must increase",
-                v[index - 1]
+                crate::fmt_value(v[index - 1])
             )));
         }
     }
@@ -364,23 +374,23 @@ pub enum FragilityParamError {
     #[error("{quantity} has {count} values: at most {MAX_LEVELS}")]
     TooMany { quantity: &'static str, count: usize },
     /// The element `index` of the list `error.quantity`.
-    #[error("{}[{index}] = {}: {}", error.quantity, error.value, error.allowed.describe(1.0, ""))]
+    #[error("{}[{index}] = {}: {}", error.quantity, crate::fmt_value(error.value), error.allowed.describe(1.0, ""))]
     Element { index: usize, error: ParamError },
 }
 
 impl FragilityParams {
-    /// The storms if in range: a period in (0, 1000] s; 1 to [`MAX_LEVELS`] heights, increasing,
-    /// each above 0 and below Miche's deep-water limit 0.142 L0 at that period (as `[waves]
-    /// significant_height_m`); 1 to [`MAX_LEVELS`] limits, increasing, above 0 and below 1 km; 1
+    /// The storms if in range: a period from [`MIN_PERIOD_S`] to 1000 s; 1 to [`MAX_LEVELS`]
+    /// heights, increasing, each from [`MIN_LENGTH_M`] to below Miche's deep-water limit 0.142 L0
+    /// at that period (as `[waves] period_s` and `significant_height_m`); 1 to [`MAX_LEVELS`] limits, increasing, above 0 and below 1 km; 1
     /// to [`MAX_STORMS_PER_HEIGHT`] storms a height and at most [`MAX_STORMS`] in all; a duration
     /// in (0, [`MAX_STORM_DURATION_S`]]; the failure rotation
     /// ([`super::lifetime::failure_rotation_rad`]) and the climate's choices (their `checked`).
     pub fn checked(self) -> Result<Self, FragilityParamError> {
-        interval("period_s", self.period_s, 0.0, 1e3, true)?;
+        interval("period_s", self.period_s, MIN_PERIOD_S, 1e3, false)?;
         let limit = MICHE_STEEPNESS * deep_water_wavelength_m(self.period_s);
-        let words = format!("m; below 0.142 L0 = {limit:.3} m for T = {} s", self.period_s);
-        increasing("heights_m", &self.heights_m, limit, &words)?;
-        increasing("limits_m", &self.limits_m, 1e3, "m")?;
+        let words = format!("m; 0.142 L0 for T = {} s", crate::fmt_value(self.period_s));
+        increasing("heights_m", &self.heights_m, (MIN_LENGTH_M, false), (limit, &format!("{limit:.3}")), &words)?;
+        increasing("limits_m", &self.limits_m, (0.0, true), (1e3, "1000"), "m")?;
         count("storms", self.storms, 1, MAX_STORMS_PER_HEIGHT as u64)?;
         let all = self.storms.saturating_mul(self.heights_m.len());
         if all > MAX_STORMS {

@@ -12,8 +12,9 @@
 //! 2. period T1/3 = a H0^b (Goda & Takagi: a = 3.3, b = 0.63) and N = duration / T1/3 waves;
 //! 3. tide at the peak ζ = (R/2)(1 + cos φ), φ uniform: every depth (toe, wall, base) grows by ζ,
 //!    the crest freeboard shrinks by ζ, and the weight in water falls by ρ_w g B l ζ (the caisson
-//!    is more submerged); the foundation stiffness and the added mass stay at their still-water
-//!    values (a simplification);
+//!    is more submerged); the foundation stiffness and the dynamic model's added mass stay at
+//!    their still-water values (a simplification), while the rigid block's added mass, 1.0855
+//!    ρ_w h'² l ([`super::rigid`]), is that of the storm's base depth h' + ζ;
 //! 4. H1/3 and H_max at the structure by Goda's surf-zone formulas at the toe depth
 //!    ([`crate::waves::surf_zone`]), times the transformation error;
 //! 5. N Rayleigh heights of that H1/3, each limited to H_max (Goda's random-wave breaking), each
@@ -133,7 +134,13 @@
 //! the wave that fails it: the dynamic model runs no further wave of that storm or the later
 //! ones (counted as screened: not run through it), and its outputs stay as they were at the
 //! failure. The rigid block reference runs the whole life on (its loads only, no dynamic
-//! model), so its statistics do not depend on where the dynamic model failed. The headline
+//! model), so its statistics do not depend on where the dynamic model failed. The engine does
+//! not follow a caisson that overturns or slides away: a wave whose run does not converge (after
+//! its bounded sub-steps) once it has rotated the caisson beyond [`ROCKING_LIMIT_RAD`] or moved it
+//! beyond the sliding limit ends at its last converged step, with the slip and the largest
+//! rotation the engine had reached (a slender caisson rocking over, a storm far beyond the
+//! site's climate); the life then fails by the usual tests, and the wave counts (and is warned
+//! about) as a large rotation. Any other failure to converge is an error of the run. The headline
 //! statistics ([`capped_statistics`]) put a failed life at the sliding limit; the means of the
 //! simulated values (`expected_sliding_uncapped_m`) are those of lives that stop at failure,
 //! unless `[design] continue_after_failure = true` runs every life to its end (as the
@@ -162,7 +169,7 @@ use super::stick_bound::{AtPeriod, StickBound};
 use super::Structure;
 use crate::check::{self, count, interval};
 use crate::dynamics::{Model, Observer, Simulation, SolveError, StepView};
-use crate::foundation::Foundation;
+use crate::foundation::{Foundation, MIN_FRICTION};
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
 use crate::loads::model::{PeakComponents, PeriodLoads, WaveLoadModel};
@@ -193,6 +200,12 @@ pub enum StormDistribution {
     Gumbel { location_m: f64, scale_m: f64 },
 }
 
+/// The largest 10 000-year deep-water H1/3 a storm distribution may give, m: five times the
+/// largest significant wave height measured at sea (about 19 m, North Atlantic, 2013). A fit
+/// whose tail passes it (a Weibull shape of 0.12 puts the 50-year storm near 10⁵ m, with periods
+/// of a quarter of an hour and heights at the wall of a kilometre) is a slip, not a climate.
+pub const MAX_STORM_HEIGHT_M: f64 = 100.0;
+
 impl StormDistribution {
     /// A Weibull distribution of annual maxima: scale A in (0, 100] m, shape k from 0.1 to 20,
     /// location B from 0 to 100 m; refused naming the quantity.
@@ -206,18 +219,33 @@ impl StormDistribution {
         StormDistribution::Gumbel { location_m, scale_m }.checked()
     }
 
-    /// The distribution if its parameters are in range ([`Self::weibull`], [`Self::gumbel`]).
+    /// The distribution if its parameters are in range ([`Self::weibull`], [`Self::gumbel`]) and
+    /// its 10 000-year height F⁻¹(1 − 10⁻⁴) is at most [`MAX_STORM_HEIGHT_M`] (refused naming
+    /// the shape of a Weibull distribution, the scale of a Gumbel one).
     pub fn checked(self) -> Result<Self, ParamError> {
-        match self {
+        let tail = match self {
             StormDistribution::Weibull { scale_m, shape, location_m } => {
                 interval("scale_m", scale_m, 0.0, 100.0, true)?;
                 interval("shape", shape, 0.1, 20.0, false)?;
                 interval("location_m", location_m, 0.0, 100.0, false)?;
+                ("shape", shape)
             }
             StormDistribution::Gumbel { location_m, scale_m } => {
                 interval("location_m", location_m, 0.0, 100.0, true)?;
                 interval("scale_m", scale_m, 0.0, 100.0, true)?;
+                ("scale_m", scale_m)
             }
+        };
+        let h = self.quantile_m(1.0 - 1e-4);
+        if h.is_nan() || h > MAX_STORM_HEIGHT_M {
+            return Err(check::rule(
+                tail.0,
+                tail.1,
+                format!(
+                    "gives a 10 000-year storm (F⁻¹(1 − 10⁻⁴)) of {} m, where at most {MAX_STORM_HEIGHT_M} m is allowed (the largest significant wave height measured at sea is about 19 m): check the distribution's parameters",
+                    if h < 1e6 { format!("{h:.1}") } else { format!("{h:.2e}") }
+                ),
+            ));
         }
         Ok(self)
     }
@@ -807,6 +835,27 @@ pub enum StormError {
     /// model's range that validation did not catch).
     #[error("a wave of height {height_m} m and period {period_s} s has no valid load history: {source}")]
     Wave { height_m: f64, period_s: f64, source: TrainError },
+    /// An outcome that is not a finite number: no valid scenario gives one (the inputs and each
+    /// storm's draws are bounded where they enter), and no file is written with it.
+    #[error("its {column} is {value}, which no valid scenario gives: please report it with the scenario")]
+    NonFinite { column: &'static str, value: f64 },
+}
+
+impl StormOutcome {
+    /// `Ok` if every column is a finite number, else the first that is not
+    /// ([`StormError::NonFinite`]).
+    fn finite(self) -> Result<Self, StormError> {
+        for (column, c) in LIFE_COLUMNS {
+            let value = match c {
+                LifeColumn::Metres(f) | LifeColumn::Radians(f) => f(&self),
+                LifeColumn::Count(_) => continue,
+            };
+            if !value.is_finite() {
+                return Err(StormError::NonFinite { column, value });
+            }
+        }
+        Ok(self)
+    }
 }
 
 /// What the screen's bound reads of the dynamic model ([`StormSite::bound`]): the same at every
@@ -865,10 +914,13 @@ impl StormSite {
         let mut caisson = st.structure.caisson;
         caisson.base_depth_m += s.tide_m;
         caisson.weight_in_water_n -= model.site.rho_w * G_M_PER_S2 * caisson.width_m * caisson.length_m * s.tide_m;
+        // The friction error can draw a multiplier of 0 (untruncated errors): each coefficient is
+        // at least the least the model takes, and the caisson then slides beyond the failure limit.
+        let friction = |mu: f64| (mu * s.friction_factor).max(MIN_FRICTION);
         let mut foundation = st.structure.foundation.clone();
-        foundation.mu_static *= s.friction_factor;
-        foundation.mu_dynamic *= s.friction_factor;
-        let block = RigidBlock::new(&caisson, model.site.rho_w, st.rigid_block_mu * s.friction_factor);
+        foundation.mu_static = friction(foundation.mu_static);
+        foundation.mu_dynamic = friction(foundation.mu_dynamic);
+        let block = RigidBlock::new(&caisson, model.site.rho_w, friction(st.rigid_block_mu));
         StormSite {
             weight_n: caisson.weight_in_water_n,
             mu: foundation.mu_static.min(block.mu_static),
@@ -1197,7 +1249,17 @@ impl WaveRun<'_> {
             None => self.sim.insert(Simulation::new(site.dyn_model().clone(), st.structure.solver, &*train)),
         };
         let mut watch = WaveWatch::default();
-        sim.run_until(period_s, &*train, &mut watch)?;
+        if let Err(e) = sim.run_until(period_s, &*train, &mut watch) {
+            // The engine does not follow a caisson that overturns or slides away (module docs,
+            // "Failure"): a wave it cannot integrate past the model's limits ends at its last
+            // converged step.
+            let beyond_sliding = st
+                .failure
+                .is_some_and(|f| (self.start_m + out.sliding_m + permanent_sliding_m(sim)).abs() > f.sliding_m);
+            if !(watch.max_rotation_rad > ROCKING_LIMIT_RAD || beyond_sliding) {
+                return Err(e.into());
+            }
+        }
         let slide = permanent_sliding_m(sim);
         out.sliding_m += slide;
         if slide >= 0.0 {
@@ -1278,7 +1340,7 @@ fn storm_from(
     }
     run.settle_rotation(&mut out)?;
     out.max_storm_sliding_m = out.sliding_m;
-    Ok(out)
+    out.finite()
 }
 
 /// The smallest and largest height of a storm's waves, m: a thousandth of H1/3, and H_max.
@@ -1396,7 +1458,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
         }
     }
     settle_life(st, &mut scratch, &mut life)?;
-    Ok(life)
+    life.finite()
 }
 
 /// Run the still waves of the life's storms whose rotation bound may exceed the life's largest
@@ -1920,12 +1982,14 @@ mod tests {
     }
 
     /// Each constructor refuses a value outside its range by itself, naming the quantity: the
-    /// ranges' ends are allowed (B = 0 m and k = 0.1 for a Weibull, 1000 years, 72 h, 20 m of
-    /// tide), the values just beyond them are not.
+    /// ranges' ends are allowed (B = 0 m and k = 0.1 for a Weibull whose 10 000-year storm stays
+    /// within [`MAX_STORM_HEIGHT_M`], 1000 years, 72 h, 20 m of tide), the values just beyond them
+    /// are not.
     #[test]
     fn life_constructors_name_what_they_refuse() {
         let q = |r: Result<StormDistribution, ParamError>| r.unwrap_err().quantity;
-        assert!(StormDistribution::weibull(100.0, 0.1, 0.0).is_ok() && StormDistribution::gumbel(100.0, 1.0).is_ok());
+        assert!(StormDistribution::weibull(1e-10, 0.1, 0.0).is_ok() && StormDistribution::gumbel(90.0, 1.0).is_ok());
+        assert!(StormDistribution::weibull(80.0, 20.0, 0.0).is_ok());
         assert_eq!(q(StormDistribution::weibull(0.0, 1.4, 0.0)), "scale_m");
         assert_eq!(q(StormDistribution::weibull(1.5, 0.09, 0.0)), "shape");
         assert_eq!(q(StormDistribution::weibull(1.5, 1.4, -0.1)), "location_m");

@@ -2,8 +2,8 @@
 //! the trains drawn from it and the friction coefficient of the rigid-block reference
 //! ([`super::rigid`]). A model piece: it imports no driver.
 
-use crate::check::interval;
-use crate::foundation::Foundation;
+use crate::check::between;
+use crate::foundation::{Foundation, MIN_FRICTION};
 use crate::loads::generator::TrainSpec;
 use crate::loads::model::{WaveLoadModel, WaveParamError, WaveSite};
 use crate::loads::regime::RegimeChoice;
@@ -24,7 +24,7 @@ impl WaveSetup {
     /// period and height ([`TrainSpec::checked`]), the load options
     /// ([`crate::loads::model::WaveLoadOptions::checked`]), the trains' counts and variability, a
     /// forced regime that the breaking criterion allows at the trains' height, and the
-    /// rigid-block μ in (0, 2].
+    /// rigid-block μ from [`MIN_FRICTION`] to 2.
     pub fn new(model: WaveLoadModel, train: TrainSpec, rigid_block_mu: Option<f64>) -> Result<Self, WaveParamError> {
         model.site.checked()?;
         train.checked_wave()?;
@@ -33,7 +33,7 @@ impl WaveSetup {
         // A forced regime must agree with the breaking criterion (non-breaking above the limit).
         model.evaluate(train.height_m(), train.period_s)?;
         if let Some(mu) = rigid_block_mu {
-            interval("rigid_block_mu", mu, 0.0, 2.0, true)?;
+            between("rigid_block_mu", mu, MIN_FRICTION, 2.0)?;
         }
         Ok(WaveSetup { model, train, rigid_block_mu })
     }

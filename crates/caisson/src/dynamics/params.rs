@@ -122,6 +122,10 @@ impl Default for SolverParams {
 /// simulated time over its first step `dt_s` (docs/scenario.md).
 pub const MAX_FIXED_STEPS: f64 = 1e9;
 
+/// The shortest adaptive step `dt_min_s`, s, and so the shortest first step `dt_s` of adaptive
+/// stepping.
+pub const MIN_ADAPTIVE_DT_S: f64 = 1e-9;
+
 /// The longest time step `dt_s`, s (as `dt_max_s` of adaptive stepping): a longer one cannot
 /// follow a caisson's response, and far longer ones (1e156 s) lose the time itself to rounding.
 pub const MAX_DT_S: f64 = 1.0;
@@ -148,14 +152,30 @@ impl SolverParams {
     /// the tolerance from 1e-12 to 1e-3 m.
     pub fn with_adaptive(mut self, p: AdaptiveParams) -> Result<Self, ParamError> {
         let dt = self.dt_s;
-        if !(p.dt_max_s.is_finite() && p.dt_max_s >= dt && p.dt_max_s <= 1.0) {
-            return Err(rule("dt_max_s", p.dt_max_s, format!("must be between {dt} and 1 (s, from dt_s to 1 s)")));
+        // The first step is an adaptive step: at least the shortest one dt_min_s may be.
+        if dt < MIN_ADAPTIVE_DT_S {
+            return Err(rule(
+                "dt_s",
+                dt,
+                format!("must be at least {} (s) with adaptive stepping: the shortest adaptive step (dt_min_s) is at least that", crate::fmt_value(MIN_ADAPTIVE_DT_S)),
+            ));
         }
-        if !(p.dt_min_s.is_finite() && p.dt_min_s >= 1e-9 && p.dt_min_s <= dt) {
+        let dt_shown = crate::fmt_value(dt);
+        if !(p.dt_max_s.is_finite() && p.dt_max_s >= dt && p.dt_max_s <= 1.0) {
+            return Err(rule(
+                "dt_max_s",
+                p.dt_max_s,
+                format!("must be between {dt_shown} and 1 (s, from dt_s to 1 s)"),
+            ));
+        }
+        if !(p.dt_min_s.is_finite() && p.dt_min_s >= MIN_ADAPTIVE_DT_S && p.dt_min_s <= dt) {
             return Err(rule(
                 "dt_min_s",
                 p.dt_min_s,
-                format!("must be between 1e-9 and {dt} (s, from 1e-9 s to dt_s)"),
+                format!(
+                    "must be between {} and {dt_shown} (s, from {0} s to dt_s)",
+                    crate::fmt_value(MIN_ADAPTIVE_DT_S)
+                ),
             ));
         }
         between("error_tolerance_m", p.tolerance_m, 1e-12, 1e-3)?;
@@ -208,7 +228,8 @@ impl SolverParams {
     /// [`Self::check_run`], for a caller that checks it first).
     pub fn within(self, duration_s: f64) -> Result<Self, ParamError> {
         if self.dt_s > duration_s {
-            return Err(rule("dt_s", self.dt_s, format!("must not exceed the simulated time {duration_s} s")));
+            let shown = crate::fmt_value(duration_s);
+            return Err(rule("dt_s", self.dt_s, format!("must not exceed the simulated time {shown} s")));
         }
         Ok(self)
     }
@@ -224,7 +245,11 @@ impl SolverParams {
             return Err(rule(
                 "dt_s",
                 self.dt_s,
-                format!("gives {:.2e} steps{adaptive} for {duration_s} s; at most 1e9", duration_s / self.dt_s),
+                format!(
+                    "gives {:.2e} steps{adaptive} for {} s; at most 1e9",
+                    duration_s / self.dt_s,
+                    crate::fmt_value(duration_s)
+                ),
             ));
         }
         let hi = duration_s.max(self.dt_s);
@@ -233,7 +258,11 @@ impl SolverParams {
             return Err(fail(
                 "output_interval_s",
                 self.output_interval_s,
-                Allowed::Rule(format!("must be between {} and {hi} (s, from dt_s to the simulated time)", self.dt_s)),
+                Allowed::Rule(format!(
+                    "must be between {} and {} (s, from dt_s to the simulated time)",
+                    crate::fmt_value(self.dt_s),
+                    crate::fmt_value(hi)
+                )),
             ));
         }
         Ok(())

@@ -22,9 +22,31 @@ pub use hydro::AddedMass;
 pub use soil::{FoundationStiffness, Soil};
 pub use spring::{SpringLaw, SpringResponse, SpringState};
 
-use crate::check::{between, count, non_negative, positive, rule};
+use crate::check::{between, between_per, count, rule};
 use crate::structure::Caisson;
 use crate::{ParamError, Profile};
+
+/// The smallest friction coefficient the model takes (`[foundation] mu_static` and `mu_dynamic`,
+/// `[waves] rigid_block_mu`, and a storm's coefficients times its friction error): a caisson on
+/// less friction slides without bound (the rigid block's deceleration after a wave, μ W', would be
+/// zero), and any wave then moves it beyond the failure limits.
+pub const MIN_FRICTION: f64 = 1e-6;
+
+/// The range of a stiffness given directly (`kx_kn_per_m`, `ky_kn_per_m`) per metre of caisson
+/// length, N/m per m: a modulus, 1 kPa to 1e9 kPa, the range of E100 (1 kPa, a slurry, to a
+/// thousand times steel). The seed's Eqs. 20-21 give K/l = (1 + 4ν²) G and (1 + 5ν²) G, 1 to 1.6
+/// times the shear modulus (the PARI mound: 1.4e5 and 1.5e5 kN/m per m). Outside it the static
+/// settlement W'/K_y, or the natural period, leaves any range a time step can follow (K_y = 1e-200
+/// kN/m settles the caisson by 8e200 m).
+pub const STIFFNESS_PER_M: (f64, f64) = (1e3, 1e12);
+
+/// The range of the damping given directly (`damping_kns_per_m`) per metre of caisson length,
+/// N·s/m per m: 0 to 1e7 kN·s/m per m. Lysmer's C of the seed's Eq. 22 is, per metre,
+/// 3.4/(π (1 − ν)) B ρ_s V_s: 1.1 to 2.1 times the base width times the soil's shear-wave
+/// impedance ρ_s V_s (the PARI mound: 598 kN·s/m; the design example about 2.4e4 kN·s/m a metre);
+/// 1e7 kN·s/m a metre is a caisson 100 m wide on steel (ρ V_s = 2.5e4 kN·s/m³). Per metre of
+/// length, not of base, so that a sizing run, which varies the width, never meets the bound.
+pub const DAMPING_PER_M: (f64, f64) = (0.0, 1e10);
 
 /// Where the horizontal foundation dashpot acts (docs/model.md §10 item 30).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -120,9 +142,9 @@ impl FoundationSpec {
     /// with the defaults of `profile`.
     pub fn build(&self, caisson: &Caisson, rho_w: f64, profile: Profile) -> Result<Foundation, ParamError> {
         let springs = count("springs", self.springs, 2, 1000)?;
-        let mu_static = between("mu_static", self.mu_static, 1e-6, 10.0)?;
+        let mu_static = between("mu_static", self.mu_static, MIN_FRICTION, 10.0)?;
         let mu_dynamic = match (self.mu_dynamic, profile) {
-            (Some(v), _) => between("mu_dynamic", v, 1e-6, 10.0)?,
+            (Some(v), _) => between("mu_dynamic", v, MIN_FRICTION, 10.0)?,
             (None, Profile::Consistent) => mu_static,
             (None, Profile::Seed2011) => 0.4f64.min(mu_static),
         };
@@ -139,22 +161,22 @@ impl FoundationSpec {
             }
             None => None,
         };
-        let pick = |quantity: &'static str, given: Option<f64>, from_soil: Option<f64>, allow_zero: bool| match (
+        // A given value within its range per metre of caisson length.
+        let pick = |quantity: &'static str, given: Option<f64>, from_soil: Option<f64>, range: (f64, f64)| match (
             given, from_soil,
         ) {
-            (Some(v), _) if allow_zero => non_negative(quantity, v),
-            (Some(v), _) => positive(quantity, v),
+            (Some(v), _) => between_per(quantity, v, range, caisson.length_m, "metre of caisson length"),
             (None, Some(v)) => Ok(v),
             (None, None) => Err(rule(quantity, f64::NAN, "give the soil or the stiffnesses and damping")),
         };
         let stiffness = FoundationStiffness {
-            kx_n_per_m: pick("kx_n_per_m", self.kx_n_per_m, derived.map(|d| d.kx_n_per_m), false)?,
-            ky_n_per_m: pick("ky_n_per_m", self.ky_n_per_m, derived.map(|d| d.ky_n_per_m), false)?,
+            kx_n_per_m: pick("kx_n_per_m", self.kx_n_per_m, derived.map(|d| d.kx_n_per_m), STIFFNESS_PER_M)?,
+            ky_n_per_m: pick("ky_n_per_m", self.ky_n_per_m, derived.map(|d| d.ky_n_per_m), STIFFNESS_PER_M)?,
             damping_ns_per_m: pick(
                 "damping_ns_per_m",
                 self.damping_ns_per_m,
                 derived.map(|d| d.damping_ns_per_m),
-                true,
+                DAMPING_PER_M,
             )?,
         };
         let vertical_damping_factor = between("vertical_damping_factor", self.vertical_damping_factor, 0.0, 1e3)?;

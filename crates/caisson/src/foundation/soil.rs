@@ -14,8 +14,15 @@
 //! damping exactly; Table 6's damping (480 kN·s/m) is a known slip: Eq. 22 gives 598 kN·s/m
 //! (docs/model.md §8.2 item 7, §10 item 14).
 
-use crate::check::{between, positive};
+use crate::check::between;
 use crate::ParamError;
+
+/// The range of σ'v0, Pa: 1 kPa to 10 MPa. Moduli are referred to about 100 kPa (the
+/// atmospheric pressure; the seed's Table 5); the contact stress under the tallest caisson is
+/// below 1 MPa. Far below, E = E100 √((σ'v0 + Δσ'v/2)/σ'v0) grows without bound (σ'v0 = 1e-300
+/// kPa overflows it).
+pub const MIN_REFERENCE_STRESS_PA: f64 = 1e3;
+pub const MAX_REFERENCE_STRESS_PA: f64 = 1e7;
 
 /// Soil parameters (SI).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -51,14 +58,20 @@ pub struct SoilDerived {
 }
 
 impl Soil {
-    /// The soil with every parameter checked: E100 and σ'v0 > 0, 0 ≤ ν ≤ 0.49, 500 ≤ ρ_s ≤ 5000.
+    /// The soil with every parameter checked: 1 kPa ≤ E100 ≤ 1e9 kPa, 0 ≤ ν ≤ 0.49, 500 ≤ ρ_s ≤
+    /// 5000, σ'v0 from [`MIN_REFERENCE_STRESS_PA`] to [`MAX_REFERENCE_STRESS_PA`].
     pub fn checked(&self) -> Result<Soil, ParamError> {
         Ok(Soil {
             // 1 kPa (a slurry) to 1e9 kPa (a thousand times steel): beyond, a unit slip.
             e100_pa: between("e100_pa", self.e100_pa, 1e3, 1e12)?,
             poisson: between("poisson", self.poisson, 0.0, 0.49)?,
             density_kg_per_m3: between("density_kg_per_m3", self.density_kg_per_m3, 500.0, 5000.0)?,
-            reference_stress_pa: positive("reference_stress_pa", self.reference_stress_pa)?,
+            reference_stress_pa: between(
+                "reference_stress_pa",
+                self.reference_stress_pa,
+                MIN_REFERENCE_STRESS_PA,
+                MAX_REFERENCE_STRESS_PA,
+            )?,
         })
     }
 

@@ -16,6 +16,8 @@ pub enum SeriesError {
     BadHeader { found: String },
     #[error("line {line}: column `{column}` has `{value}`; expected a finite number")]
     BadNumber { line: usize, column: String, value: String },
+    #[error("line {line}: column `{column}` has `{value}`; at most 1e300 in magnitude (a number this large overflows once converted to SI units)")]
+    TooLarge { line: usize, column: String, value: String },
     #[error("line {line}: expected {expected} columns, found {found}")]
     WrongColumnCount { line: usize, expected: usize, found: usize },
     #[error("line {line}: time_s = {value} is not greater than the previous time {previous}; times must be strictly increasing")]
@@ -69,11 +71,14 @@ impl ForceSeries {
             }
             let mut v = [0.0; 5];
             for (j, field) in rec.iter().map(str::trim).enumerate() {
-                v[j] = field.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| SeriesError::BadNumber {
-                    line,
-                    column: names[j].to_string(),
-                    value: field.to_string(),
-                })?;
+                let (column, value) = (|| names[j].to_string(), || field.to_string());
+                v[j] = match field.parse::<f64>() {
+                    Ok(x) if x.is_finite() && x.abs() <= crate::MAX_MAGNITUDE => x,
+                    Ok(x) if x.is_finite() => {
+                        return Err(SeriesError::TooLarge { line, column: column(), value: value() })
+                    }
+                    _ => return Err(SeriesError::BadNumber { line, column: column(), value: value() }),
+                };
             }
             if let Some(&prev) = t_s.last() {
                 if v[0] <= prev {

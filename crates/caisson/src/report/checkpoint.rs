@@ -194,6 +194,9 @@ pub enum LineFault {
     TooLong { len: u64 },
     #[error("is not UTF-8 text")]
     NotUtf8,
+    /// Ends in CR LF: the file was converted to Windows line ends after caisson wrote it.
+    #[error("ends in CR LF (Windows line ends): the file was converted after caisson wrote it (an editor, a transfer in text mode); convert it back to LF line ends (`dos2unix`)")]
+    CrLf,
     #[error("{0}")]
     Refused(LineError),
     /// A life (or a width) that an earlier line holds.
@@ -272,6 +275,9 @@ fn read_header<H: DeserializeOwned>(
     let (_, complete) = read_line_limited(r, &mut buf, MAX_LINE_BYTES)?;
     let complete = complete && buf.len() <= MAX_LINE_BYTES;
     let header_line = std::str::from_utf8(&buf).unwrap_or("").trim_end_matches('\n').to_string();
+    if complete && header_line.ends_with('\r') {
+        return Err(CheckpointError::Line { line: 1, fault: LineFault::CrLf });
+    }
     let value = serde_json::from_str::<serde_json::Value>(&header_line).ok().filter(|_| complete);
     // A header of another format names its format if it has one.
     if let Some(f) = value.as_ref().and_then(|v| v.get(format_key)?.as_u64()).filter(|&f| f != format as u64) {
@@ -314,6 +320,9 @@ fn for_each_line(
             return Err(line(LineFault::TooLong { len }));
         }
         let text = std::str::from_utf8(&buf[..buf.len() - 1]).map_err(|_| line(LineFault::NotUtf8))?;
+        if text.ends_with('\r') {
+            return Err(line(LineFault::CrLf));
+        }
         on_line(n, text, buf.len() as u64).map_err(line)?;
     }
     Ok(0)

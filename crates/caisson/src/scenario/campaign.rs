@@ -99,6 +99,13 @@ pub(super) fn validate_campaign(file: &ScenarioFile) -> R<CampaignSpec> {
             "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
         )
     })?;
+    if let Some(t) = c.title.as_deref().filter(|t| t.chars().any(char::is_control)) {
+        return Err(ScenarioError::range(
+            "[campaign] title",
+            format!("{t:?}"),
+            "must be text without control characters (line breaks, tabs, escape sequences): it titles the plots and the text output",
+        ));
+    }
     if file.load.is_some() {
         return Err(ScenarioError::Conflict {
             message: "a campaign runs wave trains from [waves]; remove the [load] table".into(),
@@ -198,13 +205,7 @@ fn grid(c: &CampaignTable, default_regime: RegimeChoice) -> R<Placed> {
 /// The setup of every condition of the scenario's campaign: the scenario's caisson with the
 /// condition's weight in water (the mass, and a soil-derived foundation, follow), its waves with
 /// the condition's height and regime. Errors are prefixed with the condition's place in the file.
-pub(super) fn build(sc: &Scenario) -> R<Campaign> {
-    let spec = sc.campaign.as_ref().ok_or_else(|| {
-        ScenarioError::missing(
-            "[campaign]",
-            "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
-        )
-    })?;
+pub(super) fn build(sc: &Scenario, spec: &CampaignSpec) -> R<Campaign> {
     let mut setups = Vec::with_capacity(spec.conditions.len());
     for (i, cond) in spec.conditions.iter().enumerate() {
         let place = spec.places.get(i).cloned().unwrap_or_else(|| format!("[campaign] conditions[{i}]"));

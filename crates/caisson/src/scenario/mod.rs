@@ -59,8 +59,15 @@ pub enum ScenarioError {
 }
 
 impl ScenarioError {
+    /// `key` = `value` is refused: `allowed` says what may be given. A number of `value` written
+    /// out long (1e-300 as Rust writes an `f64`: 300 digits; also in a list) is shown by
+    /// [`fmt_value`].
     pub(crate) fn range(key: &str, value: impl std::fmt::Display, allowed: impl Into<String>) -> Self {
-        ScenarioError::OutOfRange { key: key.to_string(), value: value.to_string(), allowed: allowed.into() }
+        ScenarioError::OutOfRange {
+            key: key.to_string(),
+            value: short_numbers(&value.to_string()),
+            allowed: allowed.into(),
+        }
     }
     pub(crate) fn missing(key: &str, hint: impl Into<String>) -> Self {
         ScenarioError::Missing { key: key.to_string(), hint: hint.into() }
@@ -141,43 +148,26 @@ const LOAD_KEYS: KeyMap = &[
     ("uplift_lever_m", "uplift_lever_m", 1.0, "m from the heel, at most the base width"),
 ];
 
-/// A parameter error reported under the key of `table` (e.g. `[caisson]`), in the key's unit.
+/// A parameter error reported under the key of `table` (e.g. `[caisson]`), in the key's unit,
+/// the value as a key's is read ([`fmt_value`]).
 pub(crate) fn keyed(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
-    // Very large or small numbers in exponent form (1e160, not 160 digits).
-    let short = |v: f64| {
-        if v.is_finite() && v != 0.0 && !(1e-4..1e15).contains(&v.abs()) {
-            format!("{v:e}")
-        } else {
-            format!("{v}")
-        }
-    };
-    keyed_shown(table, map, e, short)
-}
-
-/// As [`keyed`], the value in the form a key's value is shown when read ([`fmt_value`]).
-pub(crate) fn keyed_as_read(table: &str, map: KeyMap, e: ParamError) -> ScenarioError {
-    keyed_shown(table, map, e, fmt_value)
-}
-
-fn keyed_shown(table: &str, map: KeyMap, e: ParamError, show: impl Fn(f64) -> String) -> ScenarioError {
     let (key, divisor, unit) =
         map.iter().find(|(q, ..)| *q == e.quantity).map(|(_, k, d, u)| (*k, *d, *u)).unwrap_or((e.quantity, 1.0, ""));
-    ScenarioError::range(&format!("{table} {key}"), show(e.value / divisor), e.allowed.describe(1.0 / divisor, unit))
+    ScenarioError::range(
+        &format!("{table} {key}"),
+        fmt_value(e.value / divisor),
+        e.allowed.describe(1.0 / divisor, unit),
+    )
 }
 
 /// The keys of quantities over several tables: (quantity, `[table] key`, the key's unit), for
 /// quantities in SI that the file gives in the same unit.
 type NamedKeys = &'static [(&'static str, &'static str, &'static str)];
 
-/// A parameter error under its key of `keys`: a range with the value as a key's is read
-/// ([`fmt_value`]), a rule between quantities with the value as Rust writes it.
+/// A parameter error under its key of `keys`, the value as a key's is read ([`fmt_value`]).
 pub(crate) fn keyed_in(keys: NamedKeys, e: ParamError) -> ScenarioError {
     let (key, unit) = keys.iter().find(|(q, ..)| *q == e.quantity).map_or((e.quantity, ""), |(_, k, u)| (*k, *u));
-    let value = match e.allowed {
-        crate::Allowed::Rule(_) => e.value.to_string(),
-        _ => fmt_value(e.value),
-    };
-    ScenarioError::range(key, value, e.allowed.describe(1.0, unit))
+    ScenarioError::range(key, fmt_value(e.value), e.allowed.describe(1.0, unit))
 }
 
 /// The whole scenario file as written (units as in the keys).
@@ -338,9 +328,7 @@ pub fn parse_str(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError>
     Ok(file)
 }
 
-/// The largest magnitude of a number in a scenario file: beyond it a value in kN or kPa
-/// overflows to infinity once converted to SI, and the messages could only say `inf`.
-pub const MAX_MAGNITUDE: f64 = 1e300;
+pub use crate::MAX_MAGNITUDE;
 
 /// Refuse a number beyond [`MAX_MAGNITUDE`] anywhere in `v` (`key`: its place, `[table] key`).
 fn check_magnitudes(key: &str, v: &toml::Value) -> Result<(), ScenarioError> {
@@ -366,15 +354,30 @@ fn check_magnitudes(key: &str, v: &toml::Value) -> Result<(), ScenarioError> {
     }
 }
 
-/// A value as the messages print it: its shortest decimal, or in scientific notation where that
-/// would be long (5e-324, not 0.000…0005).
-pub(crate) fn fmt_value(v: f64) -> String {
-    let s = v.to_string();
-    if s.len() > 16 {
-        format!("{v:e}")
-    } else {
-        s
+/// `text` with each number written out in more than 20 characters (an `f64` as Rust's `Display`
+/// writes 1e-300 or 1.0999999999999999e-11) in its short form ([`fmt_value`]); the rest as it is
+/// (a whole number of 20 digits, as a seed is given, too).
+fn short_numbers(text: &str) -> String {
+    let number_char = |c: char| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '-' | '+');
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit() || c == '-' || c == '.') {
+        out.push_str(&rest[..start]);
+        let len = rest[start..].find(|c: char| !number_char(c)).unwrap_or(rest.len() - start);
+        let token = &rest[start..start + len];
+        match token.parse::<f64>() {
+            Ok(v) if token.len() > 20 => out.push_str(&fmt_value(v)),
+            _ => out.push_str(token),
+        }
+        rest = &rest[start + len..];
     }
+    out.push_str(rest);
+    out
+}
+
+/// A value as the messages print it ([`crate::fmt_value`]).
+pub(crate) fn fmt_value(v: f64) -> String {
+    crate::fmt_value(v)
 }
 
 fn parse_file(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError> {
@@ -391,6 +394,21 @@ fn parse_file(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError> {
         if let Some(wrong) = wrong_type(text, path, e.message(), line) {
             return wrong;
         }
+        if let Some(large) = too_large(text, e.message(), line) {
+            return large;
+        }
+        // A carriage return alone (old Mac line ends, a line end lost in a transfer): TOML ends
+        // lines with LF or CR LF, and the parser says only what it expected.
+        if let Some(at) = text.match_indices('\r').map(|(i, _)| i).find(|&i| !text[i + 1..].starts_with('\n')) {
+            let line = text[..at].matches('\n').count() + 1;
+            return ScenarioError::Syntax {
+                path: path.to_path_buf(),
+                line,
+                column: at - text[..at].rfind('\n').map_or(0, |i| i + 1) + 1,
+                message: "a carriage return (CR) without a line feed: TOML lines end in LF or CR LF; convert the file's line ends (`mac2unix`, or save it with Unix or Windows line ends)".into(),
+                source_line: String::new(),
+            };
+        }
         let source_line =
             if line > 0 { text.lines().nth(line - 1).unwrap_or("").trim().to_string() } else { String::new() };
         ScenarioError::Syntax {
@@ -404,6 +422,22 @@ fn parse_file(text: &str, path: &Path) -> Result<ScenarioFile, ScenarioError> {
             source_line,
         }
     })
+}
+
+/// A whole number beyond TOML's integers (a seed of 20 digits), named by its key: the parser
+/// says only "number too large to fit in target type". `line`: where it points (1-based).
+fn too_large(text: &str, message: &str, line: usize) -> Option<ScenarioError> {
+    if !message.contains("too large to fit") || line == 0 {
+        return None;
+    }
+    let lines: Vec<&str> = text.lines().collect();
+    let (key, value) = lines.get(line - 1)?.split('#').next()?.split_once('=')?;
+    let table = lines[..line - 1].iter().rev().map(|l| l.trim()).find(|l| l.starts_with('['))?;
+    Some(ScenarioError::range(
+        &format!("{table} {}", key.trim()),
+        value.trim(),
+        format!("must be a whole number of at most {} (the largest a TOML file holds)", i64::MAX),
+    ))
 }
 
 /// A value of the wrong kind, in engineering words: "`[caisson] width_m` must be a number (m), got
@@ -445,6 +479,8 @@ fn wrong_type(text: &str, path: &Path, message: &str, line: usize) -> Option<Sce
     // sequence, map.
     let mut got = match (got.strip_prefix("string "), got.split('`').nth(1)) {
         (Some(s), _) => format!("the string {s}"),
+        // A number written out long by serde (5e-324: 324 digits) in its short form.
+        (None, Some(v)) if v.len() > 20 => v.parse::<f64>().map_or_else(|_| v.to_string(), fmt_value),
         (None, Some(v)) => v.to_string(),
         _ if got == "sequence" => "a list".into(),
         _ if got == "map" => "a table".into(),
@@ -569,8 +605,12 @@ pub struct Scenario {
     /// Why a `[fragility]` table was refused: only a fragility run says so
     /// ([`Self::fragility_for`]); the other commands do not use the table.
     fragility_refused: Option<ScenarioError>,
+    /// Why a `[campaign]` table was refused: only a campaign says so ([`Self::campaign`]).
+    campaign_refused: Option<ScenarioError>,
     /// `[size]`.
     pub size: Option<SizeParams>,
+    /// Why a `[size]` table was refused: only a sizing says so ([`Self::size_for`]).
+    size_refused: Option<ScenarioError>,
 }
 
 impl Scenario {
@@ -717,6 +757,9 @@ impl Scenario {
 
     /// The `[size]` of the scenario, or an error saying it is missing.
     pub fn size_for(&self, what: &str) -> Result<&SizeParams, ScenarioError> {
+        if let Some(e) = &self.size_refused {
+            return Err(e.clone());
+        }
         self.size.as_ref().ok_or_else(|| {
             ScenarioError::missing(
                 "[size]",
@@ -754,6 +797,20 @@ impl Scenario {
     /// The conditions of `[campaign]` with their structures and waves (each condition's height,
     /// weight in water and regime set on this scenario's typed parameters).
     pub fn campaign(&self) -> Result<Campaign, ScenarioError> {
-        campaign::build(self)
+        if let Some(e) = &self.campaign_refused {
+            return Err(e.clone());
+        }
+        let spec = self.campaign.as_ref().ok_or_else(|| {
+            ScenarioError::missing(
+                "[campaign]",
+                "add a [campaign] table with heights_m and weights_in_water_kn (a grid) or a conditions list",
+            )
+        })?;
+        campaign::build(self, spec)
+    }
+
+    /// Whether the file has a `[campaign]` table (valid or not: [`Self::campaign`] says).
+    pub fn has_campaign_table(&self) -> bool {
+        self.campaign.is_some() || self.campaign_refused.is_some()
     }
 }

@@ -6,8 +6,8 @@
 //! types check their own, wider ranges after).
 
 use super::{
-    campaign, coherence, design, fragility, keyed, keyed_as_read, size, waves, Scenario, ScenarioError, ScenarioFile,
-    CAISSON_KEYS, FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
+    campaign, coherence, design, fragility, keyed, size, waves, Scenario, ScenarioError, ScenarioFile, CAISSON_KEYS,
+    FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
 use crate::dynamics::{AdaptiveParams, SolverParams};
@@ -33,6 +33,7 @@ fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str) -> R<f64> {
     if v.is_finite() && v >= lo && v <= hi {
         Ok(v)
     } else {
+        let (lo, hi) = (crate::fmt_number(lo), crate::fmt_number(hi));
         Err(ScenarioError::range(key, super::fmt_value(v), format!("must be between {lo} and {hi} ({unit})")))
     }
 }
@@ -94,7 +95,9 @@ pub(super) fn validate(f: &ScenarioFile, base_dir: &Path) -> R<Scenario> {
         design: None,
         fragility: None,
         fragility_refused: None,
+        campaign_refused: None,
         size: None,
+        size_refused: None,
     };
     coherence::check_time_step(&sc.structure)?;
     with_studies(f, sc)
@@ -126,15 +129,14 @@ fn load_and_duration(
 
 /// The scenario with the studies of the file: `[campaign]`, `[design]`, `[fragility]`, `[size]`.
 fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
+    // A `[campaign]`, `[fragility]` or `[size]` table is refused only when its command asks for
+    // it: a `run` or `loads` of the same file is not told to remove its `[load]`, or to add a
+    // `[design]`, for another command's sake.
     if f.campaign.is_some() {
-        if sc.caisson_spec.construction().is_some() {
-            return Err(ScenarioError::Conflict {
-                message: "a campaign gives the caisson's weight in water in each condition (`[campaign] weights_in_water_kn` or `weight_in_water_kn` of its conditions), which would replace the construction of `[caisson]` (`wall_thickness_m`, ...): give the caisson by its weight in water instead".into(),
-            });
+        match campaign_of(f, &sc) {
+            Ok(spec) => sc.campaign = Some(spec),
+            Err(e) => sc.campaign_refused = Some(e),
         }
-        sc.campaign = Some(campaign::validate_campaign(f)?);
-        // Every condition must build (its height, weight and regime on this scenario).
-        sc.campaign()?;
     }
     if f.design.is_some() {
         let d = design::validate_design(f)?;
@@ -142,20 +144,39 @@ fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
         sc.design = Some(d);
     }
     if f.fragility.is_some() {
-        // Refused only when a fragility run asks for it: a `run` or `loads` of the same file
-        // must not be told to remove its `[load]` for a fragility's sake.
         match fragility::validate_fragility(f, &sc) {
             Ok(p) => sc.fragility = Some(p),
             Err(e) => sc.fragility_refused = Some(e),
         }
     }
     if f.size.is_some() {
-        let lives = sc.design.as_ref().map(|d| d.lives).ok_or_else(|| {
-            ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
-        })?;
-        sc.size = Some(size::validate_size(f, lives)?);
+        let size = sc
+            .design
+            .as_ref()
+            .map(|d| d.lives)
+            .ok_or_else(|| {
+                ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
+            })
+            .and_then(|lives| size::validate_size(f, lives));
+        match size {
+            Ok(p) => sc.size = Some(p),
+            Err(e) => sc.size_refused = Some(e),
+        }
     }
     Ok(sc)
+}
+
+/// The `[campaign]` of the file, every condition built on the rest of the scenario `sc`.
+fn campaign_of(f: &ScenarioFile, sc: &Scenario) -> R<campaign::CampaignSpec> {
+    if sc.caisson_spec.construction().is_some() {
+        return Err(ScenarioError::Conflict {
+            message: "a campaign gives the caisson's weight in water in each condition (`[campaign] weights_in_water_kn` or `weight_in_water_kn` of its conditions), which would replace the construction of `[caisson]` (`wall_thickness_m`, ...): give the caisson by its weight in water instead".into(),
+        });
+    }
+    let spec = campaign::validate_campaign(f)?;
+    // Every condition must build (its height, weight and regime on this scenario).
+    campaign::build(sc, &spec)?;
+    Ok(spec)
 }
 
 fn caisson_spec(f: &ScenarioFile) -> R<CaissonSpec> {
@@ -321,9 +342,12 @@ fn foundation_spec(f: &ScenarioFile) -> R<FoundationSpec> {
     let kilo = |key: &str, v: Option<f64>, unit: &str, allow_zero: bool| -> R<Option<f64>> {
         match v {
             None => Ok(None),
-            Some(v) if allow_zero => {
-                within(&format!("[foundation] {key}"), v, 0.0, f64::MAX, unit).map(|v| Some(v * 1e3))
-            }
+            Some(v) if allow_zero && v.is_finite() && v >= 0.0 => Ok(Some(v * 1e3)),
+            Some(v) if allow_zero => Err(ScenarioError::range(
+                &format!("[foundation] {key}"),
+                super::fmt_value(v),
+                format!("must be a finite number ≥ 0 ({unit})"),
+            )),
             Some(v) => positive(&format!("[foundation] {key}"), v, unit).map(|v| Some(v * 1e3)),
         }
     };
@@ -512,7 +536,7 @@ fn peak(t: &super::LoadTable, c: &Caisson) -> R<WaveForce> {
     let lever = t.horizontal_lever_m.unwrap_or(c.base_depth_m);
     let uplift_lever = t.uplift_lever_m.unwrap_or(2.0 * c.width_m / 3.0);
     WaveForce::from_levers_on(fx_kn * 1e3, lever, fy_kn * 1e3, uplift_lever, c.height_m, c.width_m)
-        .map_err(|e| keyed_as_read("[load]", LOAD_KEYS, e))
+        .map_err(|e| keyed("[load]", LOAD_KEYS, e))
 }
 
 /// Largest force-series file read, bytes (a file that never ends, `/dev/zero`, is refused).

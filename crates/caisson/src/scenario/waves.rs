@@ -113,7 +113,7 @@ pub(super) fn seed_of(key: &str, v: Option<i64>) -> R<u64> {
     match v {
         None => Ok(1),
         Some(s) if s >= 0 => Ok(s as u64),
-        Some(s) => Err(ScenarioError::range(key, s, "must be a whole number ≥ 0")),
+        Some(s) => Err(ScenarioError::range(key, s, format!("must be a whole number from 0 to {}", i64::MAX))),
     }
 }
 

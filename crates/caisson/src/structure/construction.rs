@@ -178,7 +178,7 @@ impl Construction {
                 b,
                 format!(
                     "must exceed the walls and partitions across the caisson, 2 wall_thickness_m + (cells_across − 1) partition_thickness_m = {} m",
-                    shown(walls_across)
+                    crate::fmt_number(walls_across)
                 ),
             ));
         }
@@ -196,7 +196,7 @@ impl Construction {
                 unit_m,
                 format!(
                     "must exceed the walls and partitions along {what}: 2 wall_thickness_m + (cells_along − 1) partition_thickness_m = {} m",
-                    shown(walls_along)
+                    crate::fmt_number(walls_along)
                 ),
             ));
         }
@@ -207,7 +207,7 @@ impl Construction {
                 h,
                 format!(
                     "must exceed slab_thickness_m + cap_height_m = {} m (the cells need a height)",
-                    shown(c.slab_thickness_m + c.cap_height_m)
+                    crate::fmt_number(c.slab_thickness_m + c.cap_height_m)
                 ),
             ));
         }
@@ -247,15 +247,6 @@ impl Construction {
             cog_height_m,
             inertia_cog_kg_m2,
         })
-    }
-}
-
-/// A sum of lengths as a user reads it: 1.6, not 1.6000000000000001.
-fn shown(x: f64) -> f64 {
-    if x.abs() < 1e6 {
-        (x * 1e9).round() / 1e9
-    } else {
-        x
     }
 }
 

@@ -98,11 +98,21 @@ pub const MIN_WEIGHT_OVER_DISPLACED: f64 = 0.2;
 fn too_light(w_n: f64, displaced_kg: f64, width_m: f64, length_m: f64, submerged_m: f64) -> Option<String> {
     let buoyancy_n = displaced_kg * G_M_PER_S2;
     let least_n = MIN_WEIGHT_OVER_DISPLACED * buoyancy_n;
+    // kN to a tenth, or to three significant digits below 1 kN (a flume model's millinewtons).
+    let kn = |n: f64| {
+        let k = n / 1e3;
+        if k >= 1.0 {
+            format!("{k:.1}")
+        } else {
+            crate::fmt_number(format!("{k:.2e}").parse().unwrap_or(k))
+        }
+    };
+    let (b, l, h) = (crate::fmt_value(width_m), crate::fmt_value(length_m), crate::fmt_value(submerged_m));
     (w_n < least_n).then(|| {
         format!(
-            "must be at least {:.1} kN, {MIN_WEIGHT_OVER_DISPLACED} of the {:.1} kN of water the caisson displaces (ρ_w g B l h' with B = {width_m} m, l = {length_m} m, h' = {submerged_m} m under still water; this is {:.3} of it): a caisson filled with sand or stone weighs 0.8 to 2 times that in water, even an unfilled concrete shell about 0.3 to 0.5, and a lighter one is a unit slip: tonnes instead of kN (9.81 times less), or a weight per metre for a caisson longer than 1 m (give the total over `length_m`)",
-            least_n / 1e3,
-            buoyancy_n / 1e3,
+            "must be at least {} kN, {MIN_WEIGHT_OVER_DISPLACED} of the {} kN of water the caisson displaces (ρ_w g B l h' with B = {b} m, l = {l} m, h' = {h} m under still water; this is {:.3} of it): a caisson filled with sand or stone weighs 0.8 to 2 times that in water, even an unfilled concrete shell about 0.3 to 0.5, and a lighter one is a unit slip: tonnes instead of kN (9.81 times less), or a weight per metre for a caisson longer than 1 m (give the total over `length_m`)",
+            kn(least_n),
+            kn(buoyancy_n),
             w_n / buoyancy_n
         )
     })
