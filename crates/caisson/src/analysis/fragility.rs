@@ -12,9 +12,14 @@
 //!   life limits its waves; waves above the breaker height at the wall break on it and load it by
 //!   the impact model of the scenario;
 //! * T1/3 = `period_s` for every wave, N = round(duration / T1/3) waves (at least 1);
-//! * no tide, no estimation errors (force and friction factors 1): a fragility is conditional
-//!   on the IM, and the spread comes from the wave sequence and the rise times only. The
-//!   estimation errors of docs/model.md §6.4 belong to the life integral (§7 step 5, `lifetime.rs`);
+//! * no tide; the load-model errors of a design life drawn per storm ([`FragilityParams::errors`],
+//!   on by default): the multipliers of the wave force, of the friction and of the impulsive
+//!   component, 1 + bias + COV z with z truncated as `[design]` draws them
+//!   ([`super::lifetime::Errors::draw_load_errors`]; Takayama & Ikeda 1992 via Shimosako &
+//!   Takahashi 1999; Kim & Takayama 2003). The errors of the deep-water height and of the wave
+//!   transformation are not drawn: the IM is H1/3 at the structure itself. Without the errors the
+//!   spread comes from the wave sequence and the rise times only, and the curves are steep
+//!   (docs/fragility.md gives β with and without them);
 //! * the conservative screen of [`simulate_storm`] (waves that provably cannot slide either
 //!   model are skipped; the share is reported).
 //!
@@ -36,7 +41,8 @@
 //! [`super::climate`]). By default every storm lasts `storm_duration_h` and meets the breakwater
 //! head-on. With lognormal durations or a distribution of directions, storm j draws its duration
 //! and then its angle from the last 64 words of its part of the stream (from (j + 1) · 2^40 − 64),
-//! so its waves are drawn as before; N = round(D / T1/3).
+//! so its waves are drawn as before; N = round(D / T1/3). Its errors come from the 64 words
+//! before those (from (j + 1) · 2^40 − 128), so they move neither its waves nor its climate.
 //!
 //! **Counts.** k_i(s) = #{storms at H_i with |S| > s} (strictly greater), S the storm's net
 //! sliding (shoreward +; a rocking caisson can end a storm seaward, docs/design.md), for the
@@ -81,7 +87,9 @@
 
 use super::climate::{StormDuration, WaveDirection, WavePeriods, MAX_STORM_DURATION_S};
 use super::conventional::DesignWave;
-use super::lifetime::{failure_rotation_rad, simulate_storm, StormCase, StormError, StormInput, StormOutcome};
+use super::lifetime::{
+    failure_rotation_rad, simulate_storm, Errors, FailureLimits, StormCase, StormError, StormInput, StormOutcome,
+};
 use super::Progress;
 use crate::check::{self, count, interval};
 use crate::loads::model::WaveLoadModel;
@@ -345,6 +353,10 @@ pub struct FragilityParams {
     /// its own given its height.
     #[serde(skip_serializing_if = "WavePeriods::is_significant")]
     pub periods: WavePeriods,
+    /// The load-model errors drawn per storm (module docs, "Storms": the wave force's, the
+    /// friction's and the impulsive component's of these; the deep-water and transformation
+    /// errors are not used); `None`: none (`[fragility] errors = false`).
+    pub errors: Option<Errors>,
 }
 
 /// At most this many heights and limits.
@@ -395,6 +407,11 @@ impl FragilityParams {
         if let WavePeriods::LonguetHiggins { spectral_width } = self.periods {
             WavePeriods::longuet_higgins(spectral_width)?;
         }
+        if let Some(e) = &self.errors {
+            for m in [e.wave_force, e.friction].iter().chain(&e.impact_force) {
+                m.checked()?;
+            }
+        }
         Ok(self)
     }
 
@@ -420,10 +437,15 @@ impl FragilityParams {
         }
     }
 
-    /// Storm `storm` at height `h13_m`: [`Self::storm_input`] with its own duration and angle
-    /// when they are drawn (module docs, "Climate").
+    /// Storm `storm` at height `h13_m`: [`Self::storm_input`] with its own errors, duration and
+    /// angle when they are drawn (module docs, "Storms" and "Climate").
     pub fn storm_input_of(&self, model: &WaveLoadModel, h13_m: f64, storm: usize) -> StormInput {
         let mut s = self.storm_input(model, h13_m);
+        if let Some(e) = &self.errors {
+            let mut rng = storm_rng(self.seed, h13_m, storm);
+            rng.set_word_pos((((storm as u128) + 1) << STORM_WORDS_LOG2) - 2 * STORM_CLIMATE_WORDS);
+            [s.force_factor, s.friction_factor, s.impact_factor] = e.draw_load_errors(&mut rng);
+        }
         if self.duration != StormDuration::Fixed || self.direction != WaveDirection::HeadOn {
             let mut rng = storm_rng(self.seed, h13_m, storm);
             rng.set_word_pos((((storm as u128) + 1) << STORM_WORDS_LOG2) - STORM_CLIMATE_WORDS);
@@ -528,9 +550,16 @@ pub fn run_fragility(
     progress: Progress<'_>,
 ) -> Result<FragilityResult, StormFailed> {
     let storms = p.storms;
-    // Storms run whole (a rotation beyond the limit is counted, not stopped at): the rigid
-    // block's counts stay those of the full storm.
-    let st = &StormCase { failure: None, ..*st };
+    // Storms run whole; each records its failing wave (module docs, "Impulsive waves"): the wave
+    // that takes the caisson beyond the largest limit from its place or rotates it beyond the
+    // rotation limit (the rigid block: beyond the largest limit). The screen looks at sliding
+    // and lift-off only (no heel pressure is reported).
+    let failure = FailureLimits {
+        sliding_m: p.limits_m.last().copied().unwrap_or(f64::INFINITY),
+        rotation_rad: p.failure_rotation_rad,
+        heel_pressure_pa: None,
+    };
+    let st = &StormCase { failure: Some(failure), heel_screen_pa: f64::INFINITY, ..*st };
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
         // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.

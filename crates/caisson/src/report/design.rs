@@ -1,12 +1,13 @@
 //! `caisson design`: `design.json` (keys in docs/design.md).
 
 use super::{fingerprint, ModelReport, Provenance};
-use crate::analysis::checks::{life_warnings, structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
 use crate::analysis::lifetime::{
-    capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, LifeParams,
-    LifeStatistics, StormCase, StormOutcome, WaveDraws,
+    capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
+    ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
+use crate::analysis::sizing::failure_modes;
 use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
@@ -21,6 +22,7 @@ struct LifeInputs<'a> {
     screen: bool,
     draws: WaveDraws,
     failure: Option<FailureLimits>,
+    heel_screen_pa: f64,
     life: &'a LifeParams,
     seed: u64,
 }
@@ -36,6 +38,7 @@ pub fn design_fingerprint(case: &StormCase<'_>, p: &DesignParams) -> String {
         screen: case.screen,
         draws: case.draws,
         failure: case.failure,
+        heel_screen_pa: case.heel_screen_pa,
         life: &p.life,
         seed: p.seed,
     })
@@ -69,6 +72,9 @@ pub struct Failure {
     /// The lives that failed by rotation (beyond `failure_rotation_rad`; never the rigid
     /// block's). A life whose failing wave did both counts in both modes.
     pub by_rotation: FailureMode,
+    /// The lives that failed by heel pressure (beyond `failure_heel_pressure_kpa`, if given;
+    /// never the rigid block's).
+    pub by_heel_pressure: FailureMode,
 }
 
 /// The lives that failed by one mode.
@@ -95,15 +101,20 @@ pub struct ModelStatistics {
     /// E|S| with each failed life at the sliding limit (bounded by it), m.
     pub expected_sliding_m: f64,
     pub expected_sliding_per_year_m: f64,
-    /// E|S| of the lives as simulated (a life that ends at failure with the sliding it had
-    /// then; every life to its end with `continue_after_failure`), m.
+    /// E|S| of the lives as simulated (every life run to its end, failed or not: the expected
+    /// sliding distance of Shimosako & Takahashi 1999), m, and its standard error.
     pub expected_sliding_uncapped_m: f64,
+    pub expected_sliding_uncapped_se_m: f64,
+    /// The standard error of `expected_sliding_m`, m.
+    pub expected_sliding_se_m: f64,
     /// Of |S| with each failed life at the sliding limit.
     pub percentiles_m: Percentiles,
     /// P(|S| > threshold), a failed life exceeding every threshold.
     pub exceedance_probability: Vec<Exceedance>,
     pub failure: Failure,
     pub surviving: Surviving,
+    /// What the impulsive waves make of the lives (docs/design.md, "Impulsive waves").
+    pub impulsive: ImpulsiveShare,
 }
 
 fn percentiles(s: &LifeStatistics) -> Percentiles {
@@ -112,12 +123,21 @@ fn percentiles(s: &LifeStatistics) -> Percentiles {
 }
 
 impl ModelStatistics {
-    /// `magnitudes`: |S| of every life; `modes`: whether each life failed by sliding and by
-    /// rotation; `limit_m`: the sliding limit.
-    fn new(magnitudes: &[f64], modes: &[(bool, bool)], limit_m: f64, thresholds_m: &[f64], years: usize) -> Self {
-        let failed: Vec<bool> = modes.iter().map(|&(a, b)| a || b).collect();
+    /// `magnitudes`: |S| of every life; `modes`: the modes of each life's failing wave
+    /// (sliding, rotation, heel pressure); `limit_m`: the sliding limit.
+    fn new(
+        magnitudes: &[f64],
+        modes: &[[bool; 3]],
+        limit_m: f64,
+        thresholds_m: &[f64],
+        years: usize,
+        impulsive: ImpulsiveShare,
+    ) -> Self {
+        let failed: Vec<bool> = modes.iter().map(|m| m.iter().any(|&f| f)).collect();
         let s = capped_statistics(magnitudes, &failed, limit_m, thresholds_m);
-        let uncapped = life_statistics(magnitudes, &[]).mean_m;
+        let capped = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m });
+        let (_, se) = crate::analysis::sizing::mean_and_se(capped);
+        let (uncapped, uncapped_se) = crate::analysis::sizing::mean_and_se(magnitudes.iter().copied());
         let surviving: Vec<f64> = magnitudes.iter().zip(&failed).filter(|(_, &f)| !f).map(|(&m, _)| m).collect();
         let sv = life_statistics(&surviving, &[]);
         let failures = magnitudes.len() - surviving.len();
@@ -127,6 +147,8 @@ impl ModelStatistics {
             expected_sliding_m: s.mean_m,
             expected_sliding_per_year_m: s.mean_m / years as f64,
             expected_sliding_uncapped_m: uncapped,
+            expected_sliding_uncapped_se_m: uncapped_se,
+            expected_sliding_se_m: se,
             percentiles_m: percentiles(&s),
             exceedance_probability: s
                 .exceedance
@@ -136,10 +158,12 @@ impl ModelStatistics {
             failure: Failure {
                 probability: failures as f64 / n,
                 lives: failures,
-                by_sliding: mode(modes.iter().filter(|m| m.0).count()),
-                by_rotation: mode(modes.iter().filter(|m| m.1).count()),
+                by_sliding: mode(modes.iter().filter(|m| m[0]).count()),
+                by_rotation: mode(modes.iter().filter(|m| m[1]).count()),
+                by_heel_pressure: mode(modes.iter().filter(|m| m[2]).count()),
             },
             surviving: Surviving { lives: sv.lives, expected_sliding_m: sv.mean_m, percentiles_m: percentiles(&sv) },
+            impulsive,
         }
     }
 }
@@ -167,6 +191,9 @@ pub struct DynamicStatistics {
     /// Lives with a large-rotation wave: outside the model's validity (it does not follow
     /// overturning).
     pub large_rotation_lives: usize,
+    /// The lives' largest heel pressure against the allowable one (docs/design.md, "Heel
+    /// pressure"; the rigid block has no foundation pressure).
+    pub heel_pressure_exceedance: HeelPressureExceedance,
 }
 
 /// The climate choices of a run that differ from today's model (docs/design.md, "Climate"): the
@@ -290,8 +317,10 @@ pub struct DesignReport {
     pub failure_sliding_m: f64,
     /// The failure limit on the caisson's rotation, rad (`[design] failure_rotation_rad`).
     pub failure_rotation_rad: f64,
-    /// Whether a life ends at the wave that fails it (`[design] continue_after_failure` false).
-    pub lives_end_at_failure: bool,
+    /// The failure limit on the heel pressure, kPa (`[design] failure_heel_pressure_kpa`);
+    /// absent: no failure by heel pressure.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub failure_heel_pressure_kpa: Option<f64>,
     /// The climate choices that are not today's model; absent if none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub climate: Option<ClimateChoices>,
@@ -318,6 +347,8 @@ impl DesignReport {
         report.model = Some(ModelReport::from(case.structure));
         report.warnings = structure_warnings(case.structure);
         report.warnings.extend(life_warnings(lives, &failure, width_m));
+        let shares = [&report.dynamic.sliding.impulsive, &report.rigid_block.impulsive];
+        report.warnings.extend(impulsive_warnings(shares, case.model, waves));
         if let Some(ws) = waves {
             report.warnings.extend(wave_load_warnings(case.structure, ws));
         }
@@ -333,10 +364,12 @@ impl DesignReport {
         let mean = |f: fn(&StormOutcome) -> f64| lives.iter().map(f).sum::<f64>() / n;
         let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
-        let limits = FailureLimits { sliding_m: failure_sliding_m, rotation_rad: p.failure_rotation_rad };
-        let modes: Vec<(bool, bool)> =
-            lives.iter().map(|l| (l.failed_by_sliding(&limits), l.failed_by_rotation(&limits))).collect();
-        let rigid_modes: Vec<(bool, bool)> = rigid.iter().map(|&s| (s > failure_sliding_m, false)).collect();
+        let limits = FailureLimits {
+            sliding_m: failure_sliding_m,
+            rotation_rad: p.failure_rotation_rad,
+            heel_pressure_pa: p.failure_heel_pressure_pa,
+        };
+        let (modes, rigid_modes) = failure_modes(lives, &limits);
         let waves: u64 = lives.iter().map(|l| l.waves).sum();
         let screened: u64 = lives.iter().map(|l| l.screened_waves).sum();
         DesignReport {
@@ -348,10 +381,17 @@ impl DesignReport {
             screen: p.screen,
             failure_sliding_m,
             failure_rotation_rad: p.failure_rotation_rad,
-            lives_end_at_failure: !p.continue_after_failure,
+            failure_heel_pressure_kpa: p.failure_heel_pressure_pa.map(|q| q / 1e3),
             climate: ClimateChoices::of(&p.life),
             dynamic: DynamicStatistics {
-                sliding: ModelStatistics::new(&dynamic, &modes, failure_sliding_m, &p.thresholds_m, years),
+                sliding: ModelStatistics::new(
+                    &dynamic,
+                    &modes,
+                    failure_sliding_m,
+                    &p.thresholds_m,
+                    years,
+                    ImpulsiveShare::dynamic(lives),
+                ),
                 expected_net_sliding_m: mean(|l| l.sliding_m),
                 expected_shoreward_sliding_m: mean(|l| l.shoreward_sliding_m),
                 expected_seaward_sliding_m: mean(|l| l.seaward_sliding_m),
@@ -360,8 +400,20 @@ impl DesignReport {
                 rocking_waves: lives.iter().map(|l| l.rocking_waves).sum(),
                 large_rotation_waves: lives.iter().map(|l| l.large_rotation_waves).sum(),
                 large_rotation_lives: lives.iter().filter(|l| l.large_rotation_waves > 0).count(),
+                heel_pressure_exceedance: HeelPressureExceedance::of(
+                    lives,
+                    p.allowable_heel_pressure_pa,
+                    p.heel_screen_pa(),
+                ),
             },
-            rigid_block: ModelStatistics::new(&rigid, &rigid_modes, failure_sliding_m, &p.thresholds_m, years),
+            rigid_block: ModelStatistics::new(
+                &rigid,
+                &rigid_modes,
+                failure_sliding_m,
+                &p.thresholds_m,
+                years,
+                ImpulsiveShare::rigid_block(lives, &limits),
+            ),
             rigid_block_mu,
             waves,
             simulated_waves: lives.iter().map(|l| l.simulated_waves).sum(),

@@ -149,7 +149,14 @@ fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
         let lives = sc.design.as_ref().map(|d| d.lives).ok_or_else(|| {
             ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
         })?;
-        sc.size = Some(size::validate_size(f, lives)?);
+        let size = size::validate_size(f, lives)?;
+        // The lifetime heel pressures of a sizing are held to `[size] allowable_heel_pressure_kpa`
+        // where `[design]` gives no allowable of its own (docs/size.md).
+        let design_gives = f.design.as_ref().is_some_and(|t| t.allowable_heel_pressure_kpa.is_some());
+        if let (Some(d), false) = (sc.design.as_mut(), design_gives) {
+            d.allowable_heel_pressure_pa = size.conventional.allowable_heel_pressure_pa;
+        }
+        sc.size = Some(size);
     }
     Ok(sc)
 }
