@@ -523,8 +523,8 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
     let storm = c.max_storm_sliding_m;
     let b = width_m;
     // The statistics themselves beyond the width (a life or a storm alone beyond it is a failed
-    // life, `failed-lives`: rare extreme storms do that to sound designs). The dynamic model's
-    // lives end at failure, the rigid block's run on: the larger mean tells.
+    // life, `failed-lives`: rare extreme storms do that to sound designs). The larger mean of
+    // the two models tells.
     let (mean, which) = if c.rigid_block_expected_sliding_m > c.expected_sliding_uncapped_m {
         (c.rigid_block_expected_sliding_m, "of the rigid block over the whole lives")
     } else {
@@ -551,13 +551,22 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         out.push(Warning::new(
             "failed-lives",
             format!(
-                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width) and {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad); what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit: read the failure probability and the statistics of the surviving lives",
-                c.failed_lives, c.lives, c.failed_by_sliding_lives, c.failed_by_rotation_lives
+                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width), {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad){}; what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit (E|S| as simulated runs it on): read the failure probability and the statistics of the surviving lives",
+                c.failed_lives,
+                c.lives,
+                c.failed_by_sliding_lives,
+                c.failed_by_rotation_lives,
+                failure.heel_pressure_pa.map_or(String::new(), |q| format!(
+                    " and {} pressed the heel beyond {:.0} kPa ([design] failure_heel_pressure_kpa)",
+                    c.failed_by_heel_pressure_lives,
+                    q / 1e3
+                ))
             ),
             &[
                 ("failed_lives", c.failed_lives as f64),
                 ("failed_by_sliding_lives", c.failed_by_sliding_lives as f64),
                 ("failed_by_rotation_lives", c.failed_by_rotation_lives as f64),
+                ("failed_by_heel_pressure_lives", c.failed_by_heel_pressure_lives as f64),
                 ("lives", n),
                 ("failure_probability", c.failed_lives as f64 / n.max(1.0)),
                 ("failure_sliding_m", sliding_m),

@@ -622,6 +622,7 @@ mod tests {
             duration: StormDuration::Fixed,
             direction: WaveDirection::HeadOn,
             periods: WavePeriods::Significant,
+            errors: None,
         };
         assert_eq!(p.clone().checked(), Ok(p.clone()));
         let refused = |q: FragilityParams| q.checked().unwrap_err();
@@ -814,6 +815,7 @@ mod tests {
             storm_duration_s: 7200.0,
             period_s: 11.0,
             periods: WavePeriods::Significant,
+            errors: None,
             seed: 1,
             failure_rotation_rad: 0.01,
             duration: StormDuration::Lognormal { cov: 0.5 },
@@ -841,6 +843,7 @@ mod tests {
             storm_duration_s: 7200.0,
             period_s: 11.0,
             periods: WavePeriods::Significant,
+            errors: None,
             seed: 1,
             failure_rotation_rad: 0.01,
             duration: StormDuration::Fixed,

@@ -2201,7 +2201,12 @@ mod tests {
         for (a, b) in with.iter().zip(&without) {
             let moved = b.simulated_waves - a.simulated_waves;
             assert_eq!(a.screened_waves, b.screened_waves + moved, "the counts move together");
-            assert_eq!(StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a }, *b);
+            // The largest heel pressure too where it reaches the screen's 500 kPa; below, the
+            // still waves are not run for it (module docs, "Heel pressure").
+            let heel = if b.max_heel_pressure_kpa >= 500.0 { b.max_heel_pressure_kpa } else { a.max_heel_pressure_kpa };
+            assert!(a.max_heel_pressure_kpa <= b.max_heel_pressure_kpa);
+            let same = StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a };
+            assert_eq!(StormOutcome { max_heel_pressure_kpa: heel, ..same }, StormOutcome { max_heel_pressure_kpa: heel, ..*b });
             lives += 1;
             answered += moved;
         }
@@ -2299,10 +2304,10 @@ mod tests {
             }
         }
         assert_eq!(storms, 720);
-        // 451 storms may slide somewhere on their grid; the bound leaves nodes out in 462. The
-        // lowest cell that may slide is the one found cell by cell (above the first in each of
-        // the 451, on both grids).
-        assert_eq!((sliding, cut, lowest), (451, 462, 2 * 451));
+        // 466 storms may slide, lift or press the heel to 500 kPa somewhere on their grid; the
+        // bound leaves nodes out in 481. The lowest cell that may is the one found cell by cell
+        // (above the first in each of the 466, on both grids).
+        assert_eq!((sliding, cut, lowest), (466, 481, 2 * 466));
     }
 
     /// A storm given the life's toe wave number (solved once for the shoaling and the loads)
@@ -2332,7 +2337,7 @@ mod tests {
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
                         let rng = &mut StormRng::Given(&mut rng);
-                        storm_from(&st, &s, rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
+                        storm_from(&st, &s, rng, StormStart::ALONE, toe_k, &mut StormScratch::default())
                             .unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));
@@ -2450,7 +2455,8 @@ mod tests {
             screen: true,
             failure_sliding_m: Some(1000.0),
             failure_rotation_rad: MAX_FAILURE_ROTATION_RAD,
-            continue_after_failure: false,
+            allowable_heel_pressure_pa: 500e3,
+            failure_heel_pressure_pa: Some(1e7),
         };
         assert_eq!(design.thresholds_m, [0.03, 0.05, 0.1, 0.3, 1.0, 3.0]);
         assert_eq!(DesignParams::thresholds_m(&[0.2, -0.1]).unwrap_err().0, 1);
@@ -2460,6 +2466,14 @@ mod tests {
         assert_eq!(refused(DesignParams { thresholds_m: vec![0.3, 0.1], ..design.clone() }), "thresholds_m");
         assert_eq!(refused(DesignParams { failure_sliding_m: Some(0.0), ..design.clone() }), "failure_sliding_m");
         assert_eq!(refused(DesignParams { failure_rotation_rad: 0.11, ..design.clone() }), "failure_rotation_rad");
+        assert_eq!(
+            refused(DesignParams { allowable_heel_pressure_pa: 1e4, ..design.clone() }),
+            "allowable_heel_pressure_pa"
+        );
+        assert_eq!(
+            refused(DesignParams { failure_heel_pressure_pa: Some(1.1e7), ..design.clone() }),
+            "failure_heel_pressure_pa"
+        );
         assert_eq!(
             refused(DesignParams { life: LifeParams { life_years: 0, ..design.life.clone() }, ..design }),
             "life_years"

@@ -532,15 +532,24 @@ mod tests {
         };
         // Limit 1.5 m: the second life failed by rotation (|S| 0.4 m), the third by sliding
         // (2 m); capped values 0, 1.5, 1.5, 0.2.
-        let modes = [(false, false), (false, true), (true, false), (false, false)];
-        let p = model_point(&[0.0, 0.4, 2.0, 0.2], &modes, 1.5, &c);
+        let f = false;
+        let modes = [[f, f, f], [f, true, f], [true, f, f], [f, f, f]];
+        let p = model_point(&[0.0, 0.4, 2.0, 0.2], &modes, 1.5, &c, ImpulsiveShare::default());
         assert!((p.expected_sliding_m - 0.8).abs() < 1e-15);
         assert!((p.expected_sliding_uncapped_m - 0.65).abs() < 1e-15);
         // s² = (0.64 + 0.49 + 0.49 + 0.36)/3 = 0.66, SE = √(s²/4).
         assert!((p.expected_sliding_se_m - (1.98f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
+        // As simulated: mean 0.65, s² = (0.4225 + 0.0625 + 1.8225 + 0.2025)/3 = 0.8367, SE = √(s²/4).
+        assert!((p.expected_sliding_uncapped_se_m - (2.51f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
         // Sorted capped values 0, 0.2, 1.5, 1.5; both failed lives exceed 0.5 m.
         assert_eq!((p.p50_m, p.p95_m, p.exceedance_probability, p.failure_probability), (0.2, 1.5, 0.5, 0.5));
         assert_eq!((p.failure_by_sliding_probability, p.failure_by_rotation_probability), (0.25, 0.25));
+        assert_eq!(p.failure_by_heel_pressure_probability, 0.0);
+        // The criterion E|S| ≤ 0.7 m: the capped mean (0.8 m) misses it, the as-simulated (0.65 m)
+        // meets it.
+        let capped = Criteria { expected_sliding_m: Some(0.7), ..Criteria::default() };
+        let as_simulated = Criteria { expected_sliding: ExpectedSliding::AsSimulated, ..capped };
+        assert_eq!((capped.met(&p, 4, 0.0), as_simulated.met(&p, 4, 0.0)), (false, true));
     }
 
     /// A smooth decreasing E|S|(B) = 2/B² m with no noise: the search returns the root
@@ -567,6 +576,7 @@ mod tests {
                     lives: 1,
                     dynamic: point(2.0 / (b * b)),
                     rigid_block: point(3.0 / (b * b)),
+                    heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
                 })
             })
@@ -604,6 +614,7 @@ mod tests {
                     lives: 1,
                     dynamic: point(k / (b * b)),
                     rigid_block: point(k / (b * b)),
+                    heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
                 })
             }

@@ -458,21 +458,27 @@ mod tests {
         let mut seaward = life(-3.0, 1.0, 4.0, 3.5, 1.0);
         seaward.large_rotation_waves = 2;
         seaward.max_rotation_rad = 0.02;
+        seaward.failed_by_rotation = 1;
+        // Its failing wave and 2.5 m of the seaward slide were impulsive.
+        seaward.failing_wave_impulsive = 1;
+        seaward.impulsive_sliding_m = -2.5;
         let mut both = life(8.0, 8.0, 0.0, 8.0, 0.5);
         both.max_rotation_rad = 0.011;
         both.large_rotation_waves = 1;
-        let lives = [
-            life(0.2, 0.2, 0.0, 0.2, 0.25),
-            seaward,
-            life(6.0, 6.0, 0.0, 6.0, 7.0),
-            life(0.0, 5.5, 5.5, 5.5, 0.0),
-            life(1e-3, 1e-3, 0.0, 1e-3, 0.0),
-            both,
-        ];
+        (both.failed_by_sliding, both.failed_by_rotation) = (1, 1);
+        let mut beyond = life(6.0, 6.0, 0.0, 6.0, 7.0);
+        beyond.failed_by_sliding = 1;
+        // The rigid block's 7 m: 4 m of it impulsive, and its failing wave.
+        (beyond.rigid_block_impulsive_sliding_m, beyond.rigid_block_failing_wave_impulsive) = (4.0, 1);
+        let mut back = life(0.0, 5.5, 5.5, 5.5, 0.0);
+        back.failed_by_sliding = 1;
+        let mut first = life(0.2, 0.2, 0.0, 0.2, 0.25);
+        (first.impulsive_waves, first.impulsive_sliding_m, first.max_heel_pressure_kpa) = (3, 0.15, 620.0);
+        let lives = [first, seaward, beyond, back, life(1e-3, 1e-3, 0.0, 1e-3, 0.0), both];
         let r = DesignReport::statistics(&p, 0.6, 5.0, &lives);
         let d = &r.dynamic;
         let f = &d.sliding.failure;
-        assert_eq!((r.failure_sliding_m, r.failure_rotation_rad, r.lives_end_at_failure), (5.0, 0.01, true));
+        assert_eq!((r.failure_sliding_m, r.failure_rotation_rad, r.failure_heel_pressure_kpa), (5.0, 0.01, None));
         assert_eq!((f.lives, f.probability), (4, 4.0 / 6.0));
         assert_eq!((f.by_sliding.lives, f.by_sliding.probability), (3, 0.5));
         assert_eq!((f.by_rotation.lives, f.by_rotation.probability), (2, 2.0 / 6.0));
@@ -501,7 +507,22 @@ mod tests {
         assert!((rb.expected_sliding_m - (0.25 + 1.0 + 5.0 + 0.0 + 0.0 + 0.5) / 6.0).abs() < 1e-12);
         assert!((rb.expected_sliding_uncapped_m - (0.25 + 1.0 + 7.0 + 0.5) / 6.0).abs() < 1e-12);
         assert!((rb.surviving.expected_sliding_m - (0.25 + 1.0 + 0.5) / 5.0).abs() < 1e-12);
-        let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01 };
+        let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01, heel_pressure_pa: None };
+        // Impulsive shares by hand: the dynamic model's impulsive sliding 0.15 and −2.5 m in lives
+        // ending +0.2 and −3 m: their part of Σ|S| = 0.2 + 3 + 6 + 0 + 0.001 + 8 = 17.201 m is
+        // 0.15 + 2.5 (a seaward life's seaward impulsive slide adds to its |S|); the failing
+        // wave of 1 of the 4 failed lives was impulsive. The rigid block: 4 m of Σ = 8.75 m, and
+        // its one failure (7 m > 5 m) impulsive.
+        let (id, ir) = (&d.sliding.impulsive, &r.rigid_block.impulsive);
+        assert_eq!((id.waves, id.failures, ir.failures), (3, 4, 1));
+        assert!((id.sliding_m - (0.15 - 2.5) / 6.0).abs() < 1e-15);
+        assert!((id.share_of_expected_sliding - 2.65 / 17.201).abs() < 1e-12);
+        assert_eq!((id.share_of_failures, ir.share_of_failures), (0.25, 1.0));
+        assert!((ir.share_of_expected_sliding - 4.0 / 8.75).abs() < 1e-12);
+        // One life of six above 500 kPa: P = 1/6, SE = √(p(1 − p)/6).
+        let h = &d.heel_pressure_exceedance;
+        assert_eq!((h.lives, h.probability, h.allowable_kpa, h.largest_kpa), (1, 1.0 / 6.0, 500.0, 620.0));
+        assert!((h.standard_error - (1.0f64 / 6.0 * 5.0 / 6.0 / 6.0).sqrt()).abs() < 1e-15);
         let warnings = life_warnings(&lives, &limits, 20.0);
         let codes: Vec<&str> = warnings.iter().map(|w| w.code).collect();
         assert_eq!(codes, vec!["failed-lives", "large-rotation-lives", "seaward-lives"]);
@@ -511,7 +532,9 @@ mod tests {
             (4.0, 3.0, 2.0)
         );
         // A sizing candidate of the same lives keeps what gives the same warnings.
-        let c = candidate(20.0, 1.0, &lives, &limits, &Criteria::default());
+        let c = candidate(20.0, 1.0, &lives, &limits, &Criteria::default(), (500e3, 500e3));
+        assert_eq!(c.heel_pressure_exceedance, d.heel_pressure_exceedance);
+        assert_eq!((c.dynamic.impulsive, c.rigid_block.impulsive), (*id, *ir));
         assert_eq!(candidate_warnings(&c, &limits), warnings);
         let calm = [life(0.2, 0.2, 0.0, 0.2, 0.25), life(-0.005, 0.0, 0.005, 0.005, 0.0)];
         assert!(life_warnings(&calm, &limits, 20.0).is_empty(), "5 mm seaward is below the 1 cm reported");

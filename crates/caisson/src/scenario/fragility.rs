@@ -267,9 +267,20 @@ significant_heights_m = [4.0, 6.0, 8.0]
                 duration: crate::analysis::climate::StormDuration::Fixed,
                 direction: crate::analysis::climate::WaveDirection::HeadOn,
                 periods: crate::analysis::climate::WavePeriods::Significant,
+                // On by default: the wave force's, the friction's and the impulsive component's
+                // errors of [design] (Errors::default: bias −0.09 COV 0.10; 0, 0.10; truncated at 2σ).
+                errors: Some(Errors::default()),
             }
         );
         assert_eq!(p.waves_per_storm(), 600);
+        // Off, and its keys refused with it; a key given sets that error, named in a refusal.
+        assert_eq!(run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nerrors = false")).unwrap().errors, None);
+        let e = run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nerrors = false\nfriction_cov = 0.2"));
+        assert!(e.unwrap_err().to_string().contains("[fragility] friction_cov"));
+        let given = run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nimpact_force_cov = 0.3")).unwrap();
+        assert_eq!(given.errors.unwrap().impact_force.map(|m| (m.bias, m.cov)), Some((-0.09, 0.3)));
+        let e = run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nwave_force_cov = 1.5"));
+        assert!(e.unwrap_err().to_string().contains("[fragility] wave_force_cov"));
         let text = BASE.replace(
             "[4.0, 6.0, 8.0]",
             "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9\nfailure_rotation_rad = 0.02",
