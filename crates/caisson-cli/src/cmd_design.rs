@@ -781,8 +781,7 @@ pub(crate) fn report_lives(
         let _set = (!crate::output::set_open()).then(|| crate::output::OutSet::open(dir));
         let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         // The values of the statistics: a failed life at the sliding limit.
-        let dynamic: Vec<f64> =
-            lives.iter().map(|l| if l.failed() { failure_m } else { l.sliding_m.abs() }).collect();
+        let dynamic: Vec<f64> = lives.iter().map(|l| if l.failed() { failure_m } else { l.sliding_m.abs() }).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
         // The files are independent: made and synced at once (each to its temporary file; the
         // set renames them into place together), the first error in this order reported.

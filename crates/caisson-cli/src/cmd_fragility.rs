@@ -47,7 +47,12 @@ fn fit_text(f: &Result<LognormalFit, FitFailure>) -> String {
     }
 }
 
-fn table_text(s: &Setup<'_>, name: &str, (r, report): (&FragilityResult, &FragilityReport), rigid_block_mu: f64) -> String {
+fn table_text(
+    s: &Setup<'_>,
+    name: &str,
+    (r, report): (&FragilityResult, &FragilityReport),
+    rigid_block_mu: f64,
+) -> String {
     let p = &s.params;
     let c = &s.structure.caisson;
     let mut t = String::new();

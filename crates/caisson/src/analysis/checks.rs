@@ -36,10 +36,10 @@ use crate::dynamics::Stepping;
 use crate::foundation::VerticalDamping;
 use crate::loads::generator::{HeightVariability, TrainKind};
 use crate::loads::model::WaveLoadModel;
-use crate::waves::dispersion::{deep_water_wavelength_m, wavenumber};
-use crate::waves::surf_zone::equivalent_deep_water_height_m;
 use crate::loads::regime::RegimeChoice;
 use crate::loads::{LoadSpec, WaveForce};
+use crate::waves::dispersion::{deep_water_wavelength_m, wavenumber};
+use crate::waves::surf_zone::equivalent_deep_water_height_m;
 use std::collections::BTreeMap;
 
 /// A result or input to check (module docs).
@@ -438,7 +438,11 @@ pub fn breaking_load_rule(model: &WaveLoadModel) -> String {
 /// The warnings of what the impulsive waves make of an answer (module docs, `impulsive-share`):
 /// `shares` of the dynamic model and the rigid block, on the site of `model`, with the design
 /// sea of `waves` (for Goda's conditions; none: not assessed).
-pub fn impulsive_warnings(shares: [&ImpulsiveShare; 2], model: &WaveLoadModel, waves: Option<&WaveSetup>) -> Vec<Warning> {
+pub fn impulsive_warnings(
+    shares: [&ImpulsiveShare; 2],
+    model: &WaveLoadModel,
+    waves: Option<&WaveSetup>,
+) -> Vec<Warning> {
     let names = ["the dynamic model", "the rigid block"];
     let over: Vec<String> = shares
         .iter()

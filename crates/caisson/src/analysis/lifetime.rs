@@ -1743,7 +1743,8 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
     // docs, "Heel pressure"): each list while its next bound may exceed the life's largest.
     let rotation = still.iter().take_while(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
     let rotation: Vec<StillWave> = rotation.copied().collect();
-    let mut pending = rotation.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
+    let mut pending =
+        rotation.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
     while let Some((w, kind)) = pending.next() {
         let needed = match kind {
             WaveKind::HeelOnly => w.rotation_rad > 1e3 * life.max_heel_pressure_kpa,
@@ -1900,7 +1901,8 @@ impl DesignParams {
     /// ([`StormCase::heel_screen_pa`]): the allowable heel pressure, or the failure heel pressure
     /// if lower, Pa.
     pub fn heel_screen_pa(&self) -> f64 {
-        self.failure_heel_pressure_pa.map_or(self.allowable_heel_pressure_pa, |q| q.min(self.allowable_heel_pressure_pa))
+        self.failure_heel_pressure_pa
+            .map_or(self.allowable_heel_pressure_pa, |q| q.min(self.allowable_heel_pressure_pa))
     }
 }
 
@@ -2206,7 +2208,10 @@ mod tests {
             let heel = if b.max_heel_pressure_kpa >= 500.0 { b.max_heel_pressure_kpa } else { a.max_heel_pressure_kpa };
             assert!(a.max_heel_pressure_kpa <= b.max_heel_pressure_kpa);
             let same = StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a };
-            assert_eq!(StormOutcome { max_heel_pressure_kpa: heel, ..same }, StormOutcome { max_heel_pressure_kpa: heel, ..*b });
+            assert_eq!(
+                StormOutcome { max_heel_pressure_kpa: heel, ..same },
+                StormOutcome { max_heel_pressure_kpa: heel, ..*b }
+            );
             lives += 1;
             answered += moved;
         }
@@ -2337,8 +2342,7 @@ mod tests {
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
                         let rng = &mut StormRng::Given(&mut rng);
-                        storm_from(&st, &s, rng, StormStart::ALONE, toe_k, &mut StormScratch::default())
-                            .unwrap()
+                        storm_from(&st, &s, rng, StormStart::ALONE, toe_k, &mut StormScratch::default()).unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));
                     assert_eq!(format!("{given:?}"), format!("{solved:?}"), "H1/3 {h13} m, tide {tide_m} m");

@@ -139,7 +139,14 @@ impl<'a> Sizer<'a> {
             }
             let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
             let heel_pa = (design.allowable_heel_pressure_pa, design.heel_screen_pa());
-            let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, &design.failure_limits(w), &p.criteria, heel_pa);
+            let c = candidate(
+                w,
+                sw.caisson().weight_in_water_n,
+                &outcomes,
+                &design.failure_limits(w),
+                &p.criteria,
+                heel_pa,
+            );
             finished(&c).map_err(SizeError::Candidate)?;
             Ok(c)
         };

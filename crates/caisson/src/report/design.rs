@@ -7,8 +7,8 @@ use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
     ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
-use crate::analysis::sizing::failure_modes;
 use crate::analysis::site::WaveSetup;
+use crate::analysis::sizing::failure_modes;
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
 use serde::Serialize;

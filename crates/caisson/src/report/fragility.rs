@@ -2,10 +2,10 @@
 
 use super::{ModelReport, Provenance};
 use crate::analysis::checks::{impulsive_warnings, storm_warnings, structure_warnings, wave_load_warnings, Warning};
-use crate::analysis::lifetime::{ErrorModel, FailureLimits, ImpulsiveShare};
 use crate::analysis::climate::{StormDuration, WaveDirection, WavePeriods};
 use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
+use crate::analysis::lifetime::{ErrorModel, FailureLimits, ImpulsiveShare};
 use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use serde::Serialize;

@@ -238,9 +238,11 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             e.allowed.describe(1.0 / 3600.0, "h"),
         ),
         q => match HEEL_KEYS.iter().find(|(quantity, _)| *quantity == q) {
-            Some((_, key)) => {
-                ScenarioError::range(&format!("[design] {key}"), super::fmt_value(e.value / 1e3), e.allowed.describe(1e-3, "kPa"))
-            }
+            Some((_, key)) => ScenarioError::range(
+                &format!("[design] {key}"),
+                super::fmt_value(e.value / 1e3),
+                e.allowed.describe(1e-3, "kPa"),
+            ),
             None => keyed("[design]", e),
         },
     })
