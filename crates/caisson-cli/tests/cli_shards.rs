@@ -10,7 +10,7 @@ use support::{caisson, design_text, refused, s, write};
 
 /// The output files of a design run (the checkpoint is compared apart: its lines are in the order
 /// the lives finished).
-const OUTPUTS: [&str; 4] = ["design.json", "lives.csv", "histogram.svg", "exceedance.svg"];
+const OUTPUTS: [&str; 5] = ["design.json", "lives.csv", "histogram.svg", "exceedance.svg", "heel_pressure.svg"];
 
 /// `caisson design FILE --life-range RANGE --out DIR [extra]`, expected to succeed.
 fn shard(file: &Path, range: &str, dir: &Path, extra: &[&str]) {

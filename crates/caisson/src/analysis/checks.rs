@@ -404,11 +404,12 @@ pub struct ImpulsiveBreakingDanger {
     pub danger: bool,
 }
 
-/// [`ImpulsiveBreakingDanger`] of the site of `model` under the sea `h13_m`, `period_s`; `None`
-/// where it cannot be assessed (no berm width, or no equivalent deep-water height).
+/// [`ImpulsiveBreakingDanger`] of the site of `model` under the sea `h13_m`, `period_s` (a site
+/// without `berm_width_m` taken as a mound without a berm, B_M = 0); `None` where it cannot be
+/// assessed (no equivalent deep-water height).
 pub fn impulsive_breaking_danger(model: &WaveLoadModel, h13_m: f64, period_s: f64) -> Option<ImpulsiveBreakingDanger> {
     let s = &model.site;
-    let berm_m = s.berm_width_m?;
+    let berm_m = s.berm_width_m.unwrap_or(0.0);
     let h0 = equivalent_deep_water_height_m(h13_m, period_s, s.depth_at_toe_m, s.seabed_slope)?;
     let l = 2.0 * std::f64::consts::PI / wavenumber(period_s, s.depth_at_toe_m);
     let beta = (model.options.angle_rad.abs().to_degrees() - 15.0).max(0.0);

@@ -87,6 +87,8 @@
 
 use super::climate::{StormDuration, WaveDirection, WavePeriods, MAX_STORM_DURATION_S};
 use super::conventional::DesignWave;
+#[cfg(test)]
+use super::lifetime::ErrorModel;
 use super::lifetime::{
     failure_rotation_rad, simulate_storm, Errors, FailureLimits, StormCase, StormError, StormInput, StormOutcome,
 };
@@ -800,6 +802,46 @@ mod tests {
             "{words} words for {waves} waves, {} simulated",
             o.simulated_waves
         );
+    }
+
+    /// The load-model errors of a storm (docs/fragility.md): drawn per storm (the same storm the
+    /// same, 200 storms not all alike, each within its truncation 1 + bias ± 2 COV) without
+    /// moving its waves or climate: errors of zero bias and COV (multipliers 1) give every storm
+    /// of two heights of the example the outcome of no errors, to the bit (12 storms, angles
+    /// drawn too), and without errors every factor is 1.
+    #[test]
+    fn storms_draw_their_load_errors_apart_from_their_waves() {
+        let sc = example();
+        let case = sc.storm_case(true).unwrap();
+        let mut p = sc.fragility_for("test").unwrap().clone();
+        p.direction = WaveDirection::Uniform { mean_rad: 0.2, half_width_rad: 0.1 };
+        let none = Errors { wave_force: ErrorModel::NONE, friction: ErrorModel::NONE, ..Errors::default() };
+        let mut compared = 0;
+        for h in [8.5, 10.0] {
+            for j in 0..6 {
+                let run = |errors: Option<Errors>| {
+                    let p = FragilityParams { errors, ..p.clone() };
+                    let s = p.storm_input_of(case.model, h, j);
+                    (s, simulate_storm(&case, &s, &mut storm_rng(p.seed, h, j)).unwrap())
+                };
+                let ((a, oa), (b, ob)) = (run(None), run(Some(none)));
+                assert_eq!((a.force_factor, a.friction_factor, a.impact_factor), (1.0, 1.0, 1.0));
+                assert_eq!((a, oa), (b, ob), "H1/3 {h} m, storm {j}");
+                compared += 1;
+            }
+        }
+        assert_eq!(compared, 12);
+        let p = FragilityParams { errors: Some(Errors::default()), ..p };
+        let f: Vec<[f64; 3]> = (0..200)
+            .map(|j| {
+                let s = p.storm_input_of(case.model, 9.0, j);
+                [s.force_factor, s.friction_factor, s.impact_factor]
+            })
+            .collect();
+        assert!(f.iter().all(|x| (0.71..=1.11).contains(&x[0]) && (0.8..=1.2).contains(&x[1]) && x[2] == x[0]));
+        assert!(f.windows(2).any(|w| w[0] != w[1]), "the storms draw their own errors");
+        let again = p.storm_input_of(case.model, 9.0, 17);
+        assert_eq!([again.force_factor, again.friction_factor, again.impact_factor], f[17]);
     }
 
     /// Lognormal durations (mean 2 h, COV 0.5) and uniform angles (20° ± 10°) over 4000 storms
