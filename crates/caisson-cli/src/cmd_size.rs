@@ -523,25 +523,25 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     let top_of =
         |s: &[Series], floor: f64| s.iter().flat_map(|s| s.points.iter().map(|p| p.1)).fold(floor * 10.0, f64::max);
     let mut panels = Vec::new();
+    // The E|S| the criterion reads (`[size] expected_sliding`), with its standard error.
+    let as_simulated = r.criteria.expected_sliding == ExpectedSliding::AsSimulated;
+    let mean = move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_m } else { p.expected_sliding_m };
+    let se = move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_se_m } else { p.expected_sliding_se_m };
+    let which = if as_simulated { "E|S| as simulated" } else { "E|S|" };
     let mut sliding = vec![
-        Series::line("dynamic model: E|S|", pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m)),
-        Series::line("rigid block: E|S|", pts(FLOOR_M, &|k| k.rigid_block.expected_sliding_m)),
-        Series::dashed("dynamic model: E|S| as simulated", pts(FLOOR_M, &|k| k.dynamic.expected_sliding_uncapped_m)),
-        Series::dashed("rigid block: E|S| as simulated", pts(FLOOR_M, &|k| k.rigid_block.expected_sliding_uncapped_m)),
+        Series::line(format!("dynamic model: {which}"), pts(FLOOR_M, &|k| mean(&k.dynamic))),
+        Series::line(format!("rigid block: {which}"), pts(FLOOR_M, &|k| mean(&k.rigid_block))),
     ];
     let top = top_of(&sliding, FLOOR_M).max(r.criteria.expected_sliding_m.unwrap_or(0.0));
     sliding.extend(widths(FLOOR_M, top));
     sliding.push(Series::line("dynamic model: 95 % of |S|", pts(FLOOR_M, &|k| k.dynamic.p95_m)));
     sliding.push(Series::dashed(
-        "dynamic model: 90 % band of E|S|",
-        pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m + z * k.dynamic.expected_sliding_se_m),
+        format!("dynamic model: 90 % band of {which}"),
+        pts(FLOOR_M, &|k| mean(&k.dynamic) + z * se(&k.dynamic)),
     ));
-    sliding.push(Series::dashed(
-        "",
-        pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m - z * k.dynamic.expected_sliding_se_m),
-    ));
+    sliding.push(Series::dashed("", pts(FLOOR_M, &|k| mean(&k.dynamic) - z * se(&k.dynamic))));
     if let Some(s) = r.criteria.expected_sliding_m {
-        sliding.push(Series::dashed(format!("criterion: E|S| ≤ {s} m"), vec![(lo, s), (hi, s)]));
+        sliding.push(Series::dashed(format!("criterion: {which} ≤ {s} m"), vec![(lo, s), (hi, s)]));
     }
     panels.push(Panel { y_label: "sliding over the life (m)".into(), series: sliding });
     let mut probability = |label: String, f: fn(&ModelPoint) -> f64, limit: f64| {

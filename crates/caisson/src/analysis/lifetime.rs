@@ -1763,11 +1763,8 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
     let (mut none, mut no_heel) = (Vec::new(), Vec::new());
     // The still waves for the rotation, then the deferred waves for the heel pressure (module
     // docs, "Heel pressure"): each list while its next bound may exceed the life's largest.
-    let rotation = still.iter().take_while(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
-    let rotation: Vec<StillWave> = rotation.copied().collect();
-    let mut pending =
-        rotation.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
-    while let Some((w, kind)) = pending.next() {
+    let pending = still.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
+    for (w, kind) in pending {
         let needed = match kind {
             WaveKind::HeelOnly => w.rotation_rad > 1e3 * life.max_heel_pressure_kpa,
             _ => w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad,

@@ -185,7 +185,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     }
     let heel_kpa = |v: Option<f64>, key: &str| -> R<Option<f64>> {
         match v {
-            Some(q) if !(q > 0.0) || !q.is_finite() => Err(ScenarioError::range(
+            Some(q) if q.is_nan() || q <= 0.0 || q.is_infinite() => Err(ScenarioError::range(
                 &format!("[design] {key}"),
                 super::fmt_value(q),
                 "must be a pressure from 10 to 10000 kPa",
