@@ -526,7 +526,8 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     // The E|S| the criterion reads (`[size] expected_sliding`), with its standard error.
     let as_simulated = r.criteria.expected_sliding == ExpectedSliding::AsSimulated;
     let mean = move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_m } else { p.expected_sliding_m };
-    let se = move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_se_m } else { p.expected_sliding_se_m };
+    let se =
+        move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_se_m } else { p.expected_sliding_se_m };
     let which = if as_simulated { "E|S| as simulated" } else { "E|S|" };
     let mut sliding = vec![
         Series::line(format!("dynamic model: {which}"), pts(FLOOR_M, &|k| mean(&k.dynamic))),

@@ -273,10 +273,13 @@ class SizeResult(_ReadsAsReport):
     - ``status``, ``rigid_block_status``: ``"found"`` or why not (docs/size.md).
     - ``candidates``: one row per width tried: ``width_m``, ``weight_in_water_kn``, and per model
       (``dynamic_...``, ``rigid_block_...``) ``expected_sliding_m``, ``expected_sliding_se_m``,
-      ``expected_sliding_uncapped_m``, ``failure_probability`` (with
-      ``failure_by_sliding_probability``, ``failure_by_rotation_probability``),
-      ``exceedance_probability``, ``p50_m``, ``p95_m`` and ``meets``; Goda's safety factors and
-      heel pressure (``goda_sliding_safety_factor``, ``goda_overturning_safety_factor``,
+      ``expected_sliding_uncapped_m`` (as simulated) and its ``…_se_m``, ``failure_probability``
+      (with ``failure_by_sliding_probability``, ``failure_by_rotation_probability``,
+      ``failure_by_heel_pressure_probability``), ``exceedance_probability``, ``p50_m``, ``p95_m``,
+      ``impulsive_...`` (``waves``, ``sliding_m``, ``share_of_expected_sliding``,
+      ``share_of_failures``, ``failures``) and ``meets``; ``heel_pressure_exceedance_...``
+      (``probability``, ``standard_error``, ...); Goda's safety factors and heel pressure
+      (``goda_sliding_safety_factor``, ``goda_overturning_safety_factor``,
       ``goda_heel_pressure_kpa``).
     - ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``size.json``,
       which the object also reads as.
@@ -297,8 +300,14 @@ class SizeResult(_ReadsAsReport):
         for c in report["candidates"]:
             row = {k: v for k, v in c.items() if not isinstance(v, Mapping) and k not in ("dynamic_meets", "rigid_block_meets")}
             for model in ("dynamic", "rigid_block"):
-                row.update({f"{model}_{k}": v for k, v in (c.get(model) or {}).items()})
+                for k, v in (c.get(model) or {}).items():
+                    # A group (the impulsive waves') flattened as candidates.csv has it.
+                    if isinstance(v, Mapping):
+                        row.update({f"{model}_{k}_{g}": x for g, x in v.items()})
+                    else:
+                        row[f"{model}_{k}"] = v
                 row[f"{model}_meets"] = c.get(f"{model}_meets")
+            row.update({f"heel_pressure_exceedance_{k}": v for k, v in (c.get("heel_pressure_exceedance") or {}).items()})
             rows.append(row)
         return SizeResult(
             width_m=report["dynamic"].get("width_m"),

@@ -545,6 +545,19 @@ pub struct StormFailed {
     pub source: StormError,
 }
 
+/// The storms' case of fragility `p` on `st`: storms run whole, each recording its failing wave
+/// (module docs, "Counts"): the wave that takes the caisson beyond the largest limit from its
+/// place or rotates it beyond the rotation limit (the rigid block: beyond the largest limit); the
+/// screen looks at sliding and lift-off only (no heel pressure is reported).
+pub fn storm_case<'a>(st: &StormCase<'a>, p: &FragilityParams) -> StormCase<'a> {
+    let failure = FailureLimits {
+        sliding_m: p.limits_m.last().copied().unwrap_or(f64::INFINITY),
+        rotation_rad: p.failure_rotation_rad,
+        heel_pressure_pa: None,
+    };
+    StormCase { failure: Some(failure), heel_screen_pa: f64::INFINITY, ..*st }
+}
+
 /// Run every storm of every height in parallel and fit the curves (module docs).
 pub fn run_fragility(
     st: &StormCase<'_>,
@@ -552,16 +565,7 @@ pub fn run_fragility(
     progress: Progress<'_>,
 ) -> Result<FragilityResult, StormFailed> {
     let storms = p.storms;
-    // Storms run whole; each records its failing wave (module docs, "Impulsive waves"): the wave
-    // that takes the caisson beyond the largest limit from its place or rotates it beyond the
-    // rotation limit (the rigid block: beyond the largest limit). The screen looks at sliding
-    // and lift-off only (no heel pressure is reported).
-    let failure = FailureLimits {
-        sliding_m: p.limits_m.last().copied().unwrap_or(f64::INFINITY),
-        rotation_rad: p.failure_rotation_rad,
-        heel_pressure_pa: None,
-    };
-    let st = &StormCase { failure: Some(failure), heel_screen_pa: f64::INFINITY, ..*st };
+    let st = &storm_case(st, p);
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
         // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
