@@ -556,7 +556,7 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         out.push(Warning::new(
             "failed-lives",
             format!(
-                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width), {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad){}; what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit (E|S| as simulated runs it on): read the failure probability and the statistics of the surviving lives",
+                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width), {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad){}; what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit (E|S| as simulated runs it on{}): read the failure probability and the statistics of the surviving lives",
                 c.failed_lives,
                 c.lives,
                 c.failed_by_sliding_lives,
@@ -565,13 +565,22 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
                     " and {} pressed the heel beyond {:.0} kPa ([design] failure_heel_pressure_kpa)",
                     c.failed_by_heel_pressure_lives,
                     q / 1e3
-                ))
+                )),
+                if c.run_on_stopped_lives > 0 {
+                    format!(
+                        "; in {} of them a later wave did not converge and the dynamic model stopped there, run_on_stopped in lives.csv",
+                        c.run_on_stopped_lives
+                    )
+                } else {
+                    String::new()
+                }
             ),
             &[
                 ("failed_lives", c.failed_lives as f64),
                 ("failed_by_sliding_lives", c.failed_by_sliding_lives as f64),
                 ("failed_by_rotation_lives", c.failed_by_rotation_lives as f64),
                 ("failed_by_heel_pressure_lives", c.failed_by_heel_pressure_lives as f64),
+                ("run_on_stopped_lives", c.run_on_stopped_lives as f64),
                 ("lives", n),
                 ("failure_probability", c.failed_lives as f64 / n.max(1.0)),
                 ("failure_sliding_m", sliding_m),

@@ -136,7 +136,10 @@
 //! so they are those of lives that end at failure; the means of the lives as simulated
 //! (`expected_sliding_uncapped_m`) are those of whole lives, the expected sliding distance of
 //! Shimosako & Takahashi (1999) and Goda & Takagi (2000). What the model computes after a failure
-//! is outside its validity: only that statistic reads it.
+//! is outside its validity: only that statistic reads it. Should a wave after the failure not
+//! converge (bounded sub-stepping, then the solver's error), the dynamic model runs no further
+//! wave of that life ([`StormOutcome::run_on_stopped`]; the rigid block runs on): before the
+//! failure the same error stops the run, as it always did.
 //!
 //! **Impulsive waves** ([`StormOutcome::impulsive_waves`]). The waves whose load event has an
 //! impulse ([`WaveEvent::impulse`]: under the scenario's breaking-wave load, a breaking wave with
@@ -657,6 +660,10 @@ pub struct StormOutcome {
     pub failing_wave_impulsive: u64,
     /// 1 if the wave that took the rigid block beyond the sliding limit had an impulsive load.
     pub rigid_block_failing_wave_impulsive: u64,
+    /// 1 if, after the failure, a wave did not converge in the dynamic model (far outside its
+    /// validity) and the dynamic model ran no further wave of the life: its columns stop there
+    /// (module docs, "Failure").
+    pub run_on_stopped: u64,
 }
 
 /// One column of a life's outcome: its value as metres or as a count.
@@ -670,7 +677,7 @@ pub enum LifeColumn {
 
 /// The columns of a life's outcome (after `life`) in `lives.csv` and the Python `DataFrame`,
 /// named as the [`StormOutcome`] fields.
-pub const LIFE_COLUMNS: [(&str, LifeColumn); 22] = [
+pub const LIFE_COLUMNS: [(&str, LifeColumn); 23] = [
     ("sliding_m", LifeColumn::Metres(|o| o.sliding_m)),
     ("shoreward_sliding_m", LifeColumn::Metres(|o| o.shoreward_sliding_m)),
     ("seaward_sliding_m", LifeColumn::Metres(|o| o.seaward_sliding_m)),
@@ -693,6 +700,7 @@ pub const LIFE_COLUMNS: [(&str, LifeColumn); 22] = [
     ("failed_by_heel_pressure", LifeColumn::Count(|o| o.failed_by_heel_pressure)),
     ("failing_wave_impulsive", LifeColumn::Count(|o| o.failing_wave_impulsive)),
     ("rigid_block_failing_wave_impulsive", LifeColumn::Count(|o| o.rigid_block_failing_wave_impulsive)),
+    ("run_on_stopped", LifeColumn::Count(|o| o.run_on_stopped)),
 ];
 
 impl StormOutcome {
@@ -723,6 +731,7 @@ impl StormOutcome {
         self.failed_by_heel_pressure |= o.failed_by_heel_pressure;
         self.failing_wave_impulsive |= o.failing_wave_impulsive;
         self.rigid_block_failing_wave_impulsive |= o.rigid_block_failing_wave_impulsive;
+        self.run_on_stopped |= o.run_on_stopped;
     }
 
     /// Whether the life (or storm) failed: a wave took it beyond a failure limit (module docs,
@@ -956,13 +965,21 @@ struct StormStart {
     /// The largest heel pressure of the life so far, kPa.
     heel_floor_kpa: f64,
     failed: bool,
+    /// The dynamic model's run-on has stopped ([`StormOutcome::run_on_stopped`]).
+    stopped: bool,
     settle: Settle,
 }
 
 impl StormStart {
     /// A storm alone (fragility), from the caisson's place.
-    const ALONE: StormStart =
-        StormStart { start_m: 0.0, rigid_m: 0.0, heel_floor_kpa: 0.0, failed: false, settle: Settle::Storm };
+    const ALONE: StormStart = StormStart {
+        start_m: 0.0,
+        rigid_m: 0.0,
+        heel_floor_kpa: 0.0,
+        failed: false,
+        stopped: false,
+        settle: Settle::Storm,
+    };
 }
 
 /// The random stream a storm draws its waves from (module docs, "Random numbers").
@@ -1274,6 +1291,9 @@ struct WaveRun<'a> {
     /// Whether the life (or storm) has failed already (module docs, "Failure"): its failing wave
     /// is recorded once.
     failed: bool,
+    /// Whether the dynamic model has stopped running on after the failure (a wave that did not
+    /// converge, [`StormOutcome::run_on_stopped`]): only the rigid block runs.
+    stopped: bool,
     /// The rigid block's sliding before the storm, m, and whether it has passed the sliding
     /// limit already (its failing wave is recorded once).
     rigid_start_m: f64,
@@ -1337,9 +1357,11 @@ impl WaveRun<'_> {
                 out.screened_waves += 1;
                 return Ok(());
             }
-            if self.defers_heel(heel_pa) {
+            if self.stopped || self.defers_heel(heel_pa) {
                 out.screened_waves += 1;
-                self.defer_heel(heel_pa, h, z, period_s);
+                if !self.stopped {
+                    self.defer_heel(heel_pa, h, z, period_s);
+                }
                 return Ok(());
             }
             return self.simulate(event, h, period_s, WaveKind::HeelOnly, out);
@@ -1359,6 +1381,10 @@ impl WaveRun<'_> {
                     out.rigid_block_failing_wave_impulsive = u64::from(event.impulse.is_some());
                 }
             }
+        }
+        if self.stopped {
+            out.screened_waves += 1;
+            return Ok(());
         }
         // A wave that may press the heel to the screen's heel pressure and beyond the largest
         // known runs, whatever the stick bound says (it bounds no heel pressure).
@@ -1482,7 +1508,18 @@ impl WaveRun<'_> {
             None => self.sim.insert(Simulation::new(site.dyn_model().clone(), st.structure.solver, &*train)),
         };
         let mut watch = WaveWatch::new(site.width_m, site.length_m);
-        sim.run_until(period_s, &*train, &mut watch)?;
+        match sim.run_until(period_s, &*train, &mut watch) {
+            Ok(()) => {}
+            // After the failure the model is outside its validity: a wave that does not converge
+            // stops the dynamic model's run-on (module docs, "Failure"); before it, an error.
+            Err(_) if self.failed => {
+                self.stopped = true;
+                out.run_on_stopped = 1;
+                out.screened_waves += 1;
+                return Ok(());
+            }
+            Err(e) => return Err(e.into()),
+        }
         out.simulated_waves += 1;
         out.max_heel_pressure_kpa = out.max_heel_pressure_kpa.max(watch.max_heel_pressure_pa / 1e3);
         if kind == WaveKind::HeelOnly {
@@ -1557,7 +1594,7 @@ fn storm_from(
     toe_k: Option<f64>,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
-    let StormStart { start_m, rigid_m, heel_floor_kpa, failed, settle } = from;
+    let StormStart { start_m, rigid_m, heel_floor_kpa, failed, stopped, settle } = from;
     let site = StormSite::new(st, s, scratch.modes(st));
     // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
     let k_toe = toe_k.unwrap_or_else(|| wavenumber(s.period_s, site.model.site.depth_at_toe_m));
@@ -1583,6 +1620,7 @@ fn storm_from(
         bound_t13,
         start_m,
         failed,
+        stopped,
         rigid_start_m: rigid_m,
         rigid_failed: st.failure.is_some_and(|f| rigid_m.abs() > f.sliding_m),
         heel_floor_kpa,
@@ -1729,6 +1767,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
                 rigid_m: life.rigid_block_sliding_m,
                 heel_floor_kpa: life.max_heel_pressure_kpa,
                 failed,
+                stopped: life.run_on_stopped != 0,
                 settle,
             };
             let o = storm_from(st, &storm, &mut waves_rng, from, Some(k_toe), &mut scratch)?;
@@ -1787,8 +1826,11 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
             loads_t13: &site.model.at_period(s.period_s),
             bound_t13: site.bound(s.period_s),
             start_m: 0.0,
-            // A still wave can fail no life (module docs, "The stick bound"): nothing to record.
-            failed: true,
+            // A still wave can fail no life (module docs, "The stick bound"), nor can a deferred
+            // one (its bound is below the failure heel pressure): nothing is recorded; a failed
+            // life's wave that does not converge stays screened.
+            failed: life.failed(),
+            stopped: false,
             rigid_start_m: 0.0,
             rigid_failed: true,
             heel_floor_kpa: 0.0,
@@ -1802,6 +1844,10 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
         let (event, _) = run.event(w.height_m, w.deviate, w.period_s);
         let mut o = StormOutcome::default();
         run.simulate(event, w.height_m, w.period_s, kind, &mut o)?;
+        if o.simulated_waves == 0 {
+            // It did not converge, in a failed life: it stays screened.
+            continue;
+        }
         life.simulated_waves += 1;
         life.screened_waves -= 1;
         if kind == WaveKind::HeelOnly {
@@ -2040,6 +2086,8 @@ pub struct LifeCounts {
     pub rigid_block_expected_sliding_m: f64,
     /// The largest net sliding of a single storm, m.
     pub max_storm_sliding_m: f64,
+    /// Failed lives whose dynamic model stopped running on at a wave that did not converge.
+    pub run_on_stopped_lives: usize,
     /// What the impulsive waves make of each model's lives.
     pub impulsive: ImpulsiveShare,
     pub rigid_block_impulsive: ImpulsiveShare,
@@ -2065,6 +2113,7 @@ impl LifeCounts {
             rigid_block_expected_sliding_m: lives.iter().map(|l| l.rigid_block_sliding_m.abs()).sum::<f64>()
                 / lives.len().max(1) as f64,
             max_storm_sliding_m: lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max),
+            run_on_stopped_lives: count(&|l| l.run_on_stopped != 0),
             impulsive: ImpulsiveShare::dynamic(lives),
             rigid_block_impulsive: ImpulsiveShare::rigid_block(lives, failure),
         }
