@@ -402,7 +402,7 @@ fn lives_csv<'a>(lives: impl Iterator<Item = (usize, &'a StormOutcome)>) -> Resu
     w.write_record(std::iter::once("life").chain(LIFE_COLUMNS.iter().map(|(name, _)| *name)))?;
     for (i, l) in lives {
         let cells = LIFE_COLUMNS.iter().map(|(_, c)| match c {
-            LifeColumn::Metres(f) | LifeColumn::Radians(f) => format!("{:e}", f(l)),
+            LifeColumn::Metres(f) | LifeColumn::Radians(f) | LifeColumn::Kilopascals(f) => format!("{:e}", f(l)),
             LifeColumn::Count(f) => f(l).to_string(),
         });
         w.write_record(std::iter::once(i.to_string()).chain(cells))?;
@@ -785,15 +785,15 @@ pub(crate) fn report_lives(
         let _set = (!crate::output::set_open()).then(|| crate::output::OutSet::open(dir));
         let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
         // The values of the statistics: a failed life at the sliding limit.
-        let dynamic: Vec<f64> =
-            lives.iter().map(|l| if l.failed(&failure) { failure_m } else { l.sliding_m.abs() }).collect();
+        let dynamic: Vec<f64> = lives.iter().map(|l| if l.failed() { failure_m } else { l.sliding_m.abs() }).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
         // The files are independent: made and synced at once (each to its temporary file; the
         // set renames them into place together), the first error in this order reported.
         let (json_file, csv_file, plot_files) = std::thread::scope(|s| {
             let json_file = s.spawn(|| write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes()));
             let csv_file = s.spawn(|| write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?));
-            let plot_files = plots(dir, title, &dynamic, &rigid, failure_m);
+            let plot_files = plots(dir, title, &dynamic, &rigid, failure_m)
+                .and_then(|()| heel_pressure_plot(dir, title, lives, &report.dynamic.heel_pressure_exceedance));
             let joined = |h: std::thread::ScopedJoinHandle<'_, Result<()>>| {
                 h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
             };
@@ -805,7 +805,7 @@ pub(crate) fn report_lives(
         crate::output::tidy_out_dir(dir, "design", keep)?;
         if !json {
             crate::sayln!(
-                "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg (and checkpoint.jsonl) to {}",
+                "\nWrote design.json, lives.csv, histogram.svg, exceedance.svg, heel_pressure.svg (and checkpoint.jsonl) to {}",
                 dir.display()
             );
         }
@@ -838,19 +838,15 @@ fn design_header(r: &DesignReport, t: &mut String) {
     if let Some(c) = &r.climate {
         let _ = writeln!(t, "{}", c.describe());
     }
+    let heel = r.failure_heel_pressure_kpa.map_or(String::new(), |q| format!(", or pressed the heel beyond {q} kPa"));
     let _ = writeln!(
         t,
-        "sliding S: shoreward +; |S| its magnitude at the end of the life; failure: moved beyond {:.3} m from its place or rotated beyond {} rad",
+        "sliding S: shoreward +; |S| its magnitude at the end of the life; failure: moved beyond {:.3} m from its place or rotated beyond {} rad{heel}",
         r.failure_sliding_m, r.failure_rotation_rad
     );
     let _ = writeln!(
         t,
-        "{}",
-        if r.lives_end_at_failure {
-            "a life ends at the wave that fails it, and enters E|S|, the percentiles and P(|S| > s) at the sliding limit"
-        } else {
-            "lives continue after failure (continue_after_failure); E|S|, the percentiles and P(|S| > s) take a failed life at the sliding limit"
-        }
+        "every life runs to its end; a failed life enters E|S|, the percentiles and P(|S| > s) at the sliding limit, and E|S| as simulated (Shimosako & Takahashi 1999) with its whole life"
     );
 }
 
@@ -866,8 +862,21 @@ fn sliding_table(r: &DesignReport, t: &mut String) {
     let row = |t: &mut String, what: &str, a: f64, b: f64| {
         let _ = writeln!(t, "{what:<32} {a:>10.4} m    {b:>10.4} m");
     };
-    row(t, "expected sliding E|S|", sd.expected_sliding_m, sr.expected_sliding_m);
-    row(t, "E|S| as simulated (uncapped)", sd.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_m);
+    let with_se = |t: &mut String, what: &str, a: (f64, f64), b: (f64, f64)| {
+        let _ = writeln!(t, "{what:<32} {:>10.4} ± {:.4} m   {:>10.4} ± {:.4} m", a.0, a.1, b.0, b.1);
+    };
+    with_se(
+        t,
+        "expected sliding E|S| (± SE)",
+        (sd.expected_sliding_m, sd.expected_sliding_se_m),
+        (sr.expected_sliding_m, sr.expected_sliding_se_m),
+    );
+    with_se(
+        t,
+        "E|S| as simulated (± SE)",
+        (sd.expected_sliding_uncapped_m, sd.expected_sliding_uncapped_se_m),
+        (sr.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_se_m),
+    );
     let _ = writeln!(
         t,
         "{:<32} {:>10.5} m    {:>10.5} m",
@@ -905,9 +914,88 @@ fn sliding_table(r: &DesignReport, t: &mut String) {
         "{:<32} {:>10.4}      {:>10}      ({} lives)",
         "  by rotation", sd.failure.by_rotation.probability, "-", sd.failure.by_rotation.lives
     );
+    if r.failure_heel_pressure_kpa.is_some() {
+        let _ = writeln!(
+            t,
+            "{:<32} {:>10.4}      {:>10}      ({} lives)",
+            "  by heel pressure", sd.failure.by_heel_pressure.probability, "-", sd.failure.by_heel_pressure.lives
+        );
+    }
     let (vd, vr) = (&sd.surviving, &sr.surviving);
     row(t, "E|S| of the surviving lives", vd.expected_sliding_m, vr.expected_sliding_m);
     row(t, "95 % of |S|, surviving lives", vd.percentiles_m.p95, vr.percentiles_m.p95);
+    let _ = writeln!(t);
+    for (name, m) in [("dynamic model", sd), ("rigid block", sr)] {
+        let _ = writeln!(t, "{}", capped_mean_text(name, m, r.failure_sliding_m));
+    }
+    let (id, ir) = (&sd.impulsive, &sr.impulsive);
+    let _ = writeln!(
+        t,
+        "impulsive waves: {} (that may slide or lift the caisson); they slid the dynamic model {:.4} m a life ({:.0} % of E|S| as simulated, {:.0} % of its {} failures) and the rigid block {:.4} m ({:.0} %, {:.0} % of {})",
+        id.waves,
+        id.sliding_m,
+        100.0 * id.share_of_expected_sliding,
+        100.0 * id.share_of_failures,
+        id.failures,
+        ir.sliding_m,
+        100.0 * ir.share_of_expected_sliding,
+        100.0 * ir.share_of_failures,
+        ir.failures
+    );
+    let h = &r.dynamic.heel_pressure_exceedance;
+    let _ = writeln!(
+        t,
+        "heel pressure (dynamic model): P(q_heel > {} kPa) = {:.4} ± {:.4} ({} lives; the largest {:.0} kPa; each life's largest is exact from {} kPa up)",
+        h.allowable_kpa, h.probability, h.standard_error, h.lives, h.largest_kpa, h.exact_from_kpa
+    );
+}
+
+/// E|S| = (1 − P_f) E|S|_surviving + P_f · limit, in numbers: what the capped headline of model
+/// `name` is made of.
+pub(crate) fn capped_mean_text(name: &str, m: &caisson::report::design::ModelStatistics, limit_m: f64) -> String {
+    let pf = m.failure.probability;
+    let surviving = m.surviving.expected_sliding_m;
+    format!(
+        "{name}: E|S| = (1 − P_f) · E|S| of the survivors + P_f · limit = (1 − {pf:.4}) × {surviving:.4} m + {pf:.4} × {limit_m:.3} m = {:.4} + {:.4} = {:.4} m",
+        (1.0 - pf) * surviving,
+        pf * limit_m,
+        m.expected_sliding_m
+    )
+}
+
+/// `heel_pressure.svg`: the exceedance of the lives' largest heel pressure, with the allowable
+/// one marked (below the pressure from which each life's value is exact, the curve is a lower
+/// bound: docs/design.md, "Heel pressure").
+fn heel_pressure_plot(
+    dir: &Path,
+    title: &str,
+    lives: &[StormOutcome],
+    h: &caisson::analysis::lifetime::HeelPressureExceedance,
+) -> Result<()> {
+    let mut q: Vec<f64> = lives.iter().map(|l| l.max_heel_pressure_kpa).collect();
+    q.sort_by(f64::total_cmp);
+    let n = q.len().max(1) as f64;
+    let curve = |keep: &dyn Fn(f64) -> bool| -> Vec<(f64, f64)> {
+        q.iter().enumerate().filter(|(_, &x)| keep(x)).map(|(i, &x)| (x, 1.0 - i as f64 / n)).collect()
+    };
+    let floor = 1.0 / n;
+    let exact = h.exact_from_kpa;
+    let mut series = vec![Series::line(format!("exact (from {exact} kPa)"), curve(&|x| x >= exact))];
+    let below = curve(&|x| x < exact);
+    if !below.is_empty() {
+        series.push(Series::dashed("lower bound (waves not run may have pressed more)", below));
+    }
+    series.push(Series::line(
+        format!("allowable {} kPa: P(q_heel > q_a) = {:.4} ± {:.4}", h.allowable_kpa, h.probability, h.standard_error),
+        vec![(h.allowable_kpa, floor), (h.allowable_kpa, 1.0)],
+    ));
+    panels_scaled(
+        &dir.join("heel_pressure.svg"),
+        &format!("{title}: probability that the life's largest heel pressure exceeds q"),
+        "q, heel (shoreward edge) pressure of the base from the springs' reactions (kPa; dynamic model)",
+        &[Panel { y_label: "P(q_heel > q)".into(), series }],
+        Scales { log_x: false, log_y: true, ..Scales::default() },
+    )
 }
 
 /// What only the dynamic model gives: net, shoreward and seaward sliding, excursion, rocking.

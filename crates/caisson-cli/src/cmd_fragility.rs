@@ -47,7 +47,12 @@ fn fit_text(f: &Result<LognormalFit, FitFailure>) -> String {
     }
 }
 
-fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f64) -> String {
+fn table_text(
+    s: &Setup<'_>,
+    name: &str,
+    (r, report): (&FragilityResult, &FragilityReport),
+    rigid_block_mu: f64,
+) -> String {
     let p = &s.params;
     let c = &s.structure.caisson;
     let mut t = String::new();
@@ -58,7 +63,18 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
         c.weight_in_water_n / 1e3,
         s.structure.foundation.mu_static
     );
-    let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to Goda's design-wave H_max of each height ({HMAX_RATIO} H1/3, or the breaking limit at the toe where lower), no tide or estimation errors; {} storms per height, seed {}",
+    let errors = match &report.errors {
+        None => "no estimation errors".to_string(),
+        Some(e) => format!(
+            "the load-model errors of a design life drawn per storm (wave force bias {} COV {}, friction bias {} COV {}{})",
+            e.wave_force.bias,
+            e.wave_force.cov,
+            e.friction.bias,
+            e.friction.cov,
+            e.impact_force.map_or(String::new(), |m| format!(", impact bias {} COV {}", m.bias, m.cov))
+        ),
+    };
+    let _ = writeln!(t, "Storms of {} h at T1/3 = {} s ({} waves), Rayleigh heights up to Goda's design-wave H_max of each height ({HMAX_RATIO} H1/3, or the breaking limit at the toe where lower), no tide, {errors}; {} storms per height, seed {}",
         p.storm_duration_s / 3600.0, p.period_s, p.waves_per_storm(), p.storms, p.seed);
     let climate: Vec<String> = [
         caisson::report::design::duration_text(&p.duration),
@@ -122,6 +138,20 @@ fn table_text(s: &Setup<'_>, name: &str, r: &FragilityResult, rigid_block_mu: f6
             l.rotation_failures
         );
     }
+    let (d, b) = (&report.impulsive.dynamic, &report.impulsive.rigid_block);
+    let _ = writeln!(
+        t,
+        "impulsive waves (all heights): {} that may slide or lift the caisson; {:.0} % of the storms' mean sliding and {:.0} % of the {} failures of the dynamic model (beyond {} m or {} rad), {:.0} % and {:.0} % of the {} of the rigid block",
+        d.waves,
+        100.0 * d.share_of_expected_sliding,
+        100.0 * d.share_of_failures,
+        d.failures,
+        p.limits_m.last().copied().unwrap_or(0.0),
+        p.failure_rotation_rad,
+        100.0 * b.share_of_expected_sliding,
+        100.0 * b.share_of_failures,
+        b.failures
+    );
     let _ = writeln!(t);
     let _ = writeln!(t, "Lognormal fits (maximum likelihood): P(S > s | H1/3) = Φ((ln H1/3 − ln θ)/β)");
     for f in &r.fits {
@@ -239,7 +269,7 @@ pub fn run(args: FragilityArgs) -> Result<()> {
     if args.json {
         crate::sayln!("{}", pretty(&json)?);
     } else {
-        crate::say!("{}", table_text(&setup, name, &result, case.rigid_block_mu));
+        crate::say!("{}", table_text(&setup, name, (&result, &report), case.rigid_block_mu));
     }
     if let Some(dir) = &args.out {
         let _set = crate::output::OutSet::open(dir);

@@ -1,7 +1,8 @@
 //! `caisson merge FILE.toml SHARD... --out DIR [--lives N] [--json]`: join the shards of a design
 //! run (`caisson design FILE --life-range START..END --out SHARD`) into what one
 //! `caisson design FILE --lives N --out DIR` writes, byte for byte: design.json, lives.csv,
-//! histogram.svg and exceedance.svg (the same [`report_lives`] on the same lives in index order:
+//! histogram.svg, exceedance.svg and heel_pressure.svg (the same [`report_lives`] on the same
+//! lives in index order:
 //! each life depends only on the seed and its index), and a checkpoint of lives 0..N whose header
 //! and lines are those one run writes (so `--resume` and further merges work).
 //!
@@ -10,8 +11,9 @@
 //! shards are checked against the file: every shard's fingerprint must be the file's (with
 //! `--brute-force` if the shards were run with it, as their headers say), so the shards' lives
 //! are lives of this scenario; `lives` and `thresholds_m` are not in the fingerprint (they change
-//! no life) and come from the file (`--lives` overrides `lives`); the failure limits are in it
-//! (a life ends at failure), unless `continue_after_failure = true` runs every life to its end.
+//! no life) and come from the file (`--lives` overrides `lives`); the failure limits and the
+//! allowable heel pressure are in it (a life records its failing wave; the screen runs every wave
+//! that may reach the allowable heel pressure).
 //!
 //! **Refused** with an `Error:` naming the shard and its checkpoint (exit 2), before anything is
 //! written: a checkpoint that cannot be read, of another format, results version or fingerprint;

@@ -10,7 +10,7 @@ use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::conventional::Governs;
 use caisson::analysis::conventional::Reached;
-use caisson::analysis::sizing::{Candidate, Required};
+use caisson::analysis::sizing::{Candidate, ExpectedSliding, Required};
 use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::report::checkpoint::{candidate_line, SizeHeader};
 use caisson::report::size::{CandidateReport, GodaWidth, SizeReport};
@@ -303,7 +303,11 @@ fn size_text(r: &SizeReport) -> String {
     let c = &r.criteria;
     let mut crit = Vec::new();
     if let Some(s) = c.expected_sliding_m {
-        crit.push(format!("E|S| ≤ {s} m"));
+        let which = match c.expected_sliding {
+            ExpectedSliding::Capped => "a failed life at the sliding limit",
+            ExpectedSliding::AsSimulated => "as simulated, every life to its end",
+        };
+        crit.push(format!("E|S| ≤ {s} m ({which})"));
     }
     if let Some(e) = c.exceedance {
         crit.push(format!("P(|S| > {} m) ≤ {}", e.sliding_m, e.probability));
@@ -330,7 +334,7 @@ fn size_text(r: &SizeReport) -> String {
     let exceed = r.criteria.exceedance.map(|e| e.sliding_m);
     let _ = writeln!(
         t,
-        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  E|S| rigid (m)  {}  P(fail) dyn (rotation)  P(fail) rigid  meets the criterion",
+        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  as simulated ± SE (m)  E|S| rigid (m)  as simulated  {}  P(fail) dyn (rotation)  P(fail) rigid  P(q_heel > q_a)  meets the criterion",
         exceed.map_or("                  ".to_string(), |s| format!("P(|S| > {s:<4} m) dyn"))
     );
     for k in &r.candidates {
@@ -341,24 +345,47 @@ fn size_text(r: &SizeReport) -> String {
             .collect();
         let _ = writeln!(
             t,
-            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:14.4}  {:>18}  {:>11.4} ({:.4})  {:>13.4}  {}",
+            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:10.4} ± {:<8.4}  {:14.4}  {:12.4}  {:>18}  {:>11.4} ({:.4})  {:>13.4}  {:>15.4}  {}",
             k.width_m,
             k.weight_in_water_kn,
             k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
             k.goda_overturning_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
             k.dynamic.expected_sliding_m,
             k.dynamic.expected_sliding_se_m,
+            k.dynamic.expected_sliding_uncapped_m,
+            k.dynamic.expected_sliding_uncapped_se_m,
             k.rigid_block.expected_sliding_m,
+            k.rigid_block.expected_sliding_uncapped_m,
             exceed.map_or(String::new(), |_| format!("{:.4}", k.dynamic.exceedance_probability)),
             k.dynamic.failure_probability,
             k.dynamic.failure_by_rotation_probability,
             k.rigid_block.failure_probability,
+            k.heel_pressure_exceedance.probability,
             if meets.is_empty() { "-".to_string() } else { meets.join(", ") }
+        );
+    }
+    let at = r.dynamic.width_m().and_then(|w| r.candidates.iter().find(|k| k.width_m == w)).or(r.candidates.last());
+    if let Some(k) = at {
+        let (d, b) = (&k.dynamic.impulsive, &k.rigid_block.impulsive);
+        let _ = writeln!(
+            t,
+            "\nat B = {:.2} m: impulsive waves {} (that may slide or lift the caisson) make {:.0} % of E|S| as simulated and {:.0} % of the {} failures of the dynamic model, {:.0} % and {:.0} % of the {} of the rigid block; P(q_heel > {} kPa) = {:.4} ± {:.4}",
+            k.width_m,
+            d.waves,
+            100.0 * d.share_of_expected_sliding,
+            100.0 * d.share_of_failures,
+            d.failures,
+            100.0 * b.share_of_expected_sliding,
+            100.0 * b.share_of_failures,
+            b.failures,
+            k.heel_pressure_exceedance.allowable_kpa,
+            k.heel_pressure_exceedance.probability,
+            k.heel_pressure_exceedance.standard_error
         );
     }
     let _ = writeln!(
         t,
-        "\nE|S| counts a failed life (moved beyond the failure limit, or rotated beyond [design] failure_rotation_rad) at the sliding limit;\nthe lives as simulated are in size.json (expected_sliding_uncapped_m).\n{} lives simulated in {} candidates",
+        "\nE|S| counts a failed life (moved beyond the failure limit, or rotated beyond [design] failure_rotation_rad) at the sliding limit;\nE|S| as simulated is the plain mean of the lives run to their end (Shimosako & Takahashi 1999; `[size] expected_sliding = \"as-simulated\"`).\n{} lives simulated in {} candidates",
         r.lives_simulated,
         r.candidates.len()
     );
@@ -378,21 +405,35 @@ struct CandidateRow {
     dynamic_expected_sliding_m: Sci,
     dynamic_expected_sliding_se_m: Sci,
     dynamic_expected_sliding_uncapped_m: Sci,
+    dynamic_expected_sliding_uncapped_se_m: Sci,
     dynamic_p50_m: Sci,
     dynamic_p95_m: Sci,
     dynamic_exceedance_probability: Sci,
     dynamic_failure_probability: Sci,
     dynamic_failure_by_sliding_probability: Sci,
     dynamic_failure_by_rotation_probability: Sci,
+    dynamic_failure_by_heel_pressure_probability: Sci,
+    dynamic_impulsive_waves: u64,
+    dynamic_impulsive_sliding_m: Sci,
+    dynamic_impulsive_share_of_expected_sliding: Sci,
+    dynamic_impulsive_share_of_failures: Sci,
     rigid_block_expected_sliding_m: Sci,
     rigid_block_expected_sliding_se_m: Sci,
     rigid_block_expected_sliding_uncapped_m: Sci,
+    rigid_block_expected_sliding_uncapped_se_m: Sci,
     rigid_block_p50_m: Sci,
     rigid_block_p95_m: Sci,
     rigid_block_exceedance_probability: Sci,
     rigid_block_failure_probability: Sci,
     rigid_block_failure_by_sliding_probability: Sci,
     rigid_block_failure_by_rotation_probability: Sci,
+    rigid_block_failure_by_heel_pressure_probability: Sci,
+    rigid_block_impulsive_waves: u64,
+    rigid_block_impulsive_sliding_m: Sci,
+    rigid_block_impulsive_share_of_expected_sliding: Sci,
+    rigid_block_impulsive_share_of_failures: Sci,
+    heel_pressure_exceedance_probability: Sci,
+    heel_pressure_exceedance_standard_error: Sci,
     dynamic_meets: bool,
     rigid_block_meets: bool,
 }
@@ -410,21 +451,35 @@ impl From<&CandidateReport> for CandidateRow {
             dynamic_expected_sliding_m: Sci(d.expected_sliding_m),
             dynamic_expected_sliding_se_m: Sci(d.expected_sliding_se_m),
             dynamic_expected_sliding_uncapped_m: Sci(d.expected_sliding_uncapped_m),
+            dynamic_expected_sliding_uncapped_se_m: Sci(d.expected_sliding_uncapped_se_m),
             dynamic_p50_m: Sci(d.p50_m),
             dynamic_p95_m: Sci(d.p95_m),
             dynamic_exceedance_probability: Sci(d.exceedance_probability),
             dynamic_failure_probability: Sci(d.failure_probability),
             dynamic_failure_by_sliding_probability: Sci(d.failure_by_sliding_probability),
             dynamic_failure_by_rotation_probability: Sci(d.failure_by_rotation_probability),
+            dynamic_failure_by_heel_pressure_probability: Sci(d.failure_by_heel_pressure_probability),
+            dynamic_impulsive_waves: d.impulsive.waves,
+            dynamic_impulsive_sliding_m: Sci(d.impulsive.sliding_m),
+            dynamic_impulsive_share_of_expected_sliding: Sci(d.impulsive.share_of_expected_sliding),
+            dynamic_impulsive_share_of_failures: Sci(d.impulsive.share_of_failures),
             rigid_block_expected_sliding_m: Sci(r.expected_sliding_m),
             rigid_block_expected_sliding_se_m: Sci(r.expected_sliding_se_m),
             rigid_block_expected_sliding_uncapped_m: Sci(r.expected_sliding_uncapped_m),
+            rigid_block_expected_sliding_uncapped_se_m: Sci(r.expected_sliding_uncapped_se_m),
             rigid_block_p50_m: Sci(r.p50_m),
             rigid_block_p95_m: Sci(r.p95_m),
             rigid_block_exceedance_probability: Sci(r.exceedance_probability),
             rigid_block_failure_probability: Sci(r.failure_probability),
             rigid_block_failure_by_sliding_probability: Sci(r.failure_by_sliding_probability),
             rigid_block_failure_by_rotation_probability: Sci(r.failure_by_rotation_probability),
+            rigid_block_failure_by_heel_pressure_probability: Sci(r.failure_by_heel_pressure_probability),
+            rigid_block_impulsive_waves: r.impulsive.waves,
+            rigid_block_impulsive_sliding_m: Sci(r.impulsive.sliding_m),
+            rigid_block_impulsive_share_of_expected_sliding: Sci(r.impulsive.share_of_expected_sliding),
+            rigid_block_impulsive_share_of_failures: Sci(r.impulsive.share_of_failures),
+            heel_pressure_exceedance_probability: Sci(k.heel_pressure_exceedance.probability),
+            heel_pressure_exceedance_standard_error: Sci(k.heel_pressure_exceedance.standard_error),
             dynamic_meets: k.dynamic_meets,
             rigid_block_meets: k.rigid_block_meets,
         }
@@ -468,23 +523,26 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     let top_of =
         |s: &[Series], floor: f64| s.iter().flat_map(|s| s.points.iter().map(|p| p.1)).fold(floor * 10.0, f64::max);
     let mut panels = Vec::new();
+    // The E|S| the criterion reads (`[size] expected_sliding`), with its standard error.
+    let as_simulated = r.criteria.expected_sliding == ExpectedSliding::AsSimulated;
+    let mean = move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_m } else { p.expected_sliding_m };
+    let se =
+        move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_se_m } else { p.expected_sliding_se_m };
+    let which = if as_simulated { "E|S| as simulated" } else { "E|S|" };
     let mut sliding = vec![
-        Series::line("dynamic model: E|S|", pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m)),
-        Series::line("rigid block: E|S|", pts(FLOOR_M, &|k| k.rigid_block.expected_sliding_m)),
+        Series::line(format!("dynamic model: {which}"), pts(FLOOR_M, &|k| mean(&k.dynamic))),
+        Series::line(format!("rigid block: {which}"), pts(FLOOR_M, &|k| mean(&k.rigid_block))),
     ];
     let top = top_of(&sliding, FLOOR_M).max(r.criteria.expected_sliding_m.unwrap_or(0.0));
     sliding.extend(widths(FLOOR_M, top));
     sliding.push(Series::line("dynamic model: 95 % of |S|", pts(FLOOR_M, &|k| k.dynamic.p95_m)));
     sliding.push(Series::dashed(
-        "dynamic model: 90 % band of E|S|",
-        pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m + z * k.dynamic.expected_sliding_se_m),
+        format!("dynamic model: 90 % band of {which}"),
+        pts(FLOOR_M, &|k| mean(&k.dynamic) + z * se(&k.dynamic)),
     ));
-    sliding.push(Series::dashed(
-        "",
-        pts(FLOOR_M, &|k| k.dynamic.expected_sliding_m - z * k.dynamic.expected_sliding_se_m),
-    ));
+    sliding.push(Series::dashed("", pts(FLOOR_M, &|k| mean(&k.dynamic) - z * se(&k.dynamic))));
     if let Some(s) = r.criteria.expected_sliding_m {
-        sliding.push(Series::dashed(format!("criterion: E|S| ≤ {s} m"), vec![(lo, s), (hi, s)]));
+        sliding.push(Series::dashed(format!("criterion: {which} ≤ {s} m"), vec![(lo, s), (hi, s)]));
     }
     panels.push(Panel { y_label: "sliding over the life (m)".into(), series: sliding });
     let mut probability = |label: String, f: fn(&ModelPoint) -> f64, limit: f64| {

@@ -79,7 +79,7 @@ pub const OUTPUTS: &[(&str, &[&str])] = &[
     ("spectrum", &["spectrum.csv", "spectrum.json", "spectrum.svg"]),
     ("loads", &["loads.json", "wave_loads.csv", "wave_loads.svg"]),
     ("campaign", &["campaign.json", "campaign.csv", "campaign.svg", "campaign_vs_height.svg"]),
-    ("design", &["design.json", "lives.csv", "histogram.svg", "exceedance.svg", CHECKPOINT]),
+    ("design", &["design.json", "lives.csv", "histogram.svg", "exceedance.svg", "heel_pressure.svg", CHECKPOINT]),
     ("fragility", &["fragility.json", "fragility.csv", "fragility.svg"]),
     ("size", &["size.json", "candidates.csv", "design_curve.svg", "size_checkpoint.jsonl"]),
     ("validation", &["validation.md", "figures/validation_*.svg"]),

@@ -212,7 +212,7 @@ fn resume_is_byte_identical_in_every_output_file() {
         assert!(a == b, "{name:?} differs after --resume");
         compared += 1;
     }
-    assert_eq!(compared, 4, "design.json, lives.csv, histogram.svg, exceedance.svg");
+    assert_eq!(compared, 5, "design.json, lives.csv, histogram.svg, exceedance.svg, heel_pressure.svg");
     // The lives of both checkpoints are the same, line for line once sorted.
     let sorted = |p: &Path| {
         let mut l = lines(&p.join("checkpoint.jsonl"));

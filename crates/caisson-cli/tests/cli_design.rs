@@ -86,7 +86,8 @@ fn json_has_the_documented_keys_and_is_the_same_on_any_thread_count() {
         assert!(j[model]["expected_sliding_m"].as_f64().unwrap() <= 5.0);
         assert!(j[model]["expected_sliding_uncapped_m"].as_f64().unwrap() >= 0.0);
     }
-    assert_eq!((j["failure_rotation_rad"].as_f64(), j["lives_end_at_failure"].as_bool()), (Some(0.01), Some(true)));
+    assert_eq!(j["failure_rotation_rad"].as_f64(), Some(0.01));
+    assert!(j.get("lives_end_at_failure").is_none() && j.get("failure_heel_pressure_kpa").is_none());
     let d = &j["dynamic"];
     let net = d["expected_shoreward_sliding_m"].as_f64().unwrap() - d["expected_seaward_sliding_m"].as_f64().unwrap();
     assert!((net - d["expected_net_sliding_m"].as_f64().unwrap()).abs() < 1e-12, "net = shoreward − seaward");
@@ -260,7 +261,9 @@ fn bad_design_keys_are_named() {
         ("seed = 3", "seed = 3\nfailure_rotation_rad = 0.0", "[design] failure_rotation_rad"),
         ("seed = 3", "seed = 3\nfailure_rotation_rad = 0.5", "[design] failure_rotation_rad"),
         ("seed = 3", "seed = 3\nfailure_rotation_rad = inf", "[design] failure_rotation_rad"),
-        ("seed = 3", "seed = 3\ncontinue_after_failure = \"yes\"", "continue_after_failure"),
+        ("seed = 3", "seed = 3\ncontinue_after_failure = true", "[design] continue_after_failure"),
+        ("seed = 3", "seed = 3\nallowable_heel_pressure_kpa = 0.0", "[design] allowable_heel_pressure_kpa"),
+        ("seed = 3", "seed = 3\nfailure_heel_pressure_kpa = 2e4", "[design] failure_heel_pressure_kpa"),
         // 350 kN/m is below 0.2 of the 3536.5 kN/m of water the caisson displaces.
         ("weight_in_water_kn = 4500.0", "weight_in_water_kn = 350.0", "[caisson] weight_in_water_kn"),
         // 750 kN/m (0.21 of it) floats at 4 m of tide (ρ_w g B l R = 808 kN).

@@ -15,14 +15,16 @@ use support::{caisson, site, write};
 /// storm has several waves at the breaking limit, each sliding it by centimetres, and only 9 m is
 /// in the transition. The probabilities then rise from 0 to 1 with H1/3 by far more than the
 /// sampling noise of 8 storms (seeds 1-6 all give non-decreasing counts), so the test does not
-/// depend on a lucky seed.
+/// depend on a lucky seed. The storms carry no load-model or friction errors (`errors = false`):
+/// a storm drawn with a low force factor may slide less than 5 cm at 15 m, which would blur the
+/// 0-to-1 rise this test counts on (the errors have tests of their own in `analysis::fragility`).
 fn base() -> String {
     let site = site::without(site::SMALL_DESIGN, "design", &[]);
     let site = site::with(&site, "caisson", "weight_in_water_kn = 5000.0");
     site::with(
         &site,
         "fragility",
-        "significant_heights_m = [3.0, 6.0, 9.0, 12.0, 15.0]\nstorms = 8\nlimits_m = [0.05, 0.2]\nstorm_duration_h = 0.1\nseed = 1",
+        "significant_heights_m = [3.0, 6.0, 9.0, 12.0, 15.0]\nstorms = 8\nlimits_m = [0.05, 0.2]\nstorm_duration_h = 0.1\nseed = 1\nerrors = false",
     )
 }
 

@@ -380,8 +380,8 @@ fn fragility_of_a_million_storms_per_height_is_refused_by_its_step_estimate() {
             "[fragility] storms",
         ],
     );
-    // 9e6 storms of 563 waves, 14 % simulated, at about 40 steps a second: about 4e11.
-    assert!((1e11..1e12).contains(&estimate(&err)), "the estimate is given: {err}");
+    // 9e6 storms of 563 waves, 5 % simulated, at about 29 steps a second: about 1e11.
+    assert!((5e10..1e12).contains(&estimate(&err)), "the estimate is given: {err}");
 }
 
 #[test]

@@ -10,7 +10,7 @@ use support::{caisson, design_text, refused, s, write};
 
 /// The output files of a design run (the checkpoint is compared apart: its lines are in the order
 /// the lives finished).
-const OUTPUTS: [&str; 4] = ["design.json", "lives.csv", "histogram.svg", "exceedance.svg"];
+const OUTPUTS: [&str; 5] = ["design.json", "lives.csv", "histogram.svg", "exceedance.svg", "heel_pressure.svg"];
 
 /// `caisson design FILE --life-range RANGE --out DIR [extra]`, expected to succeed.
 fn shard(file: &Path, range: &str, dir: &Path, extra: &[&str]) {
@@ -87,18 +87,18 @@ fn three_shards_in_any_order_merge_to_one_process_byte_for_byte() {
         assert!(json == st.full_json, "merge --json differs from design --json");
         compared += assert_same_outputs(&st.full, &out);
     }
-    assert_eq!(compared, 10);
+    assert_eq!(compared, 12);
     // Further merges: two shards merged first (--lives 16), then with the third.
     let ab = dir.path().join("ab");
     caisson().args(["merge", s(&st.file), s(a), s(b), "--lives", "16", "--out", s(&ab)]).assert().success();
     let out = dir.path().join("again");
     merge(&st.file, &[c, &ab.join("checkpoint.jsonl")], &out);
-    assert_eq!(assert_same_outputs(&st.full, &out), 5);
+    assert_eq!(assert_same_outputs(&st.full, &out), 6);
     // The merged checkpoint resumes as a finished run: nothing to do, the same outputs.
     let resumed = caisson().args(["design", s(&st.file), "--json", "--resume", "--out", s(&out)]).output().unwrap();
     assert!(resumed.status.success(), "{}", String::from_utf8_lossy(&resumed.stderr));
     assert!(resumed.stdout == st.full_json);
-    assert_eq!(assert_same_outputs(&st.full, &out), 5);
+    assert_eq!(assert_same_outputs(&st.full, &out), 6);
 }
 
 /// `merge FILE SHARDS --out DIR` refused with every needle; DIR is not created.
@@ -202,7 +202,7 @@ fn a_shard_resumes_after_stop_after_and_merges_to_the_same_result() {
     assert_eq!(std::fs::read(b.join("lives.csv")).unwrap(), std::fs::read(st.parts[1].join("lives.csv")).unwrap());
     let json = merge(&st.file, &[a, &b, c], &out);
     assert!(json == st.full_json);
-    assert_eq!(assert_same_outputs(&st.full, &out), 5);
+    assert_eq!(assert_same_outputs(&st.full, &out), 6);
 }
 
 #[test]

@@ -181,8 +181,10 @@ fn a_resumed_sizing_run_reports_the_same() {
 }
 
 /// candidates.csv is size.json's candidates, flattened: a row per candidate, a column per number
-/// (a model's under its prefix: `dynamic_p95_m` is `dynamic.p95_m`), each cell the JSON value
-/// exactly (`{:e}` round-trips f64), an empty cell where the JSON has `null`.
+/// (a model's under its prefix: `dynamic_p95_m` is `dynamic.p95_m`, `dynamic_impulsive_waves`
+/// is `dynamic.impulsive.waves`; `heel_pressure_exceedance_probability` is
+/// `heel_pressure_exceedance.probability`), each cell the JSON value exactly (`{:e}` round-trips
+/// f64), an empty cell where the JSON has `null`.
 #[test]
 fn candidates_csv_is_the_json_candidates_flattened() {
     let dir = tempfile::tempdir().unwrap();
@@ -194,16 +196,25 @@ fn candidates_csv_is_the_json_candidates_flattened() {
     let cands = j["candidates"].as_array().unwrap();
     let mut r = csv::Reader::from_path(out.join("candidates.csv")).unwrap();
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    // 6 of the width, 9 of each model, 2 verdicts.
-    assert_eq!(header.len(), 26, "{header:?}");
+    // 6 of the width, 12 of each model and 4 of its impulsive waves, 2 of the heel pressure, 2
+    // verdicts.
+    assert_eq!(header.len(), 40, "{header:?}");
     let (mut rows, mut cells, mut empty) = (0, 0, 0);
     for (row, c) in r.records().map(Result::unwrap).zip(cands) {
         for (name, cell) in header.iter().zip(row.iter()) {
-            let want = match name.split_once('_') {
-                Some((m @ "dynamic", rest)) if c.get(name).is_none() => &c[m][rest],
-                Some(("rigid", rest)) if c.get(name).is_none() => &c["rigid_block"][&rest["block_".len()..]],
-                _ => &c[name.as_str()],
+            let model = |m: &str, rest: &str| match rest.strip_prefix("impulsive_") {
+                Some(key) => c[m]["impulsive"][key].clone(),
+                None => c[m][rest].clone(),
             };
+            let want = match name.split_once('_') {
+                Some((m @ "dynamic", rest)) if c.get(name).is_none() => model(m, rest),
+                Some(("rigid", rest)) if c.get(name).is_none() => model("rigid_block", &rest["block_".len()..]),
+                _ => match name.strip_prefix("heel_pressure_exceedance_") {
+                    Some(key) => c["heel_pressure_exceedance"][key].clone(),
+                    None => c[name.as_str()].clone(),
+                },
+            };
+            assert!(!want.is_null() || name.starts_with("goda_"), "{name}: no such number in the JSON");
             match want {
                 Value::Null => {
                     assert_eq!(cell, "", "{name}");
@@ -216,7 +227,7 @@ fn candidates_csv_is_the_json_candidates_flattened() {
         }
         rows += 1;
     }
-    assert_eq!((rows, cells), (cands.len(), 26 * cands.len()), "every cell checked");
+    assert_eq!((rows, cells), (cands.len(), 40 * cands.len()), "every cell checked");
     // The heel pressure is undefined (null) at the narrow widths that would overturn (the resultant
     // outside the base).
     assert!(empty > 0, "an empty cell checked");

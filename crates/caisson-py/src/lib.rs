@@ -972,7 +972,7 @@ fn lives_columns<'py>(py: Python<'py>, lives: &[(usize, StormOutcome)]) -> PyRes
     d.set_item("life", PyArray1::from_vec(py, lives.iter().map(|(i, _)| *i as u64).collect::<Vec<u64>>()))?;
     for (name, column) in LIFE_COLUMNS {
         match column {
-            LifeColumn::Metres(f) | LifeColumn::Radians(f) => {
+            LifeColumn::Metres(f) | LifeColumn::Radians(f) | LifeColumn::Kilopascals(f) => {
                 d.set_item(name, PyArray1::from_vec(py, lives.iter().map(|(_, o)| f(o)).collect()))?
             }
             LifeColumn::Count(f) => {
@@ -1008,7 +1008,7 @@ fn design_statistics(
             .get_item(name)?
             .ok_or_else(|| PyValueError::new_err(format!("the lives have no column `{name}`")))?;
         let values: Vec<serde_json::Value> = match column {
-            LifeColumn::Metres(_) | LifeColumn::Radians(_) => {
+            LifeColumn::Metres(_) | LifeColumn::Radians(_) | LifeColumn::Kilopascals(_) => {
                 item.extract::<Vec<f64>>()?.into_iter().map(serde_json::Value::from).collect()
             }
             LifeColumn::Count(_) => item.extract::<Vec<u64>>()?.into_iter().map(serde_json::Value::from).collect(),

@@ -146,3 +146,42 @@ def test_goda_takahashi_without_the_berm_raises_the_clis_error(tmp_path):
         assert_replace_error_is_the_clis(err.value, "waves", r.stderr)
     # With the berm given it is accepted.
     assert sc.replace(water={"berm_width_m": 10.0}, waves={"breaking_load": "goda-takahashi"}) is not None
+
+
+def test_the_breaking_site_design_is_the_clis_with_its_impulsive_shares_heel_pressures_and_warnings(tmp_path):
+    # examples/breaking_site_15m.toml (issue 33's 15 m breaking-wave site), 60 lives of 20 years,
+    # with a failure heel pressure of 380 kPa (a mode of its own): the impulsive groups, the heel
+    # exceedance, both E|S| and their standard errors, the failure by heel pressure and the
+    # warnings, key for key and bit for bit, Python against `caisson design --json`.
+    sc = caisson.Scenario.from_toml(EXAMPLES / "breaking_site_15m.toml").replace(
+        design={"lives": 60, "life_years": 20, "failure_heel_pressure_kpa": 380.0}
+    )
+    p = tmp_path / "breaking.toml"
+    p.write_text(sc.to_toml())
+    want = cli_json("design", p)
+    design = caisson.Design(caisson.Scenario.from_toml(p))
+    got = design.statistics(design.simulate_lives())
+    assert assert_same_json(got.report, want) > 100
+    assert "impulsive-share" in codes(want)
+    for model in ("dynamic", "rigid_block"):
+        assert set(want[model]["impulsive"]) == {"waves", "sliding_m", "share_of_expected_sliding", "share_of_failures", "failures"}
+    h = want["dynamic"]["heel_pressure_exceedance"]
+    assert (h["allowable_kpa"], h["exact_from_kpa"]) == (400.0, 380.0)
+    assert want["failure_heel_pressure_kpa"] == 380.0 and "by_heel_pressure" in want["dynamic"]["failure"]
+
+
+def test_a_size_by_the_as_simulated_expected_sliding_is_the_clis(tmp_path):
+    # The short sizing example with `expected_sliding = "as-simulated"`: both statistics, the
+    # impulsive groups and the heel exceedance of every candidate, and the answer, bit for bit.
+    sc = caisson.Scenario.from_toml(short_size_toml(tmp_path)).replace(size={"expected_sliding": "as-simulated"})
+    p = tmp_path / "as_simulated.toml"
+    p.write_text(sc.to_toml())
+    out = tmp_path / "out"
+    cli("size", p, "--out", out)
+    want = json.loads((out / "size.json").read_text())
+    got = caisson.size(caisson.Scenario.from_toml(p))
+    assert assert_same_json(got.report, want) > 100
+    assert want["criteria"]["expected_sliding"] == "as-simulated"
+    for c in want["candidates"]:
+        assert c["dynamic"]["expected_sliding_uncapped_se_m"] >= 0.0 and "impulsive" in c["rigid_block"]
+        assert 0.0 <= c["heel_pressure_exceedance"]["probability"] <= 1.0

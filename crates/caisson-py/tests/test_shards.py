@@ -110,6 +110,8 @@ def test_statistics_refuses_repeated_lives_missing_columns_and_bad_values(design
         ("failure_rotation_rad = 0.0", "[design] failure_rotation_rad"),
         ("failure_rotation_rad = 0.2", "[design] failure_rotation_rad"),
         ("continue_after_failure = 1", "continue_after_failure"),
+        ("allowable_heel_pressure_kpa = 5.0", "[design] allowable_heel_pressure_kpa"),
+        ("failure_heel_pressure_kpa = -1.0", "[design] failure_heel_pressure_kpa"),
     ],
 )
 def test_the_failure_keys_are_refused_out_of_range_as_in_the_cli(tmp_path, line, key):
@@ -121,8 +123,8 @@ def test_the_failure_keys_are_refused_out_of_range_as_in_the_cli(tmp_path, line,
 
 def test_a_failed_life_ends_and_counts_at_the_limit(tmp_path):
     """The lives of a 3 cm limit (half of them fail): the headline E|S| counts each failed life at
-    the limit, the uncapped mean is that of the lives as simulated, and the failure modes are
-    split."""
+    the limit, the uncapped mean is that of the lives as simulated (each run to its end), and the
+    failure modes are those of each life's failing wave (its columns)."""
     p = tmp_path / "limit_3cm.toml"
     p.write_text(DESIGN.replace("failure_sliding_m = 0.002", "failure_sliding_m = 0.03"))
     design = caisson.Design(caisson.Scenario.from_toml(p))
@@ -130,10 +132,13 @@ def test_a_failed_life_ends_and_counts_at_the_limit(tmp_path):
     s = design.statistics(lives)["dynamic"]
     failed = (lives["max_excursion_m"] > 0.03) | (lives["max_rotation_rad"] > 0.01)
     assert 0 < failed.sum() < LIVES
+    # A life beyond a limit failed, and records the year of its failing wave.
+    assert (failed == (lives["failure_year"] > 0)).all()
+    assert (failed == ((lives["failed_by_sliding"] + lives["failed_by_rotation"]) > 0)).all()
     capped = np.where(failed, 0.03, lives["sliding_m"].abs())
     assert s["expected_sliding_m"] == pytest.approx(capped.mean(), rel=1e-12)
     assert s["expected_sliding_m"] <= 0.03 < s["expected_sliding_uncapped_m"]
     assert s["expected_sliding_uncapped_m"] == pytest.approx(lives["sliding_m"].abs().mean(), rel=1e-12)
     assert s["failure"]["lives"] == failed.sum()
-    assert s["failure"]["by_sliding"]["lives"] == (lives["max_excursion_m"] > 0.03).sum()
-    assert s["failure"]["by_rotation"]["lives"] == (lives["max_rotation_rad"] > 0.01).sum()
+    assert s["failure"]["by_sliding"]["lives"] == lives["failed_by_sliding"].sum()
+    assert s["failure"]["by_rotation"]["lives"] == lives["failed_by_rotation"].sum()

@@ -102,7 +102,7 @@ fn the_predictor_moves_no_example_beyond_the_newton_and_step_tolerances() {
         largest.0,
         largest.1
     );
-    assert_eq!(examples.len(), 14, "{examples:?}");
+    assert_eq!(examples.len(), 15, "{examples:?}");
     assert!(compared > 100, "{compared} values compared");
     assert!(after_iterations < before_iterations, "{after_iterations} iterations against {before_iterations}");
 }

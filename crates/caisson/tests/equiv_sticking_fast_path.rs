@@ -155,7 +155,7 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         largest.0,
         largest.1
     );
-    assert_eq!(examples.len(), 14, "{examples:?}");
+    assert_eq!(examples.len(), 15, "{examples:?}");
     assert!(compared > 100, "{compared} values compared");
     assert!(sticking > 0, "the fast path was taken");
 }

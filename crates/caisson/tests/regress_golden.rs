@@ -5,7 +5,8 @@
 //!   F_x, R_x) and the permanent sliding;
 //! * a wave example (`[waves]`, no `[design]` / `[fragility]`): realization 0 of its wave trains
 //!   with its time history sampled at 41 instants and the sliding of every wave (both models);
-//! * the design example: its first 3 lives (both models, wave counts);
+//! * a design example: its first 3 lives (both models, wave counts, the impulsive waves' sliding
+//!   and the largest heel pressure);
 //! * the fragility example: 2 storms at its lowest and highest heights.
 //!
 //! Tolerance: |a − b| ≤ 1e-6 · max |series| (+ 1e-12 for all-zero series). The same build gives
@@ -51,6 +52,8 @@ fn signature(sc: &Scenario) -> Series {
             out.insert("rigid_block_sliding_m".into(), lives.iter().map(|o| o.rigid_block_sliding_m).collect());
             out.insert("waves".into(), lives.iter().map(|o| o.waves as f64).collect());
             out.insert("simulated".into(), lives.iter().map(|o| o.simulated_waves as f64).collect());
+            out.insert("impulsive_sliding_m".into(), lives.iter().map(|o| o.impulsive_sliding_m).collect());
+            out.insert("max_heel_pressure_kpa".into(), lives.iter().map(|o| o.max_heel_pressure_kpa).collect());
         }
         Signature::Storms(storms) => {
             out.insert("sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
@@ -102,5 +105,5 @@ fn every_example_matches_its_golden_results() {
         assert!(compare(&name, &got, &want) > 0, "{name}: nothing compared");
         checked += 1;
     }
-    assert_eq!(checked, 14, "examples checked: {examples:?}");
+    assert_eq!(checked, 15, "examples checked: {examples:?}");
 }

@@ -250,7 +250,7 @@ fn rocking_without_slip_and_beyond_failure_are_flagged() {
 fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
     use caisson::analysis::checks::{life_warnings, storm_warnings};
     use caisson::analysis::lifetime::{FailureLimits, StormOutcome};
-    let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01 };
+    let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01, heel_pressure_pa: None };
     let sc = example("design_breakwater.toml");
     let s = sc.structure();
     let b = 20.0;
@@ -272,8 +272,7 @@ fn sliding_beyond_the_base_width_is_flagged_for_runs_lives_and_storms() {
     let w = life_warnings(&[life(52_288.0, 3_000.0)], &limits, b);
     let m = &w.iter().find(|w| w.code == "sliding-beyond-width").unwrap().message;
     assert!(m.contains("2614.4 times the base width") && m.contains("weight_in_water_kn"), "{m}");
-    // A life that ended at failure after 6 m, whose rigid block ran the whole life on to 900 m
-    // (a flooded shell): the rigid block's mean tells.
+    // A life of 6 m whose rigid block slid 900 m (a flooded shell): the rigid block's mean tells.
     let ended = StormOutcome { rigid_block_sliding_m: 900.0, ..life(6.0, 6.0) };
     let w = life_warnings(&[ended, life(0.0, 0.0)], &limits, b);
     let m = &w.iter().find(|w| w.code == "sliding-beyond-width").expect("the rigid block's 450 m").message;

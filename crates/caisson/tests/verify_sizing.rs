@@ -115,6 +115,7 @@ fn sizing_through_the_engine_returns_the_closed_form_width() {
                 lives: 1,
                 dynamic: point(s),
                 rigid_block: point(exact_m(b)),
+                heel_pressure_exceedance: Default::default(),
                 life_counts: LifeCounts::default(),
             })
         })

@@ -599,7 +599,7 @@ class Design:
         cols = {}
         for c in need:
             v = frame[c].to_numpy()
-            real = c.endswith(("_m", "_rad"))  # lengths and rotations; the rest are counts
+            real = c.endswith(("_m", "_rad", "_kpa"))  # lengths, rotations, pressures; the rest are counts
             allowed = f"must be a finite number ({c.rsplit('_', 1)[1]})" if real else "must be a whole number ≥ 0"
             if real or v.dtype.kind not in "iu":
                 try:
@@ -623,7 +623,7 @@ class Design:
             raise ValueError(f"life {dup} appears more than once")
         life_sorted = np.sort(cols["life"].astype(np.uint64), kind="stable")
         order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
-        cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
+        cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad", "_kpa")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
         # Joined by `caisson merge`'s rules (in Rust): lives 0 .. N − 1, no gap.
         return DesignStatistics.of(json.loads(_core.design_statistics(self._scenario._core, cols, life_sorted.tolist())))
 

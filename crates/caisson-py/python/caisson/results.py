@@ -118,17 +118,23 @@ class ModelStatistics:
     at the end of a life, a failed life counted at the sliding limit.
 
     - ``expected_sliding_m``: E|S| (failed lives at the limit); ``expected_sliding_uncapped_m``:
-      with every life as simulated; ``expected_sliding_per_year_m``: E|S| / life_years.
+      with every life as simulated, run to its end (the published ESD); each with its standard
+      error (``…_se_m``); ``expected_sliding_per_year_m``: E|S| / life_years.
     - ``percentiles_m``: ``{"p5": ..., "p50": ..., "p95": ..., "p99": ...}`` of |S|.
     - ``exceedance_probability``: ``{threshold_m: P(|S| > threshold)}``.
     - ``failure_probability``, ``failure_lives``: the lives that failed (by sliding beyond
       ``[design] failure_sliding_m`` or rotating beyond ``failure_rotation_rad``);
-      ``failure_probability_by_sliding``, ``failure_probability_by_rotation``: by mode.
+      ``failure_probability_by_sliding``, ``failure_probability_by_rotation``,
+      ``failure_probability_by_heel_pressure``: by the failing wave's mode.
     - ``surviving_lives``, ``surviving_expected_sliding_m``: the lives that did not fail.
+    - ``impulsive``: what the impulsive waves make of the lives (``waves``, ``sliding_m``,
+      ``share_of_expected_sliding``, ``share_of_failures``, ``failures``; docs/design.md).
     """
 
     expected_sliding_m: float
     expected_sliding_uncapped_m: float
+    expected_sliding_se_m: float
+    expected_sliding_uncapped_se_m: float
     expected_sliding_per_year_m: float
     percentiles_m: Mapping
     exceedance_probability: Mapping
@@ -136,8 +142,10 @@ class ModelStatistics:
     failure_lives: int
     failure_probability_by_sliding: float
     failure_probability_by_rotation: float
+    failure_probability_by_heel_pressure: float
     surviving_lives: int
     surviving_expected_sliding_m: float
+    impulsive: Mapping
 
     @staticmethod
     def of(m: Mapping) -> "ModelStatistics":
@@ -145,6 +153,8 @@ class ModelStatistics:
         return ModelStatistics(
             expected_sliding_m=m["expected_sliding_m"],
             expected_sliding_uncapped_m=m["expected_sliding_uncapped_m"],
+            expected_sliding_se_m=m["expected_sliding_se_m"],
+            expected_sliding_uncapped_se_m=m["expected_sliding_uncapped_se_m"],
             expected_sliding_per_year_m=m["expected_sliding_per_year_m"],
             percentiles_m=dict(m["percentiles_m"]),
             exceedance_probability={e["threshold_m"]: e["probability"] for e in m["exceedance_probability"]},
@@ -152,8 +162,10 @@ class ModelStatistics:
             failure_lives=f["lives"],
             failure_probability_by_sliding=f["by_sliding"]["probability"],
             failure_probability_by_rotation=f["by_rotation"]["probability"],
+            failure_probability_by_heel_pressure=f["by_heel_pressure"]["probability"],
             surviving_lives=m["surviving"]["lives"],
             surviving_expected_sliding_m=m["surviving"]["expected_sliding_m"],
+            impulsive=dict(m["impulsive"]),
         )
 
 
@@ -185,6 +197,8 @@ class DesignStatistics(_ReadsAsReport):
     """The statistics of a design's lives (``caisson design --json``, docs/design.md):
     ``lives``, ``life_years``; ``dynamic`` and ``rigid_block``: :class:`ModelStatistics`;
     ``waves``, ``simulated_waves`` (the waves drawn and those run through the dynamic model);
+    ``heel_pressure_exceedance``: P(q_heel > q_a) of the dynamic model's lives (``allowable_kpa``,
+    ``probability``, ``standard_error``, ``lives``, ``exact_from_kpa``, ``largest_kpa``);
     ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``design.json``.
 
     It also reads as that dict (``stats["dynamic"]["failure"]["probability"]``, ``dict(stats)``,
@@ -197,6 +211,7 @@ class DesignStatistics(_ReadsAsReport):
     rigid_block: ModelStatistics
     waves: int
     simulated_waves: int
+    heel_pressure_exceedance: Mapping
     warnings: tuple
     report: dict
 
@@ -209,6 +224,7 @@ class DesignStatistics(_ReadsAsReport):
             rigid_block=ModelStatistics.of(report["rigid_block"]),
             waves=report["waves"],
             simulated_waves=report["simulated_waves"],
+            heel_pressure_exceedance=dict(report["dynamic"]["heel_pressure_exceedance"]),
             warnings=ResultWarning.all_of(report),
             report=report,
         )
@@ -257,10 +273,13 @@ class SizeResult(_ReadsAsReport):
     - ``status``, ``rigid_block_status``: ``"found"`` or why not (docs/size.md).
     - ``candidates``: one row per width tried: ``width_m``, ``weight_in_water_kn``, and per model
       (``dynamic_...``, ``rigid_block_...``) ``expected_sliding_m``, ``expected_sliding_se_m``,
-      ``expected_sliding_uncapped_m``, ``failure_probability`` (with
-      ``failure_by_sliding_probability``, ``failure_by_rotation_probability``),
-      ``exceedance_probability``, ``p50_m``, ``p95_m`` and ``meets``; Goda's safety factors and
-      heel pressure (``goda_sliding_safety_factor``, ``goda_overturning_safety_factor``,
+      ``expected_sliding_uncapped_m`` (as simulated) and its ``…_se_m``, ``failure_probability``
+      (with ``failure_by_sliding_probability``, ``failure_by_rotation_probability``,
+      ``failure_by_heel_pressure_probability``), ``exceedance_probability``, ``p50_m``, ``p95_m``,
+      ``impulsive_...`` (``waves``, ``sliding_m``, ``share_of_expected_sliding``,
+      ``share_of_failures``, ``failures``) and ``meets``; ``heel_pressure_exceedance_...``
+      (``probability``, ``standard_error``, ...); Goda's safety factors and heel pressure
+      (``goda_sliding_safety_factor``, ``goda_overturning_safety_factor``,
       ``goda_heel_pressure_kpa``).
     - ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``size.json``,
       which the object also reads as.
@@ -281,8 +300,14 @@ class SizeResult(_ReadsAsReport):
         for c in report["candidates"]:
             row = {k: v for k, v in c.items() if not isinstance(v, Mapping) and k not in ("dynamic_meets", "rigid_block_meets")}
             for model in ("dynamic", "rigid_block"):
-                row.update({f"{model}_{k}": v for k, v in (c.get(model) or {}).items()})
+                for k, v in (c.get(model) or {}).items():
+                    # A group (the impulsive waves') flattened as candidates.csv has it.
+                    if isinstance(v, Mapping):
+                        row.update({f"{model}_{k}_{g}": x for g, x in v.items()})
+                    else:
+                        row[f"{model}_{k}"] = v
                 row[f"{model}_meets"] = c.get(f"{model}_meets")
+            row.update({f"heel_pressure_exceedance_{k}": v for k, v in (c.get("heel_pressure_exceedance") or {}).items()})
             rows.append(row)
         return SizeResult(
             width_m=report["dynamic"].get("width_m"),

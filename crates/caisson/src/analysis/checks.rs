@@ -21,9 +21,11 @@
 //! | `failed-lives` | a design life (or a sizing candidate's) moved beyond `failure_sliding_m` or rotated beyond `failure_rotation_rad` | what the model computes after failure lies outside its validity: a failed life enters E\|S\| at the sliding limit; read P(failure) and the surviving lives' statistics |
 //! | `large-rotation-lives` | a wave of a design life rotated the caisson beyond 0.01 rad | as `rocking`: the model does not follow overturning |
 //! | `seaward-lives` | a design life ends more than 1 cm seaward of its place | rocking landings, not the wave's push, moved it (docs/design.md) |
+//! | `impulsive-share` | impulsive waves make more than half of E\|S\| (as simulated) or of the failures, of either model (a design, a sizing candidate, a fragility) | the answer rests on the breaking-wave load rule, whose impact coefficient is unconfirmed (docs/model.md §5.1): check it against the site's breaking conditions |
+//! | `impulsive-share-outside-goda-conditions` | the same at a site outside Goda's (2000) conditions of a danger of impulsive breaking (docs/model.md §1.4) under the design sea of `[waves]` | the impacts that make the answer are ones Goda's practice does not expect there |
 
 use super::conventional::static_check;
-use super::lifetime::{FailureLimits, LifeCounts, StormOutcome};
+use super::lifetime::{FailureLimits, ImpulsiveShare, LifeCounts, StormOutcome};
 use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD, SEAWARD_REPORT_M};
 use super::run::Response;
 use super::site::WaveSetup;
@@ -32,9 +34,13 @@ use super::train::{RealizationResult, TrainCase};
 use super::Structure;
 use crate::dynamics::Stepping;
 use crate::foundation::VerticalDamping;
+use crate::loads::breaking_load::BreakingLoad;
 use crate::loads::generator::{HeightVariability, TrainKind};
+use crate::loads::model::WaveLoadModel;
 use crate::loads::regime::RegimeChoice;
 use crate::loads::{LoadSpec, WaveForce};
+use crate::waves::dispersion::{deep_water_wavelength_m, wavenumber};
+use crate::waves::surf_zone::equivalent_deep_water_height_m;
 use std::collections::BTreeMap;
 
 /// A result or input to check (module docs).
@@ -415,6 +421,140 @@ pub fn realization_warnings(case: &TrainCase<'_>, rs: &[RealizationResult]) -> V
         .collect()
 }
 
+/// The share above which the impulsive waves are said to make an answer (module docs,
+/// `impulsive-share`).
+pub const IMPULSIVE_SHARE_WARNED: f64 = 0.5;
+
+/// Goda's (2000) conditions that signal a danger of impulsive breaking pressure (docs/model.md
+/// §1.4) at a site, under a sea of H1/3 and T1/3: the ratios they read and whether either set
+/// holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpulsiveBreakingDanger {
+    /// β, the angle of incidence after Goda's 15° rotation, degrees.
+    pub angle_deg: f64,
+    /// B_M/L: the berm width over the wavelength at the toe depth h.
+    pub berm_over_wavelength: f64,
+    /// tan θ of the seabed.
+    pub seabed_slope: f64,
+    /// H0'/L0: the equivalent deep-water height over the deep-water wavelength.
+    pub deep_water_steepness: f64,
+    /// h_c/H1/3 and d/h.
+    pub crest_over_height: f64,
+    pub mound_depth_ratio: f64,
+    /// β < 20°, B_M/L < 0.02, seabed steeper than 1/50, H0'/L0 < 0.03 and h_c/H1/3 > 0.3; or
+    /// β < 20°, 0.02 < B_M/L < 0.3, d/h < 0.6 and h_c/H1/3 > 0.3.
+    pub danger: bool,
+}
+
+/// [`ImpulsiveBreakingDanger`] of the site of `model` under the sea `h13_m`, `period_s` (a site
+/// without `berm_width_m` taken as a mound without a berm, B_M = 0); `None` where it cannot be
+/// assessed (no equivalent deep-water height).
+pub fn impulsive_breaking_danger(model: &WaveLoadModel, h13_m: f64, period_s: f64) -> Option<ImpulsiveBreakingDanger> {
+    let s = &model.site;
+    let berm_m = s.berm_width_m.unwrap_or(0.0);
+    let h0 = equivalent_deep_water_height_m(h13_m, period_s, s.depth_at_toe_m, s.seabed_slope)?;
+    let l = 2.0 * std::f64::consts::PI / wavenumber(period_s, s.depth_at_toe_m);
+    let beta = (model.options.angle_rad.abs().to_degrees() - 15.0).max(0.0);
+    let d = ImpulsiveBreakingDanger {
+        angle_deg: beta,
+        berm_over_wavelength: berm_m / l,
+        seabed_slope: s.seabed_slope,
+        deep_water_steepness: h0 / deep_water_wavelength_m(period_s),
+        crest_over_height: s.crest_freeboard_m / h13_m,
+        mound_depth_ratio: s.depth_at_wall_m / s.depth_at_toe_m,
+        danger: false,
+    };
+    let first = d.berm_over_wavelength < 0.02 && d.seabed_slope > 1.0 / 50.0 && d.deep_water_steepness < 0.03;
+    let second = d.berm_over_wavelength > 0.02 && d.berm_over_wavelength < 0.3 && d.mound_depth_ratio < 0.6;
+    Some(ImpulsiveBreakingDanger { danger: beta < 20.0 && d.crest_over_height > 0.3 && (first || second), ..d })
+}
+
+/// The breaking-wave load rule of `model` in words, with its uncertainty.
+pub fn breaking_load_rule(model: &WaveLoadModel) -> String {
+    let o = &model.options;
+    match o.breaking_load {
+        BreakingLoad::Cuomo2010 => format!(
+            "`breaking_load = \"cuomo-2010\"`, the seed's impact force of Cuomo et al. (2010, seed Eq. 30) with a_imp = {} and α_max = {:.4}, whose coefficient could not be confirmed (docs/model.md §5.1: M-low)",
+            o.a_imp, o.alpha_max
+        ),
+        BreakingLoad::GodaTakahashi => "`breaking_load = \"goda-takahashi\"`, Goda's force with Takahashi's impulsive coefficient α* = max(α2, α_I) (Takahashi, Tanimoto & Shimosako 1994; docs/model.md §5.5)".to_string(),
+        BreakingLoad::None => "`breaking_load = \"none\"`, which gives no impulsive peak".to_string(),
+    }
+}
+
+/// The warnings of what the impulsive waves make of an answer (module docs, `impulsive-share`):
+/// `shares` of the dynamic model and the rigid block, on the site of `model`, with the design
+/// sea of `waves` (for Goda's conditions; none: not assessed).
+pub fn impulsive_warnings(
+    shares: [&ImpulsiveShare; 2],
+    model: &WaveLoadModel,
+    waves: Option<&WaveSetup>,
+) -> Vec<Warning> {
+    let names = ["the dynamic model", "the rigid block"];
+    let over: Vec<String> = shares
+        .iter()
+        .zip(names)
+        .filter(|(s, _)| s.dominates())
+        .map(|(s, name)| {
+            format!(
+                "{name}: {:.0} % of E|S| (as simulated) and {:.0} % of its {} failures",
+                100.0 * s.share_of_expected_sliding,
+                100.0 * s.share_of_failures,
+                s.failures
+            )
+        })
+        .collect();
+    if over.is_empty() {
+        return Vec::new();
+    }
+    let numbers = [
+        ("dynamic_share_of_expected_sliding", shares[0].share_of_expected_sliding),
+        ("dynamic_share_of_failures", shares[0].share_of_failures),
+        ("rigid_block_share_of_expected_sliding", shares[1].share_of_expected_sliding),
+        ("rigid_block_share_of_failures", shares[1].share_of_failures),
+        ("share_warned", IMPULSIVE_SHARE_WARNED),
+    ];
+    let rule = breaking_load_rule(model);
+    let mut out = vec![Warning::new(
+        "impulsive-share",
+        format!(
+            "impulsive waves make more than half of the answer ({}): it rests on the breaking-wave load rule, {rule}; check the rule against the site's breaking conditions (docs/model.md §1.4 and §5.1)",
+            over.join("; ")
+        ),
+        &numbers,
+    )];
+    let danger = waves.and_then(|w| impulsive_breaking_danger(model, w.height_m(), w.period_s()));
+    if let (Some(d), Some(w)) = (danger, waves) {
+        if !d.danger {
+            let mut numbers = numbers.to_vec();
+            numbers.extend([
+                ("berm_over_wavelength", d.berm_over_wavelength),
+                ("seabed_slope", d.seabed_slope),
+                ("deep_water_steepness", d.deep_water_steepness),
+                ("crest_over_height", d.crest_over_height),
+                ("mound_depth_ratio", d.mound_depth_ratio),
+                ("angle_deg", d.angle_deg),
+            ]);
+            out.push(Warning::new(
+                "impulsive-share-outside-goda-conditions",
+                format!(
+                    "impulsive waves make more than half of the answer at a site outside Goda's (2000) conditions of a danger of impulsive breaking under the design sea (H1/3 = {} m, T1/3 = {} s: B_M/L = {:.3}, seabed slope {:.4}, H0'/L0 = {:.4}, h_c/H1/3 = {:.2}, d/h = {:.2}, β = {:.0}°; docs/model.md §1.4): Goda's practice expects no impulsive pressure there, the load rule ({rule}) expects it to govern",
+                    w.height_m(),
+                    w.period_s(),
+                    d.berm_over_wavelength,
+                    d.seabed_slope,
+                    d.deep_water_steepness,
+                    d.crest_over_height,
+                    d.mound_depth_ratio,
+                    d.angle_deg
+                ),
+                &numbers,
+            ));
+        }
+    }
+    out
+}
+
 /// Checks of a design run's lives with the failure limits `failure`, of a caisson of base width
 /// `width_m`.
 pub fn life_warnings(lives: &[StormOutcome], failure: &FailureLimits, width_m: f64) -> Vec<Warning> {
@@ -434,8 +574,8 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
     let storm = c.max_storm_sliding_m;
     let b = width_m;
     // The statistics themselves beyond the width (a life or a storm alone beyond it is a failed
-    // life, `failed-lives`: rare extreme storms do that to sound designs). The dynamic model's
-    // lives end at failure, the rigid block's run on: the larger mean tells.
+    // life, `failed-lives`: rare extreme storms do that to sound designs). The larger mean of
+    // the two models tells.
     let (mean, which) = if c.rigid_block_expected_sliding_m > c.expected_sliding_uncapped_m {
         (c.rigid_block_expected_sliding_m, "of the rigid block over the whole lives")
     } else {
@@ -462,13 +602,31 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         out.push(Warning::new(
             "failed-lives",
             format!(
-                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width) and {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad); what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit: read the failure probability and the statistics of the surviving lives",
-                c.failed_lives, c.lives, c.failed_by_sliding_lives, c.failed_by_rotation_lives
+                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width), {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad){}; what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit (E|S| as simulated runs it on{}): read the failure probability and the statistics of the surviving lives",
+                c.failed_lives,
+                c.lives,
+                c.failed_by_sliding_lives,
+                c.failed_by_rotation_lives,
+                failure.heel_pressure_pa.map_or(String::new(), |q| format!(
+                    " and {} pressed the heel beyond {:.0} kPa ([design] failure_heel_pressure_kpa)",
+                    c.failed_by_heel_pressure_lives,
+                    q / 1e3
+                )),
+                if c.run_on_stopped_lives > 0 {
+                    format!(
+                        "; in {} of them a later wave did not converge and the dynamic model stopped there, run_on_stopped in lives.csv",
+                        c.run_on_stopped_lives
+                    )
+                } else {
+                    String::new()
+                }
             ),
             &[
                 ("failed_lives", c.failed_lives as f64),
                 ("failed_by_sliding_lives", c.failed_by_sliding_lives as f64),
                 ("failed_by_rotation_lives", c.failed_by_rotation_lives as f64),
+                ("failed_by_heel_pressure_lives", c.failed_by_heel_pressure_lives as f64),
+                ("run_on_stopped_lives", c.run_on_stopped_lives as f64),
                 ("lives", n),
                 ("failure_probability", c.failed_lives as f64 / n.max(1.0)),
                 ("failure_sliding_m", sliding_m),

@@ -12,9 +12,14 @@
 //!   life limits its waves; waves above the breaker height at the wall break on it and load it by
 //!   the impact model of the scenario;
 //! * T1/3 = `period_s` for every wave, N = round(duration / T1/3) waves (at least 1);
-//! * no tide, no estimation errors (force and friction factors 1): a fragility is conditional
-//!   on the IM, and the spread comes from the wave sequence and the rise times only. The
-//!   estimation errors of docs/model.md §6.4 belong to the life integral (§7 step 5, `lifetime.rs`);
+//! * no tide; the load-model errors of a design life drawn per storm ([`FragilityParams::errors`],
+//!   on by default): the multipliers of the wave force, of the friction and of the impulsive
+//!   component, 1 + bias + COV z with z truncated as `[design]` draws them
+//!   ([`super::lifetime::Errors::draw_load_errors`]; Takayama & Ikeda 1992 via Shimosako &
+//!   Takahashi 1999; Kim & Takayama 2003). The errors of the deep-water height and of the wave
+//!   transformation are not drawn: the IM is H1/3 at the structure itself. Without the errors the
+//!   spread comes from the wave sequence and the rise times only, and the curves are steep
+//!   (docs/fragility.md gives β with and without them);
 //! * the conservative screen of [`simulate_storm`] (waves that provably cannot slide either
 //!   model are skipped; the share is reported).
 //!
@@ -36,7 +41,8 @@
 //! [`super::climate`]). By default every storm lasts `storm_duration_h` and meets the breakwater
 //! head-on. With lognormal durations or a distribution of directions, storm j draws its duration
 //! and then its angle from the last 64 words of its part of the stream (from (j + 1) · 2^40 − 64),
-//! so its waves are drawn as before; N = round(D / T1/3).
+//! so its waves are drawn as before; N = round(D / T1/3). Its errors come from the 64 words
+//! before those (from (j + 1) · 2^40 − 128), so they move neither its waves nor its climate.
 //!
 //! **Counts.** k_i(s) = #{storms at H_i with |S| > s} (strictly greater), S the storm's net
 //! sliding (shoreward +; a rocking caisson can end a storm seaward, docs/design.md), for the
@@ -81,7 +87,11 @@
 
 use super::climate::{StormDuration, WaveDirection, WavePeriods, MAX_STORM_DURATION_S};
 use super::conventional::DesignWave;
-use super::lifetime::{failure_rotation_rad, simulate_storm, StormCase, StormError, StormInput, StormOutcome};
+#[cfg(test)]
+use super::lifetime::ErrorModel;
+use super::lifetime::{
+    failure_rotation_rad, simulate_storm, Errors, FailureLimits, StormCase, StormError, StormInput, StormOutcome,
+};
 use super::Progress;
 use crate::check::{self, count, interval};
 use crate::loads::model::{WaveLoadModel, MIN_LENGTH_M, MIN_PERIOD_S};
@@ -355,6 +365,10 @@ pub struct FragilityParams {
     /// its own given its height.
     #[serde(skip_serializing_if = "WavePeriods::is_significant")]
     pub periods: WavePeriods,
+    /// The load-model errors drawn per storm (module docs, "Storms": the wave force's, the
+    /// friction's and the impulsive component's of these; the deep-water and transformation
+    /// errors are not used); `None`: none (`[fragility] errors = false`).
+    pub errors: Option<Errors>,
 }
 
 /// At most this many heights and limits.
@@ -405,6 +419,11 @@ impl FragilityParams {
         if let WavePeriods::LonguetHiggins { spectral_width } = self.periods {
             WavePeriods::longuet_higgins(spectral_width)?;
         }
+        if let Some(e) = &self.errors {
+            for m in [e.wave_force, e.friction].iter().chain(&e.impact_force) {
+                m.checked()?;
+            }
+        }
         Ok(self)
     }
 
@@ -430,10 +449,15 @@ impl FragilityParams {
         }
     }
 
-    /// Storm `storm` at height `h13_m`: [`Self::storm_input`] with its own duration and angle
-    /// when they are drawn (module docs, "Climate").
+    /// Storm `storm` at height `h13_m`: [`Self::storm_input`] with its own errors, duration and
+    /// angle when they are drawn (module docs, "Storms" and "Climate").
     pub fn storm_input_of(&self, model: &WaveLoadModel, h13_m: f64, storm: usize) -> StormInput {
         let mut s = self.storm_input(model, h13_m);
+        if let Some(e) = &self.errors {
+            let mut rng = storm_rng(self.seed, h13_m, storm);
+            rng.set_word_pos((((storm as u128) + 1) << STORM_WORDS_LOG2) - 2 * STORM_CLIMATE_WORDS);
+            [s.force_factor, s.friction_factor, s.impact_factor] = e.draw_load_errors(&mut rng);
+        }
         if self.duration != StormDuration::Fixed || self.direction != WaveDirection::HeadOn {
             let mut rng = storm_rng(self.seed, h13_m, storm);
             rng.set_word_pos((((storm as u128) + 1) << STORM_WORDS_LOG2) - STORM_CLIMATE_WORDS);
@@ -531,6 +555,19 @@ pub struct StormFailed {
     pub source: StormError,
 }
 
+/// The storms' case of fragility `p` on `st`: storms run whole, each recording its failing wave
+/// (module docs, "Counts"): the wave that takes the caisson beyond the largest limit from its
+/// place or rotates it beyond the rotation limit (the rigid block: beyond the largest limit); the
+/// screen looks at sliding and lift-off only (no heel pressure is reported).
+pub fn storm_case<'a>(st: &StormCase<'a>, p: &FragilityParams) -> StormCase<'a> {
+    let failure = FailureLimits {
+        sliding_m: p.limits_m.last().copied().unwrap_or(f64::INFINITY),
+        rotation_rad: p.failure_rotation_rad,
+        heel_pressure_pa: None,
+    };
+    StormCase { failure: Some(failure), heel_screen_pa: f64::INFINITY, ..*st }
+}
+
 /// Run every storm of every height in parallel and fit the curves (module docs).
 pub fn run_fragility(
     st: &StormCase<'_>,
@@ -538,9 +575,7 @@ pub fn run_fragility(
     progress: Progress<'_>,
 ) -> Result<FragilityResult, StormFailed> {
     let storms = p.storms;
-    // Storms run whole (a rotation beyond the limit is counted, not stopped at): the rigid
-    // block's counts stay those of the full storm.
-    let st = &StormCase { failure: None, ..*st };
+    let st = &storm_case(st, p);
     let outcomes: Vec<StormOutcome> = (0..p.heights_m.len() * storms)
         .into_par_iter()
         // A progress callback that unwinds (a Python call stopped by Ctrl-C) stops the items not yet begun.
@@ -603,6 +638,7 @@ mod tests {
             duration: StormDuration::Fixed,
             direction: WaveDirection::HeadOn,
             periods: WavePeriods::Significant,
+            errors: None,
         };
         assert_eq!(p.clone().checked(), Ok(p.clone()));
         let refused = |q: FragilityParams| q.checked().unwrap_err();
@@ -782,6 +818,46 @@ mod tests {
         );
     }
 
+    /// The load-model errors of a storm (docs/fragility.md): drawn per storm (the same storm the
+    /// same, 200 storms not all alike, each within its truncation 1 + bias ± 2 COV) without
+    /// moving its waves or climate: errors of zero bias and COV (multipliers 1) give every storm
+    /// of two heights of the example the outcome of no errors, to the bit (12 storms, angles
+    /// drawn too), and without errors every factor is 1.
+    #[test]
+    fn storms_draw_their_load_errors_apart_from_their_waves() {
+        let sc = example();
+        let case = sc.storm_case(true).unwrap();
+        let mut p = sc.fragility_for("test").unwrap().clone();
+        p.direction = WaveDirection::Uniform { mean_rad: 0.2, half_width_rad: 0.1 };
+        let none = Errors { wave_force: ErrorModel::NONE, friction: ErrorModel::NONE, ..Errors::default() };
+        let mut compared = 0;
+        for h in [8.5, 10.0] {
+            for j in 0..6 {
+                let run = |errors: Option<Errors>| {
+                    let p = FragilityParams { errors, ..p.clone() };
+                    let s = p.storm_input_of(case.model, h, j);
+                    (s, simulate_storm(&case, &s, &mut storm_rng(p.seed, h, j)).unwrap())
+                };
+                let ((a, oa), (b, ob)) = (run(None), run(Some(none)));
+                assert_eq!((a.force_factor, a.friction_factor, a.impact_factor), (1.0, 1.0, 1.0));
+                assert_eq!((a, oa), (b, ob), "H1/3 {h} m, storm {j}");
+                compared += 1;
+            }
+        }
+        assert_eq!(compared, 12);
+        let p = FragilityParams { errors: Some(Errors::default()), ..p };
+        let f: Vec<[f64; 3]> = (0..200)
+            .map(|j| {
+                let s = p.storm_input_of(case.model, 9.0, j);
+                [s.force_factor, s.friction_factor, s.impact_factor]
+            })
+            .collect();
+        assert!(f.iter().all(|x| (0.71..=1.11).contains(&x[0]) && (0.8..=1.2).contains(&x[1]) && x[2] == x[0]));
+        assert!(f.windows(2).any(|w| w[0] != w[1]), "the storms draw their own errors");
+        let again = p.storm_input_of(case.model, 9.0, 17);
+        assert_eq!([again.force_factor, again.friction_factor, again.impact_factor], f[17]);
+    }
+
     /// Lognormal durations (mean 2 h, COV 0.5) and uniform angles (20° ± 10°) over 4000 storms
     /// of one height: the waves per storm have the mean 7200 s / 11 s = 654.5 (within 5 standard
     /// errors, 327/√4000 = 5.2) and the angles the mean 20° (5 standard errors of 5.77°/√4000);
@@ -795,6 +871,7 @@ mod tests {
             storm_duration_s: 7200.0,
             period_s: 11.0,
             periods: WavePeriods::Significant,
+            errors: None,
             seed: 1,
             failure_rotation_rad: 0.01,
             duration: StormDuration::Lognormal { cov: 0.5 },
@@ -822,6 +899,7 @@ mod tests {
             storm_duration_s: 7200.0,
             period_s: 11.0,
             periods: WavePeriods::Significant,
+            errors: None,
             seed: 1,
             failure_rotation_rad: 0.01,
             duration: StormDuration::Fixed,

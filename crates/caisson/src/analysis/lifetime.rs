@@ -127,24 +127,62 @@
 //! holds the design example's statistics of both drawings within a few standard errors).
 //!
 //! **Failure** ([`FailureLimits`], docs/design.md "Failure"). A life fails when the caisson's
-//! distance from its place exceeds the sliding limit (`[design] failure_sliding_m`, default B/4)
-//! or a wave rotates it beyond the rotation limit (`[design] failure_rotation_rad`, default
-//! 0.01 rad, beyond which the model's small-rotation kinematics and its foundation under the heel
-//! do not hold). With [`StormCase::failure`] given (the default of a design run) a life ends at
-//! the wave that fails it: the dynamic model runs no further wave of that storm or the later
-//! ones (counted as screened: not run through it), and its outputs stay as they were at the
-//! failure. The rigid block reference runs the whole life on (its loads only, no dynamic
-//! model), so its statistics do not depend on where the dynamic model failed. The engine does
-//! not follow a caisson that overturns or slides away: a wave whose run does not converge (after
-//! its bounded sub-steps) once it has rotated the caisson beyond [`ROCKING_LIMIT_RAD`] or moved it
-//! beyond the sliding limit ends at its last converged step, with the slip and the largest
-//! rotation the engine had reached (a slender caisson rocking over, a storm far beyond the
-//! site's climate); the life then fails by the usual tests, and the wave counts (and is warned
-//! about) as a large rotation. Any other failure to converge is an error of the run. The headline
-//! statistics ([`capped_statistics`]) put a failed life at the sliding limit; the means of the
-//! simulated values (`expected_sliding_uncapped_m`) are those of lives that stop at failure,
-//! unless `[design] continue_after_failure = true` runs every life to its end (as the
-//! expected-sliding literature does: Shimosako & Takahashi 1999; Goda & Takagi 2000).
+//! distance from its place exceeds the sliding limit (`[design] failure_sliding_m`, default B/4),
+//! a wave rotates it beyond the rotation limit (`[design] failure_rotation_rad`, default 0.01 rad,
+//! beyond which the model's small-rotation kinematics and its foundation under the heel do not
+//! hold) or, if given, presses its heel beyond `[design] failure_heel_pressure_kpa`. Every life
+//! runs to its end: with [`StormCase::failure`] given (a design run) the life records the wave that
+//! failed it, once — its year ([`StormOutcome::failure_year`]), its modes (a wave may fail a life
+//! by several) and whether it was impulsive — and the dynamic model keeps integrating, as the
+//! rigid block does (its failing wave, beyond the sliding limit, recorded likewise). The capped
+//! statistics ([`capped_statistics`]) read only whether a life failed and a surviving life's |S|,
+//! so they are those of lives that end at failure; the means of the lives as simulated
+//! (`expected_sliding_uncapped_m`) are those of whole lives, the expected sliding distance of
+//! Shimosako & Takahashi (1999) and Goda & Takagi (2000). What the model computes after a failure
+//! is outside its validity: only that statistic reads it. Should a wave after the failure not
+//! converge (bounded sub-stepping, then the solver's error), the dynamic model runs no further
+//! wave of that life ([`StormOutcome::run_on_stopped`]; the rigid block runs on). The engine does
+//! not follow a caisson that overturns or slides away: the wave that fails a life, if its run does
+//! not converge once it has rotated the caisson beyond [`ROCKING_LIMIT_RAD`] or moved it beyond the
+//! sliding limit, ends at its last converged step, with the slip and the largest rotation the
+//! engine had reached (a slender caisson rocking over, a storm far beyond the site's climate); the
+//! life then fails by the usual tests, and the wave counts (and is warned about) as a large
+//! rotation. Any other failure to converge before the failure is an error of the run.
+//!
+//! **Impulsive waves** ([`StormOutcome::impulsive_waves`]). The waves whose load event has an
+//! impulse ([`WaveEvent::impulse`]: under the scenario's breaking-wave load, a breaking wave with
+//! an impact) and that may slide the caisson or lift its base: they pass the screen's friction or
+//! lift-off test (the screened ones slide neither model, so the count is the same with the screen
+//! off, where the test is made all the same). Each runs through both models; their sliding
+//! ([`StormOutcome::impulsive_sliding_m`], the rigid block's beside it) gives the share of E|S| as
+//! simulated they make, Σ sign(S) S_imp / Σ |S| ([`ImpulsiveShare`]), and their failing waves the
+//! share of the failures.
+//!
+//! **Heel pressure** ([`StormOutcome::max_heel_pressure_kpa`], [`base_heel_pressure_pa`]). At every
+//! step of a wave run through the dynamic model, the heel (shoreward edge) value of the linear
+//! base pressure without tension that carries the springs' normal forces: with V = Σ N_i (per
+//! metre, / l) and the resultant t_e = B/2 − Σ x_i N_i / Σ N_i from the heel, Goda's (2000) p_e =
+//! 2V/(3 t_e) for t_e ≤ B/3 (part of the base unloaded) and (2V/B)(2 − 3 t_e/B) above
+//! ([`crate::loads::safety::heel_pressure_pa`]): under a static load it is Goda's heel pressure of
+//! the static check (`tests/verify_heel_pressure.rs`). The spring dashpots are left out (the
+//! soil's elastic reaction). A life's value is the largest over its waves run and the caisson at
+//! rest at still water (W'/(B l)). The rigid block has no foundation pressure: it has none.
+//!
+//! The screen would miss a wave that cannot slide or lift the caisson yet presses its heel: its
+//! bound of the heel pressure is p_e with the screen's amplified moment M_eff and the springs'
+//! normal force at either end of W' − U_eff to W' + (Ψ − 1) U (for a fixed moment p_e is largest at
+//! an end of an interval of normal forces), the amplifications' argument being the screen's. The
+//! screen lets through every wave whose bound reaches [`StormCase::heel_screen_pa`] (the allowable
+//! heel pressure, or the failure heel pressure if lower). A wave let through for that alone runs
+//! for its heel pressure only (its sliding, rotation and lift are not read: every other output is
+//! that of the screen without it, `tests/equiv_lifetime.rs`), and only if its bound exceeds the
+//! largest heel pressure known: at the life's end (with the still waves, [`settle_life`]; a storm
+//! alone at its end), largest bound first, until the next bound is at most the life's largest,
+//! unless it may fail the life by heel pressure (then in its place). The same holds for a still
+//! wave whose bound reaches it. So a life's largest heel pressure is exact wherever it is at or
+//! above the screen's heel pressure, and P(q_heel > q_a) with it; below, it is the largest of the
+//! waves run (a lower bound). On the design example the heel pressure costs 16 % more
+//! instructions (the lives run to their end another 25 %).
 //!
 //! **Random numbers**: one ChaCha8 stream per life (seed, stream = life index); per storm in
 //! order: U for H0, four truncated normals for the errors, U for the tide phase (and, only for
@@ -175,6 +213,7 @@ use crate::loads::history::{TrainError, WaveEvent, WaveTrain};
 use crate::loads::model::{PeakComponents, PeriodLoads, WaveLoadModel};
 use crate::loads::regime::RegimeChoice;
 use crate::loads::risetime::LoadRng;
+use crate::loads::safety::heel_pressure_pa;
 use crate::structure::Caisson;
 use crate::waves::dispersion::wavenumber;
 use crate::waves::periods::{self, WavePeriods};
@@ -408,6 +447,16 @@ impl Errors {
     }
 }
 
+impl Errors {
+    /// The load-model errors of a storm of given H1/3 (a fragility's, docs/fragility.md): the
+    /// multipliers of the wave force, the friction and the impulsive component, drawn in that
+    /// order (the impulsive one only if it has coefficients of its own; else the force's).
+    pub fn draw_load_errors(&self, rng: &mut LoadRng) -> [f64; 3] {
+        let (force, friction) = (self.wave_force.draw(rng), self.friction.draw(rng));
+        [force, friction, self.impact_force.map_or(force, |m| m.draw(rng))]
+    }
+}
+
 impl Default for Errors {
     /// Takayama & Ikeda (1992) via Shimosako & Takahashi (1999), truncated at ±2σ, per storm.
     fn default() -> Self {
@@ -513,9 +562,13 @@ pub struct StormCase<'a> {
     /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
     /// wave is drawn and simulated.
     pub draws: WaveDraws,
-    /// Where a life ends (module docs, "Failure"): after the wave that moves the caisson beyond
-    /// the sliding limit or rotates it beyond the rotation limit; `None`: lives run to their end.
+    /// The failure limits whose failing wave a life (or storm) records (module docs, "Failure");
+    /// `None`: no failure is recorded. Every life runs to its end either way.
     pub failure: Option<FailureLimits>,
+    /// The heel pressure that the screen lets every wave through that may reach it (module docs,
+    /// "Heel pressure"), Pa: the allowable heel pressure of a design, or the failure heel pressure
+    /// if lower; infinite: the screen looks at sliding and lift-off only (fragility).
+    pub heel_screen_pa: f64,
 }
 
 /// When a life (or a storm) has failed: its distance from its place exceeded `sliding_m` or a
@@ -526,6 +579,9 @@ pub struct FailureLimits {
     pub sliding_m: f64,
     /// `[design] failure_rotation_rad` (default [`ROCKING_LIMIT_RAD`]), rad.
     pub rotation_rad: f64,
+    /// `[design] failure_heel_pressure_kpa` (absent by default: no failure by heel pressure), Pa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub heel_pressure_pa: Option<f64>,
 }
 
 /// How a screened storm draws its waves (module docs, "Drawing").
@@ -606,6 +662,37 @@ pub struct StormOutcome {
     /// The largest rotation |θ| of the caisson during any simulated wave, rad. A life fails when
     /// it exceeds the rotation limit ([`FailureLimits`]).
     pub max_rotation_rad: f64,
+    /// The waves with an impulsive load (their load event has an impulse: a breaking wave with
+    /// an impact under the load model) that may slide the caisson or lift its base (they pass the
+    /// screen's friction or lift-off test: the others slide neither model, module docs
+    /// "Impulsive waves"); each runs through both models.
+    pub impulsive_waves: u64,
+    /// The dynamic model's net sliding under those waves, signed (shoreward +), m.
+    pub impulsive_sliding_m: f64,
+    /// The rigid block's sliding under those waves, m.
+    pub rigid_block_impulsive_sliding_m: f64,
+    /// The largest heel pressure of the dynamic model, kPa (module docs, "Heel pressure"): of the
+    /// caisson at rest at still water and of every wave run; exact at and above the screen's heel
+    /// pressure ([`StormCase::heel_screen_pa`]), every wave that may reach it being run.
+    pub max_heel_pressure_kpa: f64,
+    /// The year (from 1) of the storm in which the life failed; 0 if it did not (a storm alone:
+    /// 0; its failure is the flags below).
+    pub failure_year: u64,
+    /// 1 if the wave that failed the life (or storm) took the caisson beyond the sliding limit,
+    /// else 0 (module docs, "Failure"; a failing wave may count in several modes).
+    pub failed_by_sliding: u64,
+    /// 1 if the failing wave rotated the caisson beyond the rotation limit.
+    pub failed_by_rotation: u64,
+    /// 1 if the failing wave pressed the heel beyond the failure heel pressure.
+    pub failed_by_heel_pressure: u64,
+    /// 1 if the failing wave had an impulsive load.
+    pub failing_wave_impulsive: u64,
+    /// 1 if the wave that took the rigid block beyond the sliding limit had an impulsive load.
+    pub rigid_block_failing_wave_impulsive: u64,
+    /// 1 if, after the failure, a wave did not converge in the dynamic model (far outside its
+    /// validity) and the dynamic model ran no further wave of the life: its columns stop there
+    /// (module docs, "Failure").
+    pub run_on_stopped: u64,
 }
 
 /// One column of a life's outcome: its value as metres or as a count.
@@ -614,11 +701,12 @@ pub enum LifeColumn {
     Metres(fn(&StormOutcome) -> f64),
     Count(fn(&StormOutcome) -> u64),
     Radians(fn(&StormOutcome) -> f64),
+    Kilopascals(fn(&StormOutcome) -> f64),
 }
 
 /// The columns of a life's outcome (after `life`) in `lives.csv` and the Python `DataFrame`,
 /// named as the [`StormOutcome`] fields.
-pub const LIFE_COLUMNS: [(&str, LifeColumn); 12] = [
+pub const LIFE_COLUMNS: [(&str, LifeColumn); 23] = [
     ("sliding_m", LifeColumn::Metres(|o| o.sliding_m)),
     ("shoreward_sliding_m", LifeColumn::Metres(|o| o.shoreward_sliding_m)),
     ("seaward_sliding_m", LifeColumn::Metres(|o| o.seaward_sliding_m)),
@@ -631,6 +719,17 @@ pub const LIFE_COLUMNS: [(&str, LifeColumn); 12] = [
     ("rocking_waves", LifeColumn::Count(|o| o.rocking_waves)),
     ("large_rotation_waves", LifeColumn::Count(|o| o.large_rotation_waves)),
     ("max_rotation_rad", LifeColumn::Radians(|o| o.max_rotation_rad)),
+    ("impulsive_waves", LifeColumn::Count(|o| o.impulsive_waves)),
+    ("impulsive_sliding_m", LifeColumn::Metres(|o| o.impulsive_sliding_m)),
+    ("rigid_block_impulsive_sliding_m", LifeColumn::Metres(|o| o.rigid_block_impulsive_sliding_m)),
+    ("max_heel_pressure_kpa", LifeColumn::Kilopascals(|o| o.max_heel_pressure_kpa)),
+    ("failure_year", LifeColumn::Count(|o| o.failure_year)),
+    ("failed_by_sliding", LifeColumn::Count(|o| o.failed_by_sliding)),
+    ("failed_by_rotation", LifeColumn::Count(|o| o.failed_by_rotation)),
+    ("failed_by_heel_pressure", LifeColumn::Count(|o| o.failed_by_heel_pressure)),
+    ("failing_wave_impulsive", LifeColumn::Count(|o| o.failing_wave_impulsive)),
+    ("rigid_block_failing_wave_impulsive", LifeColumn::Count(|o| o.rigid_block_failing_wave_impulsive)),
+    ("run_on_stopped", LifeColumn::Count(|o| o.run_on_stopped)),
 ];
 
 impl StormOutcome {
@@ -650,31 +749,59 @@ impl StormOutcome {
         self.rocking_waves += o.rocking_waves;
         self.large_rotation_waves += o.large_rotation_waves;
         self.max_rotation_rad = self.max_rotation_rad.max(o.max_rotation_rad);
+        self.impulsive_waves += o.impulsive_waves;
+        self.impulsive_sliding_m += o.impulsive_sliding_m;
+        self.rigid_block_impulsive_sliding_m += o.rigid_block_impulsive_sliding_m;
+        self.max_heel_pressure_kpa = self.max_heel_pressure_kpa.max(o.max_heel_pressure_kpa);
+        // A storm records a failure only in a life that had not failed (and the rigid block's
+        // failing wave only once).
+        self.failed_by_sliding |= o.failed_by_sliding;
+        self.failed_by_rotation |= o.failed_by_rotation;
+        self.failed_by_heel_pressure |= o.failed_by_heel_pressure;
+        self.failing_wave_impulsive |= o.failing_wave_impulsive;
+        self.rigid_block_failing_wave_impulsive |= o.rigid_block_failing_wave_impulsive;
+        self.run_on_stopped |= o.run_on_stopped;
     }
 
-    /// Whether the life (or storm) failed by sliding: it moved the caisson beyond the sliding
-    /// limit from its place at some time.
-    pub fn failed_by_sliding(&self, f: &FailureLimits) -> bool {
-        self.max_excursion_m > f.sliding_m
+    /// Whether the life (or storm) failed: a wave took it beyond a failure limit (module docs,
+    /// "Failure"); the modes are those of that wave.
+    pub fn failed(&self) -> bool {
+        (self.failed_by_sliding | self.failed_by_rotation | self.failed_by_heel_pressure) != 0
     }
 
-    /// Whether the life (or storm) failed by rotation: a wave rotated the caisson beyond the
-    /// rotation limit.
-    pub fn failed_by_rotation(&self, f: &FailureLimits) -> bool {
-        self.max_rotation_rad > f.rotation_rad
+    /// The failure modes that the caisson's state now reaches: beyond the sliding limit from its
+    /// place, rotated beyond the rotation limit, the heel pressed beyond the failure pressure.
+    fn beyond(&self, f: &FailureLimits) -> [bool; 3] {
+        [
+            self.max_excursion_m > f.sliding_m,
+            self.max_rotation_rad > f.rotation_rad,
+            f.heel_pressure_pa.is_some_and(|q| self.max_heel_pressure_kpa * 1e3 > q),
+        ]
     }
 
-    /// Whether the life (or storm) failed, by either mode.
-    pub fn failed(&self, f: &FailureLimits) -> bool {
-        self.failed_by_sliding(f) || self.failed_by_rotation(f)
+    /// Whether the rigid block's sliding exceeds the sliding limit (it fails by sliding only).
+    pub fn rigid_block_failed(&self, f: &FailureLimits) -> bool {
+        self.rigid_block_sliding_m.abs() > f.sliding_m
     }
 }
 
-/// What a wave did besides sliding: the largest rotation and whether part of the base lifted.
+/// What a wave did besides sliding: the largest rotation, whether part of the base lifted and
+/// the largest heel pressure.
 #[derive(Debug, Clone, Copy, Default)]
 struct WaveWatch {
     max_rotation_rad: f64,
     lifted: bool,
+    /// Pa ([`base_heel_pressure_pa`] of the springs' resultant).
+    max_heel_pressure_pa: f64,
+    /// B and the caisson's length l, m.
+    width_m: f64,
+    length_m: f64,
+}
+
+impl WaveWatch {
+    fn new(width_m: f64, length_m: f64) -> Self {
+        WaveWatch { width_m, length_m, ..WaveWatch::default() }
+    }
 }
 
 impl Observer for WaveWatch {
@@ -683,6 +810,9 @@ impl Observer for WaveWatch {
         self.max_rotation_rad = self.max_rotation_rad.max(s.state.u[2].abs());
         // A spring out of contact (N_i ≤ 0, as the reaction counts them), once is enough.
         self.lifted = self.lifted || !s.springs.iter().all(|r| r.normal_n > 0.0);
+        let r = &s.reaction;
+        let q = base_heel_pressure_pa(r.normal_n, r.moment_nm, self.width_m, self.length_m);
+        self.max_heel_pressure_pa = self.max_heel_pressure_pa.max(q);
     }
     /// The springs' responses, not built for an all-sticking step (the slice is then empty:
     /// every spring is in contact).
@@ -690,11 +820,24 @@ impl Observer for WaveWatch {
     fn reads_springs(&self) -> bool {
         false
     }
-    /// Not the reaction: whether a spring lifted is read from the springs' responses.
+    /// The springs' resultant, for the heel pressure.
     #[inline]
     fn reads_reaction(&self) -> bool {
-        false
+        true
     }
+}
+
+/// The heel pressure of the base that carries the springs' normal forces `normal_n` (their sum,
+/// N) with the moment `moment_nm` about the base centre (Σ x_i N_i, N·m, x shoreward: module docs,
+/// "Heel pressure"), on a caisson `width_m` wide and `length_m` long, Pa: the heel (shoreward
+/// edge) value of the linear base pressure without tension that has that resultant, Goda's
+/// (2000) heel pressure p_e of [`crate::loads::safety::heel_pressure_pa`] with V = ΣN_i / l and
+/// t_e = B/2 − Σ x_i N_i / ΣN_i; 0 with no spring pressed.
+pub fn base_heel_pressure_pa(normal_n: f64, moment_nm: f64, width_m: f64, length_m: f64) -> f64 {
+    if normal_n <= 0.0 {
+        return 0.0;
+    }
+    heel_pressure_pa(normal_n / length_m, 0.5 * width_m - moment_nm / normal_n, width_m)
 }
 
 /// Dynamic amplification bound on impulsive components (module docs).
@@ -720,16 +863,52 @@ struct ScreenBound {
     width_m: f64,
     /// f of [`Model::lift_off_factor`].
     lift_factor: f64,
+    /// The caisson's length l, m, and the heel pressure the screen lets through, Pa
+    /// ([`StormCase::heel_screen_pa`]).
+    length_m: f64,
+    heel_screen_pa: f64,
 }
 
-/// Effective peak forces of one wave's event for the screen, and the friction and lift-off tests.
-fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
+/// The effective peak loads of one wave's event for the screen (module docs): the horizontal
+/// force P_eff, the uplift U_eff, the moment M_eff, and the uplift's overshoot above the weight
+/// when it falls off, (Ψ − 1) U, N and N·m.
+fn effective(e: &PeakComponents, b: &ScreenBound) -> [f64; 4] {
     let p = (PSI_IMPULSE * e.impact.x.fx_n).max(b.psi_q * e.quasi.x.fx_n);
     let u = (PSI_IMPULSE * e.impact.y.fy_n).max(b.psi_q * e.quasi.y.fy_n).max(0.0);
     let m = (PSI_IMPULSE * e.impact.total().m_nm).max(b.psi_m * e.quasi.total().m_nm).max(0.0);
+    let overshoot = ((PSI_IMPULSE - 1.0) * e.impact.y.fy_n).max((b.psi_q - 1.0) * e.quasi.y.fy_n).max(0.0);
+    [p, u, m, overshoot]
+}
+
+/// The screen's friction and lift-off tests of one wave's event: whether it may slide the
+/// caisson (either model) or lift its seaward spring.
+fn may_slide(e: &PeakComponents, b: &ScreenBound) -> bool {
+    let [p, u, m, _] = effective(e, b);
     // Sliding, or the seaward spring lifting off ((6 M/B) f ≥ W' − U): a rocking caisson
     // ratchets shoreward a little as its springs re-contact.
     p > b.mu * (b.weight_n - u) || 6.0 * m / b.width_m * b.lift_factor >= b.weight_n - u
+}
+
+/// The screen's bound on the heel pressure of one wave's event, Pa (module docs, "Heel
+/// pressure"): the largest of [`heel_pressure_pa`] with M_eff and the springs' normal force at
+/// either end of its range, W' − U_eff to W' + (Ψ − 1) U (for a fixed moment it is largest at an
+/// end of a range of normal forces); infinite where W' − U_eff ≤ 0.
+fn heel_bound_pa(e: &PeakComponents, b: &ScreenBound) -> f64 {
+    let [_, u, m, overshoot] = effective(e, b);
+    let at = |v: f64| {
+        if v <= 0.0 {
+            f64::INFINITY
+        } else {
+            heel_pressure_pa(v / b.length_m, 0.5 * b.width_m - m / v, b.width_m)
+        }
+    };
+    at(b.weight_n - u).max(at(b.weight_n + overshoot))
+}
+
+/// Whether the screen lets a wave through: it may slide or lift the caisson ([`may_slide`]), or
+/// press its heel to the screen's heel pressure ([`heel_bound_pa`]).
+fn may_pass(e: &PeakComponents, b: &ScreenBound) -> bool {
+    may_slide(e, b) || heel_bound_pa(e, b) >= b.heel_screen_pa
 }
 
 /// What the storms of one life reuse: the one-wave train of the simulated waves, the waves
@@ -741,6 +920,10 @@ struct StormScratch {
     train: WaveTrain,
     waves: Vec<DrawnWave>,
     still: Vec<StillWave>,
+    /// The waves run for their heel pressure alone when the life's (or storm's) end shows they
+    /// may still raise it ([`StillWave::rotation_rad`] their heel-pressure bound, Pa; module docs,
+    /// "Heel pressure").
+    heel: Vec<StillWave>,
     storms: Vec<StormInput>,
     /// [`ScreenModes::still_water`], taken at the life's first storm.
     modes: Option<ScreenModes>,
@@ -798,7 +981,34 @@ struct DrawnWave {
 
 /// Run one storm (module docs). `rng` supplies the per-wave draws.
 pub fn simulate_storm(st: &StormCase<'_>, s: &StormInput, rng: &mut LoadRng) -> Result<StormOutcome, StormError> {
-    storm_from(st, s, &mut StormRng::Given(rng), (0.0, false, Settle::Storm), None, &mut StormScratch::default())
+    storm_from(st, s, &mut StormRng::Given(rng), StormStart::ALONE, None, &mut StormScratch::default())
+}
+
+/// Where a storm starts in its life: the caisson's distance from its place and the rigid
+/// block's sliding so far, m, whether the life has failed already (its failing wave is recorded
+/// once), and whose largest rotation the storm's still waves settle.
+#[derive(Debug, Clone, Copy)]
+struct StormStart {
+    start_m: f64,
+    rigid_m: f64,
+    /// The largest heel pressure of the life so far, kPa.
+    heel_floor_kpa: f64,
+    failed: bool,
+    /// The dynamic model's run-on has stopped ([`StormOutcome::run_on_stopped`]).
+    stopped: bool,
+    settle: Settle,
+}
+
+impl StormStart {
+    /// A storm alone (fragility), from the caisson's place.
+    const ALONE: StormStart = StormStart {
+        start_m: 0.0,
+        rigid_m: 0.0,
+        heel_floor_kpa: 0.0,
+        failed: false,
+        stopped: false,
+        settle: Settle::Storm,
+    };
 }
 
 /// The random stream a storm draws its waves from (module docs, "Random numbers").
@@ -847,7 +1057,7 @@ impl StormOutcome {
     fn finite(self) -> Result<Self, StormError> {
         for (column, c) in LIFE_COLUMNS {
             let value = match c {
-                LifeColumn::Metres(f) | LifeColumn::Radians(f) => f(&self),
+                LifeColumn::Metres(f) | LifeColumn::Radians(f) | LifeColumn::Kilopascals(f) => f(&self),
                 LifeColumn::Count(_) => continue,
             };
             if !value.is_finite() {
@@ -898,6 +1108,9 @@ struct StormSite {
     weight_n: f64,
     mu: f64,
     width_m: f64,
+    /// l, m, and [`StormCase::heel_screen_pa`].
+    length_m: f64,
+    heel_screen_pa: f64,
     /// The bound of the all-sticking response, built when a wave first needs it.
     stick: OnceCell<Option<StickBound>>,
 }
@@ -925,6 +1138,8 @@ impl StormSite {
             weight_n: caisson.weight_in_water_n,
             mu: foundation.mu_static.min(block.mu_static),
             width_m: caisson.width_m,
+            length_m: caisson.length_m,
+            heel_screen_pa: st.heel_screen_pa,
             stick: OnceCell::new(),
             model,
             block,
@@ -933,6 +1148,12 @@ impl StormSite {
             dyn_model: OnceCell::new(),
             modes,
         }
+    }
+
+    /// The heel pressure of the caisson at rest at the storm's water level, Pa: W'/(B l), uniform
+    /// (the weight acts at the base centre).
+    fn rest_heel_pressure_pa(&self) -> f64 {
+        base_heel_pressure_pa(self.weight_n, 0.0, self.width_m, self.length_m)
     }
 
     /// The dynamic model at the storm's water level and friction.
@@ -950,6 +1171,8 @@ impl StormSite {
             mu: self.mu,
             width_m: self.width_m,
             lift_factor: self.modes.lift_factor,
+            length_m: self.length_m,
+            heel_screen_pa: self.heel_screen_pa,
         }
     }
 }
@@ -1032,7 +1255,7 @@ impl StormScreen {
             // row is not needed, else the nodes up to the highest node height where it holds (by
             // bisection; the bound covers every lower node whatever the others give) are false
             // without their loads.
-            let still_up_to = |h: f64| loads_at.peak_bound(h).is_some_and(|b| !may_slide(&s.scaled(&b), &bound));
+            let still_up_to = |h: f64| loads_at.peak_bound(h).is_some_and(|b| !may_pass(&s.scaled(&b), &bound));
             if still_up_to(hmax) {
                 continue;
             }
@@ -1048,7 +1271,7 @@ impl StormScreen {
                 }
             }
             let node_may_slide =
-                |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_slide(&s.scaled(&p), &bound));
+                |h: f64| loads_at.peaks(h, RegimeChoice::Auto).map_or(true, |p| may_pass(&s.scaled(&p), &bound));
             bound_nodes += first;
             for i in first..=SCREEN_CELLS {
                 *row |= u128::from(node_may_slide(node_h(i))) << i;
@@ -1108,8 +1331,8 @@ impl StormScreen {
 }
 
 /// One wave through both models (module docs, step 6): its loads at its own period tested against
-/// the screen's bound at that period, then the rigid block, then the dynamic model unless the
-/// life has ended at failure.
+/// the screen's bound at that period, then the rigid block, then the dynamic model (unless the
+/// stick bound answers it).
 struct WaveRun<'a> {
     st: &'a StormCase<'a>,
     s: &'a StormInput,
@@ -1118,8 +1341,18 @@ struct WaveRun<'a> {
     loads_t13: &'a PeriodLoads<'a>,
     bound_t13: ScreenBound,
     start_m: f64,
-    /// Whether the dynamic model's life has ended at failure (module docs, "Failure").
-    ended: bool,
+    /// Whether the life (or storm) has failed already (module docs, "Failure"): its failing wave
+    /// is recorded once.
+    failed: bool,
+    /// Whether the dynamic model has stopped running on after the failure (a wave that did not
+    /// converge, [`StormOutcome::run_on_stopped`]): only the rigid block runs.
+    stopped: bool,
+    /// The rigid block's sliding before the storm, m, and whether it has passed the sliding
+    /// limit already (its failing wave is recorded once).
+    rigid_start_m: f64,
+    rigid_failed: bool,
+    /// The largest heel pressure of the life before the storm, kPa.
+    heel_floor_kpa: f64,
     sim: Option<Simulation>,
     train: &'a mut WaveTrain,
     /// The linear bound at T1/3, built when a wave first needs it.
@@ -1127,6 +1360,9 @@ struct WaveRun<'a> {
     /// The waves the linear bound answered whose rotation may be the storm's (or the life's)
     /// largest.
     still: &'a mut Vec<StillWave>,
+    /// The waves that may press the heel beyond the screen's pressure and the largest known, run
+    /// for it at the storm's (or life's) end if it may still be the largest.
+    heel: &'a mut Vec<StillWave>,
     /// Whose largest rotation they settle.
     settle: Settle,
 }
@@ -1163,20 +1399,57 @@ impl WaveRun<'_> {
         let (event, bound) = self.event(h, z, period_s);
         // The grid's neighbours are a margin for the heights (and periods) between its nodes; the
         // wave's own loads decide.
-        if st.screen && !may_slide(&PeakComponents { quasi: event.quasi, impact: event.impact }, &bound) {
+        let peaks = PeakComponents { quasi: event.quasi, impact: event.impact };
+        let slides = may_slide(&peaks, &bound);
+        if st.screen && !slides {
+            // A wave that can neither slide nor lift the caisson runs for its heel pressure alone,
+            // if it may press the heel to the screen's pressure and beyond the largest heel
+            // pressure known (module docs, "Heel pressure").
+            let heel_pa = heel_bound_pa(&peaks, &bound);
+            if heel_pa < site.heel_screen_pa || heel_pa <= self.heel_known_pa(out) {
+                out.screened_waves += 1;
+                return Ok(());
+            }
+            if self.stopped || self.defers_heel(heel_pa) {
+                out.screened_waves += 1;
+                if !self.stopped {
+                    self.defer_heel(heel_pa, h, z, period_s);
+                }
+                return Ok(());
+            }
+            return self.simulate(event, h, period_s, WaveKind::HeelOnly, out);
+        }
+        // The impulsive waves counted: those that may slide or lift (module docs, "Impulsive
+        // waves"), whether the screen is on or not.
+        let impulsive = event.impulse.is_some() && slides;
+        let rigid_m = site.block.wave_sliding_m(&event);
+        out.rigid_block_sliding_m += rigid_m;
+        if impulsive {
+            out.rigid_block_impulsive_sliding_m += rigid_m;
+        }
+        if !self.rigid_failed {
+            if let Some(f) = st.failure {
+                if (self.rigid_start_m + out.rigid_block_sliding_m).abs() > f.sliding_m {
+                    self.rigid_failed = true;
+                    out.rigid_block_failing_wave_impulsive = u64::from(event.impulse.is_some());
+                }
+            }
+        }
+        if self.stopped {
             out.screened_waves += 1;
             return Ok(());
         }
-        out.rigid_block_sliding_m += site.block.wave_sliding_m(&event);
-        if self.ended {
-            // The dynamic model's life has ended at failure: the wave is not run through it.
-            out.screened_waves += 1;
-            return Ok(());
-        }
-        if st.screen && st.stick_bound {
+        // A wave that may press the heel to the screen's heel pressure and beyond the largest
+        // known runs, whatever the stick bound says (it bounds no heel pressure).
+        let heel_pa = heel_bound_pa(&peaks, &bound);
+        let heel_known = heel_pa < site.heel_screen_pa || heel_pa <= self.heel_known_pa(out);
+        if st.screen && st.stick_bound && (heel_known || self.defers_heel(heel_pa)) {
             if let Some(rotation_rad) = self.still_rotation_rad(&event, period_s) {
+                if !heel_known {
+                    self.defer_heel(heel_pa, h, z, period_s);
+                }
                 // Neither slides nor lifts (module docs, "The screen"): its rotation may still be
-                // the storm's (or the life's) largest, which [`Self::settle_rotation`] (or
+                // the storm's (or the life's) largest, which [`Self::settle`] (or
                 // [`settle_life`]) decides, unless a larger one is known already.
                 out.screened_waves += 1;
                 let (floor_rad, storm) = match self.settle {
@@ -1189,7 +1462,30 @@ impl WaveRun<'_> {
                 return Ok(());
             }
         }
-        self.simulate(event, h, period_s, out)
+        let kind = if impulsive { WaveKind::Impulsive } else { WaveKind::Pulsating };
+        self.simulate(event, h, period_s, kind, out)
+    }
+
+    /// The largest heel pressure known in the life (or storm) so far, Pa.
+    fn heel_known_pa(&self, out: &StormOutcome) -> f64 {
+        1e3 * out.max_heel_pressure_kpa.max(self.heel_floor_kpa)
+    }
+
+    /// Whether a wave that neither slides nor lifts the caisson and may press its heel to
+    /// `heel_pa` can run at the storm's (or life's) end: unless it may fail the life by heel
+    /// pressure (then it runs in its place, so that the failing wave is the first).
+    fn defers_heel(&self, heel_pa: f64) -> bool {
+        self.st.failure.and_then(|f| f.heel_pressure_pa).is_none_or(|q| heel_pa <= q)
+    }
+
+    /// Keep the wave of height `h`, deviate `z` and period `period_s`, whose heel pressure may
+    /// reach `heel_pa`, for the storm's (or life's) end.
+    fn defer_heel(&mut self, heel_pa: f64, h: f64, z: f64, period_s: f64) {
+        let storm = match self.settle {
+            Settle::Storm => 0,
+            Settle::Life { storm, .. } => storm,
+        };
+        self.heel.push(StillWave { rotation_rad: heel_pa, storm, height_m: h, deviate: z, period_s });
     }
 
     /// The bound on the rotation of a pulsating wave that the linear bound shows can neither
@@ -1213,31 +1509,47 @@ impl WaveRun<'_> {
         (m.still() && m.rotation_rad * ROTATION_RESERVE < limit_rad).then_some(m.rotation_rad)
     }
 
-    /// Run the still waves whose rotation bound may exceed the storm's largest rotation, largest
-    /// bound first, until the bound of the next is below it (module docs, "The screen"): the
-    /// storm's largest rotation is then what running every wave gives. Each wave run moves from
-    /// the screened to the simulated count.
-    fn settle_rotation(&mut self, out: &mut StormOutcome) -> Result<(), StormError> {
+    /// Run the kept waves of a storm alone whose bound may exceed the storm's largest, largest
+    /// bound first, until the bound of the next is at most it (module docs, "The stick bound" and
+    /// "Heel pressure"; a life's are run by [`settle_life`]): the still waves for the rotation
+    /// (`heel` false), or the deferred waves for the heel pressure. The storm's largest is then
+    /// what running every such wave gives. Each wave run moves from the screened to the simulated
+    /// count.
+    fn settle(&mut self, heel: bool, out: &mut StormOutcome) -> Result<(), StormError> {
         if matches!(self.settle, Settle::Life { .. }) {
             return Ok(());
         }
-        let mut still = std::mem::take(self.still);
-        still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
-        for w in &still {
-            if w.rotation_rad * ROTATION_RESERVE <= out.max_rotation_rad {
+        let mut kept = std::mem::take(if heel { &mut *self.heel } else { &mut *self.still });
+        kept.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+        let kind = if heel { WaveKind::HeelOnly } else { WaveKind::Pulsating };
+        for w in &kept {
+            let needed = if heel {
+                w.rotation_rad > 1e3 * out.max_heel_pressure_kpa
+            } else {
+                w.rotation_rad * ROTATION_RESERVE > out.max_rotation_rad
+            };
+            if !needed {
                 break;
             }
             let (event, _) = self.event(w.height_m, w.deviate, w.period_s);
             out.screened_waves -= 1;
-            self.simulate(event, w.height_m, w.period_s, out)?;
+            self.simulate(event, w.height_m, w.period_s, kind, out)?;
         }
-        still.clear();
-        *self.still = still;
+        kept.clear();
+        *(if heel { &mut *self.heel } else { &mut *self.still }) = kept;
         Ok(())
     }
 
-    /// Run `event` (of height `h` and period `period_s`) through the dynamic model.
-    fn simulate(&mut self, event: WaveEvent, h: f64, period_s: f64, out: &mut StormOutcome) -> Result<(), StormError> {
+    /// Run `event` (of height `h` and period `period_s`, of the `kind` the screen found) through
+    /// the dynamic model, and record the failure it brings.
+    fn simulate(
+        &mut self,
+        event: WaveEvent,
+        h: f64,
+        period_s: f64,
+        kind: WaveKind,
+        out: &mut StormOutcome,
+    ) -> Result<(), StormError> {
         let (st, site) = (self.st, self.site);
         let train = &mut *self.train;
         train.set_single(event).map_err(|source| StormError::Wave { height_m: h, period_s, source })?;
@@ -1248,33 +1560,83 @@ impl WaveRun<'_> {
             }
             None => self.sim.insert(Simulation::new(site.dyn_model().clone(), st.structure.solver, &*train)),
         };
-        let mut watch = WaveWatch::default();
-        if let Err(e) = sim.run_until(period_s, &*train, &mut watch) {
-            // The engine does not follow a caisson that overturns or slides away (module docs,
-            // "Failure"): a wave it cannot integrate past the model's limits ends at its last
-            // converged step.
-            let beyond_sliding = st
-                .failure
-                .is_some_and(|f| (self.start_m + out.sliding_m + permanent_sliding_m(sim)).abs() > f.sliding_m);
-            if !(watch.max_rotation_rad > ROCKING_LIMIT_RAD || beyond_sliding) {
-                return Err(e.into());
+        let mut watch = WaveWatch::new(site.width_m, site.length_m);
+        match sim.run_until(period_s, &*train, &mut watch) {
+            Ok(()) => {}
+            // After the failure the model is outside its validity: a wave that does not converge
+            // stops the dynamic model's run-on (module docs, "Failure"); before it, an error.
+            Err(_) if self.failed => {
+                self.stopped = true;
+                out.run_on_stopped = 1;
+                out.screened_waves += 1;
+                return Ok(());
             }
+            // The engine does not follow a caisson that overturns or slides away (module docs,
+            // "Failure"): the failing wave, if the engine cannot integrate it past the model's
+            // limits, ends at its last converged step.
+            Err(e) => {
+                let beyond_sliding = st
+                    .failure
+                    .is_some_and(|f| (self.start_m + out.sliding_m + permanent_sliding_m(sim)).abs() > f.sliding_m);
+                if !(watch.max_rotation_rad > ROCKING_LIMIT_RAD || beyond_sliding) {
+                    return Err(e.into());
+                }
+            }
+        }
+        out.simulated_waves += 1;
+        out.max_heel_pressure_kpa = out.max_heel_pressure_kpa.max(watch.max_heel_pressure_pa / 1e3);
+        if kind == WaveKind::HeelOnly {
+            // It can neither slide nor lift the caisson (the screen's bound): only its heel
+            // pressure is read, so that every other output is that of the screen without the heel
+            // pressure (module docs, "Heel pressure").
+            self.record_failure(out, &event);
+            return Ok(());
         }
         let slide = permanent_sliding_m(sim);
         out.sliding_m += slide;
+        if kind == WaveKind::Impulsive {
+            out.impulsive_waves += 1;
+            out.impulsive_sliding_m += slide;
+        }
         if slide >= 0.0 {
             out.shoreward_sliding_m += slide;
         } else {
             out.seaward_sliding_m -= slide;
         }
         out.max_excursion_m = out.max_excursion_m.max((self.start_m + out.sliding_m).abs());
-        out.simulated_waves += 1;
         out.rocking_waves += u64::from(watch.lifted);
         out.large_rotation_waves += u64::from(watch.max_rotation_rad > ROCKING_LIMIT_RAD);
         out.max_rotation_rad = out.max_rotation_rad.max(watch.max_rotation_rad);
-        self.ended = st.failure.is_some_and(|f| out.failed(&f));
+        self.record_failure(out, &event);
         Ok(())
     }
+
+    /// Record the failure the wave `event` just run brings, if the life (or storm) had not
+    /// failed: its modes and whether it was impulsive.
+    fn record_failure(&mut self, out: &mut StormOutcome, event: &WaveEvent) {
+        if !self.failed {
+            if let Some(f) = self.st.failure {
+                let [sliding, rotation, heel] = out.beyond(&f);
+                if sliding || rotation || heel {
+                    self.failed = true;
+                    out.failed_by_sliding = u64::from(sliding);
+                    out.failed_by_rotation = u64::from(rotation);
+                    out.failed_by_heel_pressure = u64::from(heel);
+                    out.failing_wave_impulsive = u64::from(event.impulse.is_some());
+                }
+            }
+        }
+    }
+}
+
+/// What the screen found of a wave that runs through the dynamic model: it may slide or lift
+/// the caisson, with an impulsive load (counted as impulsive) or not, or it may only press the
+/// heel beyond the screen's heel pressure (module docs, "Heel pressure").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum WaveKind {
+    Impulsive,
+    Pulsating,
+    HeelOnly,
 }
 
 /// The depth at the toe at the water level `tide_m`, m.
@@ -1282,9 +1644,8 @@ fn toe_depth_m(st: &StormCase<'_>, tide_m: f64) -> f64 {
     st.model.site.depth_at_toe_m + tide_m
 }
 
-/// [`simulate_storm`] for a caisson that starts the storm `start_m` from its original place
-/// (for the life's largest excursion), `failed`: in a life that has failed already (module
-/// docs, "Failure": only the rigid block runs), its still waves settled as `settle` says (with
+/// [`simulate_storm`] for a caisson that starts the storm where `from` says (for the life's
+/// largest excursion and its failure), its still waves settled as `from.settle` says (with
 /// [`Settle::Life`] they are left in `scratch.still` for [`settle_life`]). `toe_k`: the wave
 /// number of T1/3 at [`toe_depth_m`], if the caller has solved for it (the life, for the storm's
 /// shoaling).
@@ -1292,20 +1653,27 @@ fn storm_from(
     st: &StormCase<'_>,
     s: &StormInput,
     rng: &mut StormRng<'_>,
-    (start_m, failed, settle): (f64, bool, Settle),
+    from: StormStart,
     toe_k: Option<f64>,
     scratch: &mut StormScratch,
 ) -> Result<StormOutcome, StormError> {
+    let StormStart { start_m, rigid_m, heel_floor_kpa, failed, stopped, settle } = from;
     let site = StormSite::new(st, s, scratch.modes(st));
     // The loads at this storm's T1/3: the dispersion solves and breaker heights once.
     let k_toe = toe_k.unwrap_or_else(|| wavenumber(s.period_s, site.model.site.depth_at_toe_m));
     let loads_t13 = site.model.at_period_with_toe_wavenumber(s.period_s, k_toe);
     let bound_t13 = site.bound(s.period_s);
     let screen = StormScreen::new(st, s, &site, (&loads_t13, bound_t13));
-    let mut out = StormOutcome { waves: s.waves as u64, max_excursion_m: start_m.abs(), ..StormOutcome::default() };
-    let StormScratch { train, waves, still, .. } = scratch;
+    let mut out = StormOutcome {
+        waves: s.waves as u64,
+        max_excursion_m: start_m.abs(),
+        max_heel_pressure_kpa: site.rest_heel_pressure_pa() / 1e3,
+        ..StormOutcome::default()
+    };
+    let StormScratch { train, waves, still, heel, .. } = scratch;
     if matches!(settle, Settle::Storm) {
         still.clear();
+        heel.clear();
     }
     let mut run = WaveRun {
         st,
@@ -1314,11 +1682,16 @@ fn storm_from(
         loads_t13: &loads_t13,
         bound_t13,
         start_m,
-        ended: failed,
+        failed,
+        stopped,
+        rigid_start_m: rigid_m,
+        rigid_failed: st.failure.is_some_and(|f| rigid_m.abs() > f.sliding_m),
+        heel_floor_kpa,
         sim: None,
         train,
         stick_t13: OnceCell::new(),
         still,
+        heel,
         settle,
     };
     if st.screen && st.draws == WaveDraws::AboveThreshold {
@@ -1338,7 +1711,8 @@ fn storm_from(
             run.run(h, z, period_s, &mut out)?;
         }
     }
-    run.settle_rotation(&mut out)?;
+    run.settle(false, &mut out)?;
+    run.settle(true, &mut out)?;
     out.max_storm_sliding_m = out.sliding_m;
     out.finite()
 }
@@ -1399,7 +1773,11 @@ fn draw_above_threshold(
 /// One life of `p.life_years` storms (module docs), life `index` of the stream `seed`.
 pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, StormError> {
     let mut rng = realization_rng(seed, index);
-    let mut life = StormOutcome::default();
+    let c = &st.structure.caisson;
+    // The heel pressure at rest at still water (the lowest water of the life: the heaviest
+    // caisson in water).
+    let rest_pa = base_heel_pressure_pa(c.weight_in_water_n, 0.0, c.width_m, c.length_m);
+    let mut life = StormOutcome { max_heel_pressure_kpa: rest_pa / 1e3, ..StormOutcome::default() };
     let mut scratch = StormScratch::default();
     let site = &st.model.site;
     // The surf zone's slope terms: the same for every storm of the life.
@@ -1444,15 +1822,26 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
             let mut positioned = None;
             let word = storm_index << STORM_WAVE_WORDS_LOG2;
             let mut waves_rng = StormRng::Storm { life: &rng, word, rng: &mut positioned };
-            let failed = st.failure.is_some_and(|f| life.failed(&f));
+            let failed = life.failed();
             let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
             scratch.storms.push(storm);
-            let o =
-                storm_from(st, &storm, &mut waves_rng, (life.sliding_m, failed, settle), Some(k_toe), &mut scratch)?;
+            let from = StormStart {
+                start_m: life.sliding_m,
+                rigid_m: life.rigid_block_sliding_m,
+                heel_floor_kpa: life.max_heel_pressure_kpa,
+                failed,
+                stopped: life.run_on_stopped != 0,
+                settle,
+            };
+            let o = storm_from(st, &storm, &mut waves_rng, from, Some(k_toe), &mut scratch)?;
+            if !failed && o.failed() {
+                life.failure_year = year as u64 + 1;
+            }
             life.add(&o);
             // The still waves the life's largest rotation so far exceeds cannot be its largest.
             scratch.still.retain(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
-            if scratch.still.len() > MAX_STILL_WAVES {
+            scratch.heel.retain(|w| w.rotation_rad > 1e3 * life.max_heel_pressure_kpa);
+            if scratch.still.len() > MAX_STILL_WAVES || scratch.heel.len() > MAX_STILL_WAVES {
                 settle_life(st, &mut scratch, &mut life)?;
             }
         }
@@ -1468,14 +1857,25 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
 /// so), so only the rotation and the counts can move. Empties `scratch.still`.
 fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormOutcome) -> Result<(), StormError> {
     let modes = scratch.modes(st);
-    let StormScratch { train, still, storms, .. } = scratch;
+    let StormScratch { train, still, heel, storms, .. } = scratch;
     still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+    heel.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
     // The site of the storm whose waves run (the waves of a storm are mostly together).
     let mut site: Option<(usize, StormSite)> = None;
-    let mut none = Vec::new();
-    for w in still.iter() {
-        if w.rotation_rad * ROTATION_RESERVE <= life.max_rotation_rad {
-            break;
+    let (mut none, mut no_heel) = (Vec::new(), Vec::new());
+    // The still waves for the rotation, then the deferred waves for the heel pressure (module
+    // docs, "Heel pressure"): each list while its next bound may exceed the life's largest.
+    let pending = still.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
+    for (w, kind) in pending {
+        let needed = match kind {
+            WaveKind::HeelOnly => w.rotation_rad > 1e3 * life.max_heel_pressure_kpa,
+            _ => w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad,
+        };
+        if !needed {
+            if kind == WaveKind::HeelOnly {
+                break;
+            }
+            continue;
         }
         let s = &storms[w.storm];
         if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
@@ -1489,18 +1889,34 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
             loads_t13: &site.model.at_period(s.period_s),
             bound_t13: site.bound(s.period_s),
             start_m: 0.0,
-            ended: false,
+            // A still wave can fail no life (module docs, "The stick bound"), nor can a deferred
+            // one (its bound is below the failure heel pressure): nothing is recorded; a failed
+            // life's wave that does not converge stays screened.
+            failed: life.failed(),
+            stopped: false,
+            rigid_start_m: 0.0,
+            rigid_failed: true,
+            heel_floor_kpa: 0.0,
             sim: None,
             train,
             stick_t13: OnceCell::new(),
             still: &mut none,
+            heel: &mut no_heel,
             settle: Settle::Storm,
         };
         let (event, _) = run.event(w.height_m, w.deviate, w.period_s);
         let mut o = StormOutcome::default();
-        run.simulate(event, w.height_m, w.period_s, &mut o)?;
+        run.simulate(event, w.height_m, w.period_s, kind, &mut o)?;
+        if o.simulated_waves == 0 {
+            // It did not converge, in a failed life: it stays screened.
+            continue;
+        }
         life.simulated_waves += 1;
         life.screened_waves -= 1;
+        if kind == WaveKind::HeelOnly {
+            life.max_heel_pressure_kpa = life.max_heel_pressure_kpa.max(o.max_heel_pressure_kpa);
+            continue;
+        }
         life.rocking_waves += o.rocking_waves;
         life.large_rotation_waves += o.large_rotation_waves;
         life.max_rotation_rad = life.max_rotation_rad.max(o.max_rotation_rad);
@@ -1508,6 +1924,7 @@ fn settle_life(st: &StormCase<'_>, scratch: &mut StormScratch, life: &mut StormO
         tests::SETTLED.with(|n| n.set(n.get() + 1));
     }
     still.clear();
+    heel.clear();
     Ok(())
 }
 
@@ -1526,10 +1943,19 @@ pub struct DesignParams {
     pub failure_sliding_m: Option<f64>,
     /// The failure limit on the caisson's rotation, rad (default [`ROCKING_LIMIT_RAD`]).
     pub failure_rotation_rad: f64,
-    /// Lives run to their end after failure (the expected-sliding literature's lives; module
-    /// docs, "Failure"), instead of ending at the wave that fails them.
-    pub continue_after_failure: bool,
+    /// The allowable heel pressure q_a, Pa (default [`DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA`]): the
+    /// exceedance P(q_heel > q_a) is reported, and the screen runs every wave that may reach it
+    /// (module docs, "Heel pressure").
+    pub allowable_heel_pressure_pa: f64,
+    /// The heel pressure beyond which a life fails, Pa; `None` (the default): no failure by
+    /// heel pressure.
+    pub failure_heel_pressure_pa: Option<f64>,
 }
+
+/// The allowable heel pressure on a rubble mound of a design (`[design]
+/// allowable_heel_pressure_kpa`), as Goda's check has it ([`DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA`]
+/// of [`super::conventional`]).
+pub use super::conventional::DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA;
 
 /// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
 pub const MAX_LIVES: usize = 10_000_000;
@@ -1566,6 +1992,10 @@ impl DesignParams {
             interval("failure_sliding_m", s, 0.0, 1000.0, true)?;
         }
         failure_rotation_rad(self.failure_rotation_rad)?;
+        heel_pressure_limit("allowable_heel_pressure_pa", self.allowable_heel_pressure_pa)?;
+        if let Some(q) = self.failure_heel_pressure_pa {
+            heel_pressure_limit("failure_heel_pressure_pa", q)?;
+        }
         Ok(DesignParams { life, ..self })
     }
 
@@ -1586,15 +2016,28 @@ impl DesignParams {
         self.failure_sliding_m.unwrap_or(FAILURE_FRACTION_OF_WIDTH * width_m)
     }
 
-    /// Both failure limits for a caisson of base width `width_m`.
+    /// The failure limits for a caisson of base width `width_m`.
     pub fn failure_limits(&self, width_m: f64) -> FailureLimits {
-        FailureLimits { sliding_m: self.failure_limit_m(width_m), rotation_rad: self.failure_rotation_rad }
+        FailureLimits {
+            sliding_m: self.failure_limit_m(width_m),
+            rotation_rad: self.failure_rotation_rad,
+            heel_pressure_pa: self.failure_heel_pressure_pa,
+        }
     }
 
-    /// Where the lives of a caisson of base width `width_m` end ([`StormCase::failure`]).
-    pub fn life_end(&self, width_m: f64) -> Option<FailureLimits> {
-        (!self.continue_after_failure).then(|| self.failure_limits(width_m))
+    /// The heel pressure the screen lets every wave through that may reach it
+    /// ([`StormCase::heel_screen_pa`]): the allowable heel pressure, or the failure heel pressure
+    /// if lower, Pa.
+    pub fn heel_screen_pa(&self) -> f64 {
+        self.failure_heel_pressure_pa
+            .map_or(self.allowable_heel_pressure_pa, |q| q.min(self.allowable_heel_pressure_pa))
     }
+}
+
+/// A heel pressure of a design in [10 kPa, 10 MPa] (the range of `[size]
+/// allowable_heel_pressure_kpa`), refused naming `quantity`.
+fn heel_pressure_limit(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
+    interval(quantity, v, 1e4, 1e7, true)
 }
 
 /// A life that could not be simulated.
@@ -1687,35 +2130,44 @@ pub fn life_statistics(values: &[f64], thresholds_m: &[f64]) -> LifeStatistics {
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct LifeCounts {
     pub lives: usize,
-    /// Lives that failed (either mode), by sliding and by rotation (a life may count in both).
+    /// Lives that failed (any mode), and by each mode of their failing wave (a life may count
+    /// in several).
     pub failed_lives: usize,
     pub failed_by_sliding_lives: usize,
     pub failed_by_rotation_lives: usize,
+    pub failed_by_heel_pressure_lives: usize,
     /// Lives with a wave that rotated the caisson beyond [`ROCKING_LIMIT_RAD`].
     pub large_rotation_lives: usize,
     /// Lives that ended more than [`SEAWARD_REPORT_M`] seaward of their place.
     pub seaward_lives: usize,
     /// The largest of those seaward distances, m (0 without such lives).
     pub largest_seaward_sliding_m: f64,
-    /// E|S| of the lives as simulated (not capped at the failure limit), m.
+    /// E|S| of the lives as simulated (every life to its end, not capped at the failure
+    /// limit), m.
     pub expected_sliding_uncapped_m: f64,
-    /// E|S| of the rigid block (over the whole lives: it runs on after the dynamic model's
-    /// failure), m.
+    /// E|S| of the rigid block (over the whole lives), m.
     pub rigid_block_expected_sliding_m: f64,
     /// The largest net sliding of a single storm, m.
     pub max_storm_sliding_m: f64,
+    /// Failed lives whose dynamic model stopped running on at a wave that did not converge.
+    pub run_on_stopped_lives: usize,
+    /// What the impulsive waves make of each model's lives.
+    pub impulsive: ImpulsiveShare,
+    pub rigid_block_impulsive: ImpulsiveShare,
 }
 
 impl LifeCounts {
-    /// The counts of `lives` with the failure limits `failure`.
+    /// The counts of `lives` with the failure limits `failure` (the rigid block's failure: its
+    /// sliding beyond the sliding limit).
     pub fn of(lives: &[StormOutcome], failure: &FailureLimits) -> Self {
         let count = |f: &dyn Fn(&StormOutcome) -> bool| lives.iter().filter(|l| f(l)).count();
         let seaward = |l: &StormOutcome| l.sliding_m < -SEAWARD_REPORT_M;
         LifeCounts {
             lives: lives.len(),
-            failed_lives: count(&|l| l.failed(failure)),
-            failed_by_sliding_lives: count(&|l| l.failed_by_sliding(failure)),
-            failed_by_rotation_lives: count(&|l| l.failed_by_rotation(failure)),
+            failed_lives: count(&|l| l.failed()),
+            failed_by_sliding_lives: count(&|l| l.failed_by_sliding != 0),
+            failed_by_rotation_lives: count(&|l| l.failed_by_rotation != 0),
+            failed_by_heel_pressure_lives: count(&|l| l.failed_by_heel_pressure != 0),
             large_rotation_lives: count(&|l| l.large_rotation_waves > 0),
             seaward_lives: count(&seaward),
             largest_seaward_sliding_m: lives.iter().filter(|l| seaward(l)).map(|l| -l.sliding_m).fold(0.0, f64::max),
@@ -1724,6 +2176,121 @@ impl LifeCounts {
             rigid_block_expected_sliding_m: lives.iter().map(|l| l.rigid_block_sliding_m.abs()).sum::<f64>()
                 / lives.len().max(1) as f64,
             max_storm_sliding_m: lives.iter().map(|l| l.max_storm_sliding_m).fold(0.0, f64::max),
+            run_on_stopped_lives: count(&|l| l.run_on_stopped != 0),
+            impulsive: ImpulsiveShare::dynamic(lives),
+            rigid_block_impulsive: ImpulsiveShare::rigid_block(lives, failure),
+        }
+    }
+}
+
+/// What the impulsive waves make of one model's lives (or storms; module docs, "Impulsive
+/// waves"): the `impulsive` group of `design.json`, `size.json` and `fragility.json`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct ImpulsiveShare {
+    /// The impulsive waves of all lives ([`StormOutcome::impulsive_waves`]).
+    pub waves: u64,
+    /// The mean over the lives of the sliding those waves caused, m (signed for the dynamic
+    /// model, shoreward +).
+    pub sliding_m: f64,
+    /// Their share of E|S| as simulated: Σ sign(S) S_imp / Σ |S| over the lives, S a life's
+    /// sliding and S_imp its impulsive waves' (the part of |S| they made; above 1 where other
+    /// waves slid the caisson back); 0 when E|S| = 0.
+    pub share_of_expected_sliding: f64,
+    /// The failed lives whose failing wave was impulsive, over the failed lives (0 when none
+    /// failed).
+    pub share_of_failures: f64,
+    /// The failed lives.
+    pub failures: usize,
+}
+
+impl ImpulsiveShare {
+    /// From each life's (S, S_imp, failed, failing wave impulsive).
+    fn of(waves: u64, lives: impl Iterator<Item = (f64, f64, bool, bool)>) -> Self {
+        let (mut n, mut imp, mut part, mut total, mut failures, mut impulsive_failures) = (0usize, 0.0, 0.0, 0.0, 0, 0);
+        for (s, s_imp, failed, impulsive) in lives {
+            n += 1;
+            imp += s_imp;
+            part += if s < 0.0 { -s_imp } else { s_imp };
+            total += s.abs();
+            failures += usize::from(failed);
+            impulsive_failures += usize::from(failed && impulsive);
+        }
+        ImpulsiveShare {
+            waves,
+            sliding_m: imp / n.max(1) as f64,
+            share_of_expected_sliding: if total > 0.0 { part / total } else { 0.0 },
+            share_of_failures: if failures > 0 { impulsive_failures as f64 / failures as f64 } else { 0.0 },
+            failures,
+        }
+    }
+
+    /// The dynamic model's.
+    pub fn dynamic(lives: &[StormOutcome]) -> Self {
+        let waves = lives.iter().map(|l| l.impulsive_waves).sum();
+        Self::of(
+            waves,
+            lives.iter().map(|l| (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0)),
+        )
+    }
+
+    /// The rigid block's (it fails by sliding beyond `failure.sliding_m`).
+    pub fn rigid_block(lives: &[StormOutcome], failure: &FailureLimits) -> Self {
+        let waves = lives.iter().map(|l| l.impulsive_waves).sum();
+        Self::of(
+            waves,
+            lives.iter().map(|l| {
+                (
+                    l.rigid_block_sliding_m,
+                    l.rigid_block_impulsive_sliding_m,
+                    l.rigid_block_failed(failure),
+                    l.rigid_block_failing_wave_impulsive != 0,
+                )
+            }),
+        )
+    }
+
+    /// Whether impulsive waves make more than half of E|S| or of the failures.
+    pub fn dominates(&self) -> bool {
+        self.share_of_expected_sliding > 0.5 || self.share_of_failures > 0.5
+    }
+}
+
+/// The exceedance of the allowable heel pressure by the lives' largest heel pressure
+/// ([`StormOutcome::max_heel_pressure_kpa`]; module docs, "Heel pressure"): the dynamic model's
+/// (the rigid block has no foundation pressure).
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct HeelPressureExceedance {
+    /// q_a, kPa.
+    pub allowable_kpa: f64,
+    /// P(q_heel > q_a): the share of lives whose largest heel pressure exceeds q_a (exact: the
+    /// screen runs every wave that may reach q_a).
+    pub probability: f64,
+    /// Its standard error √(p(1 − p)/n).
+    pub standard_error: f64,
+    /// The lives beyond q_a.
+    pub lives: usize,
+    /// The heel pressure at and above which each life's value is exact, kPa (the screen's: q_a,
+    /// or the failure heel pressure if lower); below it a life's value is the largest of the
+    /// waves run.
+    pub exact_from_kpa: f64,
+    /// The largest heel pressure of any life, kPa.
+    pub largest_kpa: f64,
+}
+
+impl HeelPressureExceedance {
+    /// Of `lives` against q_a = `allowable_pa`, exact from `exact_from_pa`.
+    pub fn of(lives: &[StormOutcome], allowable_pa: f64, exact_from_pa: f64) -> Self {
+        let allowable_kpa = allowable_pa / 1e3;
+        let beyond = lives.iter().filter(|l| l.max_heel_pressure_kpa > allowable_kpa).count();
+        let n = lives.len().max(1) as f64;
+        let p = beyond as f64 / n;
+        HeelPressureExceedance {
+            allowable_kpa,
+            probability: p,
+            standard_error: (p * (1.0 - p) / n).sqrt(),
+            lives: beyond,
+            exact_from_kpa: exact_from_pa / 1e3,
+            largest_kpa: lives.iter().map(|l| l.max_heel_pressure_kpa).fold(0.0, f64::max),
         }
     }
 }
@@ -1767,7 +2334,15 @@ mod tests {
         for (a, b) in with.iter().zip(&without) {
             let moved = b.simulated_waves - a.simulated_waves;
             assert_eq!(a.screened_waves, b.screened_waves + moved, "the counts move together");
-            assert_eq!(StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a }, *b);
+            // The largest heel pressure too where it reaches the screen's 500 kPa; below, the
+            // still waves are not run for it (module docs, "Heel pressure").
+            let heel = if b.max_heel_pressure_kpa >= 500.0 { b.max_heel_pressure_kpa } else { a.max_heel_pressure_kpa };
+            assert!(a.max_heel_pressure_kpa <= b.max_heel_pressure_kpa);
+            let same = StormOutcome { simulated_waves: b.simulated_waves, screened_waves: b.screened_waves, ..*a };
+            assert_eq!(
+                StormOutcome { max_heel_pressure_kpa: heel, ..same },
+                StormOutcome { max_heel_pressure_kpa: heel, ..*b }
+            );
             lives += 1;
             answered += moved;
         }
@@ -1837,12 +2412,12 @@ mod tests {
                 .replace("depth_at_wall_m = 16.5", "depth_at_wall_m = 11.0\nberm_width_m = 18.0")
         });
         let counts = |sc: &crate::scenario::Scenario| grid_counts(&sc.storm_case(true).expect("a design"));
-        // Under cuomo-2010, 451 storms may slide somewhere on their grid; the bound leaves nodes
-        // out in 462. The lowest cell that may slide is the one found cell by cell (above the
-        // first in each of the 451, on both grids).
-        assert_eq!(counts(&cuomo), (720, 451, 462, 2 * 451));
-        // On the high mound, 429 and 447.
-        assert_eq!(counts(&high_mound), (720, 429, 447, 2 * 429));
+        // Under cuomo-2010, 466 storms may slide, lift or press the heel to 500 kPa somewhere on
+        // their grid; the bound leaves nodes out in 481. The lowest cell that may is the one
+        // found cell by cell (above the first in each of the 466, on both grids).
+        assert_eq!(counts(&cuomo), (720, 466, 481, 2 * 466));
+        // On the high mound, 441 and 470.
+        assert_eq!(counts(&high_mound), (720, 441, 470, 2 * 441));
     }
 
     /// The storms of the grid test on `st`, checked: (storms, storms that may slide somewhere,
@@ -1916,8 +2491,7 @@ mod tests {
                     let run = |toe_k| {
                         let mut rng = realization_rng(7, storms);
                         let rng = &mut StormRng::Given(&mut rng);
-                        storm_from(&st, &s, rng, (0.0, false, Settle::Storm), toe_k, &mut StormScratch::default())
-                            .unwrap()
+                        storm_from(&st, &s, rng, StormStart::ALONE, toe_k, &mut StormScratch::default()).unwrap()
                     };
                     let (given, solved) = (run(Some(k)), run(None));
                     assert_eq!(format!("{given:?}"), format!("{solved:?}"), "H1/3 {h13} m, tide {tide_m} m");
@@ -2036,7 +2610,8 @@ mod tests {
             screen: true,
             failure_sliding_m: Some(1000.0),
             failure_rotation_rad: MAX_FAILURE_ROTATION_RAD,
-            continue_after_failure: false,
+            allowable_heel_pressure_pa: 500e3,
+            failure_heel_pressure_pa: Some(1e7),
         };
         assert_eq!(design.thresholds_m, [0.03, 0.05, 0.1, 0.3, 1.0, 3.0]);
         assert_eq!(DesignParams::thresholds_m(&[0.2, -0.1]).unwrap_err().0, 1);
@@ -2046,6 +2621,14 @@ mod tests {
         assert_eq!(refused(DesignParams { thresholds_m: vec![0.3, 0.1], ..design.clone() }), "thresholds_m");
         assert_eq!(refused(DesignParams { failure_sliding_m: Some(0.0), ..design.clone() }), "failure_sliding_m");
         assert_eq!(refused(DesignParams { failure_rotation_rad: 0.11, ..design.clone() }), "failure_rotation_rad");
+        assert_eq!(
+            refused(DesignParams { allowable_heel_pressure_pa: 1e4, ..design.clone() }),
+            "allowable_heel_pressure_pa"
+        );
+        assert_eq!(
+            refused(DesignParams { failure_heel_pressure_pa: Some(1.1e7), ..design.clone() }),
+            "failure_heel_pressure_pa"
+        );
         assert_eq!(
             refused(DesignParams { life: LifeParams { life_years: 0, ..design.life.clone() }, ..design }),
             "life_years"

@@ -7,8 +7,10 @@
 //! sliding limit, and exceeding every threshold):
 //!
 //! * expected sliding E|S| ≤ S_a (Shimosako & Takahashi 1999: 0.3 m; Goda & Takagi 2000: 0.1 m),
-//!   E|S| with each failed life at the failure limit (the literature's uncapped mean is kept
-//!   beside it, `expected_sliding_uncapped_m`);
+//!   E|S| with each failed life at the failure limit (`[size] expected_sliding = "capped"`, the
+//!   default), or as simulated, the plain mean of |S| with every life run to its end, failed or
+//!   not (`"as-simulated"`: the expected sliding distance of Shimosako & Takahashi 1999 and Goda
+//!   & Takagi 2000); both are reported with their standard errors whatever the criterion;
 //! * P(|S| > S_lim) ≤ p;
 //! * P(failure) ≤ p_f.
 //!
@@ -36,7 +38,9 @@
 //! criterion is met.
 
 use super::fragility::normal_cdf;
-use super::lifetime::{capped_statistics, life_statistics, FailureLimits, LifeCounts, StormOutcome};
+use super::lifetime::{
+    capped_statistics, FailureLimits, HeelPressureExceedance, ImpulsiveShare, LifeCounts, StormOutcome,
+};
 use crate::check::{count, interval};
 use serde::Serialize;
 
@@ -49,12 +53,32 @@ pub struct Criteria {
     /// E|S| ≤ this, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub expected_sliding_m: Option<f64>,
+    /// Which E|S| the criterion reads (module docs).
+    #[serde(skip_serializing_if = "ExpectedSliding::is_capped")]
+    pub expected_sliding: ExpectedSliding,
     /// P(|S| > `sliding_m`) ≤ `probability`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exceedance: Option<ExceedanceCriterion>,
     /// P(failure) ≤ this.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub failure_probability: Option<f64>,
+}
+
+/// Which expected sliding an E|S| criterion reads (`[size] expected_sliding`, module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ExpectedSliding {
+    /// Each failed life at the sliding failure limit (the default).
+    #[default]
+    Capped,
+    /// The plain mean of the lives as simulated, each run to its end (Shimosako & Takahashi 1999).
+    AsSimulated,
+}
+
+impl ExpectedSliding {
+    fn is_capped(&self) -> bool {
+        *self == ExpectedSliding::Capped
+    }
 }
 
 /// P(|S| > sliding_m) ≤ probability.
@@ -71,8 +95,10 @@ pub struct ModelPoint {
     pub expected_sliding_m: f64,
     /// Its standard error, m.
     pub expected_sliding_se_m: f64,
-    /// E|S| of the lives as simulated (not capped), m.
+    /// E|S| of the lives as simulated (every life run to its end, not capped), m, and its
+    /// standard error.
     pub expected_sliding_uncapped_m: f64,
+    pub expected_sliding_uncapped_se_m: f64,
     /// Median and 95 % value of |S| with each failed life at the limit (nearest rank), m.
     pub p50_m: f64,
     pub p95_m: f64,
@@ -80,9 +106,13 @@ pub struct ModelPoint {
     /// criterion).
     pub exceedance_probability: f64,
     pub failure_probability: f64,
-    /// P(failure by sliding) and P(failure by rotation) (a life may fail by both).
+    /// P(failure by sliding), by rotation and by heel pressure (of the failing wave: a life may
+    /// count in several).
     pub failure_by_sliding_probability: f64,
     pub failure_by_rotation_probability: f64,
+    pub failure_by_heel_pressure_probability: f64,
+    /// What the impulsive waves make of the lives.
+    pub impulsive: ImpulsiveShare,
 }
 
 /// Which model a search is for.
@@ -102,6 +132,9 @@ pub struct Candidate {
     pub lives: usize,
     pub dynamic: ModelPoint,
     pub rigid_block: ModelPoint,
+    /// The exceedance of the allowable heel pressure by the lives' largest heel pressure (the
+    /// dynamic model's).
+    pub heel_pressure_exceedance: HeelPressureExceedance,
     /// What the life warnings of the dynamic model's lives need
     /// ([`super::checks::candidate_warnings`]).
     pub life_counts: LifeCounts,
@@ -116,53 +149,82 @@ impl Candidate {
     }
 }
 
-/// The statistics of one model over `n` lives: magnitudes |S|, whether each life failed by
-/// sliding and by rotation, and the sliding limit `limit_m` (module docs, "Criteria").
-pub fn model_point(magnitudes: &[f64], modes: &[(bool, bool)], limit_m: f64, criteria: &Criteria) -> ModelPoint {
+/// The mean of `values` and its standard error s/√n (0 with fewer than two values).
+pub fn mean_and_se(values: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
+    let n = values.clone().count();
+    let mean = values.clone().sum::<f64>() / n.max(1) as f64;
+    let var = if n > 1 { values.map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64 } else { 0.0 };
+    (mean, (var / n.max(1) as f64).sqrt())
+}
+
+/// The statistics of one model over `n` lives: magnitudes |S|, the modes of each life's failing
+/// wave (sliding, rotation, heel pressure; none: it did not fail), the sliding limit `limit_m`
+/// (module docs, "Criteria") and what the impulsive waves made of the lives.
+pub fn model_point(
+    magnitudes: &[f64],
+    modes: &[[bool; 3]],
+    limit_m: f64,
+    criteria: &Criteria,
+    impulsive: ImpulsiveShare,
+) -> ModelPoint {
     let n = magnitudes.len().max(1) as f64;
-    let failed: Vec<bool> = modes.iter().map(|&(a, b)| a || b).collect();
+    let failed: Vec<bool> = modes.iter().map(|m| m.iter().any(|&f| f)).collect();
     // Mean and nearest-rank percentiles as the design report computes them.
     let thresholds = criteria.exceedance.map(|e| vec![e.sliding_m]).unwrap_or_default();
     let s = capped_statistics(magnitudes, &failed, limit_m, &thresholds);
     let pct = |p: f64| s.percentiles_m.iter().find(|(q, _)| *q == p).map_or(0.0, |(_, v)| *v);
-    let mean = s.mean_m;
     let capped = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m });
-    let var = if magnitudes.len() > 1 { capped.map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
-    let share = |f: &dyn Fn(&(bool, bool)) -> bool| modes.iter().filter(|m| f(m)).count() as f64 / n;
+    let (mean, se) = mean_and_se(capped);
+    let (uncapped, uncapped_se) = mean_and_se(magnitudes.iter().copied());
+    let share = |k: Option<usize>| modes.iter().filter(|m| k.map_or(m.iter().any(|&f| f), |k| m[k])).count() as f64 / n;
     ModelPoint {
         expected_sliding_m: mean,
-        expected_sliding_se_m: (var / n).sqrt(),
-        expected_sliding_uncapped_m: life_statistics(magnitudes, &[]).mean_m,
+        expected_sliding_se_m: se,
+        expected_sliding_uncapped_m: uncapped,
+        expected_sliding_uncapped_se_m: uncapped_se,
         p50_m: pct(50.0),
         p95_m: pct(95.0),
         exceedance_probability: s.exceedance.first().map_or(0.0, |(_, p)| *p),
-        failure_probability: share(&|m| m.0 || m.1),
-        failure_by_sliding_probability: share(&|m| m.0),
-        failure_by_rotation_probability: share(&|m| m.1),
+        failure_probability: share(None),
+        failure_by_sliding_probability: share(Some(0)),
+        failure_by_rotation_probability: share(Some(1)),
+        failure_by_heel_pressure_probability: share(Some(2)),
+        impulsive,
     }
 }
 
+/// The failing wave's modes of each life of the dynamic model (sliding, rotation, heel pressure),
+/// and the rigid block's (sliding beyond the limit only).
+pub fn failure_modes(lives: &[StormOutcome], failure: &FailureLimits) -> (Vec<[bool; 3]>, Vec<[bool; 3]>) {
+    let dynamic =
+        lives.iter().map(|l| [l.failed_by_sliding, l.failed_by_rotation, l.failed_by_heel_pressure].map(|f| f != 0));
+    let rigid = lives.iter().map(|l| [l.rigid_block_failed(failure), false, false]);
+    (dynamic.collect(), rigid.collect())
+}
+
 /// The candidate of `lives` (their outcomes, in index order) at `width_m` with the failure limits
-/// `failure` (at this width).
+/// `failure` (at this width); `heel_pa`: the allowable heel pressure and the heel pressure from
+/// which the lives' values are exact (`DesignParams::heel_screen_pa`).
 pub fn candidate(
     width_m: f64,
     weight_in_water_n: f64,
     lives: &[StormOutcome],
     failure: &FailureLimits,
     criteria: &Criteria,
+    heel_pa: (f64, f64),
 ) -> Candidate {
     let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
     let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
-    let modes: Vec<(bool, bool)> =
-        lives.iter().map(|l| (l.failed_by_sliding(failure), l.failed_by_rotation(failure))).collect();
-    let rigid_modes: Vec<(bool, bool)> = rigid.iter().map(|&s| (s > failure.sliding_m, false)).collect();
+    let (modes, rigid_modes) = failure_modes(lives, failure);
+    let counts = LifeCounts::of(lives, failure);
     Candidate {
         width_m,
         weight_in_water_n,
         lives: lives.len(),
-        dynamic: model_point(&dynamic, &modes, failure.sliding_m, criteria),
-        rigid_block: model_point(&rigid, &rigid_modes, failure.sliding_m, criteria),
-        life_counts: LifeCounts::of(lives, failure),
+        dynamic: model_point(&dynamic, &modes, failure.sliding_m, criteria, counts.impulsive),
+        rigid_block: model_point(&rigid, &rigid_modes, failure.sliding_m, criteria, counts.rigid_block_impulsive),
+        heel_pressure_exceedance: HeelPressureExceedance::of(lives, heel_pa.0, heel_pa.1),
+        life_counts: counts,
     }
 }
 
@@ -179,7 +241,10 @@ impl Criteria {
         let prob_se = |q: f64| (q * (1.0 - q) / n).sqrt();
         let mut out = Vec::with_capacity(3);
         if let Some(s) = self.expected_sliding_m {
-            out.push((s - p.expected_sliding_m, p.expected_sliding_se_m));
+            out.push(match self.expected_sliding {
+                ExpectedSliding::Capped => (s - p.expected_sliding_m, p.expected_sliding_se_m),
+                ExpectedSliding::AsSimulated => (s - p.expected_sliding_uncapped_m, p.expected_sliding_uncapped_se_m),
+            });
         }
         if let Some(e) = self.exceedance {
             out.push((e.probability - p.exceedance_probability, prob_se(p.exceedance_probability)));
@@ -467,15 +532,24 @@ mod tests {
         };
         // Limit 1.5 m: the second life failed by rotation (|S| 0.4 m), the third by sliding
         // (2 m); capped values 0, 1.5, 1.5, 0.2.
-        let modes = [(false, false), (false, true), (true, false), (false, false)];
-        let p = model_point(&[0.0, 0.4, 2.0, 0.2], &modes, 1.5, &c);
+        let f = false;
+        let modes = [[f, f, f], [f, true, f], [true, f, f], [f, f, f]];
+        let p = model_point(&[0.0, 0.4, 2.0, 0.2], &modes, 1.5, &c, ImpulsiveShare::default());
         assert!((p.expected_sliding_m - 0.8).abs() < 1e-15);
         assert!((p.expected_sliding_uncapped_m - 0.65).abs() < 1e-15);
         // s² = (0.64 + 0.49 + 0.49 + 0.36)/3 = 0.66, SE = √(s²/4).
         assert!((p.expected_sliding_se_m - (1.98f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
+        // As simulated: mean 0.65, s² = (0.4225 + 0.0625 + 1.8225 + 0.2025)/3 = 0.8367, SE = √(s²/4).
+        assert!((p.expected_sliding_uncapped_se_m - (2.51f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
         // Sorted capped values 0, 0.2, 1.5, 1.5; both failed lives exceed 0.5 m.
         assert_eq!((p.p50_m, p.p95_m, p.exceedance_probability, p.failure_probability), (0.2, 1.5, 0.5, 0.5));
         assert_eq!((p.failure_by_sliding_probability, p.failure_by_rotation_probability), (0.25, 0.25));
+        assert_eq!(p.failure_by_heel_pressure_probability, 0.0);
+        // The criterion E|S| ≤ 0.7 m: the capped mean (0.8 m) misses it, the as-simulated (0.65 m)
+        // meets it.
+        let capped = Criteria { expected_sliding_m: Some(0.7), ..Criteria::default() };
+        let as_simulated = Criteria { expected_sliding: ExpectedSliding::AsSimulated, ..capped };
+        assert_eq!((capped.met(&p, 4, 0.0), as_simulated.met(&p, 4, 0.0)), (false, true));
     }
 
     /// A smooth decreasing E|S|(B) = 2/B² m with no noise: the search returns the root
@@ -502,6 +576,7 @@ mod tests {
                     lives: 1,
                     dynamic: point(2.0 / (b * b)),
                     rigid_block: point(3.0 / (b * b)),
+                    heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
                 })
             })
@@ -539,6 +614,7 @@ mod tests {
                     lives: 1,
                     dynamic: point(k / (b * b)),
                     rigid_block: point(k / (b * b)),
+                    heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
                 })
             }

@@ -138,7 +138,15 @@ impl<'a> Sizer<'a> {
                 return Err(SizeError::Stopped { width_m: w });
             }
             let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
-            let c = candidate(w, sw.caisson().weight_in_water_n, &outcomes, &design.failure_limits(w), &p.criteria);
+            let heel_pa = (design.allowable_heel_pressure_pa, design.heel_screen_pa());
+            let c = candidate(
+                w,
+                sw.caisson().weight_in_water_n,
+                &outcomes,
+                &design.failure_limits(w),
+                &p.criteria,
+                heel_pa,
+            );
             finished(&c).map_err(SizeError::Candidate)?;
             Ok(c)
         };
@@ -158,6 +166,6 @@ impl<'a> Sizer<'a> {
             let checks = goda_checks(c.width_m).map(|sf| ChecksAtWidth::new(c.width_m, &sf));
             (design.failure_limit_m(c.width_m), checks)
         };
-        Ok(SizeReport::new(p, design, self.sc.structure(), self.sc.waves.as_ref(), &sizing, goda, &extra))
+        Ok(SizeReport::new(p, design, (self.sc.structure(), self.sc.waves.as_ref()), &sizing, goda, &extra))
     }
 }

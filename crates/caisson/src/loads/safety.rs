@@ -61,13 +61,27 @@ pub fn safety_factors(i: &SafetyInput) -> SafetyFactors {
     let ve = w - i.uplift_force_n_per_m;
     let (te, pe) = if ve > 0.0 && me > 0.0 {
         let te = me / ve;
-        let b = i.width_m;
-        let pe = if te <= b / 3.0 { 2.0 * ve / (3.0 * te) } else { 2.0 * ve / b * (2.0 - 3.0 * te / b) };
-        (Some(te), Some(pe))
+        (Some(te), Some(heel_pressure_pa(ve, te, i.width_m)))
     } else {
         (None, None)
     };
     SafetyFactors { sliding, overturning, heel_pressure_pa: pe, resultant_from_heel_m: te }
+}
+
+/// The heel (shoreward edge) value of the linear base pressure without tension that carries the
+/// normal force `v_n_per_m` (> 0) with its resultant `te_m` from the heel on a base `width_m` wide,
+/// Pa (module docs): 2V/(3 t_e) where part of the base is unloaded (t_e ≤ B/3), (2V/B)(2 − 3 t_e/B)
+/// where the whole base is pressed, 0 where the resultant lies two thirds of the base or more
+/// from the heel (the heel unloaded), and infinite where t_e ≤ 0 (no base carries it).
+pub fn heel_pressure_pa(v_n_per_m: f64, te_m: f64, width_m: f64) -> f64 {
+    let b = width_m;
+    if te_m <= 0.0 {
+        f64::INFINITY
+    } else if te_m <= b / 3.0 {
+        2.0 * v_n_per_m / (3.0 * te_m)
+    } else {
+        (2.0 * v_n_per_m / b * (2.0 - 3.0 * te_m / b)).max(0.0)
+    }
 }
 
 #[cfg(test)]

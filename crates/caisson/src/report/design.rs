@@ -1,13 +1,14 @@
 //! `caisson design`: `design.json` (keys in docs/design.md).
 
 use super::{fingerprint, ModelReport, Provenance};
-use crate::analysis::checks::{life_warnings, structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
 use crate::analysis::lifetime::{
-    capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, LifeParams,
-    LifeStatistics, StormCase, StormOutcome, WaveDraws,
+    capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
+    ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
 use crate::analysis::site::WaveSetup;
+use crate::analysis::sizing::failure_modes;
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
 use serde::Serialize;
@@ -21,6 +22,7 @@ struct LifeInputs<'a> {
     screen: bool,
     draws: WaveDraws,
     failure: Option<FailureLimits>,
+    heel_screen_pa: f64,
     life: &'a LifeParams,
     seed: u64,
 }
@@ -36,6 +38,7 @@ pub fn design_fingerprint(case: &StormCase<'_>, p: &DesignParams) -> String {
         screen: case.screen,
         draws: case.draws,
         failure: case.failure,
+        heel_screen_pa: case.heel_screen_pa,
         life: &p.life,
         seed: p.seed,
     })
@@ -69,6 +72,9 @@ pub struct Failure {
     /// The lives that failed by rotation (beyond `failure_rotation_rad`; never the rigid
     /// block's). A life whose failing wave did both counts in both modes.
     pub by_rotation: FailureMode,
+    /// The lives that failed by heel pressure (beyond `failure_heel_pressure_kpa`, if given;
+    /// never the rigid block's).
+    pub by_heel_pressure: FailureMode,
 }
 
 /// The lives that failed by one mode.
@@ -95,15 +101,20 @@ pub struct ModelStatistics {
     /// E|S| with each failed life at the sliding limit (bounded by it), m.
     pub expected_sliding_m: f64,
     pub expected_sliding_per_year_m: f64,
-    /// E|S| of the lives as simulated (a life that ends at failure with the sliding it had
-    /// then; every life to its end with `continue_after_failure`), m.
+    /// E|S| of the lives as simulated (every life run to its end, failed or not: the expected
+    /// sliding distance of Shimosako & Takahashi 1999), m, and its standard error.
     pub expected_sliding_uncapped_m: f64,
+    pub expected_sliding_uncapped_se_m: f64,
+    /// The standard error of `expected_sliding_m`, m.
+    pub expected_sliding_se_m: f64,
     /// Of |S| with each failed life at the sliding limit.
     pub percentiles_m: Percentiles,
     /// P(|S| > threshold), a failed life exceeding every threshold.
     pub exceedance_probability: Vec<Exceedance>,
     pub failure: Failure,
     pub surviving: Surviving,
+    /// What the impulsive waves make of the lives (docs/design.md, "Impulsive waves").
+    pub impulsive: ImpulsiveShare,
 }
 
 fn percentiles(s: &LifeStatistics) -> Percentiles {
@@ -112,12 +123,21 @@ fn percentiles(s: &LifeStatistics) -> Percentiles {
 }
 
 impl ModelStatistics {
-    /// `magnitudes`: |S| of every life; `modes`: whether each life failed by sliding and by
-    /// rotation; `limit_m`: the sliding limit.
-    fn new(magnitudes: &[f64], modes: &[(bool, bool)], limit_m: f64, thresholds_m: &[f64], years: usize) -> Self {
-        let failed: Vec<bool> = modes.iter().map(|&(a, b)| a || b).collect();
+    /// `magnitudes`: |S| of every life; `modes`: the modes of each life's failing wave
+    /// (sliding, rotation, heel pressure); `limit_m`: the sliding limit.
+    fn new(
+        magnitudes: &[f64],
+        modes: &[[bool; 3]],
+        limit_m: f64,
+        thresholds_m: &[f64],
+        years: usize,
+        impulsive: ImpulsiveShare,
+    ) -> Self {
+        let failed: Vec<bool> = modes.iter().map(|m| m.iter().any(|&f| f)).collect();
         let s = capped_statistics(magnitudes, &failed, limit_m, thresholds_m);
-        let uncapped = life_statistics(magnitudes, &[]).mean_m;
+        let capped = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m });
+        let (_, se) = crate::analysis::sizing::mean_and_se(capped);
+        let (uncapped, uncapped_se) = crate::analysis::sizing::mean_and_se(magnitudes.iter().copied());
         let surviving: Vec<f64> = magnitudes.iter().zip(&failed).filter(|(_, &f)| !f).map(|(&m, _)| m).collect();
         let sv = life_statistics(&surviving, &[]);
         let failures = magnitudes.len() - surviving.len();
@@ -127,6 +147,8 @@ impl ModelStatistics {
             expected_sliding_m: s.mean_m,
             expected_sliding_per_year_m: s.mean_m / years as f64,
             expected_sliding_uncapped_m: uncapped,
+            expected_sliding_uncapped_se_m: uncapped_se,
+            expected_sliding_se_m: se,
             percentiles_m: percentiles(&s),
             exceedance_probability: s
                 .exceedance
@@ -136,10 +158,12 @@ impl ModelStatistics {
             failure: Failure {
                 probability: failures as f64 / n,
                 lives: failures,
-                by_sliding: mode(modes.iter().filter(|m| m.0).count()),
-                by_rotation: mode(modes.iter().filter(|m| m.1).count()),
+                by_sliding: mode(modes.iter().filter(|m| m[0]).count()),
+                by_rotation: mode(modes.iter().filter(|m| m[1]).count()),
+                by_heel_pressure: mode(modes.iter().filter(|m| m[2]).count()),
             },
             surviving: Surviving { lives: sv.lives, expected_sliding_m: sv.mean_m, percentiles_m: percentiles(&sv) },
+            impulsive,
         }
     }
 }
@@ -167,6 +191,9 @@ pub struct DynamicStatistics {
     /// Lives with a large-rotation wave: outside the model's validity (it does not follow
     /// overturning).
     pub large_rotation_lives: usize,
+    /// The lives' largest heel pressure against the allowable one (docs/design.md, "Heel
+    /// pressure"; the rigid block has no foundation pressure).
+    pub heel_pressure_exceedance: HeelPressureExceedance,
 }
 
 /// The climate choices of a run that differ from today's model (docs/design.md, "Climate"): the
@@ -290,8 +317,10 @@ pub struct DesignReport {
     pub failure_sliding_m: f64,
     /// The failure limit on the caisson's rotation, rad (`[design] failure_rotation_rad`).
     pub failure_rotation_rad: f64,
-    /// Whether a life ends at the wave that fails it (`[design] continue_after_failure` false).
-    pub lives_end_at_failure: bool,
+    /// The failure limit on the heel pressure, kPa (`[design] failure_heel_pressure_kpa`);
+    /// absent: no failure by heel pressure.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub failure_heel_pressure_kpa: Option<f64>,
     /// The climate choices that are not today's model; absent if none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub climate: Option<ClimateChoices>,
@@ -318,6 +347,8 @@ impl DesignReport {
         report.model = Some(ModelReport::new(case.structure, waves));
         report.warnings = structure_warnings(case.structure);
         report.warnings.extend(life_warnings(lives, &failure, width_m));
+        let shares = [&report.dynamic.sliding.impulsive, &report.rigid_block.impulsive];
+        report.warnings.extend(impulsive_warnings(shares, case.model, waves));
         if let Some(ws) = waves {
             report.warnings.extend(wave_load_warnings(case.structure, ws));
         }
@@ -333,10 +364,12 @@ impl DesignReport {
         let mean = |f: fn(&StormOutcome) -> f64| lives.iter().map(f).sum::<f64>() / n;
         let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
-        let limits = FailureLimits { sliding_m: failure_sliding_m, rotation_rad: p.failure_rotation_rad };
-        let modes: Vec<(bool, bool)> =
-            lives.iter().map(|l| (l.failed_by_sliding(&limits), l.failed_by_rotation(&limits))).collect();
-        let rigid_modes: Vec<(bool, bool)> = rigid.iter().map(|&s| (s > failure_sliding_m, false)).collect();
+        let limits = FailureLimits {
+            sliding_m: failure_sliding_m,
+            rotation_rad: p.failure_rotation_rad,
+            heel_pressure_pa: p.failure_heel_pressure_pa,
+        };
+        let (modes, rigid_modes) = failure_modes(lives, &limits);
         let waves: u64 = lives.iter().map(|l| l.waves).sum();
         let screened: u64 = lives.iter().map(|l| l.screened_waves).sum();
         DesignReport {
@@ -348,10 +381,17 @@ impl DesignReport {
             screen: p.screen,
             failure_sliding_m,
             failure_rotation_rad: p.failure_rotation_rad,
-            lives_end_at_failure: !p.continue_after_failure,
+            failure_heel_pressure_kpa: p.failure_heel_pressure_pa.map(|q| q / 1e3),
             climate: ClimateChoices::of(&p.life),
             dynamic: DynamicStatistics {
-                sliding: ModelStatistics::new(&dynamic, &modes, failure_sliding_m, &p.thresholds_m, years),
+                sliding: ModelStatistics::new(
+                    &dynamic,
+                    &modes,
+                    failure_sliding_m,
+                    &p.thresholds_m,
+                    years,
+                    ImpulsiveShare::dynamic(lives),
+                ),
                 expected_net_sliding_m: mean(|l| l.sliding_m),
                 expected_shoreward_sliding_m: mean(|l| l.shoreward_sliding_m),
                 expected_seaward_sliding_m: mean(|l| l.seaward_sliding_m),
@@ -360,8 +400,20 @@ impl DesignReport {
                 rocking_waves: lives.iter().map(|l| l.rocking_waves).sum(),
                 large_rotation_waves: lives.iter().map(|l| l.large_rotation_waves).sum(),
                 large_rotation_lives: lives.iter().filter(|l| l.large_rotation_waves > 0).count(),
+                heel_pressure_exceedance: HeelPressureExceedance::of(
+                    lives,
+                    p.allowable_heel_pressure_pa,
+                    p.heel_screen_pa(),
+                ),
             },
-            rigid_block: ModelStatistics::new(&rigid, &rigid_modes, failure_sliding_m, &p.thresholds_m, years),
+            rigid_block: ModelStatistics::new(
+                &rigid,
+                &rigid_modes,
+                failure_sliding_m,
+                &p.thresholds_m,
+                years,
+                ImpulsiveShare::rigid_block(lives, &limits),
+            ),
             rigid_block_mu,
             waves,
             simulated_waves: lives.iter().map(|l| l.simulated_waves).sum(),
@@ -406,21 +458,27 @@ mod tests {
         let mut seaward = life(-3.0, 1.0, 4.0, 3.5, 1.0);
         seaward.large_rotation_waves = 2;
         seaward.max_rotation_rad = 0.02;
+        seaward.failed_by_rotation = 1;
+        // Its failing wave and 2.5 m of the seaward slide were impulsive.
+        seaward.failing_wave_impulsive = 1;
+        seaward.impulsive_sliding_m = -2.5;
         let mut both = life(8.0, 8.0, 0.0, 8.0, 0.5);
         both.max_rotation_rad = 0.011;
         both.large_rotation_waves = 1;
-        let lives = [
-            life(0.2, 0.2, 0.0, 0.2, 0.25),
-            seaward,
-            life(6.0, 6.0, 0.0, 6.0, 7.0),
-            life(0.0, 5.5, 5.5, 5.5, 0.0),
-            life(1e-3, 1e-3, 0.0, 1e-3, 0.0),
-            both,
-        ];
+        (both.failed_by_sliding, both.failed_by_rotation) = (1, 1);
+        let mut beyond = life(6.0, 6.0, 0.0, 6.0, 7.0);
+        beyond.failed_by_sliding = 1;
+        // The rigid block's 7 m: 4 m of it impulsive, and its failing wave.
+        (beyond.rigid_block_impulsive_sliding_m, beyond.rigid_block_failing_wave_impulsive) = (4.0, 1);
+        let mut back = life(0.0, 5.5, 5.5, 5.5, 0.0);
+        back.failed_by_sliding = 1;
+        let mut first = life(0.2, 0.2, 0.0, 0.2, 0.25);
+        (first.impulsive_waves, first.impulsive_sliding_m, first.max_heel_pressure_kpa) = (3, 0.15, 620.0);
+        let lives = [first, seaward, beyond, back, life(1e-3, 1e-3, 0.0, 1e-3, 0.0), both];
         let r = DesignReport::statistics(&p, 0.6, 5.0, &lives);
         let d = &r.dynamic;
         let f = &d.sliding.failure;
-        assert_eq!((r.failure_sliding_m, r.failure_rotation_rad, r.lives_end_at_failure), (5.0, 0.01, true));
+        assert_eq!((r.failure_sliding_m, r.failure_rotation_rad, r.failure_heel_pressure_kpa), (5.0, 0.01, None));
         assert_eq!((f.lives, f.probability), (4, 4.0 / 6.0));
         assert_eq!((f.by_sliding.lives, f.by_sliding.probability), (3, 0.5));
         assert_eq!((f.by_rotation.lives, f.by_rotation.probability), (2, 2.0 / 6.0));
@@ -449,7 +507,22 @@ mod tests {
         assert!((rb.expected_sliding_m - (0.25 + 1.0 + 5.0 + 0.0 + 0.0 + 0.5) / 6.0).abs() < 1e-12);
         assert!((rb.expected_sliding_uncapped_m - (0.25 + 1.0 + 7.0 + 0.5) / 6.0).abs() < 1e-12);
         assert!((rb.surviving.expected_sliding_m - (0.25 + 1.0 + 0.5) / 5.0).abs() < 1e-12);
-        let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01 };
+        let limits = FailureLimits { sliding_m: 5.0, rotation_rad: 0.01, heel_pressure_pa: None };
+        // Impulsive shares by hand: the dynamic model's impulsive sliding 0.15 and −2.5 m in lives
+        // ending +0.2 and −3 m: their part of Σ|S| = 0.2 + 3 + 6 + 0 + 0.001 + 8 = 17.201 m is
+        // 0.15 + 2.5 (a seaward life's seaward impulsive slide adds to its |S|); the failing
+        // wave of 1 of the 4 failed lives was impulsive. The rigid block: 4 m of Σ = 8.75 m, and
+        // its one failure (7 m > 5 m) impulsive.
+        let (id, ir) = (&d.sliding.impulsive, &r.rigid_block.impulsive);
+        assert_eq!((id.waves, id.failures, ir.failures), (3, 4, 1));
+        assert!((id.sliding_m - (0.15 - 2.5) / 6.0).abs() < 1e-15);
+        assert!((id.share_of_expected_sliding - 2.65 / 17.201).abs() < 1e-12);
+        assert_eq!((id.share_of_failures, ir.share_of_failures), (0.25, 1.0));
+        assert!((ir.share_of_expected_sliding - 4.0 / 8.75).abs() < 1e-12);
+        // One life of six above 500 kPa: P = 1/6, SE = √(p(1 − p)/6).
+        let h = &d.heel_pressure_exceedance;
+        assert_eq!((h.lives, h.probability, h.allowable_kpa, h.largest_kpa), (1, 1.0 / 6.0, 500.0, 620.0));
+        assert!((h.standard_error - (1.0f64 / 6.0 * 5.0 / 6.0 / 6.0).sqrt()).abs() < 1e-15);
         let warnings = life_warnings(&lives, &limits, 20.0);
         let codes: Vec<&str> = warnings.iter().map(|w| w.code).collect();
         assert_eq!(codes, vec!["failed-lives", "large-rotation-lives", "seaward-lives"]);
@@ -459,7 +532,9 @@ mod tests {
             (4.0, 3.0, 2.0)
         );
         // A sizing candidate of the same lives keeps what gives the same warnings.
-        let c = candidate(20.0, 1.0, &lives, &limits, &Criteria::default());
+        let c = candidate(20.0, 1.0, &lives, &limits, &Criteria::default(), (500e3, 500e3));
+        assert_eq!(c.heel_pressure_exceedance, d.heel_pressure_exceedance);
+        assert_eq!((c.dynamic.impulsive, c.rigid_block.impulsive), (*id, *ir));
         assert_eq!(candidate_warnings(&c, &limits), warnings);
         let calm = [life(0.2, 0.2, 0.0, 0.2, 0.25), life(-0.005, 0.0, 0.005, 0.005, 0.0)];
         assert!(life_warnings(&calm, &limits, 20.0).is_empty(), "5 mm seaward is below the 1 cm reported");

@@ -1,10 +1,11 @@
 //! `caisson fragility`: `fragility.json` (keys in docs/fragility.md).
 
 use super::{ModelReport, Provenance};
-use crate::analysis::checks::{storm_warnings, structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::checks::{impulsive_warnings, storm_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{StormDuration, WaveDirection, WavePeriods};
 use crate::analysis::conventional::{DesignWave, DesignWaveRule, StaticCheck};
 use crate::analysis::fragility::{FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO};
+use crate::analysis::lifetime::{ErrorModel, FailureLimits, ImpulsiveShare};
 use crate::analysis::site::WaveSetup;
 use crate::analysis::Structure;
 use serde::Serialize;
@@ -164,6 +165,12 @@ pub struct FragilityReport {
     pub limits_m: Vec<f64>,
     /// `[fragility] failure_rotation_rad`, rad.
     pub failure_rotation_rad: f64,
+    /// The load-model errors drawn per storm (docs/fragility.md); `null` with `errors = false`.
+    pub errors: Option<LoadErrors>,
+    /// What the impulsive waves make of the storms of every height, per model (a storm "fails"
+    /// when a wave takes it beyond the largest limit or, the dynamic model, rotates it beyond
+    /// `failure_rotation_rad`; docs/fragility.md).
+    pub impulsive: ImpulsiveGroup,
     pub rigid_block_mu: f64,
     pub design_wave: DesignWaveReport,
     pub levels: Vec<LevelReport>,
@@ -172,10 +179,37 @@ pub struct FragilityReport {
     pub warnings: Vec<Warning>,
 }
 
+/// The load-model errors of a fragility's storms: the multipliers 1 + bias + COV z of the wave
+/// force, the friction and the impulsive component (absent: the wave force's).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LoadErrors {
+    pub wave_force: ErrorModel,
+    pub friction: ErrorModel,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impact_force: Option<ErrorModel>,
+}
+
+/// The `impulsive` group of a report: one [`ImpulsiveShare`] per model.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ImpulsiveGroup {
+    pub dynamic: ImpulsiveShare,
+    pub rigid_block: ImpulsiveShare,
+}
+
 impl FragilityReport {
     /// The report of `r`, the fragility `p` of `structure` under `waves` (file `name`).
     pub fn new(name: &str, structure: &Structure, waves: &WaveSetup, p: &FragilityParams, r: &FragilityResult) -> Self {
         let (h, t) = (waves.height_m(), waves.period_s());
+        let storms: Vec<_> = r.levels.iter().flat_map(|l| l.storms.iter().copied()).collect();
+        let largest = FailureLimits {
+            sliding_m: p.limits_m.last().copied().unwrap_or(f64::INFINITY),
+            rotation_rad: p.failure_rotation_rad,
+            heel_pressure_pa: None,
+        };
+        let impulsive = ImpulsiveGroup {
+            dynamic: ImpulsiveShare::dynamic(&storms),
+            rigid_block: ImpulsiveShare::rigid_block(&storms, &largest),
+        };
         FragilityReport {
             provenance: Provenance::CURRENT,
             model: ModelReport::new(structure, Some(waves)),
@@ -191,6 +225,12 @@ impl FragilityReport {
             seed: p.seed,
             limits_m: p.limits_m.clone(),
             failure_rotation_rad: p.failure_rotation_rad,
+            errors: p.errors.map(|e| LoadErrors {
+                wave_force: e.wave_force,
+                friction: e.friction,
+                impact_force: e.impact_force,
+            }),
+            impulsive,
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),
             design_wave: {
                 let check = goda_design_check(structure, waves, h, t);
@@ -222,6 +262,7 @@ impl FragilityReport {
                 let mut w = structure_warnings(structure);
                 w.extend(wave_load_warnings(structure, waves));
                 w.extend(storm_warnings(r.levels.iter().flat_map(|l| &l.storms), structure.caisson.width_m));
+                w.extend(impulsive_warnings([&impulsive.dynamic, &impulsive.rigid_block], &waves.model, Some(waves)));
                 w
             },
         }

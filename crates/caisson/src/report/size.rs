@@ -1,10 +1,10 @@
 //! `caisson size`: `size.json` (keys in docs/size.md).
 
 use super::{kn, ModelReport, Provenance};
-use crate::analysis::checks::{candidate_warnings, structure_warnings, Warning};
+use crate::analysis::checks::{candidate_warnings, impulsive_warnings, structure_warnings, Warning};
 use crate::analysis::conventional::Reached;
 use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
-use crate::analysis::lifetime::DesignParams;
+use crate::analysis::lifetime::{DesignParams, HeelPressureExceedance};
 use crate::analysis::site::WaveSetup;
 use crate::analysis::sizing::{Candidate, Criteria, ModelPoint, Required, SizeParams, Sizing};
 use crate::analysis::Structure;
@@ -23,6 +23,8 @@ pub struct CandidateReport {
     pub goda_heel_pressure_kpa: Option<f64>,
     pub dynamic: ModelPoint,
     pub rigid_block: ModelPoint,
+    /// The lives' largest heel pressure against the allowable one (the dynamic model's).
+    pub heel_pressure_exceedance: HeelPressureExceedance,
     /// Whether the criteria hold at the estimate (dynamic model, rigid block).
     pub dynamic_meets: bool,
     pub rigid_block_meets: bool,
@@ -88,13 +90,13 @@ pub struct SizeReport {
 impl SizeReport {
     /// The report of `sizing` of `structure` (the scenario's caisson) over the lives of `design`,
     /// with its warnings: the structure's, a range that does not bracket the answer, Goda's
-    /// design, and the life warnings of every candidate. `extra(width)` gives the failure limit
+    /// design, the life warnings of every candidate and what the impulsive waves make of the
+    /// required width's lives (on the scenario's `waves`). `extra(width)` gives the failure limit
     /// (m) and Goda's static checks at each candidate's width.
     pub fn new(
         p: &SizeParams,
         design: &DesignParams,
-        structure: &Structure,
-        waves: Option<&WaveSetup>,
+        (structure, waves): (&Structure, Option<&WaveSetup>),
         sizing: &Sizing,
         goda: GodaWidth,
         extra: &dyn Fn(&Candidate) -> (f64, Option<ChecksAtWidth>),
@@ -113,6 +115,7 @@ impl SizeReport {
                     goda_heel_pressure_kpa: goda.and_then(|g| g.heel_pressure_kpa),
                     dynamic: c.dynamic,
                     rigid_block: c.rigid_block,
+                    heel_pressure_exceedance: c.heel_pressure_exceedance,
                     dynamic_meets: p.criteria.met(&c.dynamic, c.lives, 0.0),
                     rigid_block_meets: p.criteria.met(&c.rigid_block, c.lives, 0.0),
                 }
@@ -140,6 +143,7 @@ impl SizeReport {
         report.warnings.extend(range_warnings(&report));
         report.warnings.extend(goda_warnings(&report));
         report.warnings.extend(candidate_life_warnings(&sizing.candidates, &report, design));
+        report.warnings.extend(required_impulsive_warnings(&sizing.candidates, &report, waves));
         report
     }
 }
@@ -184,6 +188,23 @@ fn candidate_life_warnings(candidates: &[Candidate], r: &SizeReport, design: &De
                 w.numbers.insert("width_m", c.width_m);
                 w
             })
+        })
+        .collect()
+}
+
+/// What the impulsive waves make of the lives of the dynamic model's required width (or, where it
+/// is not found, the largest candidate): `impulsive-share` and its site check, each message
+/// prefixed with the width.
+fn required_impulsive_warnings(candidates: &[Candidate], r: &SizeReport, waves: Option<&WaveSetup>) -> Vec<Warning> {
+    let Some(ws) = waves else { return Vec::new() };
+    let at = r.dynamic.width_m().and_then(|w| candidates.iter().find(|c| c.width_m == w)).or(candidates.last());
+    let Some(c) = at else { return Vec::new() };
+    impulsive_warnings([&c.dynamic.impulsive, &c.rigid_block.impulsive], &ws.model, Some(ws))
+        .into_iter()
+        .map(|mut w| {
+            w.message = format!("at B = {:.2} m: {}", c.width_m, w.message);
+            w.numbers.insert("width_m", c.width_m);
+            w
         })
         .collect()
 }

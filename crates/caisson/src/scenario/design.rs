@@ -54,8 +54,12 @@ pub struct DesignTable {
     pub failure_sliding_m: Option<f64>,
     /// The failure limit on the caisson's rotation, rad (default 0.01).
     pub failure_rotation_rad: Option<f64>,
-    /// Run lives to their end after failure (default false: a life ends at failure).
+    /// Refused with a note: every life runs to its end, its failure recorded (docs/design.md).
     pub continue_after_failure: Option<bool>,
+    /// The allowable heel pressure, kPa (default 500, as `[size] allowable_heel_pressure_kpa`).
+    pub allowable_heel_pressure_kpa: Option<f64>,
+    /// The heel pressure beyond which a life fails, kPa (default: no such failure mode).
+    pub failure_heel_pressure_kpa: Option<f64>,
     /// `"annual-maxima"` (default) or `"peaks-over-threshold"`.
     pub storm_model: Option<String>,
     /// Peaks over threshold: the mean number of storms a year.
@@ -122,6 +126,13 @@ const LIFE_KEYS: &[(&str, &str, &str, Shown)] = &[
     ("failure_rotation_rad", "failure_rotation_rad", "rad", Shown::AsRead),
 ];
 
+/// The heel pressure keys of `[design]`, read in kPa, and the quantities of [`DesignParams`]
+/// (in Pa) they give.
+const HEEL_KEYS: [(&str, &str); 2] = [
+    ("allowable_heel_pressure_pa", "allowable_heel_pressure_kpa"),
+    ("failure_heel_pressure_pa", "failure_heel_pressure_kpa"),
+];
+
 /// The unit of the sea-level rise keys.
 const RISE_UNIT: &str = "m; the still-water level's rise, at most 5 m";
 
@@ -165,6 +176,26 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             "add a [design] table: storm_distribution, its parameters, life_years, lives",
         )
     })?;
+    if let Some(v) = t.continue_after_failure {
+        return Err(ScenarioError::range(
+            "[design] continue_after_failure",
+            v,
+            "is not a key any more: every life runs to its end and records the wave that failed it, so both the capped and the as-simulated expected sliding are reported (docs/design.md, \"Direction, magnitude and failure\"); remove it",
+        ));
+    }
+    let heel_kpa = |v: Option<f64>, key: &str| -> R<Option<f64>> {
+        match v {
+            Some(q) if q.is_nan() || q <= 0.0 || q.is_infinite() => Err(ScenarioError::range(
+                &format!("[design] {key}"),
+                super::fmt_value(q),
+                "must be a pressure from 10 to 10000 kPa",
+            )),
+            v => Ok(v.map(|q| q * 1e3)),
+        }
+    };
+    let allowable_heel_pressure_pa = heel_kpa(t.allowable_heel_pressure_kpa, "allowable_heel_pressure_kpa")?
+        .unwrap_or(crate::analysis::lifetime::DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA);
+    let failure_heel_pressure_pa = heel_kpa(t.failure_heel_pressure_kpa, "failure_heel_pressure_kpa")?;
     let storms = distribution(t)?;
     let life_years = count("life_years", t.life_years, 50, MAX_LIFE_YEARS)?;
     let climate = Climate {
@@ -174,7 +205,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         direction: direction("[design]", &t.wave_direction, t.wave_direction_mean_deg, t.wave_direction_spread_deg)?,
         periods: wave_periods("[design]", &t.wave_periods, t.period_spectral_width)?,
     };
-    let errors = errors(t)?;
+    let errors = errors("[design]", t)?;
     let extra = t.thresholds_m.as_deref().unwrap_or_default();
     let thresholds_m = DesignParams::thresholds_m(extra)
         .map_err(|(i, e)| shown_under(&format!("[design] thresholds_m[{i}]"), e, "m", Shown::Plain))?;
@@ -196,7 +227,8 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         screen: t.screen.unwrap_or(true),
         failure_sliding_m: t.failure_sliding_m,
         failure_rotation_rad: t.failure_rotation_rad.unwrap_or(ROCKING_LIMIT_RAD),
-        continue_after_failure: t.continue_after_failure.unwrap_or(false),
+        allowable_heel_pressure_pa,
+        failure_heel_pressure_pa,
     };
     params.checked().map_err(|e| match e.quantity {
         // Shown in hours, as read (the rule's bounds in seconds, shown in hours).
@@ -205,7 +237,14 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             super::fmt_value(t.storm_duration_h.unwrap_or(2.0)),
             e.allowed.describe(1.0 / 3600.0, "h"),
         ),
-        _ => keyed("[design]", e),
+        q => match HEEL_KEYS.iter().find(|(quantity, _)| *quantity == q) {
+            Some((_, key)) => ScenarioError::range(
+                &format!("[design] {key}"),
+                super::fmt_value(e.value / 1e3),
+                e.allowed.describe(1e-3, "kPa"),
+            ),
+            None => keyed("[design]", e),
+        },
     })
 }
 
@@ -246,20 +285,21 @@ fn distribution(t: &DesignTable) -> R<StormDistribution> {
     storms.map_err(|e| keyed("[design]", e))
 }
 
-/// The estimation errors of `[design]`: each model's bias and COV, the truncation and the scope.
-fn errors(t: &DesignTable) -> R<Errors> {
+/// The estimation errors of `[design]` (or of the same keys of `table`, `[fragility]`'s): each
+/// model's bias and COV, the truncation and the scope.
+pub(super) fn errors(table: &str, t: &DesignTable) -> R<Errors> {
     let truncated = t.error_truncated.unwrap_or(true);
     if !truncated && t.error_truncation_sigmas.is_some() {
         return Err(ScenarioError::Conflict {
-            message: "`[design] error_truncation_sigmas` is not used with error_truncated = false (untruncated normal errors); remove one of them".into(),
+            message: format!("`{table} error_truncation_sigmas` is not used with error_truncated = false (untruncated normal errors); remove one of them"),
         });
     }
     let k = truncated.then_some(t.error_truncation_sigmas.unwrap_or(2.0));
     let d = Errors::default();
     let err = |name: &str, bias: Option<f64>, cov: Option<f64>, def: ErrorModel| -> R<ErrorModel> {
         ErrorModel::new(bias.unwrap_or(def.bias), cov.unwrap_or(def.cov), k).map_err(|e| match e.quantity {
-            "bias" | "cov" => shown_under(&format!("[design] {name}_{}", e.quantity), e, "fraction", Shown::AsRead),
-            _ => keyed("[design]", e),
+            "bias" | "cov" => shown_under(&format!("{table} {name}_{}", e.quantity), e, "fraction", Shown::AsRead),
+            _ => keyed(table, e),
         })
     };
     let wave_force = err("wave_force", t.wave_force_bias, t.wave_force_cov, d.wave_force)?;

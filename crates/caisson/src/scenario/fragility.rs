@@ -9,6 +9,7 @@
 use super::{design, Scenario, ScenarioError, ScenarioFile};
 use crate::analysis::climate::{StormDuration, WaveDirection, WavePeriods};
 use crate::analysis::fragility::{FragilityParamError, FragilityParams, MAX_LEVELS, MAX_STORMS_PER_HEIGHT};
+use crate::analysis::lifetime::Errors;
 use crate::analysis::limits::ROCKING_LIMIT_RAD;
 use crate::analysis::site::WaveSetup;
 use crate::loads::generator::TrainKind;
@@ -43,6 +44,17 @@ pub struct FragilityTable {
     pub wave_direction_spread_deg: Option<f64>,
     pub wave_periods: Option<String>,
     pub period_spectral_width: Option<f64>,
+    /// Whether the load-model errors of `[design]` are drawn per storm (default true), and their
+    /// keys (defaults those of `[design]`).
+    pub errors: Option<bool>,
+    pub wave_force_bias: Option<f64>,
+    pub wave_force_cov: Option<f64>,
+    pub friction_bias: Option<f64>,
+    pub friction_cov: Option<f64>,
+    pub impact_force_bias: Option<f64>,
+    pub impact_force_cov: Option<f64>,
+    pub error_truncation_sigmas: Option<f64>,
+    pub error_truncated: Option<bool>,
 }
 
 /// A refused [`FragilityParams`] under its `[fragility]` key, the value as Rust writes it; the
@@ -114,6 +126,7 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
         duration: StormDuration::Fixed,
         direction: WaveDirection::HeadOn,
         periods: WavePeriods::Significant,
+        errors: errors(t)?,
     };
     Ok(FragilityParams {
         duration: design::duration_model("[fragility]", &t.storm_duration_model, t.storm_duration_cov)?,
@@ -126,6 +139,41 @@ pub(super) fn validate_fragility(file: &ScenarioFile, sc: &Scenario) -> R<Fragil
         periods: design::wave_periods("[fragility]", &t.wave_periods, t.period_spectral_width)?,
         ..params.checked().map_err(|e| keyed(e, duration_h))?
     })
+}
+
+/// The load-model errors of `[fragility]` (the keys of `[design]`, docs/fragility.md), or `None`
+/// with `errors = false` (then none of their keys may be given).
+fn errors(t: &FragilityTable) -> R<Option<Errors>> {
+    let given = [
+        ("wave_force_bias", t.wave_force_bias.is_some()),
+        ("wave_force_cov", t.wave_force_cov.is_some()),
+        ("friction_bias", t.friction_bias.is_some()),
+        ("friction_cov", t.friction_cov.is_some()),
+        ("impact_force_bias", t.impact_force_bias.is_some()),
+        ("impact_force_cov", t.impact_force_cov.is_some()),
+        ("error_truncation_sigmas", t.error_truncation_sigmas.is_some()),
+        ("error_truncated", t.error_truncated.is_some()),
+    ];
+    if !t.errors.unwrap_or(true) {
+        if let Some((key, _)) = given.iter().find(|(_, g)| *g) {
+            return Err(ScenarioError::Conflict {
+                message: format!("`[fragility] {key}` is not used with errors = false (no load-model errors drawn); remove one of them"),
+            });
+        }
+        return Ok(None);
+    }
+    let keys = design::DesignTable {
+        wave_force_bias: t.wave_force_bias,
+        wave_force_cov: t.wave_force_cov,
+        friction_bias: t.friction_bias,
+        friction_cov: t.friction_cov,
+        impact_force_bias: t.impact_force_bias,
+        impact_force_cov: t.impact_force_cov,
+        error_truncation_sigmas: t.error_truncation_sigmas,
+        error_truncated: t.error_truncated,
+        ..design::DesignTable::default()
+    };
+    design::errors("[fragility]", &keys).map(Some)
 }
 
 /// The irregular waves of `sc` the storms take their site and period from: no `[load]` or
@@ -219,9 +267,20 @@ significant_heights_m = [4.0, 6.0, 8.0]
                 duration: crate::analysis::climate::StormDuration::Fixed,
                 direction: crate::analysis::climate::WaveDirection::HeadOn,
                 periods: crate::analysis::climate::WavePeriods::Significant,
+                // On by default: the wave force's, the friction's and the impulsive component's
+                // errors of [design] (Errors::default: bias −0.09 COV 0.10; 0, 0.10; truncated at 2σ).
+                errors: Some(Errors::default()),
             }
         );
         assert_eq!(p.waves_per_storm(), 600);
+        // Off, and its keys refused with it; a key given sets that error, named in a refusal.
+        assert_eq!(run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nerrors = false")).unwrap().errors, None);
+        let e = run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nerrors = false\nfriction_cov = 0.2"));
+        assert!(e.unwrap_err().to_string().contains("[fragility] friction_cov"));
+        let given = run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nimpact_force_cov = 0.3")).unwrap();
+        assert_eq!(given.errors.unwrap().impact_force.map(|m| (m.bias, m.cov)), Some((-0.09, 0.3)));
+        let e = run(&BASE.replace("[4.0, 6.0, 8.0]", "[4.0, 6.0, 8.0]\nwave_force_cov = 1.5"));
+        assert!(e.unwrap_err().to_string().contains("[fragility] wave_force_cov"));
         let text = BASE.replace(
             "[4.0, 6.0, 8.0]",
             "[4.0, 6.0]\nstorms = 7\nlimits_m = [0.05]\nstorm_duration_h = 1.5\nperiod_s = 10.0\nseed = 9\nfailure_rotation_rad = 0.02",

@@ -790,7 +790,8 @@ impl Scenario {
             stick_bound: true,
             settle_rotation: true,
             draws: WaveDraws::AboveThreshold,
-            failure: self.design.as_ref().and_then(|d| d.life_end(self.structure.caisson.width_m)),
+            failure: self.design.as_ref().map(|d| d.failure_limits(self.structure.caisson.width_m)),
+            heel_screen_pa: self.design.as_ref().map_or(f64::INFINITY, DesignParams::heel_screen_pa),
         })
     }
 

@@ -9,7 +9,7 @@ use crate::analysis::conventional::{
     ConventionalCriteria, DEFAULT_ALLOWABLE_HEEL_PRESSURE_PA, DEFAULT_OVERTURNING_SAFETY_FACTOR,
     DEFAULT_SLIDING_SAFETY_FACTOR,
 };
-use crate::analysis::sizing::{Criteria, ExceedanceCriterion, SizeParamError, SizeParams};
+use crate::analysis::sizing::{Criteria, ExceedanceCriterion, ExpectedSliding, SizeParamError, SizeParams};
 use serde::Deserialize;
 
 type R<T> = Result<T, ScenarioError>;
@@ -24,6 +24,8 @@ pub struct SizeTable {
     pub range_m: Option<Vec<f64>>,
     /// Criterion: E|S| ≤ this, m.
     pub expected_sliding_m: Option<f64>,
+    /// Which E|S| the criterion reads: `"capped"` (default) or `"as-simulated"`.
+    pub expected_sliding: Option<String>,
     /// Criterion: P(|S| > exceedance_sliding_m) ≤ exceedance_probability.
     pub exceedance_sliding_m: Option<f64>,
     pub exceedance_probability: Option<f64>,
@@ -140,8 +142,29 @@ fn criteria(t: &SizeTable) -> R<Criteria> {
             return Err(ScenarioError::missing("[size] exceedance_sliding_m", "the sliding S_lim of P(|S| > S_lim), m"))
         }
     };
-    let criteria =
-        Criteria { expected_sliding_m: t.expected_sliding_m, exceedance, failure_probability: t.failure_probability };
+    let expected_sliding = match t.expected_sliding.as_deref() {
+        None | Some("capped") => ExpectedSliding::Capped,
+        Some("as-simulated") => ExpectedSliding::AsSimulated,
+        Some(other) => {
+            return Err(ScenarioError::range(
+                "[size] expected_sliding",
+                format!("\"{other}\""),
+                "must be \"capped\" (a failed life at the sliding limit) or \"as-simulated\" (the plain mean of the lives run to their end, as Shimosako & Takahashi 1999 compute it)",
+            ))
+        }
+    };
+    if t.expected_sliding.is_some() && t.expected_sliding_m.is_none() {
+        return Err(ScenarioError::missing(
+            "[size] expected_sliding_m",
+            "the criterion E|S| ≤ S_a that `expected_sliding` chooses the statistic of, m",
+        ));
+    }
+    let criteria = Criteria {
+        expected_sliding_m: t.expected_sliding_m,
+        expected_sliding,
+        exceedance,
+        failure_probability: t.failure_probability,
+    };
     if !criteria.any() {
         return Err(ScenarioError::missing(
             "[size] expected_sliding_m",

@@ -159,7 +159,16 @@ fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
             })
             .and_then(|lives| size::validate_size(f, lives));
         match size {
-            Ok(p) => sc.size = Some(p),
+            Ok(size) => {
+                // The lifetime heel pressures of a sizing are held to `[size]
+                // allowable_heel_pressure_kpa` where `[design]` gives no allowable of its own
+                // (docs/size.md).
+                let design_gives = f.design.as_ref().is_some_and(|t| t.allowable_heel_pressure_kpa.is_some());
+                if let (Some(d), false) = (sc.design.as_mut(), design_gives) {
+                    d.allowable_heel_pressure_pa = size.conventional.allowable_heel_pressure_pa;
+                }
+                sc.size = Some(size);
+            }
             Err(e) => sc.size_refused = Some(e),
         }
     }
