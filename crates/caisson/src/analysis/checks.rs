@@ -275,6 +275,14 @@ pub fn design_wave_warnings(structure: &Structure, waves: &WaveSetup) -> Vec<War
     out
 }
 
+/// The warning of the breaking-wave load's coefficients under the design wave,
+/// `impulsive-coefficient-without-berm`, alone: for reports whose width varies (a sizing), where
+/// the rest of [`design_wave_warnings`] reads the starting caisson.
+pub fn breaking_load_warnings(structure: &Structure, waves: &WaveSetup) -> Vec<Warning> {
+    let Ok(c) = static_check(structure, waves) else { return Vec::new() };
+    without_berm_warning(waves, &c.loads).into_iter().collect()
+}
+
 /// `impulsive-coefficient-without-berm` ([`design_wave_warnings`]).
 fn without_berm_warning(waves: &WaveSetup, l: &crate::loads::model::WaveLoads) -> Option<Warning> {
     use crate::loads::breaking_load::BreakingLoad;

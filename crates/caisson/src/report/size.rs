@@ -1,7 +1,9 @@
 //! `caisson size`: `size.json` (keys in docs/size.md).
 
 use super::{kn, ModelReport, Provenance};
-use crate::analysis::checks::{candidate_warnings, impulsive_warnings, structure_warnings, Warning};
+use crate::analysis::checks::{
+    breaking_load_warnings, candidate_warnings, impulsive_warnings, structure_warnings, Warning,
+};
 use crate::analysis::conventional::Reached;
 use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
 use crate::analysis::lifetime::{DesignParams, HeelPressureExceedance};
@@ -140,6 +142,7 @@ impl SizeReport {
             warnings: Vec::new(),
         };
         report.warnings = structure_warnings(structure);
+        report.warnings.extend(waves.map_or_else(Vec::new, |ws| breaking_load_warnings(structure, ws)));
         report.warnings.extend(range_warnings(&report));
         report.warnings.extend(goda_warnings(&report));
         report.warnings.extend(candidate_life_warnings(&sizing.candidates, &report, design));
