@@ -334,8 +334,9 @@ fn size_text(r: &SizeReport) -> String {
     let exceed = r.criteria.exceedance.map(|e| e.sliding_m);
     let _ = writeln!(
         t,
-        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  as simulated ± SE (m)  E|S| rigid (m)  as simulated  {}  P(fail) dyn (rotation)  P(fail) rigid  P(q_heel > q_a)  meets the criterion",
-        exceed.map_or("                  ".to_string(), |s| format!("P(|S| > {s:<4} m) dyn"))
+        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  as simulated ± SE (m)  E|S| rigid (m)  as simulated{}  P(fail) dyn (rotation)  P(fail) rigid  P(q_heel > q_a)  meets the criterion",
+        // The column of the exceedance criterion only where the criterion has one.
+        exceed.map_or(String::new(), |s| format!("  P(|S| > {s:<4} m) dyn"))
     );
     for k in &r.candidates {
         let meets: Vec<&str> = [(k.dynamic_meets, "dynamic"), (k.rigid_block_meets, "rigid block")]
@@ -345,7 +346,7 @@ fn size_text(r: &SizeReport) -> String {
             .collect();
         let _ = writeln!(
             t,
-            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:10.4} ± {:<8.4}  {:14.4}  {:12.4}  {:>18}  {:>11.4} ({:.4})  {:>13.4}  {:>15.4}  {}",
+            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:10.4} ± {:<8.4}  {:14.4}  {:12.4}{}  {:>11.4} ({:.4})  {:>13.4}  {:>15.4}  {}",
             k.width_m,
             k.weight_in_water_kn,
             k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
@@ -356,7 +357,7 @@ fn size_text(r: &SizeReport) -> String {
             k.dynamic.expected_sliding_uncapped_se_m,
             k.rigid_block.expected_sliding_m,
             k.rigid_block.expected_sliding_uncapped_m,
-            exceed.map_or(String::new(), |_| format!("{:.4}", k.dynamic.exceedance_probability)),
+            exceed.map_or(String::new(), |_| format!("  {:>18.4}", k.dynamic.exceedance_probability)),
             k.dynamic.failure_probability,
             k.dynamic.failure_by_rotation_probability,
             k.rigid_block.failure_probability,
