@@ -42,7 +42,24 @@ fn counts(l: &LevelResult, model: usize) -> &[u64] {
 
 fn fit_text(f: &Result<LognormalFit, FitFailure>) -> String {
     match f {
-        Ok(f) => format!("θ = {:.3} m (ln θ ± {:.3}), β = {:.3} ± {:.3}", f.median, f.ln_median_se, f.beta, f.beta_se),
+        Ok(f) => {
+            // Each with its 95 % profile-likelihood interval, to the digits the interval supports
+            // (half its width; with an open end, "…", 1.96 standard errors).
+            let shown = |v: f64, c: [Option<f64>; 2], se: f64| {
+                let hw = match c {
+                    [Some(lo), Some(hi)] => 0.5 * (hi - lo),
+                    _ => 1.96 * se,
+                };
+                let d = caisson::supported_decimals(hw);
+                let [lo, hi] = c.map(|e| e.map_or("…".to_string(), |x| format!("{x:.d$}")));
+                format!("{v:.d$} ({lo}-{hi})")
+            };
+            format!(
+                "θ = {} m, β = {} (95 % intervals)",
+                shown(f.median, f.median_ci95, f.median * f.ln_median_se),
+                shown(f.beta, f.beta_ci95, f.beta_se)
+            )
+        }
         Err(e) => format!("not fitted: {e}"),
     }
 }

@@ -140,6 +140,12 @@ fn json_contract_and_probabilities_rising_with_height() {
                     assert!(finite(&x[key], key) > 0.0);
                 }
                 finite(&x["log_likelihood"], "log_likelihood");
+                // The 95 % intervals hold their estimate (an open end is null).
+                for (key, value) in [("median_ci95_m", median), ("beta_ci95", finite(&x["beta"], "beta"))] {
+                    let [lo, hi] = [0, 1].map(|i| x[key][i].as_f64());
+                    assert_eq!(x[key].as_array().map(Vec::len), Some(2), "{key}: {}", x[key]);
+                    assert!(lo.is_none_or(|lo| lo < value) && hi.is_none_or(|hi| value < hi), "{key}: {}", x[key]);
+                }
             } else {
                 let reason = x["reason"].as_str().unwrap();
                 assert!(["no-exceedance", "all-exceed", "separated", "at-bounds"].contains(&reason), "{reason}");

@@ -1247,9 +1247,16 @@ fn fragility(
 }
 
 /// Maximum-likelihood lognormal fit of `k` exceedances in `n` trials at intensities `im`:
-/// (median, beta, ln_median_se, beta_se, log_likelihood), or `FitError`.
+/// (median, beta, ln_median_se, beta_se, log_likelihood, median_ci95, beta_ci95), the intervals
+/// `[low, high]` with `None` for an open end, or `FitError`.
 #[pyfunction]
-fn fit_lognormal(py: Python<'_>, im: Vec<f64>, k: Vec<u64>, n: Vec<u64>) -> PyResult<(f64, f64, f64, f64, f64)> {
+#[allow(clippy::type_complexity)]
+fn fit_lognormal(
+    py: Python<'_>,
+    im: Vec<f64>,
+    k: Vec<u64>,
+    n: Vec<u64>,
+) -> PyResult<(f64, f64, f64, f64, f64, [Option<f64>; 2], [Option<f64>; 2])> {
     if im.len() != k.len() || k.len() != n.len() {
         return Err(PyValueError::new_err("im, k and n must have the same length"));
     }
@@ -1260,7 +1267,7 @@ fn fit_lognormal(py: Python<'_>, im: Vec<f64>, k: Vec<u64>, n: Vec<u64>) -> PyRe
         return Err(PyValueError::new_err(format!("k[{i}] = {} exceeds n[{i}] = {}", k[i], n[i])));
     }
     match py.detach(|| fit(&im, &k, &n)) {
-        Ok(f) => Ok((f.median, f.beta, f.ln_median_se, f.beta_se, f.log_likelihood)),
+        Ok(f) => Ok((f.median, f.beta, f.ln_median_se, f.beta_se, f.log_likelihood, f.median_ci95, f.beta_ci95)),
         Err(e) => {
             let err = FitError::new_err(e.to_string());
             let reason = serde_json::to_value(e).ok().and_then(|v| v.as_str().map(str::to_string));

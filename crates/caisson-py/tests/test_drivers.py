@@ -96,6 +96,10 @@ def test_fragility_matches_caisson_fragility_and_fit_lognormal_its_fits(tmp_path
                 got = caisson.fit_lognormal(im, k, n)
                 assert got["median"] == f[model]["median_m"] and got["beta"] == f[model]["beta"]
                 assert got["log_likelihood"] == f[model]["log_likelihood"]
+                # The 95 % profile-likelihood intervals, bit for bit, around the estimates.
+                assert got["median_ci95"] == f[model]["median_ci95_m"] and got["beta_ci95"] == f[model]["beta_ci95"]
+                lo, hi = got["median_ci95"]
+                assert (lo is None or lo < got["median"]) and (hi is None or got["median"] < hi)
             else:
                 with pytest.raises(caisson.FitError) as e:
                     caisson.fit_lognormal(im, k, n)

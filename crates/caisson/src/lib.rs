@@ -121,6 +121,17 @@ pub fn fmt_number(v: f64) -> String {
     fmt_value(format!("{v:.11e}").parse().unwrap_or(v))
 }
 
+/// The decimals that a figure known to ± `half_width` (a standard error, or half the width of an
+/// interval) supports: down to the first significant digit of `half_width` (0.35 ± 0.04 m: two;
+/// 10.9 m, 10.6-11.3 m: one), none from a half-width of 1 up; 4 where the half-width is 0 or
+/// not finite, at most 6.
+pub fn supported_decimals(half_width: f64) -> usize {
+    if !(half_width.is_finite() && half_width > 0.0) {
+        return 4;
+    }
+    (-half_width.log10().floor()).clamp(0.0, 6.0) as usize
+}
+
 /// A parameter outside what the model allows: the quantity (as named in its parameter type, SI
 /// units), its value and what is allowed. The [`scenario`] module reports it under the name of
 /// the file key, in the key's unit.
@@ -255,5 +266,22 @@ pub(crate) mod check {
         } else {
             Err(fail(quantity, v as f64, Allowed::Count { lo, hi }))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::supported_decimals;
+
+    /// The decimals of a figure end at the first significant digit of its uncertainty, by hand:
+    /// 0.04 → 2 (0.35 ± 0.04), 0.35 → 1 (10.9 ± 0.35), 0.0099 → 3, 2.5 → 0; no uncertainty → 4.
+    #[test]
+    fn a_figure_shows_the_digits_its_uncertainty_supports() {
+        let cases =
+            [(0.04, 2), (0.35, 1), (0.0099, 3), (2.5, 0), (1.0, 0), (0.1, 1), (1e-9, 6), (0.0, 4), (f64::NAN, 4)];
+        for (hw, d) in cases {
+            assert_eq!(supported_decimals(hw), d, "half-width {hw}");
+        }
+        assert_eq!(cases.len(), 9);
     }
 }

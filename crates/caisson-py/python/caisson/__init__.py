@@ -705,15 +705,25 @@ class Fragility:
 def fit_lognormal(im: Any, k: Any, n: Any) -> dict:
     """Maximum-likelihood lognormal fragility P(IM) = Φ((ln IM − ln θ)/β) from ``k[i]``
     exceedances in ``n[i]`` trials at intensities ``im[i]`` > 0 (docs/fragility.md). Returns
-    ``{"median", "beta", "ln_median_se", "beta_se", "log_likelihood"}`` (median in the unit of
-    IM); raises :class:`FitError` (``.reason``) when the counts do not determine the fit."""
+    ``{"median", "beta", "ln_median_se", "beta_se", "log_likelihood", "median_ci95", "beta_ci95"}``
+    (median in the unit of IM; the 95 % profile-likelihood intervals as ``[low, high]``, ``None``
+    for an end beyond the search bounds); raises :class:`FitError` (``.reason``) when the counts do
+    not determine the fit."""
     im_l = [float(x) for x in np.asarray(im, dtype=np.float64).ravel()]
     k_l = [int(x) for x in np.asarray(k).ravel()]
     n_l = [int(x) for x in np.asarray(n).ravel()]
     if any(x < 0 for x in k_l + n_l):
         raise ValueError("counts must be ≥ 0")
-    median, beta, se_m, se_b, ll = _core.fit_lognormal(im_l, k_l, n_l)
-    return {"median": median, "beta": beta, "ln_median_se": se_m, "beta_se": se_b, "log_likelihood": ll}
+    median, beta, se_m, se_b, ll, ci_m, ci_b = _core.fit_lognormal(im_l, k_l, n_l)
+    return {
+        "median": median,
+        "beta": beta,
+        "ln_median_se": se_m,
+        "beta_se": se_b,
+        "log_likelihood": ll,
+        "median_ci95": list(ci_m),
+        "beta_ci95": list(ci_b),
+    }
 
 
 from . import loads, waves  # noqa: E402  (submodules use the names above)

@@ -27,8 +27,23 @@ pub fn goda_design_check(structure: &Structure, waves: &WaveSetup, h13_m: f64, p
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum FitReport {
-    Fitted { fitted: bool, median_m: f64, beta: f64, ln_median_se: f64, beta_se: f64, log_likelihood: f64 },
-    Refused { fitted: bool, reason: FitFailure, message: String },
+    Fitted {
+        fitted: bool,
+        median_m: f64,
+        beta: f64,
+        ln_median_se: f64,
+        beta_se: f64,
+        log_likelihood: f64,
+        /// 95 % profile-likelihood intervals ([low, high]; `null` for an end beyond the search
+        /// bounds).
+        median_ci95_m: [Option<f64>; 2],
+        beta_ci95: [Option<f64>; 2],
+    },
+    Refused {
+        fitted: bool,
+        reason: FitFailure,
+        message: String,
+    },
 }
 
 impl From<&Result<LognormalFit, FitFailure>> for FitReport {
@@ -41,6 +56,8 @@ impl From<&Result<LognormalFit, FitFailure>> for FitReport {
                 ln_median_se: f.ln_median_se,
                 beta_se: f.beta_se,
                 log_likelihood: f.log_likelihood,
+                median_ci95_m: f.median_ci95,
+                beta_ci95: f.beta_ci95,
             },
             Err(e) => FitReport::Refused { fitted: false, reason: *e, message: e.to_string() },
         }
