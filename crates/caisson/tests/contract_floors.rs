@@ -13,13 +13,14 @@ use support::imports::{assert_floors, assert_no_circle, module_files, named_modu
 
 /// The floor of every analysis module; a new module must be placed here (the test fails
 /// otherwise).
-const FLOORS: [(&str, u8); 19] = [
+const FLOORS: [(&str, u8); 20] = [
     // The model pieces: what every driver runs on.
     ("mod", 0), // Structure, Progress
     ("site", 0),
     ("rigid", 0),
     ("limits", 0),
     ("closed_form", 0),
+    ("estimate", 0),
     ("climate", 0),
     ("stick_bound", 0),
     // The drivers.

@@ -4,7 +4,7 @@
 //! In three floors; a module names only modules of its floor or below, without a circle
 //! (ARCHITECTURE.md; tests/contract_floors.rs):
 //! 0. the model pieces: [`Structure`] (here), [`site`], [`rigid`], [`limits`], [`closed_form`],
-//!    [`climate`], [`stick_bound`];
+//!    [`climate`], [`stick_bound`], and [`estimate`] (Monte Carlo estimates with their precision);
 //! 1. the drivers: [`run`], [`envelope`], [`spectrum`], [`train`], [`campaign`], [`lifetime`],
 //!    [`fragility`], [`conventional`], [`sizing`];
 //! 2. the judgement: [`checks`] (plausibility warnings of inputs and results), [`findings`] (the
@@ -22,6 +22,7 @@ pub mod climate;
 pub mod closed_form;
 pub mod conventional;
 pub mod envelope;
+pub mod estimate;
 pub mod findings;
 pub mod fragility;
 pub mod lifetime;
