@@ -856,74 +856,89 @@ fn sliding_table(r: &DesignReport, t: &mut String) {
     let _ = writeln!(t);
     let _ = writeln!(
         t,
-        "                                  dynamic model   rigid block (Shimosako, μ = {})",
-        r.rigid_block_mu
+        "each figure with its 95 % interval (± its half-width, or (low-high)), to the digits the interval supports"
     );
-    let row = |t: &mut String, what: &str, a: f64, b: f64| {
-        let _ = writeln!(t, "{what:<32} {a:>10.4} m    {b:>10.4} m");
+    let _ = writeln!(t, "{:<32} {:<30} rigid block (Shimosako, μ = {})", "", "dynamic model", r.rigid_block_mu);
+    let row = |t: &mut String, what: &str, a: String, b: String, note: String| {
+        let _ = writeln!(t, "{}", format!("{what:<32} {a:<30} {b:<30} {note}").trim_end());
     };
-    let with_se = |t: &mut String, what: &str, a: (f64, f64), b: (f64, f64)| {
-        let _ = writeln!(t, "{what:<32} {:>10.4} ± {:.4} m   {:>10.4} ± {:.4} m", a.0, a.1, b.0, b.1);
-    };
-    with_se(
+    let mean = |v: f64, ci: [f64; 2]| format!("{} m", fmt_plus_minus(v, ci));
+    row(
         t,
-        "expected sliding E|S| (± SE)",
-        (sd.expected_sliding_m, sd.expected_sliding_se_m),
-        (sr.expected_sliding_m, sr.expected_sliding_se_m),
+        "expected sliding E|S|",
+        mean(sd.expected_sliding_m, sd.expected_sliding_ci95_m),
+        mean(sr.expected_sliding_m, sr.expected_sliding_ci95_m),
+        String::new(),
     );
-    with_se(
+    row(
         t,
-        "E|S| as simulated (± SE)",
-        (sd.expected_sliding_uncapped_m, sd.expected_sliding_uncapped_se_m),
-        (sr.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_se_m),
+        "E|S| as simulated",
+        mean(sd.expected_sliding_uncapped_m, sd.expected_sliding_uncapped_ci95_m),
+        mean(sr.expected_sliding_uncapped_m, sr.expected_sliding_uncapped_ci95_m),
+        String::new(),
     );
-    let _ = writeln!(
+    row(
         t,
-        "{:<32} {:>10.5} m    {:>10.5} m",
-        "expected sliding per year", sd.expected_sliding_per_year_m, sr.expected_sliding_per_year_m
+        "expected sliding per year",
+        mean(sd.expected_sliding_per_year_m, sd.expected_sliding_per_year_ci95_m),
+        mean(sr.expected_sliding_per_year_m, sr.expected_sliding_per_year_ci95_m),
+        String::new(),
     );
     let (pd, pr) = (&sd.percentiles_m, &sr.percentiles_m);
-    for (p, a, b) in [(5.0, pd.p5, pr.p5), (50.0, pd.p50, pr.p50), (95.0, pd.p95, pr.p95), (99.0, pd.p99, pr.p99)] {
-        row(t, &format!("{p:>3.0} % percentile of |S|"), a, b);
+    let (cd, cr) = (&sd.percentiles_ci95_m, &sr.percentiles_ci95_m);
+    for (p, a, b) in [
+        (5.0, (pd.p5, cd.p5), (pr.p5, cr.p5)),
+        (50.0, (pd.p50, cd.p50), (pr.p50, cr.p50)),
+        (95.0, (pd.p95, cd.p95), (pr.p95, cr.p95)),
+        (99.0, (pd.p99, cd.p99), (pr.p99, cr.p99)),
+    ] {
+        let cell = |(v, ci): (f64, [Option<f64>; 2])| format!("{} m", fmt_with_interval(v, ci));
+        row(t, &format!("{p:>3.0} % percentile of |S|"), cell(a), cell(b), String::new());
     }
+    let probability = |p: f64, ci: [f64; 2]| fmt_with_interval(p, ci.map(Some));
     for (a, b) in sd.exceedance_probability.iter().zip(&sr.exceedance_probability) {
-        let _ = writeln!(
-            t,
-            "{:<32} {:>10.4}      {:>10.4}",
-            format!("P(|S| > {} m)", a.threshold_m),
-            a.probability,
-            b.probability
-        );
+        let what = format!("P(|S| > {} m)", a.threshold_m);
+        row(t, &what, probability(a.probability, a.ci95), probability(b.probability, b.ci95), String::new());
     }
-    let _ = writeln!(
+    let (fd, fr) = (&sd.failure, &sr.failure);
+    row(
         t,
-        "{:<32} {:>10.4}      {:>10.4}      ({} and {} lives)",
-        "P(failure)", sd.failure.probability, sr.failure.probability, sd.failure.lives, sr.failure.lives
+        "P(failure)",
+        probability(fd.probability, fd.probability_ci95),
+        probability(fr.probability, fr.probability_ci95),
+        format!("({} and {} lives)", fd.lives, fr.lives),
     );
-    let _ = writeln!(
+    let (md, mr) = (&fd.by_sliding, &fr.by_sliding);
+    row(
         t,
-        "{:<32} {:>10.4}      {:>10.4}      ({} and {} lives)",
         "  by sliding",
-        sd.failure.by_sliding.probability,
-        sr.failure.by_sliding.probability,
-        sd.failure.by_sliding.lives,
-        sr.failure.by_sliding.lives
+        probability(md.probability, md.probability_ci95),
+        probability(mr.probability, mr.probability_ci95),
+        format!("({} and {} lives)", md.lives, mr.lives),
     );
-    let _ = writeln!(
-        t,
-        "{:<32} {:>10.4}      {:>10}      ({} lives)",
-        "  by rotation", sd.failure.by_rotation.probability, "-", sd.failure.by_rotation.lives
-    );
+    let m = &fd.by_rotation;
+    row(t, "  by rotation", probability(m.probability, m.probability_ci95), "-".into(), format!("({} lives)", m.lives));
     if r.failure_heel_pressure_kpa.is_some() {
-        let _ = writeln!(
-            t,
-            "{:<32} {:>10.4}      {:>10}      ({} lives)",
-            "  by heel pressure", sd.failure.by_heel_pressure.probability, "-", sd.failure.by_heel_pressure.lives
-        );
+        let m = &fd.by_heel_pressure;
+        let (what, cell) = ("  by heel pressure", probability(m.probability, m.probability_ci95));
+        row(t, what, cell, "-".into(), format!("({} lives)", m.lives));
     }
     let (vd, vr) = (&sd.surviving, &sr.surviving);
-    row(t, "E|S| of the surviving lives", vd.expected_sliding_m, vr.expected_sliding_m);
-    row(t, "95 % of |S|, surviving lives", vd.percentiles_m.p95, vr.percentiles_m.p95);
+    row(
+        t,
+        "E|S| of the surviving lives",
+        mean(vd.expected_sliding_m, vd.expected_sliding_ci95_m),
+        mean(vr.expected_sliding_m, vr.expected_sliding_ci95_m),
+        String::new(),
+    );
+    let cell = |v: f64, ci: [Option<f64>; 2]| format!("{} m", fmt_with_interval(v, ci));
+    row(
+        t,
+        "95 % of |S|, surviving lives",
+        cell(vd.percentiles_m.p95, vd.percentiles_ci95_m.p95),
+        cell(vr.percentiles_m.p95, vr.percentiles_ci95_m.p95),
+        String::new(),
+    );
     let _ = writeln!(t);
     for (name, m) in [("dynamic model", sd), ("rigid block", sr)] {
         let _ = writeln!(t, "{}", capped_mean_text(name, m, r.failure_sliding_m));
@@ -945,9 +960,40 @@ fn sliding_table(r: &DesignReport, t: &mut String) {
     let h = &r.dynamic.heel_pressure_exceedance;
     let _ = writeln!(
         t,
-        "heel pressure (dynamic model): P(q_heel > {} kPa) = {:.4} ± {:.4} ({} lives; the largest {:.0} kPa; each life's largest is exact from {} kPa up)",
-        h.allowable_kpa, h.probability, h.standard_error, h.lives, h.largest_kpa, h.exact_from_kpa
+        "heel pressure (dynamic model): P(q_heel > {} kPa) = {} ({} lives; the largest {:.0} kPa; each life's largest is exact from {} kPa up)",
+        h.allowable_kpa,
+        heel_probability(h, r.lives),
+        h.lives,
+        h.largest_kpa,
+        h.exact_from_kpa
     );
+}
+
+/// `value ± h` with h the half-width of its 95 % interval `ci`, both to the decimals h supports
+/// ([`caisson::supported_decimals`]): "0.35 ± 0.03".
+pub(crate) fn fmt_plus_minus(value: f64, ci: [f64; 2]) -> String {
+    let half = 0.5 * (ci[1] - ci[0]);
+    let d = caisson::supported_decimals(half);
+    format!("{value:.d$} ± {half:.d$}")
+}
+
+/// `value (low-high)`, its 95 % interval beside it, to the decimals half its width supports; an
+/// open end (too few lives for it) is "…".
+pub(crate) fn fmt_with_interval(value: f64, ci: [Option<f64>; 2]) -> String {
+    let half = match ci {
+        [Some(lo), Some(hi)] => 0.5 * (hi - lo),
+        [Some(e), None] | [None, Some(e)] => (value - e).abs(),
+        [None, None] => f64::NAN,
+    };
+    let d = caisson::supported_decimals(half);
+    let end = |e: Option<f64>| e.map_or("…".to_string(), |e| format!("{e:.d$}"));
+    format!("{value:.d$} ({}-{})", end(ci[0]), end(ci[1]))
+}
+
+/// P(q_heel > q_a) of `lives` lives with its Wilson interval ([`fmt_with_interval`]).
+pub(crate) fn heel_probability(h: &caisson::analysis::lifetime::HeelPressureExceedance, lives: usize) -> String {
+    let ci = caisson::analysis::estimate::wilson_ci95(h.lives as u64, lives.max(1) as u64);
+    fmt_with_interval(h.probability, ci.map(Some))
 }
 
 /// E|S| = (1 − P_f) E|S|_surviving + P_f · limit, in numbers: what the capped headline of model

@@ -3,6 +3,7 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
+use crate::cmd_design::{fmt_plus_minus, fmt_with_interval, heel_probability};
 use crate::csv_rows::{to_csv, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
@@ -297,6 +298,73 @@ fn required_text(req: &Required) -> String {
     }
 }
 
+/// The candidates' table: columns as wide as their widest cell (the digits of an estimate follow
+/// its interval).
+fn candidate_table(r: &SizeReport, exceed: Option<f64>, t: &mut String) {
+    let mut header = vec!["B (m)", "W' (kN/m)", "SF_s", "SF_o", "E|S| dynamic (m)", "as simulated (m)"];
+    header.extend(["E|S| rigid (m)", "as simulated (m)"]);
+    let exceed_header = exceed.map(|s| format!("P(|S| > {s} m) dyn"));
+    if let Some(h) = &exceed_header {
+        header.push(h);
+    }
+    header.extend(["P(fail) dyn", "by rotation", "P(fail) rigid", "P(q_heel > q_a)", "meets the criterion"]);
+    let mean = |v: f64, ci: [f64; 2]| fmt_plus_minus(v, ci);
+    let probability = |p: f64, ci: [f64; 2]| fmt_with_interval(p, ci.map(Some));
+    let rows: Vec<Vec<String>> = r
+        .candidates
+        .iter()
+        .map(|k| {
+            let (d, b) = (&k.dynamic, &k.rigid_block);
+            let meets: Vec<&str> = [(k.dynamic_meets, "dynamic"), (k.rigid_block_meets, "rigid block")]
+                .iter()
+                .filter(|m| m.0)
+                .map(|m| m.1)
+                .collect();
+            let factor = |f: Option<f64>| f.map_or("-".into(), |v| format!("{v:.2}"));
+            let h = &k.heel_pressure_exceedance;
+            let mut row = vec![
+                format!("{:.2}", k.width_m),
+                format!("{:.0}", k.weight_in_water_kn),
+                factor(k.goda_sliding_safety_factor),
+                factor(k.goda_overturning_safety_factor),
+                mean(d.expected_sliding_m, d.expected_sliding_ci95_m),
+                mean(d.expected_sliding_uncapped_m, d.expected_sliding_uncapped_ci95_m),
+                mean(b.expected_sliding_m, b.expected_sliding_ci95_m),
+                mean(b.expected_sliding_uncapped_m, b.expected_sliding_uncapped_ci95_m),
+            ];
+            if exceed.is_some() {
+                row.push(probability(d.exceedance_probability, d.exceedance_probability_ci95));
+            }
+            let ci = d.failure_probability_ci95;
+            let decimals = caisson::supported_decimals(0.5 * (ci[1] - ci[0]));
+            row.extend([
+                probability(d.failure_probability, ci),
+                format!("{:.decimals$}", d.failure_by_rotation_probability),
+                probability(b.failure_probability, b.failure_probability_ci95),
+                heel_probability(h, r.lives_per_candidate),
+                if meets.is_empty() { "-".to_string() } else { meets.join(", ") },
+            ]);
+            row
+        })
+        .collect();
+    let widths: Vec<usize> = (0..header.len())
+        .map(|c| rows.iter().map(|row| row[c].chars().count()).chain([header[c].chars().count()]).max().unwrap_or(0))
+        .collect();
+    let line = |cells: Vec<&str>| {
+        let last = cells.len() - 1;
+        let text: Vec<String> = cells
+            .iter()
+            .enumerate()
+            .map(|(c, s)| if c == last { s.to_string() } else { format!("{s:>w$}", w = widths[c]) })
+            .collect();
+        text.join("  ")
+    };
+    let _ = writeln!(t, "{}", line(header.clone()));
+    for row in &rows {
+        let _ = writeln!(t, "{}", line(row.iter().map(String::as_str).collect()));
+    }
+}
+
 /// The text summary.
 fn size_text(r: &SizeReport) -> String {
     let mut t = String::new();
@@ -334,43 +402,15 @@ fn size_text(r: &SizeReport) -> String {
     let exceed = r.criteria.exceedance.map(|e| e.sliding_m);
     let _ = writeln!(
         t,
-        "  B (m)  W' (kN/m)  SF_s   SF_o   E|S| dynamic ± SE (m)  as simulated ± SE (m)  E|S| rigid (m)  as simulated{}  P(fail) dyn (rotation)  P(fail) rigid  P(q_heel > q_a)  meets the criterion",
-        // The column of the exceedance criterion only where the criterion has one.
-        exceed.map_or(String::new(), |s| format!("  P(|S| > {s:<4} m) dyn"))
+        "each estimate with its 95 % interval (± its half-width, or (low-high)), to the digits the interval supports"
     );
-    for k in &r.candidates {
-        let meets: Vec<&str> = [(k.dynamic_meets, "dynamic"), (k.rigid_block_meets, "rigid block")]
-            .iter()
-            .filter(|m| m.0)
-            .map(|m| m.1)
-            .collect();
-        let _ = writeln!(
-            t,
-            "{:7.2} {:10.0} {:>6} {:>6} {:10.4} ± {:<8.4}  {:10.4} ± {:<8.4}  {:14.4}  {:12.4}{}  {:>11.4} ({:.4})  {:>13.4}  {:>15.4}  {}",
-            k.width_m,
-            k.weight_in_water_kn,
-            k.goda_sliding_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
-            k.goda_overturning_safety_factor.map_or("-".into(), |v| format!("{v:.2}")),
-            k.dynamic.expected_sliding_m,
-            k.dynamic.expected_sliding_se_m,
-            k.dynamic.expected_sliding_uncapped_m,
-            k.dynamic.expected_sliding_uncapped_se_m,
-            k.rigid_block.expected_sliding_m,
-            k.rigid_block.expected_sliding_uncapped_m,
-            exceed.map_or(String::new(), |_| format!("  {:>18.4}", k.dynamic.exceedance_probability)),
-            k.dynamic.failure_probability,
-            k.dynamic.failure_by_rotation_probability,
-            k.rigid_block.failure_probability,
-            k.heel_pressure_exceedance.probability,
-            if meets.is_empty() { "-".to_string() } else { meets.join(", ") }
-        );
-    }
+    candidate_table(r, exceed, &mut t);
     let at = r.dynamic.width_m().and_then(|w| r.candidates.iter().find(|k| k.width_m == w)).or(r.candidates.last());
     if let Some(k) = at {
         let (d, b) = (&k.dynamic.impulsive, &k.rigid_block.impulsive);
         let _ = writeln!(
             t,
-            "\nat B = {:.2} m: impulsive waves {} (that may slide or lift the caisson) make {:.0} % of E|S| as simulated and {:.0} % of the {} failures of the dynamic model, {:.0} % and {:.0} % of the {} of the rigid block; P(q_heel > {} kPa) = {:.4} ± {:.4}",
+            "\nat B = {:.2} m: impulsive waves {} (that may slide or lift the caisson) make {:.0} % of E|S| as simulated and {:.0} % of the {} failures of the dynamic model, {:.0} % and {:.0} % of the {} of the rigid block; P(q_heel > {} kPa) = {}",
             k.width_m,
             d.waves,
             100.0 * d.share_of_expected_sliding,
@@ -380,8 +420,7 @@ fn size_text(r: &SizeReport) -> String {
             100.0 * b.share_of_failures,
             b.failures,
             k.heel_pressure_exceedance.allowable_kpa,
-            k.heel_pressure_exceedance.probability,
-            k.heel_pressure_exceedance.standard_error
+            heel_probability(&k.heel_pressure_exceedance, r.lives_per_candidate)
         );
     }
     let _ = writeln!(
@@ -404,13 +443,21 @@ struct CandidateRow {
     goda_overturning_safety_factor: Option<Sci>,
     goda_heel_pressure_kpa: Option<Sci>,
     dynamic_expected_sliding_m: Sci,
-    dynamic_expected_sliding_se_m: Sci,
+    dynamic_expected_sliding_standard_error_m: Sci,
+    dynamic_expected_sliding_ci95_low_m: Sci,
+    dynamic_expected_sliding_ci95_high_m: Sci,
     dynamic_expected_sliding_uncapped_m: Sci,
-    dynamic_expected_sliding_uncapped_se_m: Sci,
+    dynamic_expected_sliding_uncapped_standard_error_m: Sci,
+    dynamic_expected_sliding_uncapped_ci95_low_m: Sci,
+    dynamic_expected_sliding_uncapped_ci95_high_m: Sci,
     dynamic_p50_m: Sci,
     dynamic_p95_m: Sci,
     dynamic_exceedance_probability: Sci,
+    dynamic_exceedance_probability_ci95_low: Sci,
+    dynamic_exceedance_probability_ci95_high: Sci,
     dynamic_failure_probability: Sci,
+    dynamic_failure_probability_ci95_low: Sci,
+    dynamic_failure_probability_ci95_high: Sci,
     dynamic_failure_by_sliding_probability: Sci,
     dynamic_failure_by_rotation_probability: Sci,
     dynamic_failure_by_heel_pressure_probability: Sci,
@@ -419,13 +466,21 @@ struct CandidateRow {
     dynamic_impulsive_share_of_expected_sliding: Sci,
     dynamic_impulsive_share_of_failures: Sci,
     rigid_block_expected_sliding_m: Sci,
-    rigid_block_expected_sliding_se_m: Sci,
+    rigid_block_expected_sliding_standard_error_m: Sci,
+    rigid_block_expected_sliding_ci95_low_m: Sci,
+    rigid_block_expected_sliding_ci95_high_m: Sci,
     rigid_block_expected_sliding_uncapped_m: Sci,
-    rigid_block_expected_sliding_uncapped_se_m: Sci,
+    rigid_block_expected_sliding_uncapped_standard_error_m: Sci,
+    rigid_block_expected_sliding_uncapped_ci95_low_m: Sci,
+    rigid_block_expected_sliding_uncapped_ci95_high_m: Sci,
     rigid_block_p50_m: Sci,
     rigid_block_p95_m: Sci,
     rigid_block_exceedance_probability: Sci,
+    rigid_block_exceedance_probability_ci95_low: Sci,
+    rigid_block_exceedance_probability_ci95_high: Sci,
     rigid_block_failure_probability: Sci,
+    rigid_block_failure_probability_ci95_low: Sci,
+    rigid_block_failure_probability_ci95_high: Sci,
     rigid_block_failure_by_sliding_probability: Sci,
     rigid_block_failure_by_rotation_probability: Sci,
     rigid_block_failure_by_heel_pressure_probability: Sci,
@@ -450,13 +505,21 @@ impl From<&CandidateReport> for CandidateRow {
             goda_overturning_safety_factor: k.goda_overturning_safety_factor.map(Sci),
             goda_heel_pressure_kpa: k.goda_heel_pressure_kpa.map(Sci),
             dynamic_expected_sliding_m: Sci(d.expected_sliding_m),
-            dynamic_expected_sliding_se_m: Sci(d.expected_sliding_se_m),
+            dynamic_expected_sliding_standard_error_m: Sci(d.expected_sliding_standard_error_m),
+            dynamic_expected_sliding_ci95_low_m: Sci(d.expected_sliding_ci95_m[0]),
+            dynamic_expected_sliding_ci95_high_m: Sci(d.expected_sliding_ci95_m[1]),
             dynamic_expected_sliding_uncapped_m: Sci(d.expected_sliding_uncapped_m),
-            dynamic_expected_sliding_uncapped_se_m: Sci(d.expected_sliding_uncapped_se_m),
+            dynamic_expected_sliding_uncapped_standard_error_m: Sci(d.expected_sliding_uncapped_standard_error_m),
+            dynamic_expected_sliding_uncapped_ci95_low_m: Sci(d.expected_sliding_uncapped_ci95_m[0]),
+            dynamic_expected_sliding_uncapped_ci95_high_m: Sci(d.expected_sliding_uncapped_ci95_m[1]),
             dynamic_p50_m: Sci(d.p50_m),
             dynamic_p95_m: Sci(d.p95_m),
             dynamic_exceedance_probability: Sci(d.exceedance_probability),
+            dynamic_exceedance_probability_ci95_low: Sci(d.exceedance_probability_ci95[0]),
+            dynamic_exceedance_probability_ci95_high: Sci(d.exceedance_probability_ci95[1]),
             dynamic_failure_probability: Sci(d.failure_probability),
+            dynamic_failure_probability_ci95_low: Sci(d.failure_probability_ci95[0]),
+            dynamic_failure_probability_ci95_high: Sci(d.failure_probability_ci95[1]),
             dynamic_failure_by_sliding_probability: Sci(d.failure_by_sliding_probability),
             dynamic_failure_by_rotation_probability: Sci(d.failure_by_rotation_probability),
             dynamic_failure_by_heel_pressure_probability: Sci(d.failure_by_heel_pressure_probability),
@@ -465,13 +528,21 @@ impl From<&CandidateReport> for CandidateRow {
             dynamic_impulsive_share_of_expected_sliding: Sci(d.impulsive.share_of_expected_sliding),
             dynamic_impulsive_share_of_failures: Sci(d.impulsive.share_of_failures),
             rigid_block_expected_sliding_m: Sci(r.expected_sliding_m),
-            rigid_block_expected_sliding_se_m: Sci(r.expected_sliding_se_m),
+            rigid_block_expected_sliding_standard_error_m: Sci(r.expected_sliding_standard_error_m),
+            rigid_block_expected_sliding_ci95_low_m: Sci(r.expected_sliding_ci95_m[0]),
+            rigid_block_expected_sliding_ci95_high_m: Sci(r.expected_sliding_ci95_m[1]),
             rigid_block_expected_sliding_uncapped_m: Sci(r.expected_sliding_uncapped_m),
-            rigid_block_expected_sliding_uncapped_se_m: Sci(r.expected_sliding_uncapped_se_m),
+            rigid_block_expected_sliding_uncapped_standard_error_m: Sci(r.expected_sliding_uncapped_standard_error_m),
+            rigid_block_expected_sliding_uncapped_ci95_low_m: Sci(r.expected_sliding_uncapped_ci95_m[0]),
+            rigid_block_expected_sliding_uncapped_ci95_high_m: Sci(r.expected_sliding_uncapped_ci95_m[1]),
             rigid_block_p50_m: Sci(r.p50_m),
             rigid_block_p95_m: Sci(r.p95_m),
             rigid_block_exceedance_probability: Sci(r.exceedance_probability),
+            rigid_block_exceedance_probability_ci95_low: Sci(r.exceedance_probability_ci95[0]),
+            rigid_block_exceedance_probability_ci95_high: Sci(r.exceedance_probability_ci95[1]),
             rigid_block_failure_probability: Sci(r.failure_probability),
+            rigid_block_failure_probability_ci95_low: Sci(r.failure_probability_ci95[0]),
+            rigid_block_failure_probability_ci95_high: Sci(r.failure_probability_ci95[1]),
             rigid_block_failure_by_sliding_probability: Sci(r.failure_by_sliding_probability),
             rigid_block_failure_by_rotation_probability: Sci(r.failure_by_rotation_probability),
             rigid_block_failure_by_heel_pressure_probability: Sci(r.failure_by_heel_pressure_probability),
@@ -527,8 +598,13 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     // The E|S| the criterion reads (`[size] expected_sliding`), with its standard error.
     let as_simulated = r.criteria.expected_sliding == ExpectedSliding::AsSimulated;
     let mean = move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_m } else { p.expected_sliding_m };
-    let se =
-        move |p: &ModelPoint| if as_simulated { p.expected_sliding_uncapped_se_m } else { p.expected_sliding_se_m };
+    let se = move |p: &ModelPoint| {
+        if as_simulated {
+            p.expected_sliding_uncapped_standard_error_m
+        } else {
+            p.expected_sliding_standard_error_m
+        }
+    };
     let which = if as_simulated { "E|S| as simulated" } else { "E|S|" };
     let mut sliding = vec![
         Series::line(format!("dynamic model: {which}"), pts(FLOOR_M, &|k| mean(&k.dynamic))),

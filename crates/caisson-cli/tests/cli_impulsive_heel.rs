@@ -78,7 +78,9 @@ fn the_breaking_site_design_shows_what_the_impacts_make_of_it() {
         let pf = num(&m["failure"]["probability"]);
         let headline = (1.0 - pf) * num(&m["surviving"]["expected_sliding_m"]) + pf * num(&j["failure_sliding_m"]);
         assert!((headline - num(&m["expected_sliding_m"])).abs() < 1e-12, "{m}");
-        assert!(num(&m["expected_sliding_uncapped_m"]) > 0.0 && num(&m["expected_sliding_uncapped_se_m"]) > 0.0);
+        assert!(
+            num(&m["expected_sliding_uncapped_m"]) > 0.0 && num(&m["expected_sliding_uncapped_standard_error_m"]) > 0.0
+        );
     }
     // A failure heel pressure just above the rest pressure fails lives by it alone.
     let text = std::fs::read_to_string(&f).unwrap();
@@ -162,7 +164,10 @@ fn the_breaking_site_size_reports_both_statistics_and_reads_the_one_asked() {
         for m in ["dynamic", "rigid_block"] {
             let p = &c[m];
             impulsive(p);
-            assert!(num(&p["expected_sliding_uncapped_se_m"]) >= 0.0 && num(&p["expected_sliding_se_m"]) >= 0.0);
+            assert!(
+                num(&p["expected_sliding_uncapped_standard_error_m"]) >= 0.0
+                    && num(&p["expected_sliding_standard_error_m"]) >= 0.0
+            );
         }
         assert!((0.0..=1.0).contains(&num(&c["heel_pressure_exceedance"]["probability"])));
         let d = &c["dynamic"];

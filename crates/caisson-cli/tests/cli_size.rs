@@ -182,7 +182,8 @@ fn a_resumed_sizing_run_reports_the_same() {
 
 /// candidates.csv is size.json's candidates, flattened: a row per candidate, a column per number
 /// (a model's under its prefix: `dynamic_p95_m` is `dynamic.p95_m`, `dynamic_impulsive_waves`
-/// is `dynamic.impulsive.waves`; `heel_pressure_exceedance_probability` is
+/// is `dynamic.impulsive.waves`, `dynamic_failure_probability_ci95_low` is
+/// `dynamic.failure_probability_ci95[0]`; `heel_pressure_exceedance_probability` is
 /// `heel_pressure_exceedance.probability`), each cell the JSON value exactly (`{:e}` round-trips
 /// f64), an empty cell where the JSON has `null`.
 #[test]
@@ -196,14 +197,16 @@ fn candidates_csv_is_the_json_candidates_flattened() {
     let cands = j["candidates"].as_array().unwrap();
     let mut r = csv::Reader::from_path(out.join("candidates.csv")).unwrap();
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    // 6 of the width, 12 of each model and 4 of its impulsive waves, 2 of the heel pressure, 2
-    // verdicts.
-    assert_eq!(header.len(), 40, "{header:?}");
+    // 6 of the width, 12 of each model, 8 of its intervals and 4 of its impulsive waves, 2 of
+    // the heel pressure, 2 verdicts.
+    assert_eq!(header.len(), 56, "{header:?}");
     let (mut rows, mut cells, mut empty) = (0, 0, 0);
     for (row, c) in r.records().map(Result::unwrap).zip(cands) {
         for (name, cell) in header.iter().zip(row.iter()) {
             let model = |m: &str, rest: &str| match rest.strip_prefix("impulsive_") {
                 Some(key) => c[m]["impulsive"][key].clone(),
+                None if rest.contains("_ci95_low") => c[m][rest.replace("_ci95_low", "_ci95")][0].clone(),
+                None if rest.contains("_ci95_high") => c[m][rest.replace("_ci95_high", "_ci95")][1].clone(),
                 None => c[m][rest].clone(),
             };
             let want = match name.split_once('_') {
@@ -227,7 +230,7 @@ fn candidates_csv_is_the_json_candidates_flattened() {
         }
         rows += 1;
     }
-    assert_eq!((rows, cells), (cands.len(), 40 * cands.len()), "every cell checked");
+    assert_eq!((rows, cells), (cands.len(), 56 * cands.len()), "every cell checked");
     // The heel pressure is undefined (null) at the narrow widths that would overturn (the resultant
     // outside the base).
     assert!(empty > 0, "an empty cell checked");

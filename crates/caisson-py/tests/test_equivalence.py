@@ -185,5 +185,5 @@ def test_a_size_by_the_as_simulated_expected_sliding_is_the_clis(tmp_path):
     assert assert_same_json(got.report, want) > 100
     assert want["criteria"]["expected_sliding"] == "as-simulated"
     for c in want["candidates"]:
-        assert c["dynamic"]["expected_sliding_uncapped_se_m"] >= 0.0 and "impulsive" in c["rigid_block"]
+        assert c["dynamic"]["expected_sliding_uncapped_standard_error_m"] >= 0.0 and "impulsive" in c["rigid_block"]
         assert 0.0 <= c["heel_pressure_exceedance"]["probability"] <= 1.0

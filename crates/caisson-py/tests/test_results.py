@@ -41,6 +41,23 @@ def test_design_statistics_are_typed_and_read_as_design_json(tmp_path):
     assert len(stats.dynamic.exceedance_probability) == len(dyn["exceedance_probability"]) > 0
     assert (stats.lives, stats.life_years) == (30, 20)
     assert [w.code for w in stats.warnings] == [w["code"] for w in want["warnings"]]
+    # Every estimate with its 95 % interval, typed as (low, high) tuples (docs/design.md,
+    # Intervals): the JSON's numbers, and each interval around its estimate.
+    checked = 0
+    for model in ("dynamic", "rigid_block"):
+        typed, m = getattr(stats, model), want[model]
+        for key in ("expected_sliding", "expected_sliding_uncapped", "expected_sliding_per_year"):
+            ci = getattr(typed, f"{key}_ci95_m")
+            assert ci == tuple(m[f"{key}_ci95_m"]) and ci[0] <= getattr(typed, f"{key}_m") <= ci[1]
+            checked += 1
+        assert typed.expected_sliding_per_year_standard_error_m == m["expected_sliding_per_year_standard_error_m"]
+        assert typed.failure_probability_ci95 == tuple(m["failure"]["probability_ci95"])
+        assert typed.failure_probability_ci95[0] <= typed.failure_probability <= typed.failure_probability_ci95[1]
+        assert typed.exceedance_ci95 == {e["threshold_m"]: tuple(e["ci95"]) for e in m["exceedance_probability"]}
+        assert typed.percentiles_ci95_m == {k: tuple(v) for k, v in m["percentiles_ci95_m"].items()}
+        assert typed.surviving_expected_sliding_ci95_m == tuple(m["surviving"]["expected_sliding_ci95_m"])
+        checked += 1
+    assert checked == 8
 
 
 def test_a_whole_float_is_the_whole_number_it_equals():

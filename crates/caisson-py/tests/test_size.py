@@ -27,6 +27,14 @@ def test_size_is_caisson_size_bit_for_bit(tmp_path):
     assert len(got.candidates) == len(want["candidates"])
     assert list(got.candidates["width_m"]) == [c["width_m"] for c in want["candidates"]]
     assert list(got.candidates["dynamic_expected_sliding_m"]) == [c["dynamic"]["expected_sliding_m"] for c in want["candidates"]]
+    # The intervals in two columns each, as candidates.csv has them.
+    for model in ("dynamic", "rigid_block"):
+        for key, low, high in (
+            ("expected_sliding_ci95_m", "expected_sliding_ci95_low_m", "expected_sliding_ci95_high_m"),
+            ("failure_probability_ci95", "failure_probability_ci95_low", "failure_probability_ci95_high"),
+        ):
+            assert list(got.candidates[f"{model}_{low}"]) == [c[model][key][0] for c in want["candidates"]]
+            assert list(got.candidates[f"{model}_{high}"]) == [c[model][key][1] for c in want["candidates"]]
     assert [w.code for w in got.warnings] == [w["code"] for w in want["warnings"]]
     assert calls and calls[-1][0] == want["lives_simulated"]
     # The same answer on one thread.

@@ -73,7 +73,7 @@ fn exact_width_m(s_m: f64) -> f64 {
 fn point(s: f64) -> ModelPoint {
     ModelPoint {
         expected_sliding_m: s,
-        expected_sliding_se_m: 0.0,
+        expected_sliding_standard_error_m: 0.0,
         p50_m: s,
         p95_m: s,
         expected_sliding_uncapped_m: s,

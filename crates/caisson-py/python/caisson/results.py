@@ -117,34 +117,52 @@ class ModelStatistics:
     ``rigid_block``; docs/design.md). Lengths in m; |S| is the distance from the caisson's place
     at the end of a life, a failed life counted at the sliding limit.
 
+    Every estimate comes with its 95 % interval, a ``(low, high)`` tuple under the same name with
+    ``_ci95`` (docs/design.md, "Intervals"): means with their standard error too.
+
     - ``expected_sliding_m``: E|S| (failed lives at the limit); ``expected_sliding_uncapped_m``:
       with every life as simulated, run to its end (the published ESD); each with its standard
-      error (``…_se_m``); ``expected_sliding_per_year_m``: E|S| / life_years.
-    - ``percentiles_m``: ``{"p5": ..., "p50": ..., "p95": ..., "p99": ...}`` of |S|.
-    - ``exceedance_probability``: ``{threshold_m: P(|S| > threshold)}``.
+      error (``…_standard_error_m``) and interval (``…_ci95_m``); ``expected_sliding_per_year_m``:
+      E|S| / life_years (and its ``…_standard_error_m``, ``…_ci95_m``).
+    - ``percentiles_m``: ``{"p5": ..., "p50": ..., "p95": ..., "p99": ...}`` of |S|;
+      ``percentiles_ci95_m``: their order-statistic intervals (an end ``None`` where the lives are
+      too few for it).
+    - ``exceedance_probability``: ``{threshold_m: P(|S| > threshold)}``; ``exceedance_ci95``:
+      ``{threshold_m: (low, high)}`` (Wilson).
     - ``failure_probability``, ``failure_lives``: the lives that failed (by sliding beyond
-      ``[design] failure_sliding_m`` or rotating beyond ``failure_rotation_rad``);
-      ``failure_probability_by_sliding``, ``failure_probability_by_rotation``,
-      ``failure_probability_by_heel_pressure``: by the failing wave's mode.
-    - ``surviving_lives``, ``surviving_expected_sliding_m``: the lives that did not fail.
+      ``[design] failure_sliding_m`` or rotating beyond ``failure_rotation_rad``), with
+      ``failure_probability_ci95`` (Wilson); ``failure_probability_by_sliding``,
+      ``failure_probability_by_rotation``, ``failure_probability_by_heel_pressure``: by the failing
+      wave's mode.
+    - ``surviving_lives``, ``surviving_expected_sliding_m`` (with ``…_standard_error_m`` and
+      ``…_ci95_m``): the lives that did not fail.
     - ``impulsive``: what the impulsive waves make of the lives (``waves``, ``sliding_m``,
       ``share_of_expected_sliding``, ``share_of_failures``, ``failures``; docs/design.md).
     """
 
     expected_sliding_m: float
     expected_sliding_uncapped_m: float
-    expected_sliding_se_m: float
-    expected_sliding_uncapped_se_m: float
+    expected_sliding_standard_error_m: float
+    expected_sliding_uncapped_standard_error_m: float
+    expected_sliding_ci95_m: tuple
+    expected_sliding_uncapped_ci95_m: tuple
     expected_sliding_per_year_m: float
+    expected_sliding_per_year_standard_error_m: float
+    expected_sliding_per_year_ci95_m: tuple
     percentiles_m: Mapping
+    percentiles_ci95_m: Mapping
     exceedance_probability: Mapping
+    exceedance_ci95: Mapping
     failure_probability: float
+    failure_probability_ci95: tuple
     failure_lives: int
     failure_probability_by_sliding: float
     failure_probability_by_rotation: float
     failure_probability_by_heel_pressure: float
     surviving_lives: int
     surviving_expected_sliding_m: float
+    surviving_expected_sliding_standard_error_m: float
+    surviving_expected_sliding_ci95_m: tuple
     impulsive: Mapping
 
     @staticmethod
@@ -153,18 +171,27 @@ class ModelStatistics:
         return ModelStatistics(
             expected_sliding_m=m["expected_sliding_m"],
             expected_sliding_uncapped_m=m["expected_sliding_uncapped_m"],
-            expected_sliding_se_m=m["expected_sliding_se_m"],
-            expected_sliding_uncapped_se_m=m["expected_sliding_uncapped_se_m"],
+            expected_sliding_standard_error_m=m["expected_sliding_standard_error_m"],
+            expected_sliding_uncapped_standard_error_m=m["expected_sliding_uncapped_standard_error_m"],
+            expected_sliding_ci95_m=tuple(m["expected_sliding_ci95_m"]),
+            expected_sliding_uncapped_ci95_m=tuple(m["expected_sliding_uncapped_ci95_m"]),
             expected_sliding_per_year_m=m["expected_sliding_per_year_m"],
+            expected_sliding_per_year_standard_error_m=m["expected_sliding_per_year_standard_error_m"],
+            expected_sliding_per_year_ci95_m=tuple(m["expected_sliding_per_year_ci95_m"]),
             percentiles_m=dict(m["percentiles_m"]),
+            percentiles_ci95_m={k: tuple(v) for k, v in m["percentiles_ci95_m"].items()},
             exceedance_probability={e["threshold_m"]: e["probability"] for e in m["exceedance_probability"]},
+            exceedance_ci95={e["threshold_m"]: tuple(e["ci95"]) for e in m["exceedance_probability"]},
             failure_probability=f["probability"],
+            failure_probability_ci95=tuple(f["probability_ci95"]),
             failure_lives=f["lives"],
             failure_probability_by_sliding=f["by_sliding"]["probability"],
             failure_probability_by_rotation=f["by_rotation"]["probability"],
             failure_probability_by_heel_pressure=f["by_heel_pressure"]["probability"],
             surviving_lives=m["surviving"]["lives"],
             surviving_expected_sliding_m=m["surviving"]["expected_sliding_m"],
+            surviving_expected_sliding_standard_error_m=m["surviving"]["expected_sliding_standard_error_m"],
+            surviving_expected_sliding_ci95_m=tuple(m["surviving"]["expected_sliding_ci95_m"]),
             impulsive=dict(m["impulsive"]),
         )
 
@@ -262,6 +289,14 @@ class FragilityResult:
     warnings: tuple = ()
 
 
+def _interval_columns(name: str) -> tuple:
+    """The two columns of an interval ``name`` as candidates.csv names them: ``x_ci95_m`` ->
+    ``x_ci95_low_m``, ``x_ci95_high_m``; ``x_ci95`` -> ``x_ci95_low``, ``x_ci95_high``."""
+    if name.endswith("_m"):
+        return (f"{name[:-2]}_low_m", f"{name[:-2]}_high_m")
+    return (f"{name}_low", f"{name}_high")
+
+
 @dataclass(frozen=True, eq=False)
 class SizeResult(_ReadsAsReport):
     """The results of :func:`caisson.size` (``caisson size --json``, docs/size.md). Widths in m.
@@ -272,8 +307,10 @@ class SizeResult(_ReadsAsReport):
       the design wave H_max).
     - ``status``, ``rigid_block_status``: ``"found"`` or why not (docs/size.md).
     - ``candidates``: one row per width tried: ``width_m``, ``weight_in_water_kn``, and per model
-      (``dynamic_...``, ``rigid_block_...``) ``expected_sliding_m``, ``expected_sliding_se_m``,
-      ``expected_sliding_uncapped_m`` (as simulated) and its ``…_se_m``, ``failure_probability``
+      (``dynamic_...``, ``rigid_block_...``) ``expected_sliding_m``, ``expected_sliding_standard_error_m``,
+      ``expected_sliding_uncapped_m`` (as simulated) and its ``…_standard_error_m``, each 95 %
+      interval in two columns as in candidates.csv (``…_ci95_low_m``, ``…_ci95_high_m``; Wilson
+      intervals of the probabilities ``…_ci95_low``, ``…_ci95_high``), ``failure_probability``
       (with ``failure_by_sliding_probability``, ``failure_by_rotation_probability``,
       ``failure_by_heel_pressure_probability``), ``exceedance_probability``, ``p50_m``, ``p95_m``,
       ``impulsive_...`` (``waves``, ``sliding_m``, ``share_of_expected_sliding``,
@@ -304,6 +341,8 @@ class SizeResult(_ReadsAsReport):
                     # A group (the impulsive waves') flattened as candidates.csv has it.
                     if isinstance(v, Mapping):
                         row.update({f"{model}_{k}_{g}": x for g, x in v.items()})
+                    elif isinstance(v, (list, tuple)):
+                        row.update(zip(_interval_columns(f"{model}_{k}"), v))
                     else:
                         row[f"{model}_{k}"] = v
                 row[f"{model}_meets"] = c.get(f"{model}_meets")

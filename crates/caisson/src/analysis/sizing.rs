@@ -37,6 +37,7 @@
 //! Φ(margin / SE) of the tightest criterion, the normal-approximation probability that the
 //! criterion is met.
 
+use super::estimate::{wilson_ci95, Z95 as Z_CI95};
 use super::fragility::normal_cdf;
 use super::lifetime::{
     capped_statistics, FailureLimits, HeelPressureExceedance, ImpulsiveShare, LifeCounts, StormOutcome,
@@ -93,19 +94,26 @@ pub struct ExceedanceCriterion {
 pub struct ModelPoint {
     /// E|S| with each failed life at the sliding limit, m.
     pub expected_sliding_m: f64,
-    /// Its standard error, m.
-    pub expected_sliding_se_m: f64,
-    /// E|S| of the lives as simulated (every life run to its end, not capped), m, and its
-    /// standard error.
+    /// Its standard error and 95 % interval ([low, high], the normal interval ± 1.96 standard
+    /// errors: [`crate::analysis::estimate`]), m.
+    pub expected_sliding_standard_error_m: f64,
+    pub expected_sliding_ci95_m: [f64; 2],
+    /// E|S| of the lives as simulated (every life run to its end, not capped), m, its standard
+    /// error and 95 % interval.
     pub expected_sliding_uncapped_m: f64,
-    pub expected_sliding_uncapped_se_m: f64,
+    pub expected_sliding_uncapped_standard_error_m: f64,
+    pub expected_sliding_uncapped_ci95_m: [f64; 2],
     /// Median and 95 % value of |S| with each failed life at the limit (nearest rank), m.
     pub p50_m: f64,
     pub p95_m: f64,
     /// P(|S| > the criterion's S_lim), a failed life exceeding it (0 without an exceedance
     /// criterion).
     pub exceedance_probability: f64,
+    /// Its Wilson 95 % interval ([0, 0] without an exceedance criterion).
+    pub exceedance_probability_ci95: [f64; 2],
     pub failure_probability: f64,
+    /// Its Wilson 95 % interval.
+    pub failure_probability_ci95: [f64; 2],
     /// P(failure by sliding), by rotation and by heel pressure (of the failing wave: a life may
     /// count in several).
     pub failure_by_sliding_probability: f64,
@@ -177,15 +185,23 @@ pub fn model_point(
     let (mean, se) = mean_and_se(capped);
     let (uncapped, uncapped_se) = mean_and_se(magnitudes.iter().copied());
     let share = |k: Option<usize>| modes.iter().filter(|m| k.map_or(m.iter().any(|&f| f), |k| m[k])).count() as f64 / n;
+    let lives = magnitudes.len() as u64;
+    // A share k/n of the lives back to its count k (exact: k/n rounds to the nearest double).
+    let wilson = |p: f64| if lives == 0 { [0.0, 1.0] } else { wilson_ci95((p * n).round() as u64, lives) };
+    let exceedance_probability = s.exceedance.first().map_or(0.0, |(_, p)| *p);
     ModelPoint {
         expected_sliding_m: mean,
-        expected_sliding_se_m: se,
+        expected_sliding_standard_error_m: se,
+        expected_sliding_ci95_m: [mean - Z_CI95 * se, mean + Z_CI95 * se],
         expected_sliding_uncapped_m: uncapped,
-        expected_sliding_uncapped_se_m: uncapped_se,
+        expected_sliding_uncapped_standard_error_m: uncapped_se,
+        expected_sliding_uncapped_ci95_m: [uncapped - Z_CI95 * uncapped_se, uncapped + Z_CI95 * uncapped_se],
         p50_m: pct(50.0),
         p95_m: pct(95.0),
-        exceedance_probability: s.exceedance.first().map_or(0.0, |(_, p)| *p),
+        exceedance_probability,
+        exceedance_probability_ci95: if s.exceedance.is_empty() { [0.0, 0.0] } else { wilson(exceedance_probability) },
         failure_probability: share(None),
+        failure_probability_ci95: wilson(share(None)),
         failure_by_sliding_probability: share(Some(0)),
         failure_by_rotation_probability: share(Some(1)),
         failure_by_heel_pressure_probability: share(Some(2)),
@@ -242,8 +258,10 @@ impl Criteria {
         let mut out = Vec::with_capacity(3);
         if let Some(s) = self.expected_sliding_m {
             out.push(match self.expected_sliding {
-                ExpectedSliding::Capped => (s - p.expected_sliding_m, p.expected_sliding_se_m),
-                ExpectedSliding::AsSimulated => (s - p.expected_sliding_uncapped_m, p.expected_sliding_uncapped_se_m),
+                ExpectedSliding::Capped => (s - p.expected_sliding_m, p.expected_sliding_standard_error_m),
+                ExpectedSliding::AsSimulated => {
+                    (s - p.expected_sliding_uncapped_m, p.expected_sliding_uncapped_standard_error_m)
+                }
             });
         }
         if let Some(e) = self.exceedance {
@@ -516,7 +534,7 @@ mod tests {
     fn point(mean: f64) -> ModelPoint {
         ModelPoint {
             expected_sliding_m: mean,
-            expected_sliding_se_m: 0.0,
+            expected_sliding_standard_error_m: 0.0,
             p50_m: mean,
             p95_m: mean,
             expected_sliding_uncapped_m: mean,
@@ -538,9 +556,9 @@ mod tests {
         assert!((p.expected_sliding_m - 0.8).abs() < 1e-15);
         assert!((p.expected_sliding_uncapped_m - 0.65).abs() < 1e-15);
         // s² = (0.64 + 0.49 + 0.49 + 0.36)/3 = 0.66, SE = √(s²/4).
-        assert!((p.expected_sliding_se_m - (1.98f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
+        assert!((p.expected_sliding_standard_error_m - (1.98f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
         // As simulated: mean 0.65, s² = (0.4225 + 0.0625 + 1.8225 + 0.2025)/3 = 0.8367, SE = √(s²/4).
-        assert!((p.expected_sliding_uncapped_se_m - (2.51f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
+        assert!((p.expected_sliding_uncapped_standard_error_m - (2.51f64 / 3.0 / 4.0).sqrt()).abs() < 1e-15);
         // Sorted capped values 0, 0.2, 1.5, 1.5; both failed lives exceed 0.5 m.
         assert_eq!((p.p50_m, p.p95_m, p.exceedance_probability, p.failure_probability), (0.2, 1.5, 0.5, 0.5));
         assert_eq!((p.failure_by_sliding_probability, p.failure_by_rotation_probability), (0.25, 0.25));

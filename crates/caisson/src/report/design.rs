@@ -3,6 +3,7 @@
 use super::{fingerprint, ModelReport, Provenance};
 use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
+use crate::analysis::estimate::{percentile_ci95, Estimate, Z95};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
     ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
@@ -53,19 +54,41 @@ pub struct Percentiles {
     pub p99: f64,
 }
 
-/// The probability that a life's sliding exceeds a threshold.
+/// The 95 % intervals of [`Percentiles`] ([low, high] order statistics of the lives, an end
+/// `None` where the lives are too few for it: [`crate::analysis::estimate::percentile_ci95`]), m.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PercentileIntervals {
+    pub p5: [Option<f64>; 2],
+    pub p50: [Option<f64>; 2],
+    pub p95: [Option<f64>; 2],
+    pub p99: [Option<f64>; 2],
+}
+
+impl PercentileIntervals {
+    /// Of the life totals `values` (in any order).
+    fn of(values: &[f64]) -> Self {
+        let mut sorted = values.to_vec();
+        sorted.sort_by(f64::total_cmp);
+        let ci = |q: f64| percentile_ci95(&sorted, q);
+        PercentileIntervals { p5: ci(0.05), p50: ci(0.50), p95: ci(0.95), p99: ci(0.99) }
+    }
+}
+
+/// The probability that a life's sliding exceeds a threshold, with its Wilson 95 % interval.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Exceedance {
     pub threshold_m: f64,
     pub probability: f64,
+    pub ci95: [f64; 2],
 }
 
 /// The lives that failed: moved beyond the sliding limit from their place at some time, or
 /// rotated beyond the rotation limit.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Failure {
-    /// The share of lives that failed.
+    /// The share of lives that failed, and its Wilson 95 % interval.
     pub probability: f64,
+    pub probability_ci95: [f64; 2],
     pub lives: usize,
     /// The lives that failed by sliding (beyond `failure_sliding_m`).
     pub by_sliding: FailureMode,
@@ -81,16 +104,43 @@ pub struct Failure {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FailureMode {
     pub probability: f64,
+    /// Its Wilson 95 % interval.
+    pub probability_ci95: [f64; 2],
     pub lives: usize,
+}
+
+impl FailureMode {
+    /// `lives` of `n`.
+    fn of(lives: usize, n: usize) -> Self {
+        let e = proportion(lives, n);
+        FailureMode { probability: e.value, probability_ci95: e.ci95, lives }
+    }
+}
+
+/// The proportion `k` of `n` lives with its Wilson interval; of no life, 0 within [0, 1].
+fn proportion(k: usize, n: usize) -> Estimate {
+    if n == 0 {
+        return Estimate { value: 0.0, standard_error: 0.0, ci95: [0.0, 1.0] };
+    }
+    Estimate::proportion(k as u64, n as u64)
+}
+
+/// The normal 95 % interval of a mean with standard error `se`.
+fn ci95(mean: f64, se: f64) -> [f64; 2] {
+    [mean - Z95 * se, mean + Z95 * se]
 }
 
 /// The statistics of the lives that did not fail.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Surviving {
     pub lives: usize,
-    /// Mean |S| of the surviving lives, m (0 when none survived).
+    /// Mean |S| of the surviving lives, m (0 when none survived), its standard error and 95 %
+    /// interval.
     pub expected_sliding_m: f64,
+    pub expected_sliding_standard_error_m: f64,
+    pub expected_sliding_ci95_m: [f64; 2],
     pub percentiles_m: Percentiles,
+    pub percentiles_ci95_m: PercentileIntervals,
 }
 
 /// The statistics of one model's life totals. "Sliding" is the magnitude |S| of the life's net
@@ -98,17 +148,23 @@ pub struct Surviving {
 /// the direction (docs/design.md).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ModelStatistics {
-    /// E|S| with each failed life at the sliding limit (bounded by it), m.
+    /// E|S| with each failed life at the sliding limit (bounded by it), m, its standard error
+    /// and 95 % interval (the normal interval, ± 1.96 standard errors).
     pub expected_sliding_m: f64,
+    pub expected_sliding_standard_error_m: f64,
+    pub expected_sliding_ci95_m: [f64; 2],
+    /// E|S| / life years, m, with its standard error and interval (those of E|S| over the years).
     pub expected_sliding_per_year_m: f64,
+    pub expected_sliding_per_year_standard_error_m: f64,
+    pub expected_sliding_per_year_ci95_m: [f64; 2],
     /// E|S| of the lives as simulated (every life run to its end, failed or not: the expected
-    /// sliding distance of Shimosako & Takahashi 1999), m, and its standard error.
+    /// sliding distance of Shimosako & Takahashi 1999), m, its standard error and interval.
     pub expected_sliding_uncapped_m: f64,
-    pub expected_sliding_uncapped_se_m: f64,
-    /// The standard error of `expected_sliding_m`, m.
-    pub expected_sliding_se_m: f64,
-    /// Of |S| with each failed life at the sliding limit.
+    pub expected_sliding_uncapped_standard_error_m: f64,
+    pub expected_sliding_uncapped_ci95_m: [f64; 2],
+    /// Of |S| with each failed life at the sliding limit, and their 95 % intervals.
     pub percentiles_m: Percentiles,
+    pub percentiles_ci95_m: PercentileIntervals,
     /// P(|S| > threshold), a failed life exceeding every threshold.
     pub exceedance_probability: Vec<Exceedance>,
     pub failure: Failure,
@@ -135,34 +191,51 @@ impl ModelStatistics {
     ) -> Self {
         let failed: Vec<bool> = modes.iter().map(|m| m.iter().any(|&f| f)).collect();
         let s = capped_statistics(magnitudes, &failed, limit_m, thresholds_m);
-        let capped = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m });
-        let (_, se) = crate::analysis::sizing::mean_and_se(capped);
+        let capped: Vec<f64> = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m }).collect();
+        let (_, se) = crate::analysis::sizing::mean_and_se(capped.iter().copied());
         let (uncapped, uncapped_se) = crate::analysis::sizing::mean_and_se(magnitudes.iter().copied());
         let surviving: Vec<f64> = magnitudes.iter().zip(&failed).filter(|(_, &f)| !f).map(|(&m, _)| m).collect();
         let sv = life_statistics(&surviving, &[]);
-        let failures = magnitudes.len() - surviving.len();
-        let n = magnitudes.len().max(1) as f64;
-        let mode = |lives: usize| FailureMode { probability: lives as f64 / n, lives };
+        let (_, sv_se) = crate::analysis::sizing::mean_and_se(surviving.iter().copied());
+        let (n, failures) = (magnitudes.len(), magnitudes.len() - surviving.len());
+        let mode = |k: usize| FailureMode::of(modes.iter().filter(|m| m[k]).count(), n);
+        let per_year = (s.mean_m / years as f64, se / years as f64);
         ModelStatistics {
             expected_sliding_m: s.mean_m,
-            expected_sliding_per_year_m: s.mean_m / years as f64,
+            expected_sliding_standard_error_m: se,
+            expected_sliding_ci95_m: ci95(s.mean_m, se),
+            expected_sliding_per_year_m: per_year.0,
+            expected_sliding_per_year_standard_error_m: per_year.1,
+            expected_sliding_per_year_ci95_m: ci95(per_year.0, per_year.1),
             expected_sliding_uncapped_m: uncapped,
-            expected_sliding_uncapped_se_m: uncapped_se,
-            expected_sliding_se_m: se,
+            expected_sliding_uncapped_standard_error_m: uncapped_se,
+            expected_sliding_uncapped_ci95_m: ci95(uncapped, uncapped_se),
             percentiles_m: percentiles(&s),
+            percentiles_ci95_m: PercentileIntervals::of(&capped),
             exceedance_probability: s
                 .exceedance
                 .iter()
-                .map(|&(threshold_m, probability)| Exceedance { threshold_m, probability })
+                .map(|&(threshold_m, probability)| {
+                    let k = magnitudes.iter().zip(&failed).filter(|(&m, &f)| f || m > threshold_m).count();
+                    Exceedance { threshold_m, probability, ci95: proportion(k, n).ci95 }
+                })
                 .collect(),
             failure: Failure {
-                probability: failures as f64 / n,
+                probability: proportion(failures, n).value,
+                probability_ci95: proportion(failures, n).ci95,
                 lives: failures,
-                by_sliding: mode(modes.iter().filter(|m| m[0]).count()),
-                by_rotation: mode(modes.iter().filter(|m| m[1]).count()),
-                by_heel_pressure: mode(modes.iter().filter(|m| m[2]).count()),
+                by_sliding: mode(0),
+                by_rotation: mode(1),
+                by_heel_pressure: mode(2),
             },
-            surviving: Surviving { lives: sv.lives, expected_sliding_m: sv.mean_m, percentiles_m: percentiles(&sv) },
+            surviving: Surviving {
+                lives: sv.lives,
+                expected_sliding_m: sv.mean_m,
+                expected_sliding_standard_error_m: sv_se,
+                expected_sliding_ci95_m: ci95(sv.mean_m, sv_se),
+                percentiles_m: percentiles(&sv),
+                percentiles_ci95_m: PercentileIntervals::of(&surviving),
+            },
             impulsive,
         }
     }
