@@ -10,7 +10,7 @@
 //!
 //! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the
 //! fingerprint of what every life depends on (the typed scenario, the screen and the stepping of
-//! `--brute-force`; [`design_fingerprint`]), the lives the run was asked for, whether it was
+//! `--brute-force`; [`Designer::fingerprint`]), the lives the run was asked for, whether it was
 //! brute force, and the tool and results versions, then one JSON line per finished life, written
 //! whole (one `write`) as each life ends. Each life line ends with
 //! `"check"`: the FNV-1a of the header line and of the line itself, so a line edited, copied from
@@ -51,9 +51,9 @@ use crate::output::{
 };
 use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormCase, StormOutcome, LIFE_COLUMNS};
-use caisson::dynamics::Stepping;
-use caisson::report::design::{design_fingerprint, DesignReport};
+use caisson::analysis::lifetime::{LifeColumn, StormOutcome, LIFE_COLUMNS};
+use caisson::drive::design::{DesignOptions, Designer};
+use caisson::report::design::DesignReport;
 use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -501,27 +501,25 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     )
 }
 
-/// The scenario and `[design]` of a design file (`--lives` applied), with `--brute-force`: every
-/// wave through the dynamic model at the fixed step dt_s.
-/// (`what` names the command in the error of a file without `[design]`.)
-pub(crate) fn load_design(
-    path: &Path,
+/// The scenario of a design file, with `--brute-force` every wave through the dynamic model at
+/// the fixed step dt_s ([`caisson::drive::design::brute_force`]); its run is
+/// [`Designer::new`] with `--lives` and `--brute-force`.
+pub(crate) fn load_design(path: &Path, brute_force: bool) -> Result<Scenario> {
+    let sc = scenario::load(path).map_err(input_err)?;
+    if brute_force {
+        return caisson::drive::design::brute_force(sc).map_err(input_err);
+    }
+    Ok(sc)
+}
+
+/// The design run of `sc` (`what` names the command in the error of a file without `[design]`).
+pub(crate) fn designer<'a>(
+    sc: &'a Scenario,
     what: &str,
     lives: Option<usize>,
     brute_force: bool,
-) -> Result<(Scenario, DesignParams)> {
-    let mut sc = scenario::load(path).map_err(input_err)?;
-    let mut design = sc.design_for(what).map_err(input_err)?.clone();
-    if let Some(n) = lives {
-        // 1 to 1e7 (checked by the parser, as `[design] lives`).
-        design.lives = n;
-    }
-    if brute_force {
-        design.screen = false;
-        let solver = caisson::dynamics::SolverParams { stepping: Stepping::Fixed, ..sc.solver() };
-        sc = sc.with_solver(solver).map_err(input_err)?;
-    }
-    Ok((sc, design))
+) -> Result<Designer<'a>> {
+    Designer::new(sc, what, DesignOptions { lives, brute_force }).map_err(input_err)
 }
 
 /// The checkpoint of a run at `path`: read by `--resume` (`resume`) and appended to, or created
@@ -585,7 +583,9 @@ fn write_shard(
 }
 
 pub fn run(args: DesignArgs) -> Result<()> {
-    let (sc, design) = load_design(&args.scenario, "`caisson design`", args.lives, args.brute_force)?;
+    let sc = load_design(&args.scenario, args.brute_force)?;
+    let run = designer(&sc, "`caisson design`", args.lives, args.brute_force)?;
+    let design = &run.design;
     // A shard runs its range; a whole run lives 0..N.
     let range = args.life_range.clone().unwrap_or(0..design.lives);
     let shard = args.life_range.is_some();
@@ -599,14 +599,11 @@ pub fn run(args: DesignArgs) -> Result<()> {
             "--resume needs the checkpoint: give --out DIR (DIR/checkpoint.jsonl) or --checkpoint FILE",
         ));
     }
-    let case = sc.storm_case(design.screen).map_err(input_err)?;
-    let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
     // The lives this run computes: a shard's range, not the scenario's whole count. Its pilots
     // run on the run's threads.
-    let pilot = DesignParams { lives: range.len(), ..design.clone() };
-    let estimate = with_threads(args.threads, || caisson::analysis::work::design(&case, &pilot, waves))?;
+    let estimate = with_threads(args.threads, || run.estimate(range.len()))?;
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
-    let fingerprint = design_fingerprint(&case, &design);
+    let fingerprint = run.fingerprint();
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
     if let Some(parent) = checkpoint.as_deref().and_then(Path::parent).filter(|p| !p.as_os_str().is_empty()) {
         ensure_dir(parent)?;
@@ -651,7 +648,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
                 opened
             })
         });
-        let computed = compute_lives(&case, &design, &todo, slot.as_ref(), &pb, args.threads, stop_after);
+        let computed = compute_lives(&run, &todo, slot.as_ref(), &pb, args.threads, stop_after);
         (computed, opener.map_or(Ok(()), |o| o.join().expect("the checkpoint's opening thread panicked")))
     });
     // The checkpoint's own error first: the run stopped because of it.
@@ -680,7 +677,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, args.out.as_deref(), &keep)
+    report_lives(&args.scenario, &run, &lives, args.json, args.out.as_deref(), &keep)
 }
 
 /// Checkpoint lines as written, by life.
@@ -690,8 +687,7 @@ type Lines = BTreeMap<usize, String>;
 /// is being created: [`Slot`]) as it finishes; stops early after `stop_after` lives, at Ctrl-C, or
 /// when the checkpoint cannot be written.
 fn compute_lives(
-    case: &StormCase,
-    design: &DesignParams,
+    run: &Designer<'_>,
     todo: &[usize],
     slot: Option<&Mutex<Slot>>,
     pb: &indicatif::ProgressBar,
@@ -718,8 +714,7 @@ fn compute_lives(
             ControlFlow::Continue(())
         }
     };
-    let results = with_threads(threads, || run_lives(case, &design.life, design.seed, todo, &on_life))?
-        .context("the design run failed")?;
+    let results = with_threads(threads, || run.run(todo, &on_life))?.context("the design run failed")?;
     pb.finish_and_clear();
     if let Some(e) = write_error.into_inner().expect("error slot") {
         return Err(e);
@@ -759,20 +754,16 @@ fn rewrite_checkpoint(
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
 /// table or JSON on standard output and, with `out`, design.json, lives.csv, histogram.svg and
 /// exceedance.svg. What one design run reports; `caisson merge` reports through it too.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn report_lives(
     scenario_path: &Path,
-    design: &DesignParams,
-    case: &StormCase<'_>,
+    run: &Designer<'_>,
     lives: &[StormOutcome],
-    waves: Option<&caisson::analysis::site::WaveSetup>,
     json: bool,
     out: Option<&Path>,
     keep: &[&Path],
 ) -> Result<()> {
-    let failure = design.failure_limits(case.structure.caisson.width_m);
-    let failure_m = failure.sliding_m;
-    let report = DesignReport::new(design, case, waves, lives);
+    let failure_m = run.failure_limits().sliding_m;
+    let report = run.report(lives);
     let doc = report_json(&report, "design")?;
     crate::output::print_warning_lines(&report.warnings);
     if json {
