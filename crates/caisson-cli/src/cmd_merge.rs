@@ -28,11 +28,11 @@
 //! written to temporary files and renamed into place whole (`output.rs`), and the lock of the
 //! output checkpoint is removed.
 
-use crate::cli::MergeArgs;
-use crate::cmd_design::{
-    designer, life_line, load_design, open_checkpoint, read_checkpoint, read_line_limited, report_lives,
-    CheckpointLock, Header, Reader, MAX_LINE_BYTES,
+use crate::checkpoint_file::{
+    life_line, open_checkpoint, read_checkpoint, read_line_limited, CheckpointLock, Header, Reader, MAX_LINE_BYTES,
 };
+use crate::cli::MergeArgs;
+use crate::cmd_design::{designer, load_design, report_lives};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, process_running, progress, TempFile};
 use anyhow::{Context, Result};

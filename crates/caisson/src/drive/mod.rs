@@ -3,5 +3,6 @@
 //! the `analysis` drivers and returns its report; the CLI and the Python bindings call the same
 //! function and add only their files, progress and stopping.
 
+pub mod checkpoint_file;
 pub mod design;
 pub mod size;
