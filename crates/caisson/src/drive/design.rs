@@ -96,3 +96,57 @@ impl<'a> Designer<'a> {
         DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    /// The small design of the tests' data.
+    fn small_design() -> Scenario {
+        let text = include_str!("../../tests/data/small_design.toml");
+        Scenario::from_toml(text, Path::new("small.toml"), Path::new(".")).expect("the small design")
+    }
+
+    /// The designer assembles what the front-ends assembled by hand (`design_for` + `storm_case`
+    /// with the design's screen): the same fingerprint, lives and report; `lives` replaces the
+    /// count only, and the brute force turns the screen off (so the fingerprint changes).
+    #[test]
+    fn the_designer_is_the_run_assembled_by_hand() {
+        let sc = small_design();
+        let design = sc.design_for("test").unwrap().clone();
+        let case = sc.storm_case(design.screen).unwrap();
+        let run = Designer::new(&sc, "test", DesignOptions::default()).unwrap();
+        assert_eq!(run.design, design);
+        assert_eq!(run.fingerprint(), design_fingerprint(&case, &design));
+        let indices = [2, 0];
+        let by_hand = run_lives(&case, &design.life, design.seed, &indices, &|_, _| ControlFlow::Continue(())).unwrap();
+        let lives = run.run(&indices, &|_, _| ControlFlow::Continue(())).unwrap();
+        assert_eq!(lives, by_hand);
+        assert_eq!(lives.len(), 2, "two lives compared");
+        let outcomes: Vec<StormOutcome> = lives.iter().map(|(_, o)| *o).collect();
+        let report = |r: DesignReport| serde_json::to_string(&r).unwrap();
+        assert_eq!(
+            report(run.report(&outcomes)),
+            report(DesignReport::new(&design, &case, sc.waves.as_ref(), &outcomes))
+        );
+
+        let more = Designer::new(&sc, "test", DesignOptions { lives: Some(7), brute_force: false }).unwrap();
+        assert_eq!(more.design, DesignParams { lives: 7, ..design.clone() });
+        assert_eq!(more.fingerprint(), run.fingerprint(), "the count is not in the fingerprint");
+        let brute = Designer::new(&sc, "test", DesignOptions { lives: None, brute_force: true }).unwrap();
+        assert!(!brute.design.screen && !brute.case.screen);
+        assert_ne!(brute.fingerprint(), run.fingerprint());
+    }
+
+    /// A scenario without `[design]` is refused naming the front-end.
+    #[test]
+    fn a_scenario_without_a_design_is_refused_naming_who_asked() {
+        let text = include_str!("../../tests/data/small_design.toml");
+        // The last table (the file says so): cut from its header to the end.
+        let start = text.find("\n[design]").expect("a [design] table");
+        let sc = Scenario::from_toml(&text[..start], Path::new("s.toml"), Path::new(".")).expect("without [design]");
+        let e = Designer::new(&sc, "`caisson design`", DesignOptions::default()).unwrap_err();
+        assert!(e.to_string().contains("`caisson design` needs a [design] table"), "{e}");
+    }
+}
