@@ -2,8 +2,33 @@
 //! the dynamic model for every wave that can slide it (Shimosako & Takahashi 1999; Goda & Takagi
 //! 2000; docs/model.md §6.4), and the storms of a fragility analysis (docs/model.md §7).
 //!
+//! **The files**:
+//!
+//! - `params.rs`: the inputs, each checked where it is built: [`StormDistribution`],
+//!   [`ErrorModel`] and [`Errors`], [`LifeParams`], [`StormCase`] (what the storms act on),
+//!   [`FailureLimits`], [`WaveDraws`], [`StormInput`] (one storm at the structure),
+//!   [`DesignParams`];
+//! - `life.rs`: [`simulate_life`] (steps 1-4 below, storm by storm), `settle_life` (the still and
+//!   deferred waves at the life's end), [`run_lives`] (lives in parallel);
+//! - `storm.rs`: [`simulate_storm`] and `storm_from`: the storm's site at its water level
+//!   (`StormSite`), its random stream (`StormRng`), the drawing of its waves
+//!   (`draw_above_threshold`), what a life's storms reuse (`StormScratch`);
+//! - `screen.rs`: the screen's effective-load tests (`may_slide`, `heel_bound_pa`,
+//!   [`PSI_IMPULSE`]) and its per-storm grid over heights and periods (`StormScreen`);
+//! - `wave.rs`: one wave through both models (`WaveRun`): its loads, the screen's and the stick
+//!   bound's decisions, its run and what it records ([`base_heel_pressure_pa`]);
+//! - `outcome.rs`: [`StormOutcome`], whose fields are the columns of `lives.csv` and of the
+//!   checkpoint lines ([`LIFE_COLUMNS`]);
+//! - `statistics.rs`: [`capped_statistics`], [`LifeCounts`], [`ImpulsiveShare`],
+//!   [`HeelPressureExceedance`];
+//! - `tests.rs`: the unit tests of the private parts (the equivalences of the fast paths against
+//!   the plain path are `tests/equiv_lifetime.rs`).
+//!
+//! A design run is assembled from a scenario by [`crate::drive::design::Designer`]. What the
+//! fast paths below measured on the examples when they were introduced is in docs/history.md.
+//!
 //! **One life** (`life_years` years of storms, one per year by default, docs/model.md §6.4 steps
-//! 1-7; the other climates of [`super::climate`] change the steps as its docs say):
+//! 1-7; the other climates of [`crate::analysis::climate`] change the steps as its docs say):
 //!
 //! 1. annual maximum deep-water significant height H0 from an extreme-value distribution,
 //!    by inversion of a uniform U: Weibull F(H) = 1 − exp[−((H − B)/A)^k] (H ≥ B), or Gumbel
@@ -14,7 +39,7 @@
 //!    the crest freeboard shrinks by ζ, and the weight in water falls by ρ_w g B l ζ (the caisson
 //!    is more submerged); the foundation stiffness and the dynamic model's added mass stay at
 //!    their still-water values (a simplification), while the rigid block's added mass, 1.0855
-//!    ρ_w h'² l ([`super::rigid`]), is that of the storm's base depth h' + ζ;
+//!    ρ_w h'² l ([`crate::analysis::rigid`]), is that of the storm's base depth h' + ζ;
 //! 4. H1/3 and H_max at the structure by Goda's surf-zone formulas at the toe depth
 //!    ([`crate::waves::surf_zone`]), times the transformation error;
 //! 5. N Rayleigh heights of that H1/3, each limited to H_max (Goda's random-wave breaking), each
@@ -22,9 +47,9 @@
 //!    given its height ("Wave periods" below);
 //! 6. per wave: the loads of [`crate::loads::model::WaveLoadModel`] (regime by the breaking
 //!    criterion; the impulsive peak of a breaking wave by `[waves] breaking_load`) times the
-//!    wave-force error; friction coefficients times the friction error;
-//!    the wave is run through the dynamic model from rest (static equilibrium) and its permanent
-//!    sliding added; the rigid block (Shimosako model, [`super::rigid::RigidBlock`]) beside it.
+//!    wave-force error; friction coefficients times the friction error; the wave is run through the
+//!    dynamic model from rest (static equilibrium) and its permanent sliding added; the rigid block
+//!    (Shimosako model, [`crate::analysis::rigid::RigidBlock`]) beside it.
 //!
 //! Estimation errors are multipliers 1 + bias + COV·z, z standard normal truncated at ±k
 //! (Kim & Takayama 2003, doubly truncated; docs/model.md §6.4 step 4), drawn once per storm
@@ -39,44 +64,41 @@
 //! pulsating component, the bound of a load that rises over t_q = T/4 (Chopra §4.8, ramp load) —
 //! **or** if the seaward spring can lift off, (6 M_eff/B) f ≥ W' − U_eff: a rocking caisson
 //! ratchets shoreward by millimetres as its lifted springs re-contact, well below the sliding
-//! resistance (without this condition a full run differed from the screened one by 1 %,
-//! `tests/equiv_lifetime.rs`). M_eff is the moment about the base centre amplified like the forces,
-//! its pulsating part with the longer of T0 and the rocking period T_θ = 2π (m_θ/K_θ)^½ (K_θ = Σ
-//! k_y x_i²) in Ψ. f is the lift-off factor of the springs ([`Model::lift_off_factor`]): n equal
+//! resistance (`tests/equiv_lifetime.rs` holds a full run and the screened one together only with
+//! this condition). M_eff is the moment about the base centre amplified like the forces, its
+//! pulsating part with the longer of T0 and the rocking period T_θ = 2π (m_θ/K_θ)^½ (K_θ = Σ k_y
+//! x_i²) in Ψ. f is the lift-off factor of the springs ([`Model::lift_off_factor`]): n equal
 //! springs at x_i carry N_i = V/n + M x_i/Σx_j² statically, so the outermost one lifts at (6 M/B) ·
-//! n/(n + 1) = V (f = 10/11 for the 10 springs of the seed; f = 1 is the continuous linear base
-//! pressure, 6 M/B = V, which simulated 22 % more waves of the design example, none of which lifted
-//! or slid). The test is made per storm on a grid of 64 heights from 0 to H_max plus the breaker
-//! height at the wall; a wave whose grid cell or a neighbouring cell can slide has its own loads
-//! computed, and is simulated if they pass the test (a fifth of the waves near the threshold do
-//! not: they are screened too). The grid is skipped (every node false) in a storm where upper
-//! bounds of the loads over all heights up to H_max pass neither test
-//! ([`crate::loads::model::PeriodLoads::peak_bound`]: Goda's loads grow with the height, the
-//! impulsive peak of each breaking-wave load is bounded too, Eq. 30's impact by its value at the
-//! reduction 1, Goda's force with Takahashi's α* term by term, and there is none below the breaker
-//! height at the wall); in the other storms the nodes up to the highest node height where those
-//! bounds up to it pass neither test (found by bisection) are false without their loads, the same
-//! grid for a seventh of the loads (design example). The friction used is the smaller of μ_s and
-//! the rigid block's μ, so a screened wave slides neither model. The share of waves screened is
+//! n/(n + 1) = V (f = 10/11 for the 10 springs of the seed; f = 1 would be the continuous linear
+//! base pressure, 6 M/B = V). The test is made per storm on a grid of 64 heights from 0 to H_max
+//! plus the breaker height at the wall; a wave whose grid cell or a neighbouring cell can slide has
+//! its own loads computed, and is simulated if they pass the test (else it is screened too). The
+//! grid is skipped (every node false) in a storm where upper bounds of the loads over all heights
+//! up to H_max pass neither test ([`crate::loads::model::PeriodLoads::peak_bound`]: Goda's loads
+//! grow with the height, the impulsive peak of each breaking-wave load is bounded too, Eq. 30's
+//! impact by its value at the reduction 1, Goda's force with Takahashi's α* term by term, and there
+//! is none below the breaker height at the wall); in the other storms the nodes up to the highest
+//! node height where those bounds up to it pass neither test (found by bisection) are false without
+//! their loads, the same grid as every node's loads
+//! (`tests::the_bisected_screen_grid_is_every_nodes_grid`). The friction used is the smaller of μ_s
+//! and the rigid block's μ, so a screened wave slides neither model. The share of waves screened is
 //! reported; `screen = false` runs every wave (on the same waves, [`WaveDraws::EveryWave`], the
 //! screened run gives the same totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
-//! **The stick bound** (issue 19). The static test lets through many waves that
-//! then neither slide nor lift (its amplifications are bounds for any load shape; on the design
-//! example 156 010 of its 217 856 simulated waves moved no spring). A pulsating wave that passes
-//! it is then tested on the all-sticking response itself ([`super::stick_bound`]: the exact
-//! steady state of its crest and trough plus the modes' envelopes of the free vibration, at every
-//! instant of the wave): if that leaves the outer springs 5 % of their normal force at rest and
-//! the friction demand within 95 % of μ_s, no spring slips or lifts, the wave's sliding is
-//! exactly 0 and it is not run ([`StormCase::stick_bound`]). Impulsive waves are left to the
-//! engine.
+//! **The stick bound**. The static test lets through many waves that then neither slide nor lift
+//! (its amplifications are bounds for any load shape). A pulsating wave that passes it is then
+//! tested on the all-sticking response itself ([`crate::analysis::stick_bound`]: the exact steady
+//! state of its crest and trough plus the modes' envelopes of the free vibration, at every instant
+//! of the wave): if that leaves the outer springs 5 % of their normal force at rest and the
+//! friction demand within 95 % of μ_s, no spring slips or lifts, the wave's sliding is exactly 0
+//! and it is not run ([`StormCase::stick_bound`]). Impulsive waves are left to the engine.
 //!
-//! Only such a still wave's rotation θ_w is not known; its bound b_w is 0.2-4.2 % over the
-//! engine's rotation on the design example, and `ROTATION_RESERVE` r = 1.01 is a margin for a
-//! bound below it (θ_w ≤ r b_w); a wave is answered only if r b_w is below the rotation limit.
-//! The largest rotation may be a still wave's, so the waves whose r b_w exceeds the largest
-//! rotation known are kept on a list and **settled**: run after all, largest bound first, until
-//! the next one's r b_w is at most the largest rotation so far. When depends on who reads it:
+//! Only such a still wave's rotation θ_w is not known; its bound b_w is above the engine's rotation
+//! on every answered wave measured (docs/history.md), and `ROTATION_RESERVE` r = 1.01 is a margin
+//! for a bound below it (θ_w ≤ r b_w); a wave is answered only if r b_w is below the rotation
+//! limit. The largest rotation may be a still wave's, so the waves whose r b_w exceeds the largest
+//! rotation known are kept on a list and **settled**: run after all, largest bound first, until the
+//! next one's r b_w is at most the largest rotation so far. When depends on who reads it:
 //! - a storm alone ([`simulate_storm`]: fragility reads every storm's largest rotation) settles at
 //!   the storm's end;
 //! - a life ([`simulate_life`]: the design and sizing runs and the climates read only the life's
@@ -84,8 +106,7 @@
 //!   the still waves of all its storms (each kept with its storm's index; the storm's site is
 //!   rebuilt to run it). After each storm the list keeps only the waves whose r b_w exceeds the
 //!   life's largest rotation so far; should it hold more than `MAX_STILL_WAVES` (4096), it is
-//!   settled then (which empties it). The design example's lives run 617 still waves again
-//!   (17 233 when each storm settled).
+//!   settled then (which empties it).
 //!
 //! Why the settled largest rotation M is what running every wave gives, M*, to the bit: M is the
 //! largest rotation of the waves run, so M ≤ M*. A still wave not run was dropped or left when r
@@ -182,12 +203,11 @@
 //! next bound is at most the life's largest, unless it may fail the life by heel pressure (then in
 //! its place). The same holds for a still wave whose bound reaches it. So a life's largest heel
 //! pressure is exact wherever it is at or above the screen's heel pressure, and P(q_heel > q_a)
-//! with it; below, it is the largest of the waves run (a lower bound). On the design example the
-//! heel pressure costs 16 % more instructions (the lives run to their end another 25 %).
+//! with it; below, it is the largest of the waves run (a lower bound).
 //!
 //! **Random numbers**: one ChaCha8 stream per life (seed, stream = life index); per storm in
 //! order: U for H0, four truncated normals for the errors, U for the tide phase (and, only for
-//! the climates that need them, the draws [`super::climate`] lists). The waves of
+//! the climates that need them, the draws [`crate::analysis::climate`] lists). The waves of
 //! storm y (counting from 0 over the life) come from the same stream at word (y + 1) · 2^40
 //! ([`STORM_WAVE_WORDS_LOG2`]; about 6 words per wave, 8 with periods of their own, so a storm of
 //! up to 10¹¹ waves stays in its part): per drawn wave, U for its exceedance probability, one

@@ -310,7 +310,7 @@ impl LifeParams {
 
     /// The deep-water H0 of a storm from the uniform `u` (before its error): the annual maximum
     /// F⁻¹(u), or an exceedance of the threshold t, F⁻¹(F(t) + u (1 − F(t))) (peaks over
-    /// threshold; [`super::climate`]).
+    /// threshold; [`crate::analysis::climate`]).
     pub fn storm_height_m(&self, u: f64) -> f64 {
         match self.climate.storms {
             StormModel::AnnualMaxima => self.storms.quantile_m(u),
@@ -334,8 +334,8 @@ pub struct StormCase<'a> {
     pub screen: bool,
     /// With the screen, answer the pulsating waves that the bound of the all-sticking response
     /// shows can neither slide nor lift the caisson without running them (module docs, "The
-    /// screen"; [`super::stick_bound`]): `false` runs them as up to results version 20 (the
-    /// tests' reference).
+    /// screen"; [`crate::analysis::stick_bound`]): `false` runs them all (the tests'
+    /// reference).
     pub stick_bound: bool,
     /// With the stick bound, run the answered waves whose rotation bound may exceed the largest
     /// rotation (module docs, "The stick bound"), so that `max_rotation_rad` is every wave's:
@@ -375,9 +375,9 @@ pub enum WaveDraws {
     /// screen lets through (the default).
     #[default]
     AboveThreshold,
-    /// Every wave drawn and tested against the screen (as up to results version 8): the tests'
-    /// reference. It draws the same waves as a run with the screen off, so the two compare wave
-    /// for wave; the default must agree with it in distribution.
+    /// Every wave drawn and tested against the screen (the drawing before the one above the
+    /// threshold): the tests' reference. It draws the same waves as a run with the screen off, so
+    /// the two compare wave for wave; the default must agree with it in distribution.
     EveryWave,
 }
 

@@ -49,7 +49,7 @@ pub fn life_statistics(values: &[f64], thresholds_m: &[f64]) -> LifeStatistics {
 }
 
 /// What the life warnings need of a model's lives: a design run's lives reduce to it, and a
-/// sizing candidate keeps it ([`super::sizing::Candidate::life_counts`]).
+/// sizing candidate keeps it ([`crate::analysis::sizing::Candidate::life_counts`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct LifeCounts {
     pub lives: usize,

@@ -48,8 +48,8 @@ impl StormScratch {
     }
 }
 
-/// A wave the linear bound answered ([`super::stick_bound`]): the bound on its rotation, rad,
-/// and what runs it again (its storm's index among the life's storms, its height, rise-time
+/// A wave the linear bound answered ([`crate::analysis::stick_bound`]): the bound on its rotation,
+/// rad, and what runs it again (its storm's index among the life's storms, its height, rise-time
 /// deviate and period), should the storm's or the life's largest rotation need it (module docs,
 /// "The screen").
 #[derive(Debug, Clone, Copy)]
@@ -72,14 +72,12 @@ pub(super) enum Settle {
 }
 
 /// Most still waves a life keeps unsettled (module docs, "The screen"): beyond, they are settled
-/// at the end of the storm (which empties the list). Each is 40 bytes; the design example's lives
-/// keep a few.
+/// at the end of the storm (which empties the list). Each is 40 bytes.
 pub(super) const MAX_STILL_WAVES: usize = 4096;
 
 /// A still wave whose rotation bound times this factor exceeds the storm's largest rotation so
 /// far is run after all (module docs, "The screen"): a margin for a bound below the rotation the
-/// engine reports, which has not been seen (the bound was 0.2-4.2 % above it on every answered
-/// wave of the design and sizing examples, 98 142 and 832 538 waves, results version 21).
+/// engine reports, which has not been seen (docs/history.md, "The stick bound").
 pub(super) const ROTATION_RESERVE: f64 = 1.01;
 
 /// A wave drawn above the screen's threshold: its place in the storm (a uniform on [0, 1): the

@@ -229,7 +229,7 @@ impl WaveRun<'_> {
 
     /// The bound on the rotation of a pulsating wave that the linear bound shows can neither
     /// slide nor lift the caisson, nor rotate it near the rocking or failure limits
-    /// ([`super::stick_bound`]); `None` for any other wave.
+    /// ([`crate::analysis::stick_bound`]); `None` for any other wave.
     pub(super) fn still_rotation_rad(&self, event: &WaveEvent, period_s: f64) -> Option<f64> {
         if event.impulse.is_some() {
             return None;
