@@ -1,4 +1,4 @@
-//! Architecture: `analysis/` in floors, no circle (ARCHITECTURE.md, "analysis in floors").
+//! Architecture: `analysis/` in floors, no circle (ARCHITECTURE.md, "The library's layers").
 //!
 //! Every module of `crates/caisson/src/analysis` is given a floor: the model pieces (0), the
 //! drivers (1) and the judgement (2). A module may name (in code, not in comments or its tests)
