@@ -199,7 +199,7 @@ pub enum ErrorScope {
 }
 
 impl ErrorScope {
-    pub(super) fn is_per_storm(&self) -> bool {
+    fn is_per_storm(&self) -> bool {
         *self == ErrorScope::Storm
     }
 }
@@ -514,6 +514,6 @@ impl DesignParams {
 
 /// A heel pressure of a design in [10 kPa, 10 MPa] (the range of `[size]
 /// allowable_heel_pressure_kpa`), refused naming `quantity`.
-pub(super) fn heel_pressure_limit(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
+fn heel_pressure_limit(quantity: &'static str, v: f64) -> Result<f64, ParamError> {
     interval(quantity, v, 1e4, 1e7, true)
 }

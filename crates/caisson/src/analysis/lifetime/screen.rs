@@ -12,10 +12,10 @@ use crate::waves::periods::{self, WavePeriods};
 /// Dynamic amplification bound on impulsive components (module docs).
 pub const PSI_IMPULSE: f64 = 2.0;
 /// Cells of the per-storm screen grid over the heights.
-pub(super) const SCREEN_CELLS: usize = 64;
+const SCREEN_CELLS: usize = 64;
 /// Cells of the per-storm screen grid over the periods, when the waves have periods of their own
 /// (module docs, "Wave periods"): uniform in u = 1 − τ̄/τ over the periods drawn.
-pub(super) const PERIOD_CELLS: usize = 8;
+const PERIOD_CELLS: usize = 8;
 
 /// The screen's amplifications and resistance at one wave period (module docs).
 #[derive(Debug, Clone, Copy)]
@@ -76,7 +76,7 @@ pub(super) fn heel_bound_pa(e: &PeakComponents, b: &ScreenBound) -> f64 {
 
 /// Whether the screen lets a wave through: it may slide or lift the caisson ([`may_slide`]), or
 /// press its heel to the screen's heel pressure ([`heel_bound_pa`]).
-pub(super) fn may_pass(e: &PeakComponents, b: &ScreenBound) -> bool {
+fn may_pass(e: &PeakComponents, b: &ScreenBound) -> bool {
     may_slide(e, b) || heel_bound_pa(e, b) >= b.heel_screen_pa
 }
 
@@ -119,9 +119,9 @@ pub(super) struct StormScreen {
     pub(super) first_node: Option<usize>,
     pub(super) dh: f64,
     /// τ̄, and u = 1 − τ̄/τ at the first period node and its step.
-    pub(super) mean_period_s: f64,
-    pub(super) u0: f64,
-    pub(super) du: f64,
+    mean_period_s: f64,
+    u0: f64,
+    du: f64,
     /// Nodes of the rows run that the bound left false without their loads (what the tests see
     /// of the bisection).
     #[cfg_attr(not(test), allow(dead_code))]
@@ -208,13 +208,13 @@ impl StormScreen {
 
     /// The period cells of the grid.
     #[cfg(test)]
-    pub(super) fn period_cells(&self) -> usize {
+    fn period_cells(&self) -> usize {
         (self.periods - 1).max(1)
     }
 
     /// Cell (c, j) = [c dh, (c + 1) dh] × [period node j, j + 1] may slide if a node within one
     /// cell of it may, in both directions.
-    pub(super) fn cell_may_slide(&self, c: usize, j: usize) -> bool {
+    fn cell_may_slide(&self, c: usize, j: usize) -> bool {
         // Nodes c − 1 to c + 2 (within the grid): the bits below c + 3 less those below c − 1.
         let below = |i: usize| (1_u128 << i) - 1;
         let window = below((c + 3).min(SCREEN_CELLS + 1)) & !below(c.saturating_sub(1));

@@ -219,7 +219,7 @@ impl StormSite {
 
     /// The heel pressure of the caisson at rest at the storm's water level, Pa: W'/(B l), uniform
     /// (the weight acts at the base centre).
-    pub(super) fn rest_heel_pressure_pa(&self) -> f64 {
+    fn rest_heel_pressure_pa(&self) -> f64 {
         base_heel_pressure_pa(self.weight_n, 0.0, self.width_m, self.length_m)
     }
 
@@ -252,7 +252,7 @@ impl StormInput {
 
     /// The period of a wave of height `height_m` (module docs, "Wave periods"): T1/3 (nothing
     /// drawn), or from one uniform of `rng`.
-    pub(super) fn wave_period_s(&self, height_m: f64, rng: &mut LoadRng) -> f64 {
+    fn wave_period_s(&self, height_m: f64, rng: &mut LoadRng) -> f64 {
         match self.periods {
             WavePeriods::Significant => self.period_s,
             p => p.period_s(height_m, self.h13_m, self.period_s, rng.gen()),
@@ -338,7 +338,7 @@ pub(super) fn storm_from(
 }
 
 /// The smallest and largest height of a storm's waves, m: a thousandth of H1/3, and H_max.
-pub(super) fn height_limits(s: &StormInput) -> (f64, f64) {
+fn height_limits(s: &StormInput) -> (f64, f64) {
     (1e-3 * s.h13_m.max(1e-6), s.hmax_m.max(1e-6))
 }
 

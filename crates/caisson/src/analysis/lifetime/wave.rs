@@ -18,11 +18,11 @@ use std::cell::OnceCell;
 /// What a wave did besides sliding: the largest rotation, whether part of the base lifted and
 /// the largest heel pressure.
 #[derive(Debug, Clone, Copy, Default)]
-pub(super) struct WaveWatch {
+struct WaveWatch {
     pub(super) max_rotation_rad: f64,
     pub(super) lifted: bool,
     /// Pa ([`base_heel_pressure_pa`] of the springs' resultant).
-    pub(super) max_heel_pressure_pa: f64,
+    max_heel_pressure_pa: f64,
     /// B and the caisson's length l, m.
     pub(super) width_m: f64,
     pub(super) length_m: f64,
@@ -206,20 +206,20 @@ impl WaveRun<'_> {
     }
 
     /// The largest heel pressure known in the life (or storm) so far, Pa.
-    pub(super) fn heel_known_pa(&self, out: &StormOutcome) -> f64 {
+    fn heel_known_pa(&self, out: &StormOutcome) -> f64 {
         1e3 * out.max_heel_pressure_kpa.max(self.heel_floor_kpa)
     }
 
     /// Whether a wave that neither slides nor lifts the caisson and may press its heel to
     /// `heel_pa` can run at the storm's (or life's) end: unless it may fail the life by heel
     /// pressure (then it runs in its place, so that the failing wave is the first).
-    pub(super) fn defers_heel(&self, heel_pa: f64) -> bool {
+    fn defers_heel(&self, heel_pa: f64) -> bool {
         self.st.failure.and_then(|f| f.heel_pressure_pa).is_none_or(|q| heel_pa <= q)
     }
 
     /// Keep the wave of height `h`, deviate `z` and period `period_s`, whose heel pressure may
     /// reach `heel_pa`, for the storm's (or life's) end.
-    pub(super) fn defer_heel(&mut self, heel_pa: f64, h: f64, z: f64, period_s: f64) {
+    fn defer_heel(&mut self, heel_pa: f64, h: f64, z: f64, period_s: f64) {
         let storm = match self.settle {
             Settle::Storm => 0,
             Settle::Life { storm, .. } => storm,
@@ -230,7 +230,7 @@ impl WaveRun<'_> {
     /// The bound on the rotation of a pulsating wave that the linear bound shows can neither
     /// slide nor lift the caisson, nor rotate it near the rocking or failure limits
     /// ([`crate::analysis::stick_bound`]); `None` for any other wave.
-    pub(super) fn still_rotation_rad(&self, event: &WaveEvent, period_s: f64) -> Option<f64> {
+    fn still_rotation_rad(&self, event: &WaveEvent, period_s: f64) -> Option<f64> {
         if event.impulse.is_some() {
             return None;
         }
@@ -352,7 +352,7 @@ impl WaveRun<'_> {
 
     /// Record the failure the wave `event` just run brings, if the life (or storm) had not
     /// failed: its modes and whether it was impulsive.
-    pub(super) fn record_failure(&mut self, out: &mut StormOutcome, event: &WaveEvent) {
+    fn record_failure(&mut self, out: &mut StormOutcome, event: &WaveEvent) {
         if !self.failed {
             if let Some(f) = self.st.failure {
                 let [sliding, rotation, heel] = out.beyond(&f);
