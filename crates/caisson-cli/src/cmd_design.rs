@@ -10,7 +10,7 @@
 //!
 //! **Checkpoint** (`DIR/checkpoint.jsonl`, or `--checkpoint FILE`): a header line with the
 //! fingerprint of what every life depends on (the typed scenario, the screen and the stepping of
-//! `--brute-force`; [`design_fingerprint`]), the lives the run was asked for, whether it was
+//! `--brute-force`; [`Designer::fingerprint`]), the lives the run was asked for, whether it was
 //! brute force, and the tool and results versions, then one JSON line per finished life, written
 //! whole (one `write`) as each life ends. Each life line ends with
 //! `"check"`: the FNV-1a of the header line and of the line itself, so a line edited, copied from
@@ -24,14 +24,15 @@
 //! **Durability**: each line is written whole with one `write` as its life ends, so a process that
 //! is stopped (Ctrl-C, `kill -9`) loses none: the line is in the operating system's cache. Against
 //! a crash of the machine (power, kernel) the checkpoint is flushed to disk (`fdatasync`) by a
-//! background thread at most once a second while lines come in ([`SYNC_INTERVAL`]), and once
+//! background thread at most once a second while lines come in
+//! ([`caisson::drive::checkpoint_file::SYNC_INTERVAL`]), and once
 //! more when the run ends: at most the lives finished in the last second before a crash are lost
 //! (and recomputed by `--resume`; a line cut short is dropped). A flush per line would cost about
 //! 3.5 ms each on the project's machine, under the checkpoint's mutex: 17 s for the 5000 lives of
 //! the design example (a half-minute run) instead of one flush a second (docs/cli.md).
 //! A new checkpoint (not `--resume`) is created (its header written, flushed and renamed into
 //! place, the directory flushed) by a thread of its own while the first lives run: the lives
-//! that finish before it is open wait in memory ([`Slot`]) and are appended, in the order they
+//! that finish before it is open wait in memory ([`Slot`](caisson::drive::checkpoint_file::Slot)) and are appended, in the order they
 //! finished, as soon as it is. Creating it takes 20-40 ms of waiting on the disk on the project's
 //! machine, 2-4 % of the design example's second. If it cannot be created the run stops at the
 //! next life with the error naming the file, as it did before any life ran.
@@ -43,358 +44,25 @@
 //! running and the next run removes it (with a note on stderr); elsewhere the error says to
 //! remove it by hand.
 
+use crate::checkpoint_file::{
+    self, life_line, read_checkpoint, CheckpointLock, CheckpointWriter, Header, Lines, Reader, Slot,
+};
 use crate::cli::DesignArgs;
 use crate::input_err;
-use crate::output::{
-    check_out_dir, ensure_dir, pretty, progress, remove_stale_temporaries, report_json, with_threads, write_atomic,
-    Lock,
-};
+use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormCase, StormOutcome, LIFE_COLUMNS};
-use caisson::dynamics::Stepping;
-use caisson::report::design::{design_fingerprint, DesignReport};
+use caisson::analysis::lifetime::{LifeColumn, StormOutcome, LIFE_COLUMNS};
+use caisson::drive::design::{DesignOptions, Designer};
+use caisson::report::design::DesignReport;
 use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::io::{Read, Write};
+use std::io::Write;
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
-
-pub(crate) use caisson::report::checkpoint::{life_line, read_line_limited, DesignHeader as Header, MAX_LINE_BYTES};
-use caisson::report::checkpoint::{CheckpointError, DesignCheckpoint as Checkpoint, LineError, LineFault};
-
-/// Who reads a checkpoint: the words of its errors.
-pub(crate) struct Reader {
-    /// How a message starts: `--resume` or `shard DIR`.
-    pub who: String,
-    /// What the fingerprint is compared with: `this run` or the scenario file.
-    pub this: String,
-    /// What to do when the checkpoint cannot be used at all.
-    pub again: String,
-    /// What to do about a refused life line.
-    pub line_fix: String,
-}
-
-impl Reader {
-    /// The reader of `--resume`.
-    fn resume() -> Self {
-        let again = "run without --resume to start again".to_string();
-        Reader {
-            who: "--resume".into(),
-            this: "this run".into(),
-            line_fix: format!("remove that line (and any after it) to keep the other lives, or {again}"),
-            again,
-        }
-    }
-}
-
-/// Open a checkpoint or shard for reading: a regular file (not a device such as /dev/zero, a
-/// FIFO or a directory, which could be read for ever), read no further than its length when
-/// opened.
-pub(crate) fn open_checkpoint(path: &Path, who: &str) -> Result<std::io::BufReader<std::io::Take<std::fs::File>>> {
-    let cannot = |e: String| input_err(format!("{who}: cannot read the checkpoint {}: {e}", path.display()));
-    // Checked before it is opened too: opening a FIFO waits for a writer.
-    if std::fs::metadata(path).is_ok_and(|m| !m.is_file()) {
-        return Err(cannot("it is not a regular file (a checkpoint is a file written by `caisson design`)".into()));
-    }
-    let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string()))?;
-    let meta = file.metadata().map_err(|e| cannot(e.to_string()))?;
-    if !meta.is_file() {
-        return Err(cannot("it is not a regular file (a checkpoint is a file written by `caisson design`)".into()));
-    }
-    Ok(std::io::BufReader::new(file.take(meta.len())))
-}
-
-/// Read a checkpoint with the library's reader ([`caisson::report::checkpoint::read_design`]):
-/// a header of this format and results version whose fingerprint is `fingerprint_for(header)`,
-/// then every complete line a life of it, each life once; its refusals worded for `reader` with
-/// the file's name. `on_life` is called once per life read.
-pub(crate) fn read_checkpoint(
-    path: &Path,
-    reader: &Reader,
-    fingerprint_for: &dyn Fn(&Header) -> String,
-    on_life: &dyn Fn(),
-) -> Result<Checkpoint> {
-    let file = open_checkpoint(path, &reader.who)?;
-    caisson::report::checkpoint::read_design(file, fingerprint_for, on_life)
-        .map_err(|e| checkpoint_error(path, reader, e))
-}
-
-/// A checkpoint's refusal in the words of `reader`, naming the file (and the line).
-fn checkpoint_error(path: &Path, reader: &Reader, e: CheckpointError) -> anyhow::Error {
-    let Reader { who, this, again, line_fix } = reader;
-    let path_text = path.display();
-    match e {
-        CheckpointError::Io(e) => anyhow::Error::new(e).context(format!("reading the checkpoint {path_text}")),
-        CheckpointError::Format { format, caisson_version } => input_err(format!(
-            "{who}: the checkpoint {path_text} is of format {format} (caisson {caisson_version}), this caisson reads format {} (whose lines carry a check and whose header gives the range of lives); {again}",
-            caisson::report::checkpoint::DESIGN_FORMAT
-        )),
-        CheckpointError::NotAHeader => input_err(format!(
-            "{who}: {path_text} line 1 is not a caisson design checkpoint header (of results version {}); {again}",
-            caisson::RESULTS_VERSION
-        )),
-        CheckpointError::ResultsVersion { results_version, caisson_version } => input_err(format!(
-            "{who}: the checkpoint {path_text} holds results version {results_version} (caisson {caisson_version}), this caisson {} computes results version {}; its lives would not match: {again}",
-            caisson::VERSION,
-            caisson::RESULTS_VERSION
-        )),
-        CheckpointError::Fingerprint { found, expected } => input_err(format!(
-            "{who}: the checkpoint {path_text} was written for a different scenario or options (fingerprint {found}, {this} {expected}: the caisson, foundation, solver, waves, [design] life model or seed, or --brute-force differ); {again}"
-        )),
-        // Converted line ends: converting them back is the fix, not removing lines.
-        CheckpointError::Line { line, fault: fault @ LineFault::CrLf } => {
-            input_err(format!("{who}: {path_text} line {line} {fault}"))
-        }
-        CheckpointError::Line { line, fault } => {
-            let why = match fault {
-                LineFault::TooLong { len } => format!(
-                    "is {len} bytes long, longer than any life line ({MAX_LINE_BYTES} bytes at most): the file is damaged"
-                ),
-                LineFault::Refused(LineError::Malformed | LineError::NotARecord(_)) => {
-                    "is not a life line of a caisson design checkpoint".into()
-                }
-                fault => fault.to_string(),
-            };
-            input_err(format!("{who}: {path_text} line {line} {why}; {line_fix}"))
-        }
-    }
-}
-
-/// The longest time a finished life's line waits before it is flushed to disk (module docs).
-const SYNC_INTERVAL: std::time::Duration = std::time::Duration::from_secs(1);
-
-/// What the checkpoint's flushing thread and the writer share.
-#[derive(Default)]
-struct SyncState {
-    /// Lines were written since the last flush.
-    dirty: bool,
-    /// The run has ended: flush once more and stop.
-    stop: bool,
-    /// The first flush that failed.
-    error: Option<std::io::Error>,
-    /// Flushes made.
-    flushes: u64,
-}
-
-/// The thread that flushes the checkpoint to disk at most once per [`SYNC_INTERVAL`] while lines
-/// are written (module docs).
-struct Syncer {
-    state: std::sync::Arc<(Mutex<SyncState>, std::sync::Condvar)>,
-    thread: Option<std::thread::JoinHandle<()>>,
-}
-
-impl Syncer {
-    fn start(file: std::fs::File) -> Self {
-        let state = std::sync::Arc::new((Mutex::new(SyncState::default()), std::sync::Condvar::new()));
-        let shared = state.clone();
-        let thread = std::thread::spawn(move || {
-            let (lock, cv) = &*shared;
-            let mut g = lock.lock().unwrap_or_else(|e| e.into_inner());
-            loop {
-                while !g.dirty && !g.stop {
-                    g = cv.wait(g).unwrap_or_else(|e| e.into_inner());
-                }
-                let stop = g.stop;
-                g.dirty = false;
-                drop(g);
-                let started = std::time::Instant::now();
-                let result = file.sync_data();
-                g = lock.lock().unwrap_or_else(|e| e.into_inner());
-                g.flushes += 1;
-                if let Err(e) = result {
-                    g.error.get_or_insert(e);
-                }
-                if stop {
-                    return;
-                }
-                // At most one flush per interval: wait out its rest unless the run ends.
-                while !g.stop {
-                    let left = SYNC_INTERVAL.saturating_sub(started.elapsed());
-                    if left.is_zero() {
-                        break;
-                    }
-                    g = cv.wait_timeout(g, left).unwrap_or_else(|e| e.into_inner()).0;
-                }
-            }
-        });
-        Syncer { state, thread: Some(thread) }
-    }
-
-    /// A line was written. Only the first line since a flush wakes the thread (the later ones go
-    /// with it), so lines that come in fast cost a lock each, not a wake-up.
-    fn written(&self) {
-        let (lock, cv) = &*self.state;
-        let first = !std::mem::replace(&mut lock.lock().unwrap_or_else(|e| e.into_inner()).dirty, true);
-        if first {
-            cv.notify_one();
-        }
-    }
-
-    /// Flush once more and stop the thread; the first flush error, if any.
-    fn finish(&mut self) -> Option<std::io::Error> {
-        let (lock, cv) = &*self.state;
-        {
-            let mut g = lock.lock().unwrap_or_else(|e| e.into_inner());
-            g.stop = true;
-            g.dirty = true;
-        }
-        cv.notify_one();
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
-        }
-        lock.lock().unwrap_or_else(|e| e.into_inner()).error.take()
-    }
-}
-
-impl Drop for Syncer {
-    fn drop(&mut self) {
-        self.finish();
-    }
-}
-
-/// The open checkpoint of a run: lines are appended whole; a line that fails to be written is cut
-/// away again (the file keeps only complete lines), and the error names the file. Lines reach the
-/// disk within [`SYNC_INTERVAL`] ([`Syncer`]) and at [`CheckpointWriter::finish`].
-struct CheckpointWriter {
-    path: PathBuf,
-    file: std::fs::File,
-    header_line: String,
-    len: u64,
-    syncer: Syncer,
-    /// The lines appended by this run, by life: the ordered rewrite at the end reuses them.
-    lines: Lines,
-}
-
-impl CheckpointWriter {
-    /// A new checkpoint holding only `header_line` (written to a temporary file and renamed, so
-    /// a symbolic link at the path is replaced, not followed).
-    fn create(path: &Path, header_line: String) -> Result<Self> {
-        write_atomic(path, format!("{header_line}\n").as_bytes())?;
-        Self::open(path, header_line, None)
-    }
-
-    /// Append to the checkpoint read by `--resume`, first cutting away a torn last line.
-    fn resume(path: &Path, cp: &Checkpoint) -> Result<Self> {
-        if cp.torn_bytes > 0 {
-            eprintln!(
-                "Note: {}: dropped an incomplete last line ({} bytes, a run stopped while writing it)",
-                path.display(),
-                cp.torn_bytes
-            );
-        }
-        Self::open(path, cp.header_line.clone(), Some(cp.complete_len))
-    }
-
-    fn open(path: &Path, header_line: String, truncate_to: Option<u64>) -> Result<Self> {
-        let ctx = || format!("opening the checkpoint {}", path.display());
-        let file = std::fs::OpenOptions::new().append(true).open(path).with_context(ctx)?;
-        if let Some(len) = truncate_to {
-            file.set_len(len).with_context(ctx)?;
-        }
-        let len = file.metadata().with_context(ctx)?.len();
-        let syncer = Syncer::start(file.try_clone().with_context(ctx)?);
-        Ok(CheckpointWriter { path: path.to_path_buf(), file, header_line, len, syncer, lines: BTreeMap::new() })
-    }
-
-    /// Flush the last lines to disk and stop flushing; an error of any flush names the file. The
-    /// lines appended, by life.
-    fn finish(mut self) -> Result<Lines> {
-        match self.syncer.finish() {
-            None => Ok(std::mem::take(&mut self.lines)),
-            Some(e) => Err(anyhow::Error::new(e).context(format!("writing the checkpoint {}", self.path.display()))),
-        }
-    }
-
-    fn append(&mut self, life: usize, outcome: &StormOutcome) -> Result<()> {
-        let line = life_line(&self.header_line, life, outcome);
-        match self.file.write_all(line.as_bytes()) {
-            Ok(()) => {
-                self.len += line.len() as u64;
-                self.syncer.written();
-                self.lines.insert(life, line);
-                Ok(())
-            }
-            Err(e) => {
-                // Keep only complete lines (a full disk may have taken part of this one).
-                let _ = self.file.set_len(self.len);
-                Err(anyhow::Error::new(e).context(format!("writing the checkpoint {}", self.path.display())))
-            }
-        }
-    }
-}
-
-/// Where the lives' lines go while a new checkpoint is being created (module docs, "Durability"):
-/// to the writer once it is open, to the backlog before, in the order the lives finished.
-struct Slot {
-    writer: Option<CheckpointWriter>,
-    backlog: Vec<(usize, StormOutcome)>,
-    /// The checkpoint could not be created (the error is the opening thread's).
-    failed: bool,
-}
-
-impl Slot {
-    fn open(writer: CheckpointWriter) -> Self {
-        Slot { writer: Some(writer), backlog: Vec::new(), failed: false }
-    }
-
-    fn opening() -> Self {
-        Slot { writer: None, backlog: Vec::new(), failed: false }
-    }
-
-    /// The checkpoint is open: the lives waiting for it are appended first.
-    fn opened(&mut self, writer: CheckpointWriter) -> Result<()> {
-        self.writer = Some(writer);
-        self.flush_backlog()
-    }
-
-    fn flush_backlog(&mut self) -> Result<()> {
-        let Some(w) = self.writer.as_mut() else { return Ok(()) };
-        for (i, o) in std::mem::take(&mut self.backlog) {
-            w.append(i, &o)?;
-        }
-        Ok(())
-    }
-
-    /// Append life `i`, or keep it for the checkpoint that is being created. Whether the run goes
-    /// on: not if the checkpoint could not be created or a line could not be written.
-    fn append(&mut self, i: usize, o: &StormOutcome) -> Result<bool> {
-        if self.failed {
-            return Ok(false);
-        }
-        match self.writer.as_mut() {
-            Some(w) => w.append(i, o).map(|()| true),
-            None => {
-                self.backlog.push((i, *o));
-                Ok(true)
-            }
-        }
-    }
-}
-
-/// The lock of a checkpoint: `CHECKPOINT.lock` ([`Lock`]: the process id and the command;
-/// removed on drop and by the Ctrl-C handler). Taking it also removes a temporary checkpoint
-/// that a run killed while creating it left beside it.
-pub(crate) struct CheckpointLock {
-    _lock: Lock,
-}
-
-impl CheckpointLock {
-    pub(crate) fn acquire(checkpoint: &Path, command: &str) -> Result<Self> {
-        let mut name = checkpoint.as_os_str().to_owned();
-        name.push(".lock");
-        let what = format!("the checkpoint {}", checkpoint.display());
-        let lock = Lock::acquire(Path::new(&name), command, &what, "give another --out")?;
-        if let (Some(dir), Some(file)) = (checkpoint.parent(), checkpoint.file_name()) {
-            let dir = if dir.as_os_str().is_empty() { Path::new(".") } else { dir };
-            remove_stale_temporaries(dir, &|stem| file == stem);
-        }
-        Ok(CheckpointLock { _lock: lock })
-    }
-}
 
 /// `lives.csv`: one row per life, its index first.
 fn lives_csv<'a>(lives: impl Iterator<Item = (usize, &'a StormOutcome)>) -> Result<Vec<u8>> {
@@ -501,27 +169,25 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     )
 }
 
-/// The scenario and `[design]` of a design file (`--lives` applied), with `--brute-force`: every
-/// wave through the dynamic model at the fixed step dt_s.
-/// (`what` names the command in the error of a file without `[design]`.)
-pub(crate) fn load_design(
-    path: &Path,
+/// The scenario of a design file, with `--brute-force` every wave through the dynamic model at
+/// the fixed step dt_s ([`caisson::drive::design::brute_force`]); its run is
+/// [`Designer::new`] with `--lives` and `--brute-force`.
+pub(crate) fn load_design(path: &Path, brute_force: bool) -> Result<Scenario> {
+    let sc = scenario::load(path).map_err(input_err)?;
+    if brute_force {
+        return caisson::drive::design::brute_force(sc).map_err(input_err);
+    }
+    Ok(sc)
+}
+
+/// The design run of `sc` (`what` names the command in the error of a file without `[design]`).
+pub(crate) fn designer<'a>(
+    sc: &'a Scenario,
     what: &str,
     lives: Option<usize>,
     brute_force: bool,
-) -> Result<(Scenario, DesignParams)> {
-    let mut sc = scenario::load(path).map_err(input_err)?;
-    let mut design = sc.design_for(what).map_err(input_err)?.clone();
-    if let Some(n) = lives {
-        // 1 to 1e7 (checked by the parser, as `[design] lives`).
-        design.lives = n;
-    }
-    if brute_force {
-        design.screen = false;
-        let solver = caisson::dynamics::SolverParams { stepping: Stepping::Fixed, ..sc.solver() };
-        sc = sc.with_solver(solver).map_err(input_err)?;
-    }
-    Ok((sc, design))
+) -> Result<Designer<'a>> {
+    Designer::new(sc, what, DesignOptions { lives, brute_force }).map_err(input_err)
 }
 
 /// The checkpoint of a run at `path`: read by `--resume` (`resume`) and appended to, or created
@@ -536,11 +202,11 @@ fn open_run_checkpoint(
 ) -> Result<(BTreeMap<usize, StormOutcome>, CheckpointWriter)> {
     if resume {
         let cp = read_checkpoint(path, &Reader::resume(), &|_| fingerprint.to_string(), &|| {})?;
-        let w = CheckpointWriter::resume(path, &cp)?;
+        let w = checkpoint_file::resume(path, &cp)?;
         Ok((cp.lives, w))
     } else {
         let header = Header::new(fingerprint.to_string(), range, brute_force);
-        Ok((BTreeMap::new(), CheckpointWriter::create(path, header.line())?))
+        Ok((BTreeMap::new(), checkpoint_file::create(path, header.line())?))
     }
 }
 
@@ -585,7 +251,9 @@ fn write_shard(
 }
 
 pub fn run(args: DesignArgs) -> Result<()> {
-    let (sc, design) = load_design(&args.scenario, "`caisson design`", args.lives, args.brute_force)?;
+    let sc = load_design(&args.scenario, args.brute_force)?;
+    let run = designer(&sc, "`caisson design`", args.lives, args.brute_force)?;
+    let design = &run.design;
     // A shard runs its range; a whole run lives 0..N.
     let range = args.life_range.clone().unwrap_or(0..design.lives);
     let shard = args.life_range.is_some();
@@ -599,14 +267,11 @@ pub fn run(args: DesignArgs) -> Result<()> {
             "--resume needs the checkpoint: give --out DIR (DIR/checkpoint.jsonl) or --checkpoint FILE",
         ));
     }
-    let case = sc.storm_case(design.screen).map_err(input_err)?;
-    let waves = sc.waves_for("`caisson design`").map_err(input_err)?;
     // The lives this run computes: a shard's range, not the scenario's whole count. Its pilots
     // run on the run's threads.
-    let pilot = DesignParams { lives: range.len(), ..design.clone() };
-    let estimate = with_threads(args.threads, || caisson::analysis::work::design(&case, &pilot, waves))?;
+    let estimate = with_threads(args.threads, || run.estimate(range.len()))?;
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
-    let fingerprint = design_fingerprint(&case, &design);
+    let fingerprint = run.fingerprint();
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
     if let Some(parent) = checkpoint.as_deref().and_then(Path::parent).filter(|p| !p.as_os_str().is_empty()) {
         ensure_dir(parent)?;
@@ -643,15 +308,15 @@ pub fn run(args: DesignArgs) -> Result<()> {
     let (computed, opened) = std::thread::scope(|scope| {
         let opener = opening.zip(slot.as_ref()).map(|((path, header_line), slot)| {
             scope.spawn(move || {
-                let opened = CheckpointWriter::create(path, header_line.to_string())
-                    .and_then(|w| slot.lock().unwrap_or_else(|e| e.into_inner()).opened(w));
+                let opened = checkpoint_file::create(path, header_line.to_string())
+                    .and_then(|w| Ok(slot.lock().unwrap_or_else(|e| e.into_inner()).opened(w)?));
                 if opened.is_err() {
                     slot.lock().unwrap_or_else(|e| e.into_inner()).failed = true;
                 }
                 opened
             })
         });
-        let computed = compute_lives(&case, &design, &todo, slot.as_ref(), &pb, args.threads, stop_after);
+        let computed = compute_lives(&run, &todo, slot.as_ref(), &pb, args.threads, stop_after);
         (computed, opener.map_or(Ok(()), |o| o.join().expect("the checkpoint's opening thread panicked")))
     });
     // The checkpoint's own error first: the run stopped because of it.
@@ -680,18 +345,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, args.out.as_deref(), &keep)
+    report_lives(&args.scenario, &run, &lives, args.json, args.out.as_deref(), &keep)
 }
-
-/// Checkpoint lines as written, by life.
-type Lines = BTreeMap<usize, String>;
 
 /// The lives `todo` on `threads` workers, each appended to the checkpoint (or kept for it while it
 /// is being created: [`Slot`]) as it finishes; stops early after `stop_after` lives, at Ctrl-C, or
 /// when the checkpoint cannot be written.
 fn compute_lives(
-    case: &StormCase,
-    design: &DesignParams,
+    run: &Designer<'_>,
     todo: &[usize],
     slot: Option<&Mutex<Slot>>,
     pb: &indicatif::ProgressBar,
@@ -706,7 +367,7 @@ fn compute_lives(
                 Ok(true) => {}
                 Ok(false) => return ControlFlow::Break(()),
                 Err(e) => {
-                    *write_error.lock().expect("error slot") = Some(e);
+                    *write_error.lock().expect("error slot") = Some(e.into());
                     return ControlFlow::Break(());
                 }
             }
@@ -718,8 +379,7 @@ fn compute_lives(
             ControlFlow::Continue(())
         }
     };
-    let results = with_threads(threads, || run_lives(case, &design.life, design.seed, todo, &on_life))?
-        .context("the design run failed")?;
+    let results = with_threads(threads, || run.run(todo, &on_life))?.context("the design run failed")?;
     pb.finish_and_clear();
     if let Some(e) = write_error.into_inner().expect("error slot") {
         return Err(e);
@@ -759,20 +419,16 @@ fn rewrite_checkpoint(
 /// Report `lives` (lives 0..N, in index order) of `design`: the statistics, their warnings, the
 /// table or JSON on standard output and, with `out`, design.json, lives.csv, histogram.svg and
 /// exceedance.svg. What one design run reports; `caisson merge` reports through it too.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn report_lives(
     scenario_path: &Path,
-    design: &DesignParams,
-    case: &StormCase<'_>,
+    run: &Designer<'_>,
     lives: &[StormOutcome],
-    waves: Option<&caisson::analysis::site::WaveSetup>,
     json: bool,
     out: Option<&Path>,
     keep: &[&Path],
 ) -> Result<()> {
-    let failure = design.failure_limits(case.structure.caisson.width_m);
-    let failure_m = failure.sliding_m;
-    let report = DesignReport::new(design, case, waves, lives);
+    let failure_m = run.failure_limits().sliding_m;
+    let report = run.report(lives);
     let doc = report_json(&report, "design")?;
     crate::output::print_warning_lines(&report.warnings);
     if json {
@@ -1066,85 +722,4 @@ fn dynamic_only(r: &DesignReport, t: &mut String) {
         "  lives ending seaward (any amount) {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
         d.seaward_lives, d.rocking_waves, d.large_rotation_waves, d.large_rotation_lives
     );
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn state(s: &Syncer) -> (bool, u64) {
-        let g = s.state.0.lock().unwrap();
-        (g.dirty, g.flushes)
-    }
-
-    /// A line is flushed without waiting for the end of the run, and lines that come in faster than
-    /// the interval share a flush: at most one per interval (plus the last one at the end).
-    #[test]
-    fn lines_are_flushed_within_the_interval_and_at_most_once_per_interval() {
-        let dir = tempfile::tempdir().unwrap();
-        let mut file = std::fs::File::create(dir.path().join("c.jsonl")).unwrap();
-        let mut s = Syncer::start(file.try_clone().unwrap());
-        let start = std::time::Instant::now();
-        writeln!(file, "a line").unwrap();
-        s.written();
-        // Flushed by the thread alone (polled for up to 30 s: a loaded machine may be slow to
-        // schedule it; the interval is 1 s).
-        while state(&s).0 || state(&s).1 == 0 {
-            assert!(start.elapsed() < std::time::Duration::from_secs(30), "the line was never flushed");
-            std::thread::sleep(std::time::Duration::from_millis(5));
-        }
-        // 2000 lines as fast as they come: one flush per started interval at most.
-        let burst = std::time::Instant::now();
-        for i in 0..2000 {
-            writeln!(file, "line {i}").unwrap();
-            s.written();
-        }
-        let intervals = burst.elapsed().as_secs_f64() / SYNC_INTERVAL.as_secs_f64();
-        assert!(s.finish().is_none(), "the flushes succeed");
-        let flushes = state(&s).1;
-        // The first flush, one per started interval of the burst, the last at the end.
-        assert!(flushes as f64 <= 1.0 + intervals.ceil() + 1.0 + 1.0, "{flushes} flushes in {intervals} intervals");
-        assert!(flushes >= 2, "the first line's and the last one: {flushes}");
-    }
-
-    /// Lives that finish while the checkpoint is being created wait for it and are appended, in
-    /// the order they finished, before the lives after it; once it failed, the run stops.
-    #[test]
-    fn lives_finished_before_the_checkpoint_is_open_are_appended_first_in_their_order() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("checkpoint.jsonl");
-        let header = "{\"header\":1}".to_string();
-        let life = |k: u64| StormOutcome { waves: k, ..Default::default() };
-        let mut slot = Slot::opening();
-        // Finished in the order 3, 0 before the checkpoint exists: nothing written yet.
-        assert!(slot.append(3, &life(3)).unwrap());
-        assert!(slot.append(0, &life(0)).unwrap());
-        assert!(!path.exists(), "the lives wait in memory");
-        slot.opened(CheckpointWriter::create(&path, header.clone()).unwrap()).unwrap();
-        assert!(slot.append(1, &life(1)).unwrap());
-        let lines = slot.writer.take().unwrap().finish().unwrap();
-        let text = std::fs::read_to_string(&path).unwrap();
-        let expected: String = [(3, 3), (0, 0), (1, 1)]
-            .iter()
-            .map(|&(i, k)| life_line(&header, i, &life(k)))
-            .fold(format!("{header}\n"), |acc, l| acc + &l);
-        assert_eq!(text, expected, "the header, then lives 3, 0, 1 as they finished");
-        assert_eq!(lines.len(), 3, "the three lines kept for the ordered rewrite");
-        // A checkpoint that could not be created stops the run at the next life.
-        let mut failed = Slot::opening();
-        failed.failed = true;
-        assert!(!failed.append(2, &life(2)).unwrap(), "the run stops");
-        assert!(failed.backlog.is_empty(), "and keeps nothing");
-    }
-
-    /// A flush that fails is reported when the run ends (a pipe cannot be flushed: EINVAL).
-    #[cfg(unix)]
-    #[test]
-    fn a_failed_flush_is_reported_at_the_end() {
-        let (read, write) = std::io::pipe().unwrap();
-        let mut s = Syncer::start(std::fs::File::from(std::os::fd::OwnedFd::from(write)));
-        s.written();
-        assert!(s.finish().is_some(), "fdatasync of a pipe fails and is reported");
-        drop(read);
-    }
 }

@@ -28,17 +28,16 @@
 //! written to temporary files and renamed into place whole (`output.rs`), and the lock of the
 //! output checkpoint is removed.
 
-use crate::cli::MergeArgs;
-use crate::cmd_design::{
-    life_line, load_design, open_checkpoint, read_checkpoint, read_line_limited, report_lives, CheckpointLock, Header,
-    Reader, MAX_LINE_BYTES,
+use crate::checkpoint_file::{
+    life_line, open_checkpoint, read_checkpoint, read_line_limited, CheckpointLock, Header, Reader, MAX_LINE_BYTES,
 };
+use crate::cli::MergeArgs;
+use crate::cmd_design::{designer, load_design, report_lives};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, process_running, progress, TempFile};
 use anyhow::{Context, Result};
 use caisson::analysis::lifetime::StormOutcome;
 use caisson::report::checkpoint::{Merge, MergeError};
-use caisson::report::design::design_fingerprint;
 use std::io::Write;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -155,10 +154,10 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let _out_lock = crate::output::OutLock::acquire(&args.out, "merge")?;
     let shards: Vec<Shard> = args.shards.iter().map(|a| Shard::new(a)).collect();
     let brute_force = check_shards(&shards)?;
-    let (sc, design) = load_design(&args.scenario, "`caisson merge`", args.lives, brute_force)?;
-    let case = sc.storm_case(design.screen).map_err(input_err)?;
-    let fingerprint = design_fingerprint(&case, &design);
-    let n = design.lives;
+    let sc = load_design(&args.scenario, brute_force)?;
+    let run = designer(&sc, "`caisson merge`", args.lives, brute_force)?;
+    let fingerprint = run.fingerprint();
+    let n = run.design.lives;
     let file = args.scenario.display().to_string();
 
     let lives = read_shards(&shards, &fingerprint, n, &args)?;
@@ -173,7 +172,7 @@ pub fn run(args: MergeArgs) -> Result<()> {
     if !args.json {
         crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
     }
-    report_lives(&args.scenario, &design, &case, &lives, sc.waves.as_ref(), args.json, Some(&args.out), &[])
+    report_lives(&args.scenario, &run, &lives, args.json, Some(&args.out), &[])
 }
 
 /// Each shard given once, none still running, all run with or all without --brute-force (which

@@ -104,7 +104,8 @@ pub fn run(args: SizeArgs) -> Result<()> {
     if let Some(dir) = &args.out {
         ensure_dir(dir)?;
     }
-    let _lock = checkpoint.as_deref().map(|c| crate::cmd_design::CheckpointLock::acquire(c, "size")).transpose()?;
+    let _lock =
+        checkpoint.as_deref().map(|c| crate::checkpoint_file::CheckpointLock::acquire(c, "size")).transpose()?;
     let (writer, finished) = match &checkpoint {
         Some(path) => {
             let (w, done) = open_checkpoint(path, args.resume, &fingerprint)?;

@@ -12,13 +12,12 @@ use crate::plot::{panels, Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::campaign::{run_campaign, ConditionResult};
 use caisson::analysis::findings::{self, Verdict};
-use caisson::analysis::lifetime::run_lives;
 use caisson::analysis::spectrum::{log_space, sweep, SpectrumPoint};
+use caisson::drive::design::{DesignOptions, Designer};
 use caisson::loads::breaking_load::BreakingLoad;
 use caisson::loads::generator::{HeightVariability, TrainKind};
 use caisson::loads::pulse::TrianglePulse;
 use caisson::loads::{LoadSpec, WaveForce};
-use caisson::report::design::DesignReport;
 use caisson::scenario::Scenario;
 use caisson::structure::MassMatrix;
 use caisson::Profile;
@@ -512,14 +511,11 @@ fn why_profiles_differ(t: &mut String) -> Result<()> {
         if let Some(w) = sc.waves.as_mut() {
             w.model.options.breaking_load = BreakingLoad::Cuomo2010;
         }
-        let design = sc.design_for("the validation").map_err(input_err)?;
-        let case = sc.storm_case(design.screen).map_err(input_err)?;
-        let all: Vec<usize> = (0..design.lives).collect();
-        let lives = run_lives(&case, &design.life, design.seed, &all, &|_, _| std::ops::ControlFlow::Continue(()))
-            .context("the design example")?;
+        let run = Designer::new(&sc, "the validation", DesignOptions::default()).map_err(input_err)?;
+        let all: Vec<usize> = (0..run.design.lives).collect();
+        let lives = run.run(&all, &|_, _| std::ops::ControlFlow::Continue(())).context("the design example")?;
         let lives: Vec<_> = lives.into_iter().map(|(_, o)| o).collect();
-        let failure_m = design.failure_limit_m(case.structure.caisson.width_m);
-        let r = DesignReport::statistics(design, case.rigid_block_mu, failure_m, &lives);
+        let r = run.statistics(&lives);
         let d = &r.dynamic.sliding;
         let p03 = d.exceedance_probability.iter().find(|e| e.threshold_m == 0.3).map_or(0.0, |e| e.probability);
         let _ = writeln!(

@@ -4,6 +4,7 @@
 //! (non-convergence) or an I/O error while writing results, 130 stopped by Ctrl-C. Every error is
 //! one message on stderr that begins with `Error:` (the argument parser's included).
 
+mod checkpoint_file;
 mod cli;
 mod cmd_campaign;
 mod cmd_design;

@@ -16,11 +16,12 @@ mod loads_table;
 use caisson::analysis::campaign::run_campaign;
 use caisson::analysis::conventional::{static_check, DesignWave, StaticCheck};
 use caisson::analysis::fragility::{fit_lognormal as fit, run_fragility};
-use caisson::analysis::lifetime::{run_lives, DesignParams, LifeColumn, StormOutcome, LIFE_COLUMNS};
+use caisson::analysis::lifetime::{LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::run::{run as run_engine, run_observed, History};
 use caisson::analysis::spectrum::{estimated_steps, sweep, MAX_STEPS, RATIO_RANGE};
 use caisson::analysis::train::run_realizations;
 use caisson::analysis::work::{self, Advice, Budget, Histories, WorkEstimate};
+use caisson::drive::design::{DesignOptions, Designer};
 use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::dynamics::{Observer, StepView};
 use caisson::foundation::DampingMode;
@@ -28,7 +29,6 @@ use caisson::loads::series::{ForceSeries, MAX_SAMPLES};
 use caisson::loads::{LoadSpec, WaveForce};
 use caisson::report::campaign::CampaignReport;
 use caisson::report::checkpoint::{read_design, CheckpointError, DesignCheckpoint, Merge, MergeError};
-use caisson::report::design::{design_fingerprint, DesignReport};
 use caisson::report::fragility::FragilityReport;
 use caisson::report::loads::LoadsReport;
 use caisson::report::run::RunReport;
@@ -561,11 +561,8 @@ fn estimate_of(
             Ok((py.detach(|| work::campaign(&c.setups, true)), &CAMPAIGN, "caisson.campaign"))
         }
         "design" => {
-            let design = sc.design_for("Design").map_err(lib)?;
-            let case = sc.storm_case(design.screen).map_err(lib)?;
-            let waves = sc.waves_for("Design").map_err(lib)?;
-            let p = DesignParams { lives: lives.unwrap_or(design.lives), ..design.clone() };
-            Ok((py.detach(|| work::design(&case, &p, waves)), &DESIGN, "Design.simulate_lives"))
+            let run = Designer::new(sc, "Design", DesignOptions { lives, brute_force: false }).map_err(lib)?;
+            Ok((py.detach(|| run.estimate(run.design.lives)), &DESIGN, "Design.simulate_lives"))
         }
         "fragility" => {
             let p = sc.fragility_for("Fragility").map_err(lib)?;
@@ -926,6 +923,12 @@ fn campaign(
     report_json(&CampaignReport::new(&c, &results, true), "campaign")
 }
 
+/// The design run of the scenario's `[design]` (`lives`: how many, if not `[design] lives`), its
+/// refusal as Python raises it.
+fn designer<'a>(py: Python<'_>, sc: &'a Scenario, lives: Option<usize>) -> PyResult<Designer<'a>> {
+    Designer::new(sc, "Design", DesignOptions { lives, brute_force: false }).map_err(|e| lib_error(py, e, None))
+}
+
 /// The lives `indices` of the scenario's `[design]` (any subset, any order): columns sorted by
 /// life index, `life` and then the columns of `lives.csv` ([`LIFE_COLUMNS`]).
 #[pyfunction]
@@ -937,14 +940,13 @@ fn design_lives<'py>(
     threads: usize,
     progress: Option<Py<PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
-    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    let run = designer(py, &sc.sc, None)?;
     let total = indices.len();
     // The lives asked for, not the scenario's count (a shard costs its own lives).
     let (e, advice, command) = estimate_of(py, &sc.sc, "design", Some(total), true, None)?;
     check_work(py, command, &e, advice)?;
     let (lives, stop) = drive_keep(py, threads, total, progress, |ctl| {
-        run_lives(&case, &design.life, design.seed, &indices, &|_, _| {
+        run.run(&indices, &|_, _| {
             // Stopped (Ctrl-C): the lives in progress finish and are kept, as the CLI keeps them.
             if ctl.cancelled() {
                 return ControlFlow::Break(());
@@ -1000,8 +1002,7 @@ fn design_statistics(
     columns: Bound<'_, PyDict>,
     life: Vec<usize>,
 ) -> PyResult<String> {
-    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
-    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
+    let run = designer(py, &sc.sc, None)?;
     let mut rows: Vec<serde_json::Map<String, serde_json::Value>> = Vec::new();
     for (name, column) in LIFE_COLUMNS {
         let item = columns
@@ -1040,8 +1041,7 @@ fn design_statistics(
         )));
     }
     let lives = merged(life, lives)?;
-    let report = DesignReport::new(design, &case, sc.sc.waves.as_ref(), &lives);
-    report_json(&report, "design")
+    report_json(&run.report(&lives), "design")
 }
 
 /// Lives (index, outcome) joined into lives 0..N, N the largest index + 1, by the merge rules of
@@ -1070,9 +1070,7 @@ fn merged(life: Vec<usize>, lives: Vec<StormOutcome>) -> PyResult<Vec<StormOutco
 /// The fingerprint of the design's lives (what every life depends on).
 #[pyfunction]
 fn design_fingerprint_of(py: Python<'_>, sc: &CoreScenario) -> PyResult<String> {
-    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
-    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
-    Ok(design_fingerprint(&case, design))
+    Ok(designer(py, &sc.sc, None)?.fingerprint())
 }
 
 const SIZE: Advice = Advice {
@@ -1146,9 +1144,9 @@ fn checkpoint_error(name: &str, e: CheckpointError) -> PyErr {
 /// The lives of the design checkpoint `data` (the bytes of the file `name`) of the scenario's
 /// `[design]`, read by the library's codec: the columns of [`design_lives`].
 fn read_design_lives(sc: &Scenario, name: &str, data: &[u8]) -> PyResult<DesignCheckpoint> {
-    let design = sc.design_for("Design").map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let case = sc.storm_case(design.screen).map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let fingerprint = design_fingerprint(&case, design);
+    let run =
+        Designer::new(sc, "Design", DesignOptions::default()).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let fingerprint = run.fingerprint();
     read_design(data, &|_| fingerprint.clone(), &|| {}).map_err(|e| checkpoint_error(name, e))
 }
 
@@ -1192,10 +1190,7 @@ fn merge_checkpoints<'py>(
         merge.add(Some(cp.header.range()), cp.lives).map_err(|e| shard_error(&e, &files, &ranges, lives))?;
     }
     let all = merge.finish().map_err(|e| shard_error(&e, &files, &ranges, lives))?;
-    let design = sc.sc.design_for("Design").map_err(|e| lib_error(py, e, None))?;
-    let design = DesignParams { lives, ..design.clone() };
-    let case = sc.sc.storm_case(design.screen).map_err(|e| lib_error(py, e, None))?;
-    let report = DesignReport::new(&design, &case, sc.sc.waves.as_ref(), &all);
+    let report = designer(py, &sc.sc, Some(lives))?.report(&all);
     let indexed: Vec<(usize, StormOutcome)> = all.into_iter().enumerate().collect();
     Ok((report_json(&report, "design")?, lives_columns(py, &indexed)?))
 }

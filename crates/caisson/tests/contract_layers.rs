@@ -1,5 +1,5 @@
-//! Architecture: the library's modules never reach up (ARCHITECTURE.md, "Modules never reach
-//! up"): `waves` → `loads` → `structure`, `foundation` → `dynamics` → `analysis` → `report`,
+//! Architecture: the library's modules never reach up (ARCHITECTURE.md, "The library's
+//! layers"): `waves` → `loads` → `structure`, `foundation` → `dynamics` → `analysis` → `report`,
 //! `scenario` → `drive`. A module may name (in code, not in comments or its tests) modules of
 //! its own layer or below, never one above, and no two name each other. Run with `--nocapture`
 //! to see who names whom.

@@ -85,7 +85,20 @@ pub fn module_files(dir: &Path) -> Vec<String> {
     files
 }
 
-/// The text of every `.rs` file under `dir`, recursively, concatenated.
+/// The subdirectories of `dir` that are modules (they hold a `mod.rs`), their names, sorted.
+pub fn module_dirs(dir: &Path) -> Vec<String> {
+    let mut dirs: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.join("mod.rs").is_file())
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    dirs.sort();
+    dirs
+}
+
+/// The text of every `.rs` file under `dir`, recursively, concatenated; a module's `tests.rs`
+/// (its unit tests) is left out.
 pub fn tree_text(dir: &Path) -> String {
     let mut text = String::new();
     let mut entries: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
@@ -93,7 +106,7 @@ pub fn tree_text(dir: &Path) -> String {
     for p in entries {
         if p.is_dir() {
             text.push_str(&tree_text(&p));
-        } else if p.extension().is_some_and(|e| e == "rs") {
+        } else if p.extension().is_some_and(|e| e == "rs") && !p.ends_with("tests.rs") {
             // Each file's own test module ends where the file ends.
             let src = std::fs::read_to_string(&p).unwrap();
             text.push_str(src.split("#[cfg(test)]").next().unwrap_or(&src));

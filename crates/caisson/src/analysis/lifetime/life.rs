@@ -1,0 +1,224 @@
+//! One life of storms (module docs, "One life", "The stick bound"), its still waves settled at its
+//! end, and the lives of a run in parallel.
+
+use super::outcome::StormOutcome;
+use super::params::{ErrorScope, LifeParams, StormCase, StormInput, STORM_WAVE_WORDS_LOG2};
+use super::storm::{
+    storm_from, toe_depth_m, Settle, StormError, StormRng, StormScratch, StormSite, StormStart, MAX_STILL_WAVES,
+    ROTATION_RESERVE,
+};
+use super::wave::{base_heel_pressure_pa, WaveKind, WaveRun};
+use crate::loads::generator::realization_rng;
+use crate::waves::dispersion::wavenumber;
+use crate::waves::surf_zone::SlopeTerms;
+use rand::Rng;
+use rayon::prelude::*;
+use std::cell::OnceCell;
+use std::f64::consts::PI;
+use std::ops::ControlFlow;
+use std::sync::atomic::{AtomicBool, Ordering};
+use thiserror::Error;
+
+/// One life of `p.life_years` storms (module docs), life `index` of the stream `seed`.
+pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize) -> Result<StormOutcome, StormError> {
+    let mut rng = realization_rng(seed, index);
+    let c = &st.structure.caisson;
+    // The heel pressure at rest at still water (the lowest water of the life: the heaviest
+    // caisson in water).
+    let rest_pa = base_heel_pressure_pa(c.weight_in_water_n, 0.0, c.width_m, c.length_m);
+    let mut life = StormOutcome { max_heel_pressure_kpa: rest_pa / 1e3, ..StormOutcome::default() };
+    let mut scratch = StormScratch::default();
+    let site = &st.model.site;
+    // The surf zone's slope terms: the same for every storm of the life.
+    let slope = SlopeTerms::new(site.seabed_slope);
+    // Errors per life: drawn once, before the first storm.
+    let life_errors = (p.errors.scope == ErrorScope::Life).then(|| p.errors.draw(&mut rng));
+    // Storms counted over the life: storm k draws its waves from word (k + 1) · 2^40.
+    let mut storm_index: u128 = 0;
+    for year in 0..p.life_years {
+        let rise_m = p.climate.sea_level.rise_in_year_m(year);
+        for _ in 0..p.climate.storms.storms_in_year(&mut rng) {
+            let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
+            let e = match life_errors {
+                Some(e) => e,
+                None => p.errors.draw(&mut rng),
+            };
+            let phi = 2.0 * PI * rng.gen::<f64>();
+            let h0 = (p.storm_height_m(u) * e.h0).max(1e-3);
+            let period_s = p.period_coefficient * h0.powf(p.period_exponent);
+            let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
+            let angle_rad = p.climate.direction.draw_rad(&mut rng);
+            let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
+            // The dispersion solve at the toe serves the shoaling and the storm's loads.
+            let depth_m = toe_depth_m(st, tide_m);
+            let k_toe = wavenumber(period_s, depth_m);
+            let z = slope.surf_zone_at_wavenumber(h0, period_s, depth_m, k_toe);
+            let storm = StormInput {
+                h13_m: z.h13_m * e.transformation,
+                hmax_m: z.hmax_m * e.transformation,
+                period_s,
+                periods: p.climate.periods,
+                waves: (duration_s / period_s).round().max(1.0) as usize,
+                tide_m,
+                angle_rad,
+                force_factor: e.force,
+                impact_factor: e.impact,
+                friction_factor: e.friction,
+            };
+            // The storm's waves from their own part of the stream: how many it draws does not move
+            // the next storm's numbers (common random numbers across caissons, docs/size.md).
+            storm_index += 1;
+            let mut positioned = None;
+            let word = storm_index << STORM_WAVE_WORDS_LOG2;
+            let mut waves_rng = StormRng::Storm { life: &rng, word, rng: &mut positioned };
+            let failed = life.failed();
+            let settle = Settle::Life { floor_rad: life.max_rotation_rad, storm: scratch.storms.len() };
+            scratch.storms.push(storm);
+            let from = StormStart {
+                start_m: life.sliding_m,
+                rigid_m: life.rigid_block_sliding_m,
+                heel_floor_kpa: life.max_heel_pressure_kpa,
+                failed,
+                stopped: life.run_on_stopped != 0,
+                settle,
+            };
+            let o = storm_from(st, &storm, &mut waves_rng, from, Some(k_toe), &mut scratch)?;
+            if !failed && o.failed() {
+                life.failure_year = year as u64 + 1;
+            }
+            life.add(&o);
+            // The still waves the life's largest rotation so far exceeds cannot be its largest.
+            scratch.still.retain(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
+            scratch.heel.retain(|w| w.rotation_rad > 1e3 * life.max_heel_pressure_kpa);
+            if scratch.still.len() > MAX_STILL_WAVES || scratch.heel.len() > MAX_STILL_WAVES {
+                settle_life(st, &mut scratch, &mut life)?;
+            }
+        }
+    }
+    settle_life(st, &mut scratch, &mut life)?;
+    life.finite()
+}
+
+/// Run the still waves of the life's storms whose rotation bound may exceed the life's largest
+/// rotation, largest bound first, until the bound of the next is below it (module docs, "The
+/// screen"): the life's largest rotation is then what running every wave gives. Each wave run
+/// moves from the screened to the simulated count; it neither slides nor lifts (its bound says
+/// so), so only the rotation and the counts can move. Empties `scratch.still`.
+pub(super) fn settle_life(
+    st: &StormCase<'_>,
+    scratch: &mut StormScratch,
+    life: &mut StormOutcome,
+) -> Result<(), StormError> {
+    let modes = scratch.modes(st);
+    let StormScratch { train, still, heel, storms, .. } = scratch;
+    still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+    heel.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
+    // The site of the storm whose waves run (the waves of a storm are mostly together).
+    let mut site: Option<(usize, StormSite)> = None;
+    let (mut none, mut no_heel) = (Vec::new(), Vec::new());
+    // The still waves for the rotation, then the deferred waves for the heel pressure (module
+    // docs, "Heel pressure"): each list while its next bound may exceed the life's largest.
+    let pending = still.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
+    for (w, kind) in pending {
+        let needed = match kind {
+            WaveKind::HeelOnly => w.rotation_rad > 1e3 * life.max_heel_pressure_kpa,
+            _ => w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad,
+        };
+        if !needed {
+            if kind == WaveKind::HeelOnly {
+                break;
+            }
+            continue;
+        }
+        let s = &storms[w.storm];
+        if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
+            site = Some((w.storm, StormSite::new(st, s, modes)));
+        }
+        let site = &site.as_ref().expect("the wave's storm's site").1;
+        let mut run = WaveRun {
+            st,
+            s,
+            site,
+            loads_t13: &site.model.at_period(s.period_s),
+            bound_t13: site.bound(s.period_s),
+            start_m: 0.0,
+            // A still wave can fail no life (module docs, "The stick bound"), nor can a deferred
+            // one (its bound is below the failure heel pressure): nothing is recorded; a failed
+            // life's wave that does not converge stays screened.
+            failed: life.failed(),
+            stopped: false,
+            rigid_start_m: 0.0,
+            rigid_failed: true,
+            heel_floor_kpa: 0.0,
+            sim: None,
+            train,
+            stick_t13: OnceCell::new(),
+            still: &mut none,
+            heel: &mut no_heel,
+            settle: Settle::Storm,
+        };
+        let (event, _) = run.event(w.height_m, w.deviate, w.period_s);
+        let mut o = StormOutcome::default();
+        run.simulate(event, w.height_m, w.period_s, kind, &mut o)?;
+        if o.simulated_waves == 0 {
+            // It did not converge, in a failed life: it stays screened.
+            continue;
+        }
+        life.simulated_waves += 1;
+        life.screened_waves -= 1;
+        if kind == WaveKind::HeelOnly {
+            life.max_heel_pressure_kpa = life.max_heel_pressure_kpa.max(o.max_heel_pressure_kpa);
+            continue;
+        }
+        life.rocking_waves += o.rocking_waves;
+        life.large_rotation_waves += o.large_rotation_waves;
+        life.max_rotation_rad = life.max_rotation_rad.max(o.max_rotation_rad);
+        #[cfg(test)]
+        super::tests::SETTLED.with(|n| n.set(n.get() + 1));
+    }
+    still.clear();
+    heel.clear();
+    Ok(())
+}
+
+/// A life that could not be simulated.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("life {life} failed")]
+pub struct LifeFailed {
+    pub life: usize,
+    #[source]
+    pub source: StormError,
+}
+
+/// Simulate the lives `indices` (any subset, in any order) in parallel on rayon's current pool.
+/// Each finished life is passed to `on_life` (from the thread that ran it: the place to record
+/// it in a checkpoint and to move a progress bar); when `on_life` returns
+/// [`ControlFlow::Break`], no further life starts (the lives under way finish and are
+/// returned). The finished lives come back sorted by index. Each life depends only on the seed
+/// and its index, so the result does not depend on the thread count, the order or a split of the
+/// indices over several runs.
+pub fn run_lives(
+    st: &StormCase<'_>,
+    life: &LifeParams,
+    seed: u64,
+    indices: &[usize],
+    on_life: &(dyn Fn(usize, &StormOutcome) -> ControlFlow<()> + Sync),
+) -> Result<Vec<(usize, StormOutcome)>, LifeFailed> {
+    let stop = AtomicBool::new(false);
+    let finished: Vec<Option<(usize, StormOutcome)>> = indices
+        .par_iter()
+        .map(|&i| {
+            if stop.load(Ordering::SeqCst) {
+                return Ok(None);
+            }
+            let o = simulate_life(st, life, seed, i).map_err(|source| LifeFailed { life: i, source })?;
+            if on_life(i, &o).is_break() {
+                stop.store(true, Ordering::SeqCst);
+            }
+            Ok(Some((i, o)))
+        })
+        .collect::<Result<_, _>>()?;
+    let mut finished: Vec<(usize, StormOutcome)> = finished.into_iter().flatten().collect();
+    finished.sort_by_key(|(i, _)| *i);
+    Ok(finished)
+}
