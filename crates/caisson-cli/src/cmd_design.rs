@@ -618,7 +618,7 @@ fn sliding_table(r: &DesignReport, t: &mut String) {
         t,
         "heel pressure (dynamic model): P(q_heel > {} kPa) = {} ({} lives; the largest {:.0} kPa; each life's largest is exact from {} kPa up)",
         h.allowable_kpa,
-        heel_probability(h, r.lives),
+        heel_probability(h),
         h.lives,
         h.largest_kpa,
         h.exact_from_kpa
@@ -646,10 +646,9 @@ pub(crate) fn fmt_with_interval(value: f64, ci: [Option<f64>; 2]) -> String {
     format!("{value:.d$} ({}-{})", end(ci[0]), end(ci[1]))
 }
 
-/// P(q_heel > q_a) of `lives` lives with its Wilson interval ([`fmt_with_interval`]).
-pub(crate) fn heel_probability(h: &caisson::analysis::lifetime::HeelPressureExceedance, lives: usize) -> String {
-    let ci = caisson::analysis::estimate::wilson_ci95(h.lives as u64, lives.max(1) as u64);
-    fmt_with_interval(h.probability, ci.map(Some))
+/// P(q_heel > q_a) with its Wilson interval ([`fmt_with_interval`]).
+pub(crate) fn heel_probability(h: &caisson::analysis::lifetime::HeelPressureExceedance) -> String {
+    fmt_with_interval(h.probability, h.ci95.map(Some))
 }
 
 /// E|S| = (1 − P_f) E|S|_surviving + P_f · limit, in numbers: what the capped headline of model

@@ -342,7 +342,7 @@ fn candidate_table(r: &SizeReport, exceed: Option<f64>, t: &mut String) {
                 probability(d.failure_probability, ci),
                 format!("{:.decimals$}", d.failure_by_rotation_probability),
                 probability(b.failure_probability, b.failure_probability_ci95),
-                heel_probability(h, r.lives_per_candidate),
+                heel_probability(h),
                 if meets.is_empty() { "-".to_string() } else { meets.join(", ") },
             ]);
             row
@@ -421,7 +421,7 @@ fn size_text(r: &SizeReport) -> String {
             100.0 * b.share_of_failures,
             b.failures,
             k.heel_pressure_exceedance.allowable_kpa,
-            heel_probability(&k.heel_pressure_exceedance, r.lives_per_candidate)
+            heel_probability(&k.heel_pressure_exceedance)
         );
     }
     let _ = writeln!(
@@ -491,6 +491,8 @@ struct CandidateRow {
     rigid_block_impulsive_share_of_failures: Sci,
     heel_pressure_exceedance_probability: Sci,
     heel_pressure_exceedance_standard_error: Sci,
+    heel_pressure_exceedance_ci95_low: Sci,
+    heel_pressure_exceedance_ci95_high: Sci,
     dynamic_meets: bool,
     rigid_block_meets: bool,
 }
@@ -553,6 +555,8 @@ impl From<&CandidateReport> for CandidateRow {
             rigid_block_impulsive_share_of_failures: Sci(r.impulsive.share_of_failures),
             heel_pressure_exceedance_probability: Sci(k.heel_pressure_exceedance.probability),
             heel_pressure_exceedance_standard_error: Sci(k.heel_pressure_exceedance.standard_error),
+            heel_pressure_exceedance_ci95_low: Sci(k.heel_pressure_exceedance.ci95[0]),
+            heel_pressure_exceedance_ci95_high: Sci(k.heel_pressure_exceedance.ci95[1]),
             dynamic_meets: k.dynamic_meets,
             rigid_block_meets: k.rigid_block_meets,
         }

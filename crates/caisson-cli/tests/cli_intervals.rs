@@ -152,6 +152,18 @@ fn design_intervals_are_the_hand_formulas_on_lives_csv() {
         close(ci[1], want[1], "P(|S| > s) high");
     }
 
+    // The heel pressure's exceedance of q_a: Wilson on the lives' largest heel pressure.
+    let h = &d["heel_pressure_exceedance"];
+    let q_a = num(&h["allowable_kpa"]);
+    let mut heel = csv::Reader::from_path(out.join("lives.csv")).unwrap();
+    let q = col("max_heel_pressure_kpa");
+    let k = heel.records().filter(|r| r.as_ref().unwrap()[q].parse::<f64>().unwrap() > q_a).count();
+    assert_eq!(h["lives"].as_u64(), Some(k as u64));
+    let ci = pair(&h["ci95"]);
+    let want = wilson(k, n);
+    close(ci[0], want[0], "P(q_heel > q_a) low");
+    close(ci[1], want[1], "P(q_heel > q_a) high");
+
     // Percentiles: order statistics of the capped |S|.
     let mut sorted = capped.clone();
     sorted.sort_by(f64::total_cmp);

@@ -197,9 +197,9 @@ fn candidates_csv_is_the_json_candidates_flattened() {
     let cands = j["candidates"].as_array().unwrap();
     let mut r = csv::Reader::from_path(out.join("candidates.csv")).unwrap();
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    // 6 of the width, 12 of each model, 8 of its intervals and 4 of its impulsive waves, 2 of
+    // 6 of the width, 12 of each model, 8 of its intervals and 4 of its impulsive waves, 4 of
     // the heel pressure, 2 verdicts.
-    assert_eq!(header.len(), 56, "{header:?}");
+    assert_eq!(header.len(), 58, "{header:?}");
     let (mut rows, mut cells, mut empty) = (0, 0, 0);
     for (row, c) in r.records().map(Result::unwrap).zip(cands) {
         for (name, cell) in header.iter().zip(row.iter()) {
@@ -213,6 +213,8 @@ fn candidates_csv_is_the_json_candidates_flattened() {
                 Some((m @ "dynamic", rest)) if c.get(name).is_none() => model(m, rest),
                 Some(("rigid", rest)) if c.get(name).is_none() => model("rigid_block", &rest["block_".len()..]),
                 _ => match name.strip_prefix("heel_pressure_exceedance_") {
+                    Some("ci95_low") => c["heel_pressure_exceedance"]["ci95"][0].clone(),
+                    Some("ci95_high") => c["heel_pressure_exceedance"]["ci95"][1].clone(),
                     Some(key) => c["heel_pressure_exceedance"][key].clone(),
                     None => c[name.as_str()].clone(),
                 },
@@ -230,7 +232,7 @@ fn candidates_csv_is_the_json_candidates_flattened() {
         }
         rows += 1;
     }
-    assert_eq!((rows, cells), (cands.len(), 56 * cands.len()), "every cell checked");
+    assert_eq!((rows, cells), (cands.len(), 58 * cands.len()), "every cell checked");
     // The heel pressure is undefined (null) at the narrow widths that would overturn (the resultant
     // outside the base).
     assert!(empty > 0, "an empty cell checked");

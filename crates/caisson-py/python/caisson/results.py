@@ -346,7 +346,11 @@ class SizeResult(_ReadsAsReport):
                     else:
                         row[f"{model}_{k}"] = v
                 row[f"{model}_meets"] = c.get(f"{model}_meets")
-            row.update({f"heel_pressure_exceedance_{k}": v for k, v in (c.get("heel_pressure_exceedance") or {}).items()})
+            for k, v in (c.get("heel_pressure_exceedance") or {}).items():
+                if isinstance(v, (list, tuple)):
+                    row.update(zip(_interval_columns(f"heel_pressure_exceedance_{k}"), v))
+                else:
+                    row[f"heel_pressure_exceedance_{k}"] = v
             rows.append(row)
         return SizeResult(
             width_m=report["dynamic"].get("width_m"),

@@ -188,8 +188,10 @@ pub struct HeelPressureExceedance {
     /// P(q_heel > q_a): the share of lives whose largest heel pressure exceeds q_a (exact: the
     /// screen runs every wave that may reach q_a).
     pub probability: f64,
-    /// Its standard error √(p(1 − p)/n).
+    /// Its standard error √(p(1 − p)/n) and Wilson 95 % interval
+    /// ([`crate::analysis::estimate::wilson_ci95`]).
     pub standard_error: f64,
+    pub ci95: [f64; 2],
     /// The lives beyond q_a.
     pub lives: usize,
     /// The heel pressure at and above which each life's value is exact, kPa (the screen's: q_a,
@@ -211,6 +213,11 @@ impl HeelPressureExceedance {
             allowable_kpa,
             probability: p,
             standard_error: (p * (1.0 - p) / n).sqrt(),
+            ci95: if lives.is_empty() {
+                [0.0, 1.0]
+            } else {
+                crate::analysis::estimate::wilson_ci95(beyond as u64, lives.len() as u64)
+            },
             lives: beyond,
             exact_from_kpa: exact_from_pa / 1e3,
             largest_kpa: lives.iter().map(|l| l.max_heel_pressure_kpa).fold(0.0, f64::max),
