@@ -495,6 +495,12 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
 /// the 95 % value of |S| and the rigid block's E|S|), P(|S| > S_lim) and P(failure) against the
 /// width for both models, each with its limit, the required widths and Goda's width.
 fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
+    let svg = design_curve_svg(title, r)?;
+    write_atomic(&dir.join("design_curve.svg"), svg.as_bytes())
+}
+
+/// The SVG text of `design_curve.svg` (the calculation note inlines it).
+pub(crate) fn design_curve_svg(title: &str, r: &SizeReport) -> Result<String> {
     use caisson::analysis::sizing::ModelPoint;
     // Below 0.1 mm the caisson has not slid to speak of, and a probability below 1e-4 is beyond
     // what a few thousand lives estimate: the axes start there (a zero is drawn at the floor).
@@ -561,8 +567,7 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     if let Some(f) = r.criteria.failure_probability {
         probability("P(failure) (0 at 1e-4)".into(), |p| p.failure_probability, f);
     }
-    crate::plot::panels_scaled(
-        &dir.join("design_curve.svg"),
+    crate::plot::panels_svg(
         &format!("{title}: the life's sliding and the criteria against the caisson width"),
         "caisson width B (m)",
         &panels,

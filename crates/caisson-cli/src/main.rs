@@ -10,6 +10,7 @@ mod cmd_design;
 mod cmd_fragility;
 mod cmd_loads;
 mod cmd_merge;
+mod cmd_report;
 mod cmd_run;
 mod cmd_size;
 mod cmd_spectrum;
@@ -18,6 +19,7 @@ mod csv_rows;
 mod history_out;
 mod output;
 mod plot;
+mod report_html;
 mod train_out;
 mod work;
 
@@ -131,6 +133,7 @@ fn main() -> ExitCode {
         cli::Command::Size(a) => cmd_size::run(a),
         cli::Command::Fragility(a) => cmd_fragility::run(a),
         cli::Command::Merge(a) => cmd_merge::run(a),
+        cli::Command::Report(a) => cmd_report::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

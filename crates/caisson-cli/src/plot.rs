@@ -2,7 +2,7 @@
 //! figures. Plots are written to a temporary file and renamed, so a failed run never leaves a
 //! half-written plot.
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 use std::path::Path;
@@ -111,13 +111,19 @@ fn log_range(lo: f64, hi: f64) -> (f64, f64) {
 /// [`panels`] with logarithmic axes where `scales` says: points with a coordinate ≤ 0 on a
 /// logarithmic axis are left out (say so in the caption).
 pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], scales: Scales) -> Result<()> {
+    let svg = panels_svg(title, x_label, panels, scales)?;
+    crate::output::write_atomic(path, svg.as_bytes())
+}
+
+/// The SVG text of [`panels_scaled`]'s figure (the report inlines it).
+pub fn panels_svg(title: &str, x_label: &str, panels: &[Panel], scales: Scales) -> Result<String> {
     // Every text drawn passes through [`svg_text`]: the title and x label here, the panels'
     // labels where each panel is copied as drawn (`shown`).
     let (title, x_label) = (&svg_text(title), &svg_text(x_label));
-    let (tmp, _) = crate::output::TempFile::create(path)?;
+    let mut svg = String::new();
     {
         let height = 60 + 220 * panels.len() as u32;
-        let root = SVGBackend::new(&tmp, (CHART_WIDTH + LEGEND_WIDTH, height)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (CHART_WIDTH + LEGEND_WIDTH, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow::anyhow!("{e}"))?;
         let root = root.titled(title, ("sans-serif", 20)).map_err(|e| anyhow::anyhow!("{e}"))?;
         let areas = root.split_evenly((panels.len(), 1));
@@ -188,11 +194,9 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                 }
             }
         }
-        // The file is written here: an error (a full disk) names it.
-        root.present().map_err(|e| anyhow::anyhow!("writing {}: {e}", path.display()))?;
+        root.present().map_err(|e| anyhow::anyhow!("drawing the SVG plot: {e}"))?;
     }
-    tmp.commit(path).context("writing an SVG plot")?;
-    Ok(())
+    Ok(svg)
 }
 
 /// `text` as an SVG file may hold it: each character XML 1.0 does not allow, or that a
