@@ -159,9 +159,11 @@ fn inline_svg(svg: &str) -> String {
     };
     match (attr("width"), attr("height")) {
         (Some(w), Some(h)) if !tag.contains("viewBox") => {
-            let tag = tag
-                .replacen(&format!(" width=\"{w}\""), " width=\"100%\"", 1)
-                .replacen(&format!(" height=\"{h}\""), "", 1);
+            let tag = tag.replacen(&format!(" width=\"{w}\""), " width=\"100%\"", 1).replacen(
+                &format!(" height=\"{h}\""),
+                "",
+                1,
+            );
             format!("{tag} viewBox=\"0 0 {w} {h}\" preserveAspectRatio=\"xMidYMid meet\"{rest}")
         }
         _ => svg.to_string(),
@@ -170,9 +172,9 @@ fn inline_svg(svg: &str) -> String {
 
 /// A figure: the SVG, its number and caption.
 fn figure(out: &mut String, id: &str, svg: &str, caption: &str) {
-    let _ = write!(
+    let _ = writeln!(
         out,
-        "<figure id=\"{id}\" data-figure=\"{id}\">{}<figcaption>{}</figcaption></figure>\n",
+        "<figure id=\"{id}\" data-figure=\"{id}\">{}<figcaption>{}</figcaption></figure>",
         inline_svg(svg),
         esc(caption)
     );
@@ -193,6 +195,7 @@ th { background: #eee; font-weight: bold; }
 td.n, th.n { text-align: right; white-space: nowrap; }
 td:first-child { width: 32%; }
 table.meta th { width: 22%; }
+#goda-sheet td:first-child { width: 12%; }
 td.f { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 figure { margin: 3mm 0; break-inside: avoid; page-break-inside: avoid; }
 figure svg { display: block; width: 100%; height: auto; }
@@ -354,11 +357,7 @@ fn title_block(o: &mut String, i: usize, a: &Alternative, date: &str, title: &st
         ),
     );
     row(o, "Date", date);
-    row(
-        o,
-        "Tool",
-        &format!("caisson {}, results version {}", caisson::VERSION, caisson::RESULTS_VERSION),
-    );
+    row(o, "Tool", &format!("caisson {}, results version {}", caisson::VERSION, caisson::RESULTS_VERSION));
     let mut choices = format!(
         "profile <b>{}</b> (docs/model.md §10, \"Profiles\"); damping_mode {}; vertical_damping {}; mass_matrix {}; μ_s = {}, μ_d = {}",
         json_name(&m.profile),
@@ -388,7 +387,10 @@ fn inputs(o: &mut String, i: usize, a: &Alternative) {
     let c = &a.caisson;
     let f = &a.foundation;
     let _ = writeln!(o, "<h2>1. Inputs</h2>");
-    let _ = writeln!(o, "<table id=\"inputs\"><tr><th>quantity</th><th>symbol</th><th class=\"n\">value</th><th>unit</th></tr>");
+    let _ = writeln!(
+        o,
+        "<table id=\"inputs\"><tr><th>quantity</th><th>symbol</th><th class=\"n\">value</th><th>unit</th></tr>"
+    );
     let row = |o: &mut String, q: &str, s: &str, v: String, u: &str| {
         let _ = writeln!(o, "<tr><td>{q}</td><td>{s}</td><td class=\"n\">{v}</td><td>{u}</td></tr>");
     };
@@ -876,7 +878,7 @@ fn lifetime(o: &mut String, i: usize, a: &Alternative, d: &DesignPart) {
         "<p>Impulsive waves: {} in all lives (that may slide or lift the caisson). They slid the dynamic model {} m a life, {} % of E|S| as simulated and {} % of its {} failures; the rigid block {} m ({} %, {} % of {}).</p>",
         id.waves,
         val(i, "design.dynamic.impulsive.sliding_m", id.sliding_m, 4),
-        val(i, "design.dynamic.impulsive.share_of_expected_sliding", 100.0 * id.share_of_expected_sliding, 0),
+        num(100.0 * id.share_of_expected_sliding, 0),
         num(100.0 * id.share_of_failures, 0),
         id.failures,
         num(ir.sliding_m, 4),
@@ -998,7 +1000,8 @@ fn sizing(o: &mut String, i: usize, a: &Alternative, s: &SizePart) {
         r.seed
     );
     let _ = writeln!(o, "<table id=\"required-width\"><tr><th>method</th><th>required width</th></tr>");
-    let _ = writeln!(o, "<tr><td>dynamic model</td><td>{}</td></tr>", required_text(i, "size.dynamic.width_m", &r.dynamic));
+    let _ =
+        writeln!(o, "<tr><td>dynamic model</td><td>{}</td></tr>", required_text(i, "size.dynamic.width_m", &r.dynamic));
     let _ = writeln!(
         o,
         "<tr><td>rigid block (Shimosako)</td><td>{}</td></tr>",
@@ -1042,7 +1045,10 @@ fn sizing(o: &mut String, i: usize, a: &Alternative, s: &SizePart) {
         o,
         &format!("fig-design-curve-{}", a.name),
         &s.svg,
-        &format!("The life's sliding and the criteria against the caisson width (markers: the widths computed). {}", caption(a)),
+        &format!(
+            "The life's sliding and the criteria against the caisson width (markers: the widths computed). {}",
+            caption(a)
+        ),
     );
 }
 
@@ -1170,10 +1176,16 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
     row(o, "W' (kN/m)", &|_, a| num(a.caisson.weight_in_water_n / 1e3 / a.caisson.length_m, 1));
     row(o, "μ_s", &|_, a| a.model.mu_static.to_string());
     row(o, "breaking_load", &|_, a| a.model.breaking_load.map_or("–".into(), |b| b.name().to_string()));
-    row(o, "H_D (m)", &|i, a| a.loads.as_ref().map_or("–".into(), |l| val(i, "loads.goda.design_height_m", l.goda.design_height_m, 2)));
-    row(o, "Goda P (kN/m)", &|_, a| a.loads.as_ref().map_or("–".into(), |l| num(l.goda.horizontal_force_kn_per_m, 1)));
+    row(o, "H_D (m)", &|i, a| {
+        a.loads.as_ref().map_or("–".into(), |l| val(i, "loads.goda.design_height_m", l.goda.design_height_m, 2))
+    });
+    row(o, "Goda P (kN/m)", &|_, a| {
+        a.loads.as_ref().map_or("–".into(), |l| num(l.goda.horizontal_force_kn_per_m, 1))
+    });
     row(o, "Goda U (kN/m)", &|_, a| a.loads.as_ref().map_or("–".into(), |l| num(l.goda.uplift_force_kn_per_m, 1)));
-    row(o, "SF_s (Goda)", &|i, a| a.loads.as_ref().map_or("–".into(), |l| opt_val(i, "loads.safety.sliding", l.safety.sliding, 3)));
+    row(o, "SF_s (Goda)", &|i, a| {
+        a.loads.as_ref().map_or("–".into(), |l| opt_val(i, "loads.safety.sliding", l.safety.sliding, 3))
+    });
     row(o, "SF_o (Goda)", &|i, a| {
         a.loads.as_ref().map_or("–".into(), |l| opt_val(i, "loads.safety.overturning", l.safety.overturning, 3))
     });
@@ -1183,7 +1195,11 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
     row(o, "E|S| dynamic ± SE (m)", &|i, a| {
         a.design.as_ref().map_or("–".into(), |d| {
             let s = &d.report.dynamic.sliding;
-            format!("{} ± {}", val(i, "design.dynamic.expected_sliding_m", s.expected_sliding_m, 4), num(s.expected_sliding_se_m, 4))
+            format!(
+                "{} ± {}",
+                val(i, "design.dynamic.expected_sliding_m", s.expected_sliding_m, 4),
+                num(s.expected_sliding_se_m, 4)
+            )
         })
     });
     row(o, "E|S| rigid block ± SE (m)", &|_, a| {
@@ -1206,7 +1222,9 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
         a.size.as_ref().map_or("–".into(), |s| s.report.dynamic.width_m().map_or("–".into(), |w| num(w, 2)))
     });
     row(o, "required width, Goda (m)", &|_, a| {
-        a.size.as_ref().map_or("–".into(), |s| s.report.goda.width.reached.width_m().map_or("–".into(), |w| num(w, 2)))
+        a.size
+            .as_ref()
+            .map_or("–".into(), |s| s.report.goda.width.reached.width_m().map_or("–".into(), |w| num(w, 2)))
     });
     let _ = writeln!(o, "</table>");
     // Differences from the first alternative.
@@ -1239,7 +1257,11 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
             };
             let fa = Estimate::mean(d.lives.iter().map(|l| if l.failed() { 1.0 } else { 0.0 }));
             let fb = Estimate::mean(base_f.iter().copied());
-            (diff(a_, b_), diff(fa, fb), "independent: other seeds or numbers of lives (standard errors added in quadrature)")
+            (
+                diff(a_, b_),
+                diff(fa, fb),
+                "independent: other seeds or numbers of lives (standard errors added in quadrature)",
+            )
         };
         let _ = writeln!(
             o,
@@ -1266,7 +1288,8 @@ mod tests {
     /// Dates by hand: the epoch, a leap day and the turn of a century.
     #[test]
     fn utc_dates_by_hand() {
-        let cases = [(0, "1970-01-01"), (951_782_400, "2000-02-29"), (1_796_083_200, "2026-12-01"), (-86_400, "1969-12-31")];
+        let cases =
+            [(0, "1970-01-01"), (951_782_400, "2000-02-29"), (1_796_083_200, "2026-12-01"), (-86_400, "1969-12-31")];
         for (s, d) in cases {
             assert_eq!(utc_date(s), d, "{s}");
         }
@@ -1277,7 +1300,10 @@ mod tests {
     #[test]
     fn inline_svg_scales() {
         let s = inline_svg("<svg width=\"1180\" height=\"280\" xmlns=\"http://www.w3.org/2000/svg\">\n<rect/></svg>");
-        assert!(s.starts_with("<svg width=\"100%\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 1180 280\""), "{s}");
+        assert!(
+            s.starts_with("<svg width=\"100%\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 1180 280\""),
+            "{s}"
+        );
         assert!(s.ends_with("<rect/></svg>"), "{s}");
     }
 }
