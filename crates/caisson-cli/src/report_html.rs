@@ -203,7 +203,6 @@ figcaption { font-size: 8.5pt; color: #333; margin-top: 1mm; }
 .note { font-size: 8.5pt; color: #333; }
 .warn { border-left: 2pt solid #b00; padding-left: 2mm; margin: 1.5mm 0; }
 .part { break-before: page; page-break-before: always; }
-.part:first-of-type { break-before: auto; page-break-before: auto; }
 "#;
 
 /// The whole note of `alternatives` (one or more), dated `date`.
@@ -226,7 +225,8 @@ pub fn render(alternatives: &[Alternative], date: &str) -> String {
         comparison(&mut o, alternatives);
     }
     for (i, a) in alternatives.iter().enumerate() {
-        let _ = writeln!(o, "<div class=\"part\" id=\"alternative-{i}\">");
+        let class = if alternatives.len() > 1 { " class=\"part\"" } else { "" };
+        let _ = writeln!(o, "<div{class} id=\"alternative-{i}\">");
         note(&mut o, i, a, date, alternatives.len() > 1);
         let _ = writeln!(o, "</div>");
     }
@@ -1232,7 +1232,7 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
     let _ = writeln!(o, "<h3>Differences from A, life by life</h3>");
     let _ = writeln!(
         o,
-        "<table id=\"paired-differences\"><tr><th>alternative</th><th class=\"n\">Δ E|S| dynamic (m)</th><th class=\"n\">95 % interval</th><th class=\"n\">Δ P(failure) dynamic</th><th class=\"n\">95 % interval</th><th>pairing</th></tr>"
+        "<table id=\"paired-differences\"><tr><th>alternative</th><th class=\"n\">Δ E|S| dynamic (m)</th><th class=\"n\">95 % interval</th><th class=\"n\">unpaired 95 % interval</th><th class=\"n\">Δ P(failure) dynamic</th><th class=\"n\">95 % interval</th><th>pairing</th></tr>"
     );
     let base_s = capped(base);
     let base_f: Vec<f64> = base.lives.iter().map(|l| if l.failed() { 1.0 } else { 0.0 }).collect();
@@ -1246,7 +1246,7 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
             (
                 Estimate::mean(s.iter().zip(&base_s).map(|(x, y)| x - y)),
                 Estimate::mean(f.iter().zip(&base_f).map(|(x, y)| x - y)),
-                "paired: the same seed and lives, life i meets the same storms in both (common random numbers)",
+                "paired",
             )
         } else {
             let (a_, b_) = (Estimate::mean(capped(d)), Estimate::mean(base_s.iter().copied()));
@@ -1263,9 +1263,16 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
                 "independent: other seeds or numbers of lives (standard errors added in quadrature)",
             )
         };
+        // The interval the difference would have if the lives were independent.
+        let (sa, sb) = (&d.report.dynamic.sliding, &base.report.dynamic.sliding);
+        let unpaired = ci(
+            sa.expected_sliding_m - sb.expected_sliding_m,
+            sa.expected_sliding_se_m.hypot(sb.expected_sliding_se_m),
+            4,
+        );
         let _ = writeln!(
             o,
-            "<tr><td>{letter} − A</td><td class=\"n\">{}</td><td class=\"n\">{} to {}</td><td class=\"n\">{}</td><td class=\"n\">{} to {}</td><td>{how}</td></tr>",
+            "<tr><td>{letter} − A</td><td class=\"n\">{}</td><td class=\"n\">{} to {}</td><td class=\"n\">{unpaired}</td><td class=\"n\">{}</td><td class=\"n\">{} to {}</td><td>{how}</td></tr>",
             val(i, "difference.expected_sliding_m", ds.value, 4),
             num(ds.ci95[0], 4),
             num(ds.ci95[1], 4),
@@ -1277,7 +1284,7 @@ fn comparison(o: &mut String, alts: &[Alternative]) {
     let _ = writeln!(o, "</table>");
     let _ = writeln!(
         o,
-        "<p class=\"note\">A paired difference is the mean of the lives' differences, with the standard error of those differences: the storms common to both alternatives cancel, so it is far narrower than the two alternatives' own intervals.</p>"
+        "<p class=\"note\">Paired: the alternatives share the seed and the number of lives, so life i meets the same storms in each (common random numbers); a difference is the mean of the lives' differences, with the standard error of those differences, and what the storms do alike to both cancels. The unpaired interval (the two standard errors added in quadrature) is what two independent runs would give. Independent: other seeds or numbers of lives, the unpaired interval only.</p>"
     );
 }
 

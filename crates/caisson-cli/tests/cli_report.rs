@@ -143,14 +143,10 @@ fn the_sizing_note_shows_the_numbers_of_size_json() {
 #[test]
 fn alternatives_are_set_side_by_side_with_paired_differences() {
     let dir = tempfile::tempdir().unwrap();
-    let base = std::fs::read_to_string(example("design_breakwater.toml")).unwrap();
-    // 400 lives of the design example (its own numbers otherwise); B = 20 m and 24 m.
-    let small = base.replace("lives = 5000", "lives = 400");
-    assert_ne!(small, base);
-    let a = write(dir.path(), "a.toml", &small);
-    let b = write(dir.path(), "b.toml", &small.replace("width_m = 20.0", "width_m = 24.0"));
-    let same = write(dir.path(), "same.toml", &small);
-    let html = report(&[s(&a), s(&b), s(&same)], &dir.path().join("r"), false, 600);
+    // The comparison of two widths of examples/compare (B = 20 m and 24 m), and B = 20 m again.
+    let (a, b) = (example("compare/width_20m.toml"), example("compare/width_24m.toml"));
+    let same = write(dir.path(), "same.toml", &std::fs::read_to_string(&a).unwrap());
+    let html = report(&[&a, &b, s(&same)], &dir.path().join("r"), false, 600);
     assert!(html.contains("id=\"comparison\"") && html.contains("id=\"paired-differences\""));
     let number = |alt: usize, key: &str| -> (f64, f64) {
         let (_, text) = shown(&html, alt).into_iter().find(|(k, _)| k == key).unwrap_or_else(|| panic!("{alt}:{key}"));
@@ -270,4 +266,20 @@ fn without_a_browser_the_note_is_written_and_the_pdf_skipped() {
         .unwrap();
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stdout).contains("report.pdf skipped"));
+}
+
+#[test]
+fn the_comparison_of_two_breaking_load_rules_names_each_rule_and_pairs_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (example("compare/breaking_goda_takahashi.toml"), example("compare/breaking_cuomo_2010.toml"));
+    let html = report(&[&a, &b], &dir.path().join("r"), false, 600);
+    // The rule of each, in the comparison table and in each title block, with its source.
+    assert!(
+        html.contains("<td class=\"n\">goda-takahashi</td><td class=\"n\">cuomo-2010</td>"),
+        "the rules side by side"
+    );
+    assert!(html.contains("breaking_load <b>cuomo-2010</b>: Cuomo, Allsop, Bruce &amp; Pearson (2010)"));
+    assert!(html.contains("breaking_load <b>goda-takahashi</b>: Goda (2000) with Takahashi"));
+    assert_eq!(embedded(&html, 0, "design")["seed"], embedded(&html, 1, "design")["seed"]);
+    assert!(html.contains("<td>paired</td>"), "the same seed and lives: paired");
 }
