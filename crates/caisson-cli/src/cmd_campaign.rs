@@ -168,13 +168,20 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
     weights.dedup();
     let mut dyn_series = Vec::new();
     let mut rb_series = Vec::new();
-    for w in &weights {
+    // The weights' points at one height side by side, not on each other: each series is offset
+    // by a fraction of the heights' span (the x label says so).
+    let (h_lo, h_hi) = results.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+        (a.min(r.condition.height_m), b.max(r.condition.height_m))
+    });
+    let step = if weights.len() > 1 { 0.012 * (h_hi - h_lo).max(0.5) } else { 0.0 };
+    for (j, w) in weights.iter().enumerate() {
+        let shift = step * (j as f64 - (weights.len() - 1) as f64 / 2.0);
         let mut rs: Vec<&ConditionResult> = results.iter().filter(|r| r.condition.weight_in_water_n == *w).collect();
         rs.sort_by(|a, b| a.condition.height_m.total_cmp(&b.condition.height_m));
         let label = format!("W = {:.1} kN", w / 1e3);
         dyn_series.push(Series::ranges(
             label.clone(),
-            rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * dk)).collect(),
+            rs.iter().map(|r| (r.condition.height_m + shift, r.summary.sliding_m.mean * dk)).collect(),
             rs.iter().map(|r| (r.summary.sliding_m.min * dk, r.summary.sliding_m.max * dk)).collect(),
         ));
         // A weight tested at one height is a point, not a line of one point (which draws nothing).
@@ -184,7 +191,11 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
     panels(
         &dir.join(format!("{stem}_vs_height.svg")),
         &format!("{title}: total sliding against the wave height"),
-        "H (m)",
+        &if step > 0.0 {
+            format!("H (m); the weights' points {step:.2} m apart, not on each other")
+        } else {
+            "H (m)".to_string()
+        },
         &[
             Panel { y_label: format!("dynamic model ({du})"), series: dyn_series },
             Panel { y_label: format!("rigid block, mean ({ru})"), series: rb_series },

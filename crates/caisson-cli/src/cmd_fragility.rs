@@ -263,7 +263,7 @@ pub(crate) fn fragility_svg(name: &str, r: &FragilityResult) -> Result<String> {
         out.push(Panel { y_label: format!("P(S > {} m)", f.limit_m), series });
     }
     crate::plot::panels_svg(
-        &format!("{name}: fragility curves for sliding (points: storms; lines: lognormal fits)"),
+        &format!("Fragility curves for sliding (points: storms; lines: lognormal fits)\n{name}"),
         "H1/3 at the structure (m)",
         &out,
         crate::plot::Scales::default(),
@@ -297,7 +297,7 @@ pub fn run(args: FragilityArgs) -> Result<()> {
         let _set = crate::output::OutSet::open(dir);
         write_atomic(&dir.join("fragility.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("fragility.csv"), &fragility_csv(&setup, &result)?)?;
-        fragility_plot(&dir.join("fragility.svg"), name, &result)?;
+        fragility_plot(&dir.join("fragility.svg"), &crate::plot::caption(sc.structure(), Some(setup.waves)), &result)?;
         crate::output::tidy_out_dir(dir, "fragility", &[])?;
         if !args.json {
             crate::sayln!("\nWrote fragility.json, fragility.csv, fragility.svg to {}", dir.display());

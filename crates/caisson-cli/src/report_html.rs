@@ -133,8 +133,7 @@ pub fn caption(a: &Alternative) -> String {
         format!("h = {} m at the toe, d = {} m; ", l.site.depth_at_toe_m, l.site.depth_at_wall_m)
     });
     format!(
-        "{}: {site}B = {} m, W' = {:.0} kN/m, μ = {}; caisson {} (results {})",
-        a.name,
+        "{site}B = {} m, W' = {:.0} kN/m, μ = {}; caisson {} (results {})",
         c.width_m,
         c.weight_in_water_n / 1e3 / c.length_m,
         a.model.mu_static,
@@ -733,7 +732,8 @@ fn one_wave(o: &mut String, a: &Alternative, w: &OneWave) {
             ],
         },
     ];
-    match panels_svg(&caption(a), "time (s)", &panels, Scales::default()) {
+    let title = format!("The design wave: dynamic model and rigid block\n{}", caption(a));
+    match panels_svg(&title, "time (s)", &panels, Scales::default()) {
         Ok(svg) => figure(
             o,
             &format!("fig-one-wave-{}", a.name),
@@ -939,7 +939,8 @@ fn exceedance_figure(o: &mut String, a: &Alternative, d: &DesignPart) {
     }
     let panel = Panel { y_label: "P(|S| > s)".into(), series };
     let scales = Scales { log_x: true, log_y: true, ..Scales::default() };
-    match panels_svg(&caption(a), "s, sliding over the life (m; a failed life at the limit)", &[panel], scales) {
+    let title = format!("Probability that the life's sliding |S| exceeds s\n{}", caption(a));
+    match panels_svg(&title, "s, sliding over the life (m; a failed life at the limit)", &[panel], scales) {
         Ok(svg) => figure(
             o,
             &format!("fig-exceedance-{}", a.name),
