@@ -195,12 +195,17 @@ td.n, th.n { text-align: right; white-space: nowrap; }
 td:first-child { width: 32%; }
 table.meta th { width: 22%; }
 #goda-sheet td:first-child { width: 12%; }
+#lifetime, #candidates, #comparison, #paired-differences { font-size: 8.5pt; }
+#lifetime td:first-child { width: 24%; }
 td.f { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 figure { margin: 3mm 0; break-inside: avoid; page-break-inside: avoid; }
 figure svg { display: block; width: 100%; height: auto; }
 figcaption { font-size: 8.5pt; color: #333; margin-top: 1mm; }
 .note { font-size: 8.5pt; color: #333; }
 .warn { border-left: 2pt solid #b00; padding-left: 2mm; margin: 1.5mm 0; }
+div.alternative { counter-reset: sec; }
+h2.s::before { counter-increment: sec; content: counter(sec) ". "; }
+.keep { break-inside: avoid; page-break-inside: avoid; }
 .part { break-before: page; page-break-before: always; }
 "#;
 
@@ -224,7 +229,7 @@ pub fn render(alternatives: &[Alternative], date: &str) -> String {
         comparison(&mut o, alternatives);
     }
     for (i, a) in alternatives.iter().enumerate() {
-        let class = if alternatives.len() > 1 { " class=\"part\"" } else { "" };
+        let class = if alternatives.len() > 1 { " class=\"alternative part\"" } else { " class=\"alternative\"" };
         let _ = writeln!(o, "<div{class} id=\"alternative-{i}\">");
         note(&mut o, i, a, date, alternatives.len() > 1);
         let _ = writeln!(o, "</div>");
@@ -385,7 +390,7 @@ fn title_block(o: &mut String, i: usize, a: &Alternative, date: &str, title: &st
 fn inputs(o: &mut String, i: usize, a: &Alternative) {
     let c = &a.caisson;
     let f = &a.foundation;
-    let _ = writeln!(o, "<h2>1. Inputs</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">Inputs</h2>");
     let _ = writeln!(
         o,
         "<table id=\"inputs\"><tr><th>quantity</th><th>symbol</th><th class=\"n\">value</th><th>unit</th></tr>"
@@ -445,7 +450,7 @@ fn inputs(o: &mut String, i: usize, a: &Alternative) {
 
 fn design_wave(o: &mut String, i: usize, l: &LoadsReport) {
     let dw = &l.design_wave;
-    let _ = writeln!(o, "<h2>2. The design wave</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">The design wave</h2>");
     let _ = writeln!(o, "<table id=\"design-wave\"><tr><th>quantity</th><th class=\"n\">value</th><th>unit</th></tr>");
     let row = |o: &mut String, q: &str, v: String, u: &str| {
         let _ = writeln!(o, "<tr><td>{q}</td><td class=\"n\">{v}</td><td>{u}</td></tr>");
@@ -477,7 +482,8 @@ fn goda_sheet(o: &mut String, i: usize, a: &Alternative, l: &LoadsReport) {
     let cb = beta.cos();
     let hc_star = g.eta_star_m.min(s.crest_freeboard_m);
     let (w, b) = (sf.weight_in_water_kn_per_m, s.width_m);
-    let _ = writeln!(o, "<h2>3. Goda's static check under the design wave</h2>");
+    // The sheet on one page.
+    let _ = writeln!(o, "<section class=\"keep\">\n<h2 class=\"s\">Goda's static check under the design wave</h2>");
     let _ = writeln!(
         o,
         "<p class=\"note\">Goda (2000, ch. 4), Takahashi et al. (1994); per metre of breakwater, λ1 = λ2 = λ3 = 1, β = {}° (rotated by 15° toward the normal), ρ_w g = {} kN/m³, h' = {} m, h_c = {} m, B = {} m. Each line gives the formula, the numbers in it and the value computed by caisson (to the digits shown).</p>",
@@ -668,7 +674,7 @@ fn goda_sheet(o: &mut String, i: usize, a: &Alternative, l: &LoadsReport) {
     };
     let _ = writeln!(
         o,
-        "<p>Under the design wave, {verdict} for {} ({} m wide, W' = {} kN/m).</p>",
+        "<p>Under the design wave, {verdict} for {} ({} m wide, W' = {} kN/m).</p>\n</section>",
         esc(&a.name),
         num(b, 2),
         num(w, 1)
@@ -677,7 +683,7 @@ fn goda_sheet(o: &mut String, i: usize, a: &Alternative, l: &LoadsReport) {
 
 fn one_wave(o: &mut String, a: &Alternative, w: &OneWave) {
     use crate::plot::{panels_svg, Panel, Scales, Series};
-    let _ = writeln!(o, "<h2>4. One wave through the dynamic model, beside the rigid block</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">One wave through the dynamic model, beside the rigid block</h2>");
     let rise = w.rise_time_s.map_or(String::from("no impulsive peak"), |t| format!("rise time t_r = {t:.3} s"));
     let _ = writeln!(
         o,
@@ -766,7 +772,7 @@ fn wilson(k: usize, n: usize) -> String {
 fn lifetime(o: &mut String, i: usize, a: &Alternative, d: &DesignPart) {
     let r = &d.report;
     let (sd, sr) = (&r.dynamic.sliding, &r.rigid_block);
-    let _ = writeln!(o, "<h2>5. Lifetime statistics</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">Lifetime statistics</h2>");
     let _ = writeln!(
         o,
         "<p>{} lives of {} years (seed {}): {} waves, {} through the dynamic model, the others screened (they cannot slide it). A failed life (moved beyond {} m or rotated beyond {} rad) enters E|S| at the sliding limit; E|S| as simulated keeps every life whole (Shimosako &amp; Takahashi 1999). Intervals: mean ± 1.96 SE; Wilson's for probabilities.</p>",
@@ -935,7 +941,9 @@ fn exceedance_figure(o: &mut String, a: &Alternative, d: &DesignPart) {
         Series::line(format!("failure limit {limit:.3} m"), vec![(limit, least), (limit, 1.0)]),
     ];
     if es > floor_m {
-        series.push(Series::markers(format!("E|S| = {es:.4} m (dynamic model)"), vec![(es, 0.5)]));
+        // On the curve: P(|S| > E|S|).
+        let share = capped(&|l| l.sliding_m).iter().filter(|&&x| x > es).count() as f64 / d.lives.len().max(1) as f64;
+        series.push(Series::markers(format!("E|S| = {es:.4} m (dynamic model)"), vec![(es, share.max(least))]));
     }
     let panel = Panel { y_label: "P(|S| > s)".into(), series };
     let scales = Scales { log_x: true, log_y: true, ..Scales::default() };
@@ -980,7 +988,7 @@ fn required_text(i: usize, key: &str, r: &Required) -> String {
 
 fn sizing(o: &mut String, i: usize, a: &Alternative, s: &SizePart) {
     let r = &s.report;
-    let _ = writeln!(o, "<h2>6. The required width</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">The required width</h2>");
     let c = &r.criteria;
     let mut crit = Vec::new();
     if let Some(e) = c.expected_sliding_m {
@@ -1054,7 +1062,7 @@ fn sizing(o: &mut String, i: usize, a: &Alternative, s: &SizePart) {
 }
 
 fn fragility(o: &mut String, i: usize, a: &Alternative, f: &FragilityReport, svg: &str) {
-    let _ = writeln!(o, "<h2>7. Fragility</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">Fragility</h2>");
     let v = serde_json::to_value(f).unwrap_or_default();
     let _ = writeln!(
         o,
@@ -1114,7 +1122,7 @@ fn warnings(o: &mut String, a: &Alternative) {
             all.push(w.clone());
         }
     }
-    let _ = writeln!(o, "<h2>8. Warnings</h2>");
+    let _ = writeln!(o, "<h2 class=\"s\">Warnings</h2>");
     if all.is_empty() {
         let _ = writeln!(o, "<p id=\"warnings\">None: every plausibility check of caisson passed.</p>");
         return;
