@@ -283,3 +283,23 @@ fn the_comparison_of_two_breaking_load_rules_names_each_rule_and_pairs_them() {
     assert_eq!(embedded(&html, 0, "design")["seed"], embedded(&html, 1, "design")["seed"]);
     assert!(html.contains("<td>paired</td>"), "the same seed and lives: paired");
 }
+
+#[test]
+fn bad_input_is_refused_before_anything_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("r");
+    let missing = dir.path().join("missing.toml");
+    // A missing second scenario: refused (exit 2, naming it) before the first is computed.
+    let err = support::refused(
+        &["report", &example("design_breakwater.toml"), s(&missing), "--out", s(&out)],
+        &["missing.toml"],
+    );
+    assert!(err.starts_with("Error:"), "{err}");
+    assert!(!out.exists(), "nothing written");
+    // A bad key of a scenario: its key named.
+    let bad = write(dir.path(), "bad.toml", &support::design_text(20, 1, "").replace("mu_static = ", "mu_static = -"));
+    support::refused(&["report", s(&bad), "--out", s(&out)], &["mu_static"]);
+    // --out is required.
+    support::refused(&["report", &example("design_breakwater.toml")], &["--out"]);
+    assert!(!out.exists());
+}
