@@ -1128,13 +1128,34 @@ fn warnings(o: &mut String, a: &Alternative) {
         return;
     }
     let _ = writeln!(o, "<div id=\"warnings\">");
-    for w in all {
+    // One paragraph per kind: its first message whole, the others named by where they occur
+    // (a sizing's candidate widths repeat the same warnings).
+    let mut codes: Vec<&str> = Vec::new();
+    for w in &all {
+        if !codes.contains(&w.code) {
+            codes.push(w.code);
+        }
+    }
+    for code in codes {
+        let of_code: Vec<&caisson::analysis::checks::Warning> = all.iter().filter(|w| w.code == code).collect();
+        let first = of_code[0];
+        let others: Vec<String> = of_code[1..]
+            .iter()
+            .map(|w| w.message.split_once(':').map_or_else(|| w.message.clone(), |(at, _)| at.to_string()))
+            .collect();
+        let also = if others.is_empty() {
+            String::new()
+        } else if others.iter().all(|a| a.len() < 40) {
+            format!(" <i>Also</i> {}.", esc(&others.join("; ")))
+        } else {
+            format!(" <i>And {} more of this kind.</i>", others.len())
+        };
         let _ = writeln!(
             o,
-            "<p class=\"warn\"><b>{}</b>: {} <i>Check:</i> {}.</p>",
-            esc(w.code),
-            esc(&w.message),
-            esc(what_to_check(w.code))
+            "<p class=\"warn\"><b>{}</b>: {}{also} <i>Check:</i> {}.</p>",
+            esc(code),
+            esc(&first.message),
+            esc(what_to_check(code))
         );
     }
     let _ = writeln!(o, "</div>");
