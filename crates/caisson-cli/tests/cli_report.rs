@@ -303,3 +303,17 @@ fn bad_input_is_refused_before_anything_is_written() {
     support::refused(&["report", &example("design_breakwater.toml")], &["--out"]);
     assert!(!out.exists());
 }
+
+#[test]
+fn the_fragility_note_shows_the_numbers_of_fragility_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = example("fragility.toml");
+    let html = report(&[&scenario], &dir.path().join("r"), false, 600);
+    let fragility = json_of(&["fragility", &scenario, "--json"], 600);
+    assert_eq!(embedded(&html, 0, "fragility"), fragility, "fragility.json");
+    // θ and β of both models at each limit.
+    let limits = fragility["limits_m"].as_array().unwrap().len();
+    assert_eq!(compare(&html, &[("fragility", &fragility)]), 2 * 2 * limits);
+    assert!(html.contains("id=\"fig-fragility-fragility\""));
+    assert!(!html.contains("id=\"lifetime\""), "no [design]: no lifetime section");
+}
