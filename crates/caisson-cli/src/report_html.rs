@@ -1094,18 +1094,27 @@ fn fragility(o: &mut String, i: usize, a: &Alternative, f: &FragilityReport, svg
 /// What to check for a warning's code (the message says what happened).
 fn what_to_check(code: &str) -> &'static str {
     match code {
-        c if c.contains("impulsive") => {
-            "the breaking-wave load rule ([waves] breaking_load) and the berm geometry; compare the note under goda-takahashi and cuomo-2010"
+        "failed-lives" | "beyond-failure" | "sliding-beyond-width" => {
+            "the failure limits of [design], the failure probability against the criterion, and whether a wider caisson (the sizing) is needed"
         }
-        c if c.contains("heel") => "the foundation's bearing capacity against the heel pressure; the caisson's width",
-        c if c.contains("failure") || c.contains("fail") => {
-            "the failure limits of [design] and whether the width meets the criterion; the sizing section"
+        "large-rotation-lives" | "overturning-under-design-wave" => {
+            "overturning and the bearing capacity of the mound under the heel by a method that follows them; the caisson's width and weight"
         }
-        c if c.contains("settlement") || c.contains("period") || c.contains("stiff") => {
-            "the foundation's E100, Poisson's ratio and density ([foundation])"
+        "seaward-lives" | "rocking-without-slip" => {
+            "the rocking of the caisson (rotations, heel pressures) rather than its sliding; the foundation's stiffness ([foundation])"
         }
-        c if c.contains("step") => "the solver's dt_s and dt_max_s ([solver])",
-        c if c.contains("load") => "the wave height and the caisson's weight ([waves], [caisson])",
+        "impulsive-share" | "impulsive-share-outside-goda-conditions" => {
+            "the breaking-wave load rule ([waves] breaking_load) and the mound's geometry: compare the note under goda-takahashi and cuomo-2010 (examples/compare)"
+        }
+        "impulsive-coefficient-without-berm" => "[water] berm_width_m: give the berm's width for Takahashi's α_I",
+        "implausible-settlement" | "implausible-natural-period" | "implausible-base-pressure" => {
+            "the foundation's E100, Poisson's ratio and density ([foundation]) and the caisson's weight ([caisson])"
+        }
+        "implausible-load" => "the wave height and period ([waves]) against the caisson's weight in water ([caisson])",
+        "coarse-time-step" | "undamped-adaptive" => "the solver's dt_s, dt_max_s and error_tolerance_m ([solver])",
+        "dashpot-exceeds-friction" | "rotational-dashpot-moment" => {
+            "the foundation's damping placement ([foundation] damping_mode, vertical_damping; the profile)"
+        }
         _ => "the inputs the message names",
     }
 }
@@ -1332,6 +1341,28 @@ mod tests {
             assert_eq!(utc_date(s), d, "{s}");
         }
         assert_eq!(cases.len(), 4);
+    }
+
+    /// Every warning code of the library's checks has advice of its own in the note (read from
+    /// the checks' source: a new code fails here until it has).
+    #[test]
+    fn every_warning_code_has_its_advice() {
+        let source = include_str!("../../caisson/src/analysis/checks.rs");
+        let mut codes: Vec<&str> = Vec::new();
+        for part in source.split('"').skip(1).step_by(2) {
+            let code_like = part.len() > 3
+                && part.contains('-')
+                && part.chars().all(|c| c.is_ascii_lowercase() || c == '-')
+                && !part.starts_with('-')
+                && !part.ends_with('-');
+            if code_like && !codes.contains(&part) {
+                codes.push(part);
+            }
+        }
+        assert!(codes.len() >= 18, "{codes:?}");
+        for code in &codes {
+            assert_ne!(what_to_check(code), what_to_check("no-such-code"), "{code}: no advice");
+        }
     }
 
     /// An SVG of the plot module gets a viewBox of its size and a width of 100 %.
