@@ -118,6 +118,7 @@ fn alternative(path: &Path, sc: &Scenario, threads: usize) -> Result<Alternative
         springs: sc.foundation().springs,
         loads: None,
         one_wave: None,
+        one_wave_error: None,
         design: None,
         size: None,
         fragility: None,
@@ -126,7 +127,11 @@ fn alternative(path: &Path, sc: &Scenario, threads: usize) -> Result<Alternative
     // Goda's static check under the design wave, as `caisson loads` computes it.
     let check = static_check(structure, ws).map_err(input_err)?;
     alt.loads = Some(LoadsReport::of_structure(structure, ws, &check, None).map_err(input_err)?);
-    alt.one_wave = one_wave(sc, ws, &check).ok();
+    // A wave the engine cannot follow is said in the note, not an error of the whole note.
+    match one_wave(sc, ws, &check) {
+        Ok(w) => alt.one_wave = Some(w),
+        Err(e) => alt.one_wave_error = Some(format!("{e:#}")),
+    }
     if let Some(design) = &sc.design {
         let case = sc.storm_case(design.screen).map_err(input_err)?;
         let waves = sc.waves_for("`caisson report`").map_err(input_err)?;

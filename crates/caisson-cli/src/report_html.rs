@@ -73,6 +73,8 @@ pub struct Alternative {
     /// Goda's static check under the design wave (`caisson loads`).
     pub loads: Option<LoadsReport>,
     pub one_wave: Option<OneWave>,
+    /// Why the design wave could not be run through the dynamic model, if it could not.
+    pub one_wave_error: Option<String>,
     pub design: Option<DesignPart>,
     pub size: Option<SizePart>,
     pub fragility: Option<(FragilityReport, String)>,
@@ -314,6 +316,12 @@ fn note(o: &mut String, i: usize, a: &Alternative, date: &str, several: bool) {
     }
     if let Some(w) = &a.one_wave {
         one_wave(o, a, w);
+    } else if let Some(e) = &a.one_wave_error {
+        let _ = writeln!(
+            o,
+            "<h2 class=\"s\">One wave through the dynamic model, beside the rigid block</h2>\n<p class=\"warn\">The design wave could not be run through the dynamic model: {}</p>",
+            esc(e)
+        );
     }
     if let Some(d) = &a.design {
         lifetime(o, i, a, d);
