@@ -118,6 +118,8 @@ fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
 /// (`#`, the file's order; the PARI examples list them by weight, then height), mean with min-max
 /// bars, the rigid block beside; and sliding against H, one line per weight.
 pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionResult]) -> Result<()> {
+    // A second line of `title` is the figures' caption line (the site and the version).
+    let (title, caption) = title.split_once('\n').unwrap_or((title, ""));
     let order: Vec<usize> = (0..results.len()).collect();
     let at = |k: usize| (k + 1) as f64;
     // Millimetres, or metres where a model slides more than a metre (a rigid block pushed above
@@ -146,7 +148,7 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.weight_in_water_n / 1e3)).collect();
     panels_scaled(
         &dir.join(format!("{stem}.svg")),
-        &format!("{title}: total sliding per test condition (numbered as in the table)"),
+        &format!("{title}: total sliding per test condition (numbered as in the table)\n{caption}"),
         "test condition",
         &[
             Panel {
@@ -190,7 +192,7 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
     }
     panels(
         &dir.join(format!("{stem}_vs_height.svg")),
-        &format!("{title}: total sliding against the wave height"),
+        &format!("{title}: total sliding against the wave height\n{caption}"),
         &if step > 0.0 {
             format!("H (m); the weights' points {step:.2} m apart, not on each other")
         } else {
@@ -238,7 +240,20 @@ pub fn run(args: CampaignArgs) -> Result<()> {
         let full = report_json(&CampaignReport::new(&campaign, &results, true), "campaign")?;
         write_atomic(&dir.join("campaign.json"), pretty(&full)?.as_bytes())?;
         write_atomic(&dir.join("campaign.csv"), &campaign_csv(&results)?)?;
-        campaign_plots(dir, "campaign", &campaign.title, &results)?;
+        // The site and the caisson's width (the conditions vary its weight) and the version.
+        let caption = campaign.setups.first().map_or(String::new(), |s| {
+            let site = &s.waves.model.site;
+            format!(
+                "h = {} m at the toe, d = {} m; B = {} m, μ = {}; caisson {} (results {})",
+                site.depth_at_toe_m,
+                site.depth_at_wall_m,
+                s.structure.caisson.width_m,
+                s.structure.foundation.mu_static,
+                caisson::VERSION,
+                caisson::RESULTS_VERSION
+            )
+        });
+        campaign_plots(dir, "campaign", &format!("{}\n{caption}", campaign.title), &results)?;
         crate::output::tidy_out_dir(dir, "campaign", &[])?;
         if !args.json {
             crate::sayln!("\nWrote campaign.json (with every realization and wave), campaign.csv, campaign.svg, campaign_vs_height.svg to {}", dir.display());
