@@ -56,6 +56,7 @@ check "fragility 4 storms" "$BIN" fragility "$work/fragility.toml"
 check "size 4 lives" "$BIN" size "$work/size.toml" --out "$work/o6"
 check "size 1e6 lives of 500 years (budget)" "$BIN" size "$work/size_huge.toml"
 check "merge /dev/zero" "$BIN" merge "$work/design.toml" /dev/zero --out "$work/o7"
+check "report 20 lives --no-pdf" "$BIN" report "$work/design.toml" --out "$work/o11" --no-pdf
 check "run /dev/zero as scenario" "$BIN" run /dev/zero
 # A checkpoint with a 256 MiB NUL tail (what a machine crash can leave), resumed.
 truncate -s +256M "$work/o5/checkpoint.jsonl"

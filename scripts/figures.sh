@@ -41,5 +41,6 @@ figure spectrum spectrum examples/table5_triangle.toml -- spectrum.svg
 figure loads loads examples/pari_breaking_loads.toml --history -- wave_loads.svg
 figure campaign campaign examples/pari_breaking_campaign.toml -- campaign.svg campaign_vs_height.svg
 figure design design examples/design_breakwater.toml -- histogram.svg exceedance.svg
+figure design design examples/breaking_site_15m.toml -- heel_pressure.svg
 figure fragility fragility examples/fragility.toml -- fragility.svg
 figure size size examples/size_breakwater.toml -- design_curve.svg

@@ -75,6 +75,25 @@ pub enum Command {
     Size(SizeArgs),
     /// Merge the shards of a design run (`design --life-range`) into the outputs of one run.
     Merge(MergeArgs),
+    /// A calculation note (report.html, and report.pdf where Chromium is found) of one scenario,
+    /// or of several side by side.
+    Report(ReportArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct ReportArgs {
+    /// Scenario files (TOML); two or more are set side by side as alternatives.
+    #[arg(required = true, value_name = "SCENARIO")]
+    pub scenarios: Vec<PathBuf>,
+    /// Write report.html (and report.pdf) here.
+    #[arg(long, value_name = "DIR", required = true)]
+    pub out: PathBuf,
+    /// Worker threads (0: one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0, value_parser = threads)]
+    pub threads: usize,
+    /// Do not print the PDF even where Chromium is found.
+    #[arg(long)]
+    pub no_pdf: bool,
 }
 
 #[derive(Args, Debug)]

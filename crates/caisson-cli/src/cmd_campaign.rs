@@ -118,6 +118,8 @@ fn campaign_csv(results: &[ConditionResult]) -> Result<Vec<u8>> {
 /// (`#`, the file's order; the PARI examples list them by weight, then height), mean with min-max
 /// bars, the rigid block beside; and sliding against H, one line per weight.
 pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionResult]) -> Result<()> {
+    // A second line of `title` is the figures' caption line (the site and the version).
+    let (title, caption) = title.split_once('\n').unwrap_or((title, ""));
     let order: Vec<usize> = (0..results.len()).collect();
     let at = |k: usize| (k + 1) as f64;
     // Millimetres, or metres where a model slides more than a metre (a rigid block pushed above
@@ -146,7 +148,7 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
         order.iter().enumerate().map(|(k, &i)| (at(k), results[i].condition.weight_in_water_n / 1e3)).collect();
     panels_scaled(
         &dir.join(format!("{stem}.svg")),
-        &format!("{title}: total sliding per test condition (numbered as in the table)"),
+        &format!("{title}: total sliding per test condition (numbered as in the table)\n{caption}"),
         "test condition",
         &[
             Panel {
@@ -168,13 +170,20 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
     weights.dedup();
     let mut dyn_series = Vec::new();
     let mut rb_series = Vec::new();
-    for w in &weights {
+    // The weights' points at one height side by side, not on each other: each series is offset
+    // by a fraction of the heights' span (the x label says so).
+    let (h_lo, h_hi) = results.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+        (a.min(r.condition.height_m), b.max(r.condition.height_m))
+    });
+    let step = if weights.len() > 1 { 0.012 * (h_hi - h_lo).max(0.5) } else { 0.0 };
+    for (j, w) in weights.iter().enumerate() {
+        let shift = step * (j as f64 - (weights.len() - 1) as f64 / 2.0);
         let mut rs: Vec<&ConditionResult> = results.iter().filter(|r| r.condition.weight_in_water_n == *w).collect();
         rs.sort_by(|a, b| a.condition.height_m.total_cmp(&b.condition.height_m));
         let label = format!("W = {:.1} kN", w / 1e3);
         dyn_series.push(Series::ranges(
             label.clone(),
-            rs.iter().map(|r| (r.condition.height_m, r.summary.sliding_m.mean * dk)).collect(),
+            rs.iter().map(|r| (r.condition.height_m + shift, r.summary.sliding_m.mean * dk)).collect(),
             rs.iter().map(|r| (r.summary.sliding_m.min * dk, r.summary.sliding_m.max * dk)).collect(),
         ));
         // A weight tested at one height is a point, not a line of one point (which draws nothing).
@@ -183,8 +192,12 @@ pub fn campaign_plots(dir: &Path, stem: &str, title: &str, results: &[ConditionR
     }
     panels(
         &dir.join(format!("{stem}_vs_height.svg")),
-        &format!("{title}: total sliding against the wave height"),
-        "H (m)",
+        &format!("{title}: total sliding against the wave height\n{caption}"),
+        &if step > 0.0 {
+            format!("H (m); the weights' points {step:.2} m apart, not on each other")
+        } else {
+            "H (m)".to_string()
+        },
         &[
             Panel { y_label: format!("dynamic model ({du})"), series: dyn_series },
             Panel { y_label: format!("rigid block, mean ({ru})"), series: rb_series },
@@ -227,7 +240,20 @@ pub fn run(args: CampaignArgs) -> Result<()> {
         let full = report_json(&CampaignReport::new(&campaign, &results, true), "campaign")?;
         write_atomic(&dir.join("campaign.json"), pretty(&full)?.as_bytes())?;
         write_atomic(&dir.join("campaign.csv"), &campaign_csv(&results)?)?;
-        campaign_plots(dir, "campaign", &campaign.title, &results)?;
+        // The site and the caisson's width (the conditions vary its weight) and the version.
+        let caption = campaign.setups.first().map_or(String::new(), |s| {
+            let site = &s.waves.model.site;
+            format!(
+                "h = {} m at the toe, d = {} m; B = {} m, μ = {}; caisson {} (results {})",
+                site.depth_at_toe_m,
+                site.depth_at_wall_m,
+                s.structure.caisson.width_m,
+                s.structure.foundation.mu_static,
+                caisson::VERSION,
+                caisson::RESULTS_VERSION
+            )
+        });
+        campaign_plots(dir, "campaign", &format!("{}\n{caption}", campaign.title), &results)?;
         crate::output::tidy_out_dir(dir, "campaign", &[])?;
         if !args.json {
             crate::sayln!("\nWrote campaign.json (with every realization and wave), campaign.csv, campaign.svg, campaign_vs_height.svg to {}", dir.display());

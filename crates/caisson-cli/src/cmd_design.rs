@@ -134,9 +134,9 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     ));
     panels_scaled(
         &dir.join("histogram.svg"),
-        &format!("{title}: sliding |S| over the design life"),
+        &format!("Sliding |S| over the design life\n{title}"),
         &format!(
-            "|S|, distance from the place at the end of the life (m; a failed life at the limit); not shown: the {:.1} % (dynamic) and {:.1} % (rigid block) of lives below 0.1 mm",
+            "|S| at the end of the life (m; a failed life at the limit); not shown: the {:.1} % (dynamic) and {:.1} % (rigid block) of lives below 0.1 mm",
             100.0 * below(dynamic) as f64 / dynamic.len().max(1) as f64,
             100.0 * below(rigid) as f64 / rigid.len().max(1) as f64
         ),
@@ -155,7 +155,7 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     let floor = 1.0 / dynamic.len().max(1) as f64;
     panels_scaled(
         &dir.join("exceedance.svg"),
-        &format!("{title}: probability that the life's sliding |S| exceeds s"),
+        &format!("Probability that the life's sliding |S| exceeds s\n{title}"),
         "s (m); a failed life at the failure limit",
         &[Panel {
             y_label: "P(|S| > s)".into(),
@@ -345,7 +345,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let lives: Vec<StormOutcome> = done.into_values().collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-    report_lives(&args.scenario, &run, &lives, args.json, args.out.as_deref(), &keep)
+    report_lives(&run, &lives, args.json, args.out.as_deref(), &keep)
 }
 
 /// The lives `todo` on `threads` workers, each appended to the checkpoint (or kept for it while it
@@ -420,7 +420,6 @@ fn rewrite_checkpoint(
 /// table or JSON on standard output and, with `out`, design.json, lives.csv, histogram.svg and
 /// exceedance.svg. What one design run reports; `caisson merge` reports through it too.
 pub(crate) fn report_lives(
-    scenario_path: &Path,
     run: &Designer<'_>,
     lives: &[StormOutcome],
     json: bool,
@@ -439,7 +438,8 @@ pub(crate) fn report_lives(
     if let Some(dir) = out {
         // Merge and design opened the set before writing their checkpoint into it.
         let _set = (!crate::output::set_open()).then(|| crate::output::OutSet::open(dir));
-        let title = scenario_path.file_stem().and_then(|s| s.to_str()).unwrap_or("design");
+        let caption = crate::plot::caption(run.case.structure, Some(run.waves));
+        let title = caption.as_str();
         // The values of the statistics: a failed life at the sliding limit.
         let dynamic: Vec<f64> = lives.iter().map(|l| if l.failed() { failure_m } else { l.sliding_m.abs() }).collect();
         let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs().min(failure_m)).collect();
@@ -692,8 +692,8 @@ fn heel_pressure_plot(
     ));
     panels_scaled(
         &dir.join("heel_pressure.svg"),
-        &format!("{title}: probability that the life's largest heel pressure exceeds q"),
-        "q, heel (shoreward edge) pressure of the base from the springs' reactions (kPa; dynamic model)",
+        &format!("Probability that the life's largest heel pressure exceeds q\n{title}"),
+        "q, heel (shoreward edge) pressure, dynamic model (kPa); from the springs' reactions",
         &[Panel { y_label: "P(q_heel > q)".into(), series }],
         Scales { log_x: false, log_y: true, ..Scales::default() },
     )

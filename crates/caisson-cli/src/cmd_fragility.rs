@@ -8,7 +8,7 @@ use crate::cli::FragilityArgs;
 use crate::csv_rows::{to_csv, Plain, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
-use crate::plot::{panels, Panel, Series};
+use crate::plot::{Panel, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::fragility::{
     run_fragility, FitFailure, FragilityParams, FragilityResult, LevelResult, LognormalFit, HMAX_RATIO,
@@ -232,6 +232,11 @@ fn fragility_csv(s: &Setup<'_>, r: &FragilityResult) -> Result<Vec<u8>> {
 /// One panel per limit, both models on it (the engineer compares them): the storm shares as
 /// markers and each model's fitted curve in its colour, over the heights of the grid.
 fn fragility_plot(path: &Path, name: &str, r: &FragilityResult) -> Result<()> {
+    write_atomic(path, fragility_svg(name, r)?.as_bytes())
+}
+
+/// The SVG text of `fragility.svg` (the calculation note inlines it).
+pub(crate) fn fragility_svg(name: &str, r: &FragilityResult) -> Result<String> {
     let (lo, hi) = (r.levels[0].h13_m, r.levels[r.levels.len() - 1].h13_m);
     let curve_at = |f: &LognormalFit| {
         (0..=200).map(|i| lo + (hi - lo) * i as f64 / 200.0).map(|h| (h, f.probability(h))).collect::<Vec<_>>()
@@ -257,11 +262,11 @@ fn fragility_plot(path: &Path, name: &str, r: &FragilityResult) -> Result<()> {
         }
         out.push(Panel { y_label: format!("P(S > {} m)", f.limit_m), series });
     }
-    panels(
-        path,
-        &format!("{name}: fragility curves for sliding (points: storms; lines: lognormal fits)"),
+    crate::plot::panels_svg(
+        &format!("Fragility curves for sliding (points: storms; lines: lognormal fits)\n{name}"),
         "H1/3 at the structure (m)",
         &out,
+        crate::plot::Scales::default(),
     )
 }
 
@@ -292,7 +297,7 @@ pub fn run(args: FragilityArgs) -> Result<()> {
         let _set = crate::output::OutSet::open(dir);
         write_atomic(&dir.join("fragility.json"), pretty(&json)?.as_bytes())?;
         write_atomic(&dir.join("fragility.csv"), &fragility_csv(&setup, &result)?)?;
-        fragility_plot(&dir.join("fragility.svg"), name, &result)?;
+        fragility_plot(&dir.join("fragility.svg"), &crate::plot::caption(sc.structure(), Some(setup.waves)), &result)?;
         crate::output::tidy_out_dir(dir, "fragility", &[])?;
         if !args.json {
             crate::sayln!("\nWrote fragility.json, fragility.csv, fragility.svg to {}", dir.display());

@@ -81,7 +81,7 @@ pub fn run(args: LoadsArgs) -> Result<()> {
         let _set = crate::output::OutSet::open(out);
         write_atomic(&out.join("loads.json"), pretty(&doc)?.as_bytes())?;
         if let Some((records, train)) = &history {
-            write_history(out, ws, &loads, records, train)?;
+            write_history(out, &crate::plot::caption(sc.structure(), Some(ws)), ws, &loads, records, train)?;
             if !args.json {
                 crate::sayln!(
                     "\nWrote {}, {} and {}",
@@ -308,6 +308,7 @@ fn wave_times(e: &WaveEvent, out: &mut Vec<f64>) {
 
 fn write_history(
     out: &Path,
+    caption: &str,
     ws: &WaveSetup,
     loads: &WaveLoads,
     records: &[WaveRecord],
@@ -342,19 +343,23 @@ fn write_history(
     };
     let shape = ws.model.options.load_shape;
     let rule = ws.model.options.breaking_load.name();
-    let label = match (loads.regime.regime, shape) {
-        (Regime::NonBreaking, _) => "total wave force (seed Eq. 29)".to_string(),
-        (Regime::Breaking, LoadShape::Seed) => format!("total wave force (seed Eq. 31, {rule} peak)"),
-        (Regime::Breaking, s) => format!("total wave force, {} shape (seed Table 2), {rule} peak", s.name()),
+    // What the history is, after the quantity each panel shows (force, uplift, moment).
+    let how = match (loads.regime.regime, shape) {
+        (Regime::NonBreaking, _) => "(seed Eq. 29)".to_string(),
+        (Regime::Breaking, LoadShape::Seed) => format!("(seed Eq. 31, {rule} peak)"),
+        (Regime::Breaking, s) => format!(", {} shape (seed Table 2), {rule} peak", s.name()),
     };
-    let ref_label = "pulsating part (α_qs F_qs+, F_qs−)";
+    let label = |what: &str| format!("total {what} {how}").replace(" ,", ",");
+    // Drawn over the total in a colour of its own: where there is no impact the two coincide.
+    let ref_label = "pulsating part alone (α_qs F_qs+, F_qs−)";
     let title = format!(
-        "Wave loads: H = {:.3} m, T = {:.2} s, {}, {} waves (totals for l = {} m)",
+        "Wave loads: H = {:.3} m, T = {:.2} s, {}, {} waves (totals for l = {} m)\n{}",
         loads.height_incident_m,
         loads.period_s,
         loads.regime.regime.name(),
         records.len(),
-        ws.model.site.length_m
+        ws.model.site.length_m,
+        caption
     );
     panels(
         &out.join("wave_loads.svg"),
@@ -363,15 +368,21 @@ fn write_history(
         &[
             Panel {
                 y_label: "F_x (kN)".into(),
-                series: vec![Series::line(label.clone(), fx), Series::dashed(ref_label, reference(|f| f.fx_n))],
+                series: vec![
+                    Series::line(label("horizontal wave force"), fx),
+                    Series::line(ref_label, reference(|f| f.fx_n)),
+                ],
             },
             Panel {
                 y_label: "F_y (kN)".into(),
-                series: vec![Series::line(label.clone(), fy), Series::dashed(ref_label, reference(|f| f.fy_n))],
+                series: vec![Series::line(label("uplift force"), fy), Series::line(ref_label, reference(|f| f.fy_n))],
             },
             Panel {
                 y_label: "M (kN·m)".into(),
-                series: vec![Series::line(label, m), Series::dashed(ref_label, reference(|f| f.m_nm))],
+                series: vec![
+                    Series::line(label("wave moment about the base"), m),
+                    Series::line(ref_label, reference(|f| f.m_nm)),
+                ],
             },
         ],
     )

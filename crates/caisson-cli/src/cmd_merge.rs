@@ -172,7 +172,7 @@ pub fn run(args: MergeArgs) -> Result<()> {
     if !args.json {
         crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
     }
-    report_lives(&args.scenario, &run, &lives, args.json, Some(&args.out), &[])
+    report_lives(&run, &lives, args.json, Some(&args.out), &[])
 }
 
 /// Each shard given once, none still running, all run with or all without --brute-force (which

@@ -126,8 +126,7 @@ fn run_load(args: &RunArgs, sc: &Scenario, load: &LoadSpec) -> Result<()> {
     if let (Some(dir), Some(files)) = (&args.out, files) {
         write_atomic(&dir.join("summary.json"), pretty(&json)?.as_bytes())?;
         let envelope = files.finish()?;
-        let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
-        write_plots(dir, &envelope, title)?;
+        write_plots(dir, &envelope, &crate::plot::caption(sc.structure(), sc.waves.as_ref()))?;
         tidy_out_dir(dir, "run", &[])?;
         if !args.json {
             crate::sayln!(

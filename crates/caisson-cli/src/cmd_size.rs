@@ -136,7 +136,8 @@ pub fn run(args: SizeArgs) -> Result<()> {
         crate::say!("{}", size_text(&report));
     }
     if let Some(dir) = &args.out {
-        let title = args.scenario.file_stem().and_then(|s| s.to_str()).unwrap_or("size");
+        let caption = crate::plot::caption(sc.structure(), sc.waves.as_ref());
+        let title = caption.as_str();
         export(dir, title, &report, &json, checkpoint.as_deref())?;
         if !args.json {
             crate::sayln!(
@@ -571,6 +572,12 @@ fn candidates_csv(r: &SizeReport) -> Result<Vec<u8>> {
 /// the 95 % value of |S| and the rigid block's E|S|), P(|S| > S_lim) and P(failure) against the
 /// width for both models, each with its limit, the required widths and Goda's width.
 fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
+    let svg = design_curve_svg(title, r)?;
+    write_atomic(&dir.join("design_curve.svg"), svg.as_bytes())
+}
+
+/// The SVG text of `design_curve.svg` (the calculation note inlines it).
+pub(crate) fn design_curve_svg(title: &str, r: &SizeReport) -> Result<String> {
     use caisson::analysis::sizing::ModelPoint;
     // Below 0.1 mm the caisson has not slid to speak of, and a probability below 1e-4 is beyond
     // what a few thousand lives estimate: the axes start there (a zero is drawn at the floor).
@@ -611,9 +618,12 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
         }
     };
     let which = if as_simulated { "E|S| as simulated" } else { "E|S|" };
+    // Each line with a marker at every computed width (unlabelled: the line's colour).
     let mut sliding = vec![
         Series::line(format!("dynamic model: {which}"), pts(FLOOR_M, &|k| mean(&k.dynamic))),
+        Series::markers("", pts(FLOOR_M, &|k| mean(&k.dynamic))),
         Series::line(format!("rigid block: {which}"), pts(FLOOR_M, &|k| mean(&k.rigid_block))),
+        Series::markers("", pts(FLOOR_M, &|k| mean(&k.rigid_block))),
     ];
     let top = top_of(&sliding, FLOOR_M).max(r.criteria.expected_sliding_m.unwrap_or(0.0));
     sliding.extend(widths(FLOOR_M, top));
@@ -624,13 +634,16 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     ));
     sliding.push(Series::dashed("", pts(FLOOR_M, &|k| mean(&k.dynamic) - z * se(&k.dynamic))));
     if let Some(s) = r.criteria.expected_sliding_m {
-        sliding.push(Series::dashed(format!("criterion: {which} ≤ {s} m"), vec![(lo, s), (hi, s)]));
+        // Solid: the dashes are the band's.
+        sliding.push(Series::line(format!("criterion: {which} ≤ {s} m"), vec![(lo, s), (hi, s)]));
     }
     panels.push(Panel { y_label: "sliding over the life (m)".into(), series: sliding });
     let mut probability = |label: String, f: fn(&ModelPoint) -> f64, limit: f64| {
         let mut series = vec![
             Series::line("dynamic model", pts(FLOOR_P, &|k| f(&k.dynamic))),
+            Series::markers("", pts(FLOOR_P, &|k| f(&k.dynamic))),
             Series::line("rigid block", pts(FLOOR_P, &|k| f(&k.rigid_block))),
+            Series::markers("", pts(FLOOR_P, &|k| f(&k.rigid_block))),
         ];
         series.extend(widths(FLOOR_P, 1.0));
         series.push(Series::dashed(format!("criterion: ≤ {limit}"), vec![(lo, limit), (hi, limit)]));
@@ -642,9 +655,8 @@ fn plot(dir: &Path, title: &str, r: &SizeReport) -> Result<()> {
     if let Some(f) = r.criteria.failure_probability {
         probability("P(failure) (0 at 1e-4)".into(), |p| p.failure_probability, f);
     }
-    crate::plot::panels_scaled(
-        &dir.join("design_curve.svg"),
-        &format!("{title}: the life's sliding and the criteria against the caisson width"),
+    crate::plot::panels_svg(
+        &format!("The life's sliding and the criteria against the caisson width\n{title}"),
         "caisson width B (m)",
         &panels,
         crate::plot::Scales { log_y: true, ..Default::default() },

@@ -73,7 +73,7 @@ pub fn run(args: SpectrumArgs) -> Result<()> {
         spectrum_text(&sc, &base, &pts);
     }
     if let Some(dir) = &args.out {
-        write_spectrum_files(dir, &pts, &json, args.json)?;
+        write_spectrum_files(dir, &crate::plot::caption(sc.structure(), None), &pts, &json, args.json)?;
     }
     Ok(())
 }
@@ -116,14 +116,20 @@ fn spectrum_text(sc: &Scenario, base: &TrianglePulse, pts: &[SpectrumPoint]) {
 }
 
 /// spectrum.csv, spectrum.json and spectrum.svg into `dir`.
-fn write_spectrum_files(dir: &Path, pts: &[SpectrumPoint], json: &serde_json::Value, quiet: bool) -> Result<()> {
+fn write_spectrum_files(
+    dir: &Path,
+    caption: &str,
+    pts: &[SpectrumPoint],
+    json: &serde_json::Value,
+    quiet: bool,
+) -> Result<()> {
     let _set = crate::output::OutSet::open(dir);
     write_atomic(&dir.join("spectrum.csv"), &to_csv(pts.iter().map(SpectrumRow::from))?)?;
     write_atomic(&dir.join("spectrum.json"), pretty(json)?.as_bytes())?;
     let col = |f: fn(&SpectrumPoint) -> f64| pts.iter().map(|p| (p.tr_over_t0, f(p))).collect::<Vec<_>>();
     panels(
         &dir.join("spectrum.svg"),
-        "Shock spectrum: triangular pulse (seed Figs. 7-8)",
+        &format!("Shock spectrum: triangular pulse (seed Figs. 7-8)\n{caption}"),
         "t_r / T0",
         &[
             Panel {

@@ -126,7 +126,7 @@ pub fn write_plots(dir: &std::path::Path, h: &HistoryEnvelope, title: &str) -> R
     let scaled = |c: Column, k: f64| -> Vec<(f64, f64)> { h.series(c).into_iter().map(|(t, v)| (t, v * k)).collect() };
     panels(
         &dir.join("loads.svg"),
-        &format!("{title}: loads and reactions"),
+        &format!("Loads and reactions\n{title}"),
         "time (s)",
         &[
             Panel {
@@ -155,7 +155,7 @@ pub fn write_plots(dir: &std::path::Path, h: &HistoryEnvelope, title: &str) -> R
     )?;
     panels(
         &dir.join("displacements.svg"),
-        &format!("{title}: displacements"),
+        &format!("Displacements\n{title}"),
         "time (s)",
         &[
             Panel {
@@ -181,7 +181,7 @@ pub fn write_plots(dir: &std::path::Path, h: &HistoryEnvelope, title: &str) -> R
     };
     panels(
         &dir.join("springs.svg"),
-        &format!("{title}: spring reactions (seaward → shoreward)"),
+        &format!("Spring reactions (seaward → shoreward)\n{title}"),
         "time (s)",
         &[
             Panel { y_label: "normal N_i (kN)".into(), series: per_spring(Column::Normal) },

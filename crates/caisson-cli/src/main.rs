@@ -11,6 +11,7 @@ mod cmd_design;
 mod cmd_fragility;
 mod cmd_loads;
 mod cmd_merge;
+mod cmd_report;
 mod cmd_run;
 mod cmd_size;
 mod cmd_spectrum;
@@ -19,6 +20,7 @@ mod csv_rows;
 mod history_out;
 mod output;
 mod plot;
+mod report_html;
 mod train_out;
 mod work;
 
@@ -132,6 +134,7 @@ fn main() -> ExitCode {
         cli::Command::Size(a) => cmd_size::run(a),
         cli::Command::Fragility(a) => cmd_fragility::run(a),
         cli::Command::Merge(a) => cmd_merge::run(a),
+        cli::Command::Report(a) => cmd_report::run(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

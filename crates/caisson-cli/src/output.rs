@@ -82,6 +82,7 @@ pub const OUTPUTS: &[(&str, &[&str])] = &[
     ("design", &["design.json", "lives.csv", "histogram.svg", "exceedance.svg", "heel_pressure.svg", CHECKPOINT]),
     ("fragility", &["fragility.json", "fragility.csv", "fragility.svg"]),
     ("size", &["size.json", "candidates.csv", "design_curve.svg", "size_checkpoint.jsonl"]),
+    ("report", &["report.html", "report.pdf"]),
     ("validation", &["validation.md", "figures/validation_*.svg"]),
 ];
 

@@ -2,9 +2,10 @@
 //! figures. Plots are written to a temporary file and renamed, so a failed run never leaves a
 //! half-written plot.
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 /// One line on a panel.
@@ -84,6 +85,24 @@ fn bounds(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     (x, (y.0 - pad, y.1 + pad))
 }
 
+/// The caption line of a figure (the second line of its title): the site, the caisson and the
+/// version, instead of a file name.
+pub fn caption(structure: &caisson::analysis::Structure, waves: Option<&caisson::analysis::site::WaveSetup>) -> String {
+    let c = &structure.caisson;
+    let site = waves.map_or(String::new(), |w| {
+        let s = &w.model.site;
+        format!("h = {} m at the toe, d = {} m; ", s.depth_at_toe_m, s.depth_at_wall_m)
+    });
+    format!(
+        "{site}B = {} m, W' = {:.0} kN/m, μ = {}; caisson {} (results {})",
+        c.width_m,
+        c.weight_in_water_n / 1e3 / c.length_m,
+        structure.foundation.mu_static,
+        caisson::VERSION,
+        caisson::RESULTS_VERSION
+    )
+}
+
 /// Axis scales of a figure.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Scales {
@@ -111,15 +130,51 @@ fn log_range(lo: f64, hi: f64) -> (f64, f64) {
 /// [`panels`] with logarithmic axes where `scales` says: points with a coordinate ≤ 0 on a
 /// logarithmic axis are left out (say so in the caption).
 pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], scales: Scales) -> Result<()> {
+    let svg = panels_svg(title, x_label, panels, scales)?;
+    crate::output::write_atomic(path, svg.as_bytes())
+}
+
+/// The SVG text of [`panels_scaled`]'s figure (the report inlines it).
+pub fn panels_svg(title: &str, x_label: &str, panels: &[Panel], scales: Scales) -> Result<String> {
     // Every text drawn passes through [`svg_text`]: the title and x label here, the panels'
     // labels where each panel is copied as drawn (`shown`).
-    let (title, x_label) = (&svg_text(title), &svg_text(x_label));
-    let (tmp, _) = crate::output::TempFile::create(path)?;
+    // The title's first line is the figure's title, the rest its caption line (site, caisson,
+    // version: [`caption`]), each wrapped to the figure's width.
+    let (head, caption_text) = title.split_once('\n').unwrap_or((title, ""));
+    let title_lines = wrap(&svg_text(head), TITLE_CHARS);
+    // An x label longer than the chart is wide keeps its first clause under the axis; the rest
+    // goes to the caption lines.
+    let (x_label, x_note) = match top_level_clause(x_label) {
+        Some((axis, note)) if x_label.chars().count() > X_LABEL_CHARS => (axis, note),
+        _ => (x_label, ""),
+    };
+    let mut caption_lines = Vec::new();
+    for text in [caption_text, x_note].into_iter().filter(|t| !t.is_empty()) {
+        caption_lines.extend(wrap(&svg_text(text), CAPTION_CHARS));
+    }
+    let x_label = &svg_text(x_label);
+    let top = 8 + TITLE_LINE * title_lines.len() as u32 + CAPTION_LINE * caption_lines.len() as u32 + 4;
+    let mut svg = String::new();
     {
-        let height = 60 + 220 * panels.len() as u32;
-        let root = SVGBackend::new(&tmp, (CHART_WIDTH + LEGEND_WIDTH, height)).into_drawing_area();
+        let width = CHART_WIDTH + LEGEND_WIDTH;
+        let height = top + PANEL_HEIGHT * panels.len() as u32;
+        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow::anyhow!("{e}"))?;
-        let root = root.titled(title, ("sans-serif", 20)).map_err(|e| anyhow::anyhow!("{e}"))?;
+        let centred = |size: u32, color: RGBColor| {
+            ("sans-serif", size).into_font().color(&color).pos(Pos::new(HPos::Center, VPos::Top))
+        };
+        let mut y = 8;
+        for line in title_lines {
+            root.draw(&Text::new(line, (width as i32 / 2, y as i32), centred(TITLE_SIZE, BLACK)))
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
+            y += TITLE_LINE;
+        }
+        for line in caption_lines {
+            root.draw(&Text::new(line, (width as i32 / 2, y as i32), centred(CAPTION_SIZE, RGBColor(70, 70, 70))))
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
+            y += CAPTION_LINE;
+        }
+        let (_, root) = root.split_vertically(top);
         let areas = root.split_evenly((panels.len(), 1));
         let buckets = line_buckets(panels);
         for (panel, row) in panels.iter().zip(areas.iter()) {
@@ -159,7 +214,7 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
             let builder = || {
                 let mut b = ChartBuilder::on(area);
                 // A right margin wide enough for the last x tick label (centred on the frame).
-                b.margin(8).margin_right(28).x_label_area_size(35).y_label_area_size(70);
+                b.margin(8).margin_right(24).x_label_area_size(32).y_label_area_size(58);
                 b
             };
             let err = |e: plotters::drawing::DrawingAreaErrorKind<_>| anyhow::anyhow!("{e}");
@@ -188,11 +243,9 @@ pub fn panels_scaled(path: &Path, title: &str, x_label: &str, panels: &[Panel], 
                 }
             }
         }
-        // The file is written here: an error (a full disk) names it.
-        root.present().map_err(|e| anyhow::anyhow!("writing {}: {e}", path.display()))?;
+        root.present().map_err(|e| anyhow::anyhow!("drawing the SVG plot: {e}"))?;
     }
-    tmp.commit(path).context("writing an SVG plot")?;
-    Ok(())
+    Ok(svg)
 }
 
 /// `text` as an SVG file may hold it: each character XML 1.0 does not allow, or that a
@@ -275,7 +328,11 @@ where
     Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
 {
     let mut mesh = chart.configure_mesh();
-    mesh.x_desc(look.x_label).y_desc(panel.y_label.as_str()).light_line_style(WHITE.mix(0.0));
+    mesh.x_desc(look.x_label)
+        .y_desc(panel.y_label.as_str())
+        .light_line_style(WHITE.mix(0.0))
+        .label_style(("sans-serif", 10))
+        .axis_desc_style(("sans-serif", 11));
     let (dx, dy) = (tick_decimals(look.xr), tick_decimals(look.yr));
     let x_fixed = move |x: &f64| fixed(dx, *x);
     let y_fixed = move |y: &f64| fixed(dy, *y);
@@ -319,11 +376,26 @@ where
     Ok(())
 }
 
-/// Width of the charts and of the legend column beside them, px.
-const CHART_WIDTH: u32 = 880;
-const LEGEND_WIDTH: u32 = 300;
-/// Characters of a legend line before it wraps (12 px sans-serif is about 6.5 px a character).
-const LEGEND_CHARS: usize = 40;
+/// Width of the charts and of the legend column beside them, px: 640 in all, printed about 16 cm
+/// wide on A4 (a pixel a quarter of a millimetre; 10 px text about 7 pt).
+const CHART_WIDTH: u32 = 430;
+const LEGEND_WIDTH: u32 = 210;
+/// Characters of an x label that fit under the chart (11 px text).
+const X_LABEL_CHARS: usize = 70;
+/// Height of a panel, px.
+const PANEL_HEIGHT: u32 = 240;
+/// The title's and the caption line's text size and line height, px, and their characters a line
+/// (about 0.55 of the size a character).
+const TITLE_SIZE: u32 = 14;
+const TITLE_LINE: u32 = 18;
+const TITLE_CHARS: usize = 80;
+const CAPTION_SIZE: u32 = 10;
+const CAPTION_LINE: u32 = 13;
+const CAPTION_CHARS: usize = 110;
+/// The legend's text size and line height, px, and characters a line before it wraps.
+const LEGEND_SIZE: u32 = 10;
+const LEGEND_LINE: i32 = 13;
+const LEGEND_CHARS: usize = 32;
 
 /// The style of each series of `panel`: a series without a label continues the one before it (its
 /// colour, no legend entry: a histogram broken at empty bins, the realizations of a wave train);
@@ -360,7 +432,7 @@ fn styles(panel: &Panel) -> Vec<ShapeStyle> {
 /// marker) and label, long labels wrapped at word boundaries.
 fn legend(area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>, panel: &Panel) -> Result<()> {
     let err = |e: plotters::drawing::DrawingAreaErrorKind<_>| anyhow::anyhow!("{e}");
-    let font = ("sans-serif", 12).into_font().color(&BLACK);
+    let font = ("sans-serif", LEGEND_SIZE).into_font().color(&BLACK);
     let mut y = 14;
     for (s, style) in panel.series.iter().zip(styles(panel)) {
         if s.label.is_empty() {
@@ -378,17 +450,53 @@ fn legend(area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>, panel: &Pa
         }
         for line in wrap(&s.label, LEGEND_CHARS) {
             area.draw(&Text::new(line, (36, y), font.clone())).map_err(err)?;
-            y += 15;
+            y += LEGEND_LINE;
         }
         y += 3;
     }
     Ok(())
 }
 
-/// `text` in lines of at most about `width` characters, broken at spaces.
+/// `text` split at its first `"; "` outside parentheses: (the first clause, the rest).
+fn top_level_clause(text: &str) -> Option<(&str, &str)> {
+    let mut depth = 0_i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ';' if depth == 0 && text[i + 1..].starts_with(' ') => return Some((&text[..i], &text[i + 2..])),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The words of `text` for wrapping: split at spaces, but an expression such as `θ = 2.3 m` or
+/// `P(failure) ≤ 0.01` stays whole (no break beside a relation or operator sign).
+fn words(text: &str) -> Vec<String> {
+    const JOINS: [&str; 9] = ["=", "≤", "≥", "<", ">", "±", "×", "≈", "·"];
+    let mut out: Vec<String> = Vec::new();
+    let mut glue = false;
+    for w in text.split(' ') {
+        let sign = JOINS.contains(&w);
+        match out.last_mut() {
+            Some(last) if glue || sign => {
+                last.push('\u{a0}');
+                last.push_str(w);
+            }
+            _ => out.push(w.to_string()),
+        }
+        glue = sign;
+    }
+    out
+}
+
+/// `text` in lines of at most about `width` characters, broken at spaces (not inside an
+/// expression: [`words`]).
 fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
-    for word in text.split(' ') {
+    for word in words(text) {
+        let word = word.as_str();
         match lines.last_mut() {
             Some(l) if l.chars().count() + 1 + word.chars().count() <= width => {
                 l.push(' ');
@@ -484,6 +592,28 @@ pub fn decimate(points: &[(f64, f64)], buckets: usize) -> Vec<(f64, f64)> {
 mod tests {
     use super::*;
     use plotters::coord::types::RangedCoordf64;
+
+    /// A legend label wraps at spaces but never inside an expression (`θ = 10.87 m`, `≤ 0.3`).
+    #[test]
+    fn wrapping_keeps_expressions_whole() {
+        let lines = wrap("dynamic model: storms; lognormal θ = 10.87 m, β = 0.205", 20);
+        assert_eq!(lines, ["dynamic model:", "storms; lognormal", "θ\u{a0}=\u{a0}10.87 m,", "β\u{a0}=\u{a0}0.205"]);
+        for l in &lines {
+            assert!(!l.ends_with('=') && !l.starts_with('='), "{l}");
+        }
+        assert_eq!(wrap("E|S| ≤ 0.3 m", 4), ["E|S|\u{a0}≤\u{a0}0.3", "m"]);
+    }
+
+    /// A long x label is split at its first clause outside parentheses.
+    #[test]
+    fn the_first_clause_of_a_label_is_outside_parentheses() {
+        let label = "|S| at the end of the life (m; a failed life at the limit); not shown: 12 %";
+        assert_eq!(
+            top_level_clause(label),
+            Some(("|S| at the end of the life (m; a failed life at the limit)", "not shown: 12 %"))
+        );
+        assert_eq!(top_level_clause("time (s; seconds)"), None);
+    }
 
     /// Tick labels with `tick_decimals` show every tick plotters draws exactly (a label parses
     /// back to its tick within 1e-9 of the step) and carry no trailing ".0" on whole-number

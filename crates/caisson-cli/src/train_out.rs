@@ -181,7 +181,7 @@ fn cumulative_plot(path: &Path, title: &str, s: &TrainSummary) -> Result<()> {
     series.push(Series::dashed("rigid block (Shimosako model), mean", mean));
     crate::plot::panels_scaled(
         path,
-        &format!("{title}: cumulative sliding"),
+        &format!("Cumulative sliding\n{title}"),
         "waves",
         &[Panel { y_label: "sliding (mm)".into(), series }],
         crate::plot::Scales { integer_x: true, ..Default::default() },
@@ -189,7 +189,7 @@ fn cumulative_plot(path: &Path, title: &str, s: &TrainSummary) -> Result<()> {
 }
 
 /// `caisson run` on a scenario with `[waves]` and no `[load]` (on the caller's thread pool).
-pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>) -> Result<()> {
+pub fn run_waves(_path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>) -> Result<()> {
     let case = sc.train_case().map_err(input_err)?;
     let pb = progress(case.waves.train.realizations as u64, "wave trains", "realizations");
     let summary = run_realizations(&case, &|| pb.inc(1)).context("the dynamic run failed")?;
@@ -214,12 +214,16 @@ pub fn run_waves(path: &Path, sc: &Scenario, json_out: bool, out: Option<&Path>)
         write_atomic(&dir.join("realizations.csv"), &realizations_csv(&summary)?)?;
         write_atomic(&dir.join("waves.csv"), &waves_csv(&summary)?)?;
         let envelope = files.finish()?;
-        let title = path.file_stem().and_then(|s| s.to_str()).unwrap_or("run");
-        write_plots(dir, &envelope, &format!("{title}, realization 0"))?;
-        cumulative_plot(&dir.join("sliding.svg"), title, &summary)?;
+        let title = crate::plot::caption(case.structure, Some(case.waves));
+        write_plots(dir, &envelope, &format!("{title}; realization 0"))?;
+        // A train of one wave has no cumulative sliding to draw.
+        let several = case.waves.train.waves > 1;
+        if several {
+            cumulative_plot(&dir.join("sliding.svg"), &title, &summary)?;
+        }
         tidy_out_dir(dir, "run", &[])?;
         if !json_out {
-            crate::sayln!("\nWrote summary.json, realizations.csv, waves.csv, history.csv and springs.csv (realization 0), loads.svg, displacements.svg, springs.svg, sliding.svg to {}", dir.display());
+            crate::sayln!("\nWrote summary.json, realizations.csv, waves.csv, history.csv and springs.csv (realization 0), loads.svg, displacements.svg, springs.svg{} to {}", if several { ", sliding.svg" } else { "" }, dir.display());
         }
     }
     Ok(())

@@ -67,8 +67,15 @@ fn every_svg_of_the_bundled_examples_is_under_a_megabyte() {
             }
         }
     }
-    // run: 3 per [load] example (3), 4 per wave-train example (4); spectrum 1, loads 2, campaign 2.
-    assert_eq!(checked.len(), 3 * 3 + 4 * 4 + 1 + 2 + 2, "{checked:?}");
+    // run: 3 per [load] example (3), 4 per wave-train example of several waves (2), 3 per train of
+    // one wave (2: no cumulative sliding to draw); spectrum 1, loads 2, campaign 2.
+    assert_eq!(checked.len(), 3 * 3 + 4 * 2 + 3 * 2 + 1 + 2 + 2, "{checked:?}");
+    for one_wave in ["run3", "run6"] {
+        assert!(
+            !dir.path().join(one_wave).join("sliding.svg").exists(),
+            "{one_wave}: a one-wave run draws no cumulative sliding"
+        );
+    }
     // The largest of them before: fifteen_waves' springs.svg, now a few hundred kB.
     let fifteen = checked.iter().find(|(p, _)| p.ends_with("run2/springs.svg")).unwrap().1;
     assert!(fifteen < 500_000, "{fifteen}");
