@@ -152,6 +152,22 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
         let n = s.len().max(1) as f64;
         s.iter().enumerate().filter(|(_, &x)| x >= PLOT_FLOOR_M).map(|(i, &x)| (x, 1.0 - i as f64 / n)).collect()
     };
+    // The dynamic model's curve with its pointwise 95 % band: at each life's |S| the Wilson
+    // interval of the k = n − i lives at or beyond it (docs/design.md, "Intervals").
+    let band = |v: &[f64]| -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+        let mut s = v.to_vec();
+        s.sort_by(f64::total_cmp);
+        let n = s.len().max(1) as u64;
+        s.iter()
+            .enumerate()
+            .filter(|(_, &x)| x >= PLOT_FLOOR_M)
+            .map(|(i, &x)| {
+                let ci = caisson::analysis::estimate::wilson_ci95(n - i as u64, n);
+                ((x, ci[0].max(1.0 / n as f64)), (x, ci[1]))
+            })
+            .unzip()
+    };
+    let (low, high) = band(dynamic);
     let floor = 1.0 / dynamic.len().max(1) as f64;
     panels_scaled(
         &dir.join("exceedance.svg"),
@@ -161,6 +177,8 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
             y_label: "P(|S| > s)".into(),
             series: vec![
                 Series::line("dynamic model", exceed(dynamic)),
+                Series::dashed("dynamic model, 95 % interval (Wilson)", low),
+                Series::dashed("", high),
                 Series::dashed("rigid block (Shimosako model)", exceed(rigid)),
                 Series::line(format!("failure limit {failure_m:.3} m"), vec![(failure_m, floor), (failure_m, 1.0)]),
             ],

@@ -248,7 +248,9 @@ fn all_finite(v: &serde_json::Value) -> bool {
         Value::Object(m) => m.iter().all(|(k, v)| {
             if k == "percentiles_ci95_m" {
                 v.as_object().is_some_and(|o| {
-                    o.values().flat_map(|pair| pair.as_array().into_iter().flatten()).all(|e| e.is_null() || all_finite(e))
+                    o.values()
+                        .flat_map(|pair| pair.as_array().into_iter().flatten())
+                        .all(|e| e.is_null() || all_finite(e))
                 })
             } else {
                 all_finite(v)
