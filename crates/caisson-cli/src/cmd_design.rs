@@ -154,7 +154,8 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     };
     // The dynamic model's curve with its pointwise 95 % band: at each life's |S| the Wilson
     // interval of the k = n − i lives at or beyond it (docs/design.md, "Intervals").
-    let band = |v: &[f64]| -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+    type Curve = Vec<(f64, f64)>;
+    let band = |v: &[f64]| -> (Curve, Curve) {
         let mut s = v.to_vec();
         s.sort_by(f64::total_cmp);
         let n = s.len().max(1) as u64;
