@@ -638,10 +638,12 @@ pub(crate) fn design_curve_svg(title: &str, r: &SizeReport) -> Result<String> {
         sliding.push(Series::line(format!("criterion: {which} ≤ {s} m"), vec![(lo, s), (hi, s)]));
     }
     panels.push(Panel { y_label: "sliding over the life (m)".into(), series: sliding });
-    let mut probability = |label: String, f: fn(&ModelPoint) -> f64, limit: f64| {
+    // Each probability with its Wilson 95 % interval as a bar at each width (the dynamic model's).
+    let mut probability = |label: String, f: fn(&ModelPoint) -> f64, ci: fn(&ModelPoint) -> [f64; 2], limit: f64| {
+        let bars = r.candidates.iter().map(|k| ci(&k.dynamic)).map(|[l, h]| (l.max(FLOOR_P), h.max(FLOOR_P))).collect();
         let mut series = vec![
-            Series::line("dynamic model", pts(FLOOR_P, &|k| f(&k.dynamic))),
-            Series::markers("", pts(FLOOR_P, &|k| f(&k.dynamic))),
+            Series::line("dynamic model (bars: 95 % interval)", pts(FLOOR_P, &|k| f(&k.dynamic))),
+            Series::ranges("", pts(FLOOR_P, &|k| f(&k.dynamic)), bars),
             Series::line("rigid block", pts(FLOOR_P, &|k| f(&k.rigid_block))),
             Series::markers("", pts(FLOOR_P, &|k| f(&k.rigid_block))),
         ];
@@ -650,10 +652,11 @@ pub(crate) fn design_curve_svg(title: &str, r: &SizeReport) -> Result<String> {
         panels.push(Panel { y_label: label, series });
     };
     if let Some(e) = r.criteria.exceedance {
-        probability(format!("P(|S| > {} m) (0 at 1e-4)", e.sliding_m), |p| p.exceedance_probability, e.probability);
+        let label = format!("P(|S| > {} m) (0 at 1e-4)", e.sliding_m);
+        probability(label, |p| p.exceedance_probability, |p| p.exceedance_probability_ci95, e.probability);
     }
     if let Some(f) = r.criteria.failure_probability {
-        probability("P(failure) (0 at 1e-4)".into(), |p| p.failure_probability, f);
+        probability("P(failure) (0 at 1e-4)".into(), |p| p.failure_probability, |p| p.failure_probability_ci95, f);
     }
     crate::plot::panels_svg(
         &format!("The life's sliding and the criteria against the caisson width\n{title}"),

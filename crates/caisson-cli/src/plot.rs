@@ -182,20 +182,34 @@ pub fn panels_svg(title: &str, x_label: &str, panels: &[Panel], scales: Scales) 
             let (area, legend_area) = row.split_horizontally(CHART_WIDTH);
             let area = &area;
             let keep = |&(x, y): &(f64, f64)| (!scales.log_x || x > 0.0) && (!scales.log_y || y > 0.0);
-            let shown = Panel {
-                y_label: svg_text(&panel.y_label),
-                series: panel
-                    .series
-                    .iter()
-                    .map(|s| Series {
-                        label: svg_text(&s.label),
-                        points: s.points.iter().copied().filter(keep).collect(),
-                        dashed: s.dashed,
-                        markers: s.markers,
-                        ranges: s.ranges.clone().filter(|_| !scales.log_y),
-                    })
-                    .collect(),
-            };
+            let shown =
+                Panel {
+                    y_label: svg_text(&panel.y_label),
+                    series: panel
+                        .series
+                        .iter()
+                        .map(|s| {
+                            // A point's bar stays with it; on a logarithmic y axis a bar reaching 0 or
+                            // below is not drawn (the point is).
+                            let (points, ranges): (Vec<(f64, f64)>, Option<Vec<(f64, f64)>>) =
+                                match &s.ranges {
+                                    Some(r) => {
+                                        let kept: Vec<_> = s.points.iter().zip(r).filter(|(p, _)| keep(p)).collect();
+                                        let bars = kept.iter().map(|&(&p, &(lo, hi))| {
+                                            if scales.log_y && lo <= 0.0 {
+                                                (p.1, p.1)
+                                            } else {
+                                                (lo, hi)
+                                            }
+                                        });
+                                        (kept.iter().map(|&(&p, _)| p).collect(), Some(bars.collect()))
+                                    }
+                                    None => (s.points.iter().copied().filter(keep).collect(), None),
+                                };
+                            Series { label: svg_text(&s.label), points, dashed: s.dashed, markers: s.markers, ranges }
+                        })
+                        .collect(),
+                };
             legend(&legend_area, &shown)?;
             let (xr, yr) = bounds(&shown);
             let look = Look {
