@@ -9,6 +9,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 /// One line on a panel.
+/// A point (x, y), or a bar (low, high).
+type Point = (f64, f64);
+
 pub struct Series {
     pub label: String,
     pub points: Vec<(f64, f64)>,
@@ -191,7 +194,7 @@ pub fn panels_svg(title: &str, x_label: &str, panels: &[Panel], scales: Scales) 
                         .map(|s| {
                             // A point's bar stays with it; on a logarithmic y axis a bar reaching 0 or
                             // below is not drawn (the point is).
-                            let (points, ranges): (Vec<(f64, f64)>, Option<Vec<(f64, f64)>>) =
+                            let (points, ranges): (Vec<Point>, Option<Vec<Point>>) =
                                 match &s.ranges {
                                     Some(r) => {
                                         let kept: Vec<_> = s.points.iter().zip(r).filter(|(p, _)| keep(p)).collect();
