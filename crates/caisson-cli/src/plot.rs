@@ -8,10 +8,10 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
-/// One line on a panel.
 /// A point (x, y), or a bar (low, high).
 type Point = (f64, f64);
 
+/// One line on a panel.
 pub struct Series {
     pub label: String,
     pub points: Vec<(f64, f64)>,
