@@ -1052,12 +1052,13 @@ impl Simulation {
         if self.fast.iterate.is_some() {
             return 0.0;
         }
-        let recontact = self.solver.locate_contact && self.committed_lifted();
+        let recontact = self.committed_lifted();
         if !recontact && !self.trial_slips {
             // No spring slips at the step's end (`trial_slips` is false only then) and none
             // touches down within it: the sums below would be 0.
             return 0.0;
         }
+        let locate = self.solver.locate_contact;
         let cd = self.model.spring_dashpot_ns_per_m;
         let (un, vx_n) = (self.state.u, self.state.v[0]);
         let chord = (h * vx_n - (c.u[0] - un[0])).abs();
@@ -1077,11 +1078,13 @@ impl Simulation {
             let uy_start = un[1] - un[2] * x;
             if recontact && uy_start >= 0.0 {
                 let lambda = uy_start / (uy_start - (c.u[1] - c.u[2] * x));
-                touch = touch.max(lambda * (1.0 - lambda));
+                touch = touch.max(if locate { lambda * (1.0 - lambda) } else { lambda });
             }
         }
         let slip = if slipping { ux_error_m + h * h * rate / (12.0 * cd.max(f64::MIN_POSITIVE)) } else { 0.0 };
-        slip.max(touch * chord)
+        // Located, the touch-down's error is the line's departure from the step's quadratic;
+        // not located (`seed-2011`), the spring takes u_x,n, λ Δu_x from where it touches.
+        slip.max(touch * if locate { chord } else { (c.u[0] - un[0]).abs() })
     }
 
     /// Newton-Raphson for one step of length `h` to load `p`. Commits nothing.
