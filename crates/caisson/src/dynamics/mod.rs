@@ -37,7 +37,8 @@
 //! plus the trapezoidal rule's in its elastic displacement, h² κ N_i |ė_{n+1} − ė_n| / (12 c_d)
 //! (with the dashpot beside the springs, the `elastic` mode); of a spring that touches down within
 //! the step, λ (1 − λ) |h u̇_x,n − Δu_x|, the straight line's departure from the step's quadratic
-//! where it touches. The largest is e. After an accepted step the next is
+//! where it touches (without [`SolverParams::locate_contact`], the `seed-2011` profile, where
+//! such a spring takes u_x,n as its slip position, λ |Δu_x|). The largest is e. After an accepted step the next is
 //! h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h; the cube root by `fast_cbrt`), within
 //! [dt_min, dt_max]; after a step shortened to a breakpoint, or landed on an event (below), it may
 //! grow past 2 h up to the step planned before it, or the step in which the event was found, so
@@ -1045,7 +1046,10 @@ impl Simulation {
     /// * a spring re-contacting within the step takes the straight line's u_x where it touches,
     ///   at the fraction λ of the step (`foundation::spring`, "Re-contact"); the step's own
     ///   u_x is the quadratic u_x,n + λ h u̇_x,n + λ² (Δu_x − h u̇_x,n), λ (1 − λ) |h u̇_x,n − Δu_x|
-    ///   from the line.
+    ///   from the line; without [`SolverParams::locate_contact`] (the `seed-2011` profile) it
+    ///   takes u_x,n, λ |Δu_x| from where it touches (issue 34: unseen, a caisson rocking on its
+    ///   springs slid back by where the steps fell, up to 7.5 % on
+    ///   `tests/data/accuracy/pari_ten_springs.toml`).
     ///
     /// 0 when every spring sticks at the step's end (no slip position moved).
     fn slip_error_m(&self, h: f64, c: &Converged, ux_error_m: f64) -> f64 {
