@@ -92,7 +92,7 @@ fn exact_sticking_converges_to_fixed_steps() {
     let default_tolerance_m = AdaptiveParams::default().tolerance_m;
     for (peak, rise, lever, up) in [(9.0, 0.1, 0.4, 1.5), (6.0, 0.05, 0.3, 1.0), (15.0, 0.02, 0.6, 2.0)] {
         let s = case("damping_kns_per_m = 0.0", peak, rise, lever, up);
-        assert!(s.solver().exact_sticking, "the default profile steps sticking phases exactly");
+        assert!(s.solver().accel.exact_sticking, "the default profile steps sticking phases exactly");
         let fixed = sliding_m(&s, Stepping::Fixed, 1e-5);
         assert!(fixed > 2e-4, "the case slides: {fixed} m");
         for dt_max_s in [5e-3, 2e-3, 1e-3] {
@@ -228,7 +228,12 @@ fn exact_sticking_phases_meet_the_newmark_steps() {
     let sc = support::example("design_breakwater.toml");
     let Stepping::Adaptive(controls) = sc.solver().stepping else { panic!("the example steps adaptively") };
     let run = |exact: bool, p: AdaptiveParams| {
-        let solver = SolverParams { exact_sticking: exact, ..sc.solver() }.with_adaptive(p).unwrap();
+        let solver = SolverParams {
+            accel: caisson::dynamics::Accel { exact_sticking: exact, ..sc.solver().accel },
+            ..sc.solver()
+        }
+        .with_adaptive(p)
+        .unwrap();
         // Sliding, peak u_x and θ, least N.
         support::design_waves(solver).into_iter().map(|(v, s)| ([v[0], v[1], v[2], v[5]], s)).collect::<Vec<_>>()
     };
@@ -293,7 +298,7 @@ fn exact_sticking_follows_the_profile() {
     let fifteen = support::example("fifteen_waves.toml");
     let cases = [(&design, true), (&seed, false), (&back, true), (&fifteen, false)];
     for (i, (sc, exact)) in cases.iter().enumerate() {
-        assert_eq!(sc.solver().exact_sticking, *exact, "case {i}");
+        assert_eq!(sc.solver().accel.exact_sticking, *exact, "case {i}");
     }
     // The design waves with the seed-2011 scenario's solver controls take no exact step; with
     // the default one's they do.

@@ -401,10 +401,11 @@ impl Model {
 }
 
 impl Ladder {
-    /// The ladder of `model` for steps up to `dt_max_s`, sharing the propagators of this
-    /// thread's ladder of the same matrices and dt_max (the same numbers: nothing else enters
-    /// them). `None` if the longest step's cannot be built (a singular mass matrix).
-    pub fn cached(model: &Model, dt_max_s: f64) -> Option<Self> {
+    /// The ladder of `model` for steps up to `dt_max_s`, with `shared` sharing the propagators of
+    /// this thread's ladder of the same matrices and dt_max (the same numbers: nothing else enters
+    /// them; `Accel::cached_propagators`), else its own. `None` if the longest step's cannot be
+    /// built (a singular mass matrix).
+    pub fn cached(model: &Model, dt_max_s: f64, shared: bool) -> Option<Self> {
         let n = model.x_m.len();
         let (m, k, c) = Propagator::matrices(model, 0, n);
         let mut key = [0.0; 28];
@@ -412,18 +413,22 @@ impl Ladder {
         key[9..18].copy_from_slice(k.as_slice());
         key[18..27].copy_from_slice(c.as_slice());
         key[27] = dt_max_s;
-        let rungs = LADDERS.with(|l| {
-            let mut l = l.borrow_mut();
-            if let Some((_, _, r)) = l.iter().flatten().find(|(k, x, _)| *k == key && *x == model.x_m) {
-                return r.clone();
-            }
-            // Full contact and the sets lifted from either edge, 2n − 1 (at least one).
-            let sets = (2 * n).max(2) - 1;
-            let r: Rungs = (0..sets).map(|_| [const { OnceLock::new() }; RUNGS]).collect();
-            l.rotate_left(1);
-            l[CACHED_LADDERS - 1] = Some((key, model.x_m.clone(), r.clone()));
-            r
-        });
+        // Full contact and the sets lifted from either edge, 2n − 1 (at least one).
+        let fresh = || -> Rungs { (0..(2 * n).max(2) - 1).map(|_| [const { OnceLock::new() }; RUNGS]).collect() };
+        let rungs = if !shared {
+            fresh()
+        } else {
+            LADDERS.with(|l| {
+                let mut l = l.borrow_mut();
+                if let Some((_, _, r)) = l.iter().flatten().find(|(k, x, _)| *k == key && *x == model.x_m) {
+                    return r.clone();
+                }
+                let r = fresh();
+                l.rotate_left(1);
+                l[CACHED_LADDERS - 1] = Some((key, model.x_m.clone(), r.clone()));
+                r
+            })
+        };
         let h_s = std::array::from_fn(|k| dt_max_s / (1u32 << k) as f64);
         let ladder = Ladder {
             h_s,
@@ -1027,9 +1032,13 @@ mod tests {
         }
         let (dt_max, period) = (0.05, 2.03);
         let run = |exact: bool, tolerance_m: f64| {
-            let solver = SolverParams { dt_s: 1e-4, exact_sticking: exact, ..SolverParams::default() }
-                .with_adaptive(AdaptiveParams { dt_max_s: dt_max, tolerance_m, ..AdaptiveParams::for_first_step(1e-4) })
-                .unwrap();
+            let solver = SolverParams {
+                dt_s: 1e-4,
+                accel: crate::dynamics::Accel { exact_sticking: exact, ..Default::default() },
+                ..SolverParams::default()
+            }
+            .with_adaptive(AdaptiveParams { dt_max_s: dt_max, tolerance_m, ..AdaptiveParams::for_first_step(1e-4) })
+            .unwrap();
             let mut sim = simulation_with(DampingMode::Elastic, VerticalDamping::Springs, MassMatrix::Diagonal, solver);
             let train = push_wave(&sim, 1.2, period);
             sim.reset(&train);

@@ -55,7 +55,7 @@
 //! pulsating load. A step that fails to converge is halved as in the fixed mode (at most
 //! `max_substep_levels` times in a row).
 //!
-//! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
+//! **Sticking phases** ([`Accel::exact_sticking`], adaptive stepping): from a committed
 //! state where every spring in contact sticks (all of them in contact, or with
 //! [`SolverParams::locate_contact`] some lifted), a step of dt_max/2^k (k = 0 … 3: `exact`'s
 //! ladder, one per contact set) with no load
@@ -125,7 +125,7 @@ mod params;
 mod solve3;
 mod sticking;
 
-pub use params::{AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
+pub use params::{Accel, AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
 
 use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
 use crate::loads::{LoadHistory, WaveForce};
@@ -533,7 +533,7 @@ pub struct Simulation {
     h_next: f64,
     /// The all-sticking fast path's sums and scratch (`sticking`).
     fast: sticking::FastPath,
-    /// Adaptive stepping with [`SolverParams::exact_sticking`]: the propagators of all-sticking
+    /// Adaptive stepping with [`Accel::exact_sticking`]: the propagators of all-sticking
     /// steps of dt_max/2^k (`exact`).
     exact: Option<exact::Ladder>,
     /// The last committed step, if it was exact (its end and R at its start: `exact`).
@@ -586,8 +586,10 @@ impl Simulation {
             event_step: false,
             restarted_at_s: f64::NEG_INFINITY,
         };
-        if let (Stepping::Adaptive(p), true) = (solver.stepping, solver.exact_sticking && solver.sticking_fast_path) {
-            sim.exact = exact::Ladder::cached(&sim.model, p.dt_max_s);
+        if let (Stepping::Adaptive(p), true) =
+            (solver.stepping, solver.accel.exact_sticking && solver.accel.sticking_fast_path)
+        {
+            sim.exact = exact::Ladder::cached(&sim.model, p.dt_max_s, solver.accel.cached_propagators);
         }
         sim.reset(load);
         sim
@@ -674,7 +676,7 @@ impl Simulation {
 
     /// Resisting force f_S (springs, and their dashpots) at trial displacement `u` and velocity
     /// `v`, from the committed spring states: in closed form while every spring is in contact
-    /// and sticks (`sticking`, when [`SolverParams::sticking_fast_path`]), else spring by spring.
+    /// and sticks (`sticking`, when [`Accel::sticking_fast_path`]), else spring by spring.
     ///
     /// `stick_first`: the fast path's test is tried before the general path (the iterate is
     /// likely all-sticking); otherwise the general path goes first, and the fast path is taken
@@ -684,7 +686,7 @@ impl Simulation {
     /// iteration").
     #[inline]
     fn resisting_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64, stick_first: bool) -> Vector3<f64> {
-        if !self.solver.sticking_fast_path {
+        if !self.solver.accel.sticking_fast_path {
             return self.general_force(u, v, h);
         }
         if stick_first {
@@ -952,7 +954,7 @@ impl Simulation {
     /// The ends of the runs of springs in and out of contact answer first
     /// ([`Self::contact_kept_ahead`]); the springs are tested one by one only if they do not.
     fn contact_ahead(&self, h: f64) -> Option<Event> {
-        if self.contact_kept_ahead(h) {
+        if self.solver.accel.contact_runs && self.contact_kept_ahead(h) {
             None
         } else {
             self.contact_ahead_each(h)
@@ -1054,7 +1056,20 @@ impl Simulation {
     /// 0 when every spring sticks at the step's end (no slip position moved).
     fn slip_error_m(&self, h: f64, c: &Converged, ux_error_m: f64) -> f64 {
         if self.fast.iterate.is_some() {
-            return 0.0;
+            // Every spring in contact and sticking at the step's end: none slipped; without
+            // located contact a spring lifted at its start touched down (the closed form gives it
+            // u_x,n as its slip position, as spring by spring).
+            if self.solver.locate_contact || !self.committed_lifted() {
+                return 0.0;
+            }
+            let (un, mut touch) = (self.state.u, 0.0f64);
+            for &x in &self.model.x_m {
+                let uy_start = un[1] - un[2] * x;
+                if uy_start >= 0.0 {
+                    touch = touch.max(uy_start / (uy_start - (c.u[1] - c.u[2] * x)));
+                }
+            }
+            return touch * (c.u[0] - un[0]).abs();
         }
         let recontact = self.committed_lifted();
         if !recontact && !self.trial_slips {
@@ -1102,14 +1117,14 @@ impl Simulation {
         let an = Vector3::from(self.state.a);
         let tol = self.solver.tolerance * self.model.weight_n;
         let inv_b = 1.0 / self.model.width_m;
-        if self.solver.sticking_fast_path && self.fast.direct {
+        if self.solver.accel.sticking_fast_path && self.fast.direct {
             if let Some(c) = self.direct_sticking_step(h, p, tol) {
                 return Ok(c);
             }
         }
         // M and C read in place (not copied per step), K_dyn only for a step that iterates.
         let k_dyn = self.model.mass * c1 + self.model.damping * (gamma * c2);
-        let mut delta = match self.solver.predictor {
+        let mut delta = match self.solver.accel.predictor {
             Predictor::LastDisplacement => Vector3::zeros(),
             Predictor::ConstantAcceleration => vn * h + an * (0.5 * h * h),
         };
@@ -1220,11 +1235,14 @@ impl Simulation {
     #[inline]
     fn contact_may_change(&self, u0: [f64; 3], u1: [f64; 3]) -> bool {
         let xs = &self.model.x_m[..];
+        let touch = |u: [f64; 3], x: f64| u[1] - u[2] * x < 0.0;
+        if !self.solver.accel.contact_runs {
+            return xs.iter().any(|&x| touch(u0, x) != touch(u1, x));
+        }
         let Some(&lo) = xs.first() else {
             return false;
         };
         let hi = xs[xs.len() - 1];
-        let touch = |u: [f64; 3], x: f64| u[1] - u[2] * x < 0.0;
         let (first, last) = (touch(u0, lo), touch(u0, hi));
         if touch(u1, lo) != first || touch(u1, hi) != last {
             return true;
