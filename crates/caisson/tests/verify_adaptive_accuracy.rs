@@ -334,8 +334,8 @@ fn accuracy_case(name: &str) -> Scenario {
 /// position of first order in the step that the Zienkiewicz-Xie estimate of the displacements
 /// does not see. The sliding back then depended on where the steps fell: from first steps of
 /// 1e-3 to 1e-5 s, 4.59 to 4.97 mm against the converged 4.9646 mm (up to −7.5 %; the issue's
-/// 4.722 mm). With λ |Δu_x| in the slip positions' estimate (`slip_error_m`), measured 4.896 to
-/// 4.981 mm: within max(1 µm, 1.5 %) on all six (1.4 % at 5e-4 s, the others within 0.35 %),
+/// 4.722 mm). With λ |Δu_x| in the slip positions' estimate (`slip_error_m`), measured 4.895 to
+/// 4.983 mm: within max(1 µm, 1.5 %) on all six (1.4 % at 5e-4 s, the others within 0.4 %),
 /// and the peak u_x within 0.2 %.
 #[test]
 fn pari_ten_springs_meets_converged_fixed_steps() {
