@@ -70,7 +70,7 @@
 //! sticking, g = κ N_i e_lim − |κ N_i e_i + c_d ė_i|, interpolated linearly between the step's
 //! start (g_0 > 0) and end (g_1 < 0), puts the onset at θ = g_0/(g_0 − g_1) of the step; the
 //! step is retaken to θ (1 + 1e-6) h, just past the earliest onset, then the rest of the
-//! fixed step. The adaptive stepper instead lands on the event ([`Landing`]): it retakes the step
+//! fixed step. The adaptive stepper instead lands on the event (`adaptive::Landing`): it retakes the step
 //! until it ends past the event within its last hundredth, each length the root of the event's
 //! margin g(s) at the ends of the steps tried (inverse quadratic interpolation through the last
 //! three, else the Illinois rule) aimed 0.25 % of the step past it, at most 6 retakes. An onset
@@ -120,6 +120,7 @@
 //! the springs are tested one by one only where these say one may: the same answers, so the same
 //! numbers to the last bit.
 
+mod adaptive;
 mod exact;
 mod params;
 mod solve3;
@@ -171,76 +172,6 @@ struct Event {
     /// g0 > 0 > g1.
     g0: f64,
     g1: f64,
-}
-
-/// An event being landed on by the adaptive stepping: the longest step from the current state
-/// known to end before it (`lo`) and the shortest known to end past it (`hi`), each with the
-/// event's margin g at its end. The next step length is the root of g(s) by inverse quadratic
-/// interpolation through these two and the end the last step replaced (as in Brent's method,
-/// Brent 1973 ch. 4) if it falls inside the bracket, else by the Illinois variant of regula
-/// falsi (Dowell & Jarratt 1971: the end kept twice in a row has its margin halved).
-#[derive(Debug, Clone, Copy)]
-struct Landing {
-    spring: usize,
-    kind: EventKind,
-    /// (step length s, margin g(s)).
-    lo: (f64, f64),
-    hi: (f64, f64),
-    /// Which end moved last: `Some(true)` the upper.
-    moved_hi: Option<bool>,
-    /// Steps retaken so far.
-    tries: usize,
-    /// Predicted ([`Simulation::contact_ahead`]), not found: a step that ends short of it is kept.
-    predicted: bool,
-}
-
-impl Landing {
-    fn new(e: Event, h: f64) -> Self {
-        Landing {
-            spring: e.spring,
-            kind: e.kind,
-            lo: (0.0, e.g0),
-            hi: (h, e.g1),
-            moved_hi: None,
-            tries: 0,
-            predicted: false,
-        }
-    }
-
-    /// The step of length `s` ended with margin `g`; the next step length to try.
-    fn narrow(&mut self, s: f64, g: f64) -> f64 {
-        let upper = g <= 0.0;
-        let old = if upper { self.hi } else { self.lo };
-        if upper {
-            self.hi = (s, g);
-        } else {
-            self.lo = (s, g);
-        }
-        self.tries += 1;
-        let ((a, ga), (b, gb)) = (self.lo, self.hi);
-        let (c, gc) = old;
-        // Inverse quadratic interpolation: s(g) through the three points, at g = 0.
-        if ga != gc && gb != gc {
-            let q = a * gb * gc / ((ga - gb) * (ga - gc))
-                + b * ga * gc / ((gb - ga) * (gb - gc))
-                + c * ga * gb / ((gc - ga) * (gc - gb));
-            if q > a && q < b {
-                self.moved_hi = Some(upper);
-                return q * (1.0 + EVENT_LEAD);
-            }
-        }
-        if self.moved_hi == Some(upper) {
-            // The same end moved twice: halve the other's margin (Illinois).
-            if upper {
-                self.lo.1 *= 0.5;
-            } else {
-                self.hi.1 *= 0.5;
-            }
-        }
-        self.moved_hi = Some(upper);
-        let ((a, ga), (b, gb)) = (self.lo, self.hi);
-        (a + (b - a) * ga / (ga - gb)) * (1.0 + EVENT_LEAD)
-    }
 }
 
 /// Why a run stopped.
@@ -1362,162 +1293,6 @@ impl Simulation {
         // What `reaction` and `springs` read after the run.
         self.fill_sticking_responses();
         r
-    }
-
-    /// Adaptive stepping to `t_end_s` (module docs).
-    fn run_adaptive<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
-        &mut self,
-        t_end_s: f64,
-        p: AdaptiveParams,
-        load: &L,
-        obs: &mut O,
-    ) -> Result<(), SolveError> {
-        let c_err = (self.solver.beta - 1.0 / 6.0).abs();
-        let half_b = 0.5 * self.model.width_m;
-        let mut level = 0usize;
-        // Events located in a row, and whether the step to try was shortened to end at one.
-        let (mut events, mut at_event) = (0usize, false);
-        // The event being landed on, while the steps to it are retaken, and the length of the
-        // step in which it was found (or predicted): the step after the event may be as long.
-        let mut landing: Option<Landing> = None;
-        let mut before_event_s = 0.0f64;
-        // The load's next breakpoint after the step's start: it stays the next one until the
-        // steps pass it, so it is looked up again only then.
-        let mut bp = f64::NEG_INFINITY;
-        // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
-        while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
-            let t = self.state.t_s;
-            self.event_step = at_event;
-            if t >= bp {
-                bp = load.next_breakpoint_s(t);
-            }
-            // From a state where every spring in contact sticks, an exact step if one fits before
-            // the breakpoint (`exact`); where a spring would slip, lift or touch down, the
-            // Newmark step instead.
-            if level == 0 && !at_event && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs) {
-                continue;
-            }
-            // After a Newton failure the halved step may go below dt_min.
-            let planned =
-                if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
-            let mut h = planned.min(t_end_s - t);
-            if bp - t > p.dt_min_s && bp < t + h {
-                h = bp - t;
-            }
-            // Do not leave a sliver shorter than dt_min before t_end.
-            if t_end_s - (t + h) < p.dt_min_s {
-                h = t_end_s - t;
-            }
-            let truncated = h < planned;
-            // A lift-off or touch-down ahead within the step: the step ends just past it.
-            if level == 0
-                && !at_event
-                && landing.is_none()
-                && events < MAX_EVENTS_PER_STEP
-                && self.solver.locate_contact
-            {
-                if let Some(e) = self.contact_ahead(h) {
-                    let to_event = e.theta * h * (1.0 + EVENT_LEAD);
-                    if to_event < h * (1.0 - EVENT_MIN_FRACTION) && to_event >= p.dt_min_s {
-                        self.stats.located_events += 1;
-                        landing = Some(Landing { predicted: true, ..Landing::new(e, h) });
-                        before_event_s = h;
-                        h = to_event;
-                        at_event = true;
-                        self.event_step = true;
-                    }
-                }
-            }
-            let t1 = t + h;
-            let w = load.at(t1);
-            match self.try_step(h, self.load_vector(w)) {
-                Ok(c) => {
-                    if self.restart_at_start(&c) {
-                        continue;
-                    }
-                    let contact = self.solver.locate_contact;
-                    if let Some(l) = landing.as_mut() {
-                        // A step retaken to end at an event: narrowed until it ends just past
-                        // it (the event in its last hundredth), or just short of it.
-                        let next = match self.event_fraction(h, &c, contact) {
-                            Some(e) if (e.spring, e.kind) == (l.spring, l.kind) => Some(l.narrow(h, e.g1)),
-                            Some(e) => {
-                                // Another event before it: land on that one instead.
-                                *l = Landing { tries: l.tries + 1, ..Landing::new(e, h) };
-                                Some(e.theta * h * (1.0 + EVENT_LEAD))
-                            }
-                            None => {
-                                let (g0, g1) = self.event_margins(l.kind, l.spring, h, &c);
-                                let g = g1 * g0.signum();
-                                // Short of it by more than a hundredth of the step.
-                                if g > 0.0 && !l.predicted {
-                                    Some(l.narrow(h, g)).filter(|s| s - h > EVENT_MIN_FRACTION * h)
-                                } else {
-                                    None
-                                }
-                            }
-                        };
-                        if let Some(s) = next.filter(|&s| l.tries <= MAX_LOCATE_TRIES && s >= p.dt_min_s) {
-                            self.h_next = s;
-                            continue;
-                        }
-                    }
-                    if landing.is_none() && !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
-                        // The step's first event: the step is retaken to land on it.
-                        if let Some(e) = self.event_fraction(h, &c, contact).filter(|e| e.theta * h >= p.dt_min_s) {
-                            self.stats.located_events += 1;
-                            events += 1;
-                            at_event = true;
-                            landing = Some(Landing::new(e, h));
-                            before_event_s = h;
-                            self.h_next = e.theta * h * (1.0 + EVENT_LEAD);
-                            level = 0;
-                            continue;
-                        }
-                    }
-                    let an = self.state.a;
-                    let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * half_b];
-                    let ux_err = c_err * h * h * da[0];
-                    let err = (c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, &c, ux_err));
-                    let ratio = if err > 0.0 { 0.9 * fast_cbrt(p.tolerance_m / err) } else { f64::INFINITY };
-                    if err > p.tolerance_m && h > p.dt_min_s {
-                        // Retried shorter by the estimate as h^(5/2) (module docs, "Adaptive
-                        // stepping": the step after an event, where nearly every rejection falls).
-                        self.stats.rejected_steps += 1;
-                        let shrink = 0.9 * (p.tolerance_m / err).powf(0.4);
-                        self.h_next = (h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s);
-                        landing = None;
-                        continue;
-                    }
-                    if err > p.tolerance_m {
-                        self.stats.forced_min_steps += 1;
-                    }
-                    self.commit_observed(h, c, t1, w, obs);
-                    landing = None;
-                    // A step shortened to a breakpoint or landed on an event: the next one may be as
-                    // long as the step planned before (the fragment does not restart the growth).
-                    let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
-                    let cap = if at_event { cap.max(before_event_s) } else { cap };
-                    self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
-                    level = 0;
-                    if !at_event {
-                        events = 0;
-                    }
-                    at_event = false;
-                }
-                Err((iterations, residual)) => {
-                    if level >= self.solver.max_substep_levels {
-                        return Err(SolveError::NonConvergence { t_s: t1, iterations, levels: level, residual });
-                    }
-                    level += 1;
-                    landing = None;
-                    self.stats.substeps += 1;
-                    self.stats.max_substep_level = self.stats.max_substep_level.max(level);
-                    self.h_next = (0.5 * h).max(p.dt_min_s * 0.5f64.powi(level as i32));
-                }
-            }
-        }
-        Ok(())
     }
 
     /// Commit the converged step `c` of length `h` ending at `t1` under the load `w`, and show it
