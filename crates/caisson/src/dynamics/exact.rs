@@ -445,6 +445,31 @@ impl Ladder {
         Some(ladder)
     }
 
+    /// After an exact step of rung `k` was kept: the next step climbs one rung, n rungs if the
+    /// estimate was within CLIMB^−n of the tolerance.
+    fn climb_after(&mut self, k: usize) {
+        let (mut up, mut r) = (1, self.ratio.get() * CLIMB * CLIMB);
+        while up < k && r <= 1.0 {
+            up += 1;
+            r *= CLIMB;
+        }
+        self.k = k.saturating_sub(up);
+    }
+
+    /// After an exact step of rung `k` was refused by its error estimate: one rung shorter, n + 1
+    /// if the estimate exceeds CLIMB^n tolerances (at most the shortest); the rung to try.
+    fn descend_after(&mut self, k: usize) -> usize {
+        let r = self.ratio.get();
+        let mut k = k + 1;
+        let mut r = r / CLIMB;
+        while k + 1 < RUNGS && r > 1.0 {
+            k += 1;
+            r /= CLIMB;
+        }
+        self.k = k;
+        k
+    }
+
     /// The step length of rung `k`, s.
     #[inline]
     pub fn h(&self, k: usize) -> f64 {
@@ -508,34 +533,7 @@ impl Simulation {
         obs: &mut O,
     ) -> bool {
         let t = self.state.t_s;
-        if !self.exact_may_start() {
-            if let Some(l) = self.exact.as_mut() {
-                (l.retry_s, l.ceiling_s) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-            }
-            return false;
-        }
-        let Some(set) = self.contact_set() else {
-            return false;
-        };
-        let Some(ladder) = self.exact.as_mut() else {
-            return false;
-        };
-        // After a step refused on the shortest rung, Newmark steps to its end in the same set.
-        if t < ladder.retry_s && set.index == ladder.retry_set {
-            return false;
-        }
-        if ladder.set != set.index {
-            // Another contact set (a lift or a touch-down has come): its own ladder, from the
-            // longest step in full contact and from dt_max/4 with springs lifted.
-            (ladder.set, ladder.k) = (set.index, if set.full() { 0 } else { PARTIAL_ENTRY_RUNG });
-            ladder.ceiling_s = f64::NEG_INFINITY;
-        }
-        let room = bp_s.min(t_end_s) - t;
-        // After a step refused at an event, at most half the way to that step's end (the event
-        // is bracketed by halving).
-        let half_way = if ladder.ceiling_s > t { 0.5 * (ladder.ceiling_s - t) * (1.0 + 1e-9) } else { f64::INFINITY };
-        // Less than the shortest rung to the breakpoint: Newmark steps to it.
-        let Some(first) = (ladder.k..RUNGS).find(|&k| ladder.h(k) <= room && ladder.h(k) <= half_way) else {
+        let Some((set, first)) = self.exact_first_rung(bp_s, t_end_s) else {
             return false;
         };
         // The load at the start: the committed step's, if it is known.
@@ -566,29 +564,12 @@ impl Simulation {
                     self.stats.exact_steps += 1;
                     self.stats.exact_partial_steps += u64::from(!set.full());
                     self.commit_observed(h, c, t1, w1, obs);
-                    // The next step climbs one rung, n rungs if the estimate is within CLIMB^−n
-                    // of the tolerance.
-                    let ladder = self.exact.as_mut().expect("checked above");
-                    let (mut up, mut r) = (1, ladder.ratio.get() * CLIMB * CLIMB);
-                    while up < k && r <= 1.0 {
-                        up += 1;
-                        r *= CLIMB;
-                    }
-                    ladder.k = k.saturating_sub(up);
+                    self.exact.as_mut().expect("checked above").climb_after(k);
                     self.h_next = h;
                     return true;
                 }
                 Err(Refused::Error) if k + 1 < RUNGS => {
-                    // One rung shorter, n + 1 if the estimate exceeds CLIMB^n tolerances.
-                    let ladder = self.exact.as_mut().expect("checked above");
-                    let r = ladder.ratio.get();
-                    k += 1;
-                    let mut r = r / CLIMB;
-                    while k + 1 < RUNGS && r > 1.0 {
-                        k += 1;
-                        r /= CLIMB;
-                    }
-                    ladder.k = k;
+                    k = self.exact.as_mut().expect("checked above").descend_after(k);
                     continue;
                 }
                 Err(Refused::Stick) if k + 1 < RUNGS => {
@@ -609,6 +590,42 @@ impl Simulation {
             k += 1;
         }
         false
+    }
+
+    /// The contact set of the committed state and the rung of its ladder to try first (module
+    /// docs, "The ladder"), or `None` where no exact step is tried: the state is not one where
+    /// every spring in contact sticks (and then the event a refused step saw has come: the steps
+    /// after it are neither held back nor kept short on its account), the springs in contact are
+    /// not one run, the set's last step was refused on its shortest rung and its end has not come,
+    /// or no rung fits before the breakpoint `bp_s` and `t_end_s` (and half the way to the end of
+    /// a step refused at an event).
+    fn exact_first_rung(&mut self, bp_s: f64, t_end_s: f64) -> Option<(ContactSet, usize)> {
+        let t = self.state.t_s;
+        if !self.exact_may_start() {
+            if let Some(l) = self.exact.as_mut() {
+                (l.retry_s, l.ceiling_s) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+            }
+            return None;
+        }
+        let set = self.contact_set()?;
+        let ladder = self.exact.as_mut()?;
+        // After a step refused on the shortest rung, Newmark steps to its end in the same set.
+        if t < ladder.retry_s && set.index == ladder.retry_set {
+            return None;
+        }
+        if ladder.set != set.index {
+            // Another contact set (a lift or a touch-down has come): its own ladder, from the
+            // longest step in full contact and from dt_max/4 with springs lifted.
+            (ladder.set, ladder.k) = (set.index, if set.full() { 0 } else { PARTIAL_ENTRY_RUNG });
+            ladder.ceiling_s = f64::NEG_INFINITY;
+        }
+        let room = bp_s.min(t_end_s) - t;
+        // After a step refused at an event, at most half the way to that step's end (the event
+        // is bracketed by halving).
+        let half_way = if ladder.ceiling_s > t { 0.5 * (ladder.ceiling_s - t) * (1.0 + 1e-9) } else { f64::INFINITY };
+        // Less than the shortest rung to the breakpoint: Newmark steps to it.
+        let first = (ladder.k..RUNGS).find(|&k| ladder.h(k) <= room && ladder.h(k) <= half_way)?;
+        Some((set, first))
     }
 
     /// One step of rung `k` of the ladder of contact set `set` from the committed state (module
