@@ -672,42 +672,15 @@ impl Simulation {
         // The force g = p + (κ a_r Σd, 0, 0) − R e_x.
         let shift = kappa * a_ref * sum_d;
         let g = |p: Vector3<f64>, r: f64| [p[0] + shift - r, p[1], p[2]];
-        let mut y = mul(&pr.e0, &y0);
-        let mut add = |w: &Block, g: [f64; 3]| {
-            let d = mul(w, &g);
-            y.iter_mut().zip(d).for_each(|(a, b)| *a += b);
-        };
         // y(h) = y* + γ R(h).
         let prev = self.exact_prev.filter(|p| p.t_end_s == self.state.t_s && p.h_s == h && p.set == set.index);
-        let gamma: [f64; 6] = match (third, prev) {
-            (Third::Before(pb), Some(p)) => {
-                add(&pr.before[0], g(p0, r0));
-                add(&pr.before[1], g(p1, 0.0));
-                add(&pr.before[2], g(pb, p.r_start_n));
-                pr.before[1][0].map(|w| -w)
-            }
-            (Third::Middle(pm), _) => {
-                add(&pr.middle[0], g(p0, 0.0));
-                add(&pr.middle[1], g(pm, 0.0));
-                add(&pr.middle[2], g(p1, 0.0));
-                y.iter_mut().zip(pr.hermite_x[0]).for_each(|(a, w)| *a -= w * r0);
-                y.iter_mut().zip(pr.hermite_x[1]).for_each(|(a, w)| *a -= w * r0_rate);
-                std::array::from_fn(|i| -pr.hermite_x[2][i])
-            }
+        let (mut y, gamma) = match (third, prev) {
+            (Third::Before(pb), Some(p)) => free_response(pr, &y0, [g(p0, r0), g(p1, 0.0), g(pb, p.r_start_n)], None),
+            (Third::Middle(pm), _) => free_response(pr, &y0, [g(p0, 0.0), g(pm, 0.0), g(p1, 0.0)], Some([r0, r0_rate])),
             (Third::Before(_), None) => return Err(Refused::Stick),
         };
         // R(y* + γ R) = R: a quadratic in R.
-        let (a, b) = (-ky * y[1], ky * y[2]);
-        let (se, sxe) = (n * y[0] - sum_d, sx * y[0] - sum_xd);
-        let qc = kappa * ((a - a_ref) * se + b * sxe);
-        let qb =
-            kappa * ((a - a_ref) * n * gamma[0] - ky * gamma[1] * se + b * sx * gamma[0] + ky * gamma[2] * sxe) - 1.0;
-        let qa = kappa * ky * gamma[0] * (gamma[2] * sx - gamma[1] * n);
-        let disc = qb * qb - 4.0 * qa * qc;
-        if !(disc >= 0.0 && qb != 0.0) {
-            return Err(Refused::Stick);
-        }
-        let r1 = -2.0 * qc / (qb + qb.signum() * disc.sqrt());
+        let r1 = root_of_r(&y, &gamma, [n, sx, sum_d, sum_xd, a_ref], ky, kappa).ok_or(Refused::Stick)?;
         y.iter_mut().zip(gamma).for_each(|(a, w)| *a += w * r1);
         let q1 = Vector3::new(y[0], y[1], y[2]);
         let v1 = Vector3::new(y[3], y[4], y[5]);
@@ -721,38 +694,10 @@ impl Simulation {
             Third::Middle(_) => 0.75 * r0 + 0.25 * r1 + 0.25 * h * r0_rate,
         };
         let (g0, g1) = (g(p0, r0), g(p1, r1));
-        let c: [[f64; 3]; 3] = match third {
-            Third::Before(pb) => {
-                let gb = g(pb, r_prev);
-                let h2 = h * h;
-                [
-                    g0,
-                    std::array::from_fn(|i| (g1[i] - gb[i]) / (2.0 * h)),
-                    std::array::from_fn(|i| (g1[i] - 2.0 * g0[i] + gb[i]) / (2.0 * h2)),
-                ]
-            }
-            Third::Middle(pm) => {
-                // The load through σ = 0, h/2, h, less R through R0, Ṙ0 and R1.
-                let (l0, lm, l1) = (g(p0, 0.0), g(pm, 0.0), g(p1, 0.0));
-                let mut c = [
-                    l0,
-                    std::array::from_fn(|i| (4.0 * lm[i] - 3.0 * l0[i] - l1[i]) / h),
-                    std::array::from_fn(|i| 2.0 * (l0[i] - 2.0 * lm[i] + l1[i]) / (h * h)),
-                ];
-                c[0][0] -= r0;
-                c[1][0] -= r0_rate;
-                c[2][0] -= (r1 - r0 - r0_rate * h) / (h * h);
-                c
-            }
+        let c = match third {
+            Third::Before(pb) => force_through_before(h, g0, g1, g(pb, r_prev)),
+            Third::Middle(pm) => force_through_middle(h, [g(p0, 0.0), g(pm, 0.0), g(p1, 0.0)], [r0, r0_rate, r1]),
         };
-        // The state at σ inside the step under the same interpolated force.
-        fn at<const R: usize>(y0: &[f64; 6], c: &[[f64; 3]; 3], e0: &[[f64; 6]; 6], w: &[Block; 3]) -> [f64; R] {
-            let mut ys = rows::<R, 6>(e0, y0);
-            for (w, ck) in w.iter().zip(c) {
-                ys.iter_mut().zip(rows::<R, 3>(w, ck)).for_each(|(a, b)| *a += b);
-            }
-            ys
-        }
         // The middle: all of it for a partial set's samples, its positions for full contact.
         let ym = (!full).then(|| at::<6>(&y0, &c, &pr.half_e0, &pr.half_c));
         let qm: [f64; 3] = match &ym {
@@ -771,26 +716,7 @@ impl Simulation {
         // LOAD_GUARD tolerances is refused too (module docs, the error estimate).
         let err = match (third, prev) {
             (Third::Before(pb), Some(p)) => {
-                let (a, pa) = (p.extra.0 - self.state.t_s, p.extra.1);
-                let (k, h2) = (-0.375 * h * h * h, 2.0 * h * h);
-                let dp = pa * (k / ((a + h) * a * (a - h))) - pb * (k / ((h + a) * h2))
-                    + p0 * (2.0 * k / (a * h2))
-                    + p1 * (k / ((h - a) * h2));
-                let dg = [dp[0] - dr, dp[1], dp[2]];
-                let (half_b, m) = (0.5 * self.model.width_m, &pr.middle_max);
-                // The rows only where their bound passes the guard (the same answer).
-                let bound = (dg[0].abs() * m[0] + dg[1].abs() * m[1] + dg[2].abs() * m[2]) * half_b.max(1.0);
-                if bound <= LOAD_GUARD * tolerance_m {
-                    err
-                } else {
-                    let dy = rows::<3, 3>(&pr.middle[1], &dg);
-                    let load_err = dy[0].abs().max(dy[1].abs()).max(dy[2].abs() * half_b);
-                    if load_err > LOAD_GUARD * tolerance_m {
-                        load_err
-                    } else {
-                        err
-                    }
-                }
+                self.load_guarded_error_m(pr, h, (pb, &p), [p0, p1], (dr, err), tolerance_m)
             }
             _ => err,
         };
@@ -819,29 +745,9 @@ impl Simulation {
             // middle and the end first, without the quarter points: a step refused there is
             // refused by the whole test too (the same verdict, for less).
             let ym = ym.expect("computed for a partial set");
-            let (x_m, springs) = (&self.model.x_m, self.model.x_m.len());
-            let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
-            let boundary = || boundary.iter().filter(|(i, _)| *i < springs);
-            if !boundary().all(|&(i, contact)| on_side(x_m[i], contact, &ym) && on_side(x_m[i], contact, &y)) {
+            let quarters = || pr.quarters.as_ref().map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)]);
+            if !self.partial_set_holds(set, h, &to_u, [&y0, &ym, &y], quarters) {
                 return Err(Refused::Stick);
-            }
-            if !self.set_sticks(set.lo, set.hi, to_u(&y), h) || !self.set_sticks(set.lo, set.hi, to_u(&ym), 0.5 * h) {
-                return Err(Refused::Stick);
-            }
-            let [yq1, yq3] = pr
-                .quarters
-                .as_ref()
-                .map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)])
-                .ok_or(Refused::Stick)?;
-            let samples = [(0.0, y0), (0.25 * h, yq1), (0.5 * h, ym), (0.75 * h, yq3), (h, y)];
-            let x_m = &self.model.x_m;
-            if !boundary().all(|&(i, contact)| keeps_side(x_m[i], contact, &samples)) {
-                return Err(Refused::Stick);
-            }
-            for (s, ys) in [&samples[1], &samples[3]] {
-                if !self.set_sticks(set.lo, set.hi, to_u(ys), *s) {
-                    return Err(Refused::Stick);
-                }
             }
             // Committed spring by spring (the lifted springs' slip positions follow u_x).
             self.general_trial(u, h);
@@ -853,6 +759,152 @@ impl Simulation {
             Some(Previous { t_end_s: self.state.t_s + h, h_s: h, set: set.index, r_start_n: r0, p_start: p0, extra });
         Ok(converged)
     }
+
+    /// The error estimate `err` of an exact step of length `h` through the previous step's start
+    /// (`pb`, the load there, and `prev`), with the load's departure from its interpolation in
+    /// the middle: the cubic through a fourth point of the load (the start of the step before, or
+    /// its middle), −(3/8) h³ times its leading coefficient (the divided difference), with δR
+    /// (`dr`) through the middle's weights; a step whose load the interpolation misses by more
+    /// than LOAD_GUARD tolerances is refused too (module docs, the error estimate). `ends`: the
+    /// loads at the step's start and end.
+    fn load_guarded_error_m(
+        &self,
+        pr: &Propagator,
+        h: f64,
+        (pb, prev): (Vector3<f64>, &Previous),
+        [p0, p1]: [Vector3<f64>; 2],
+        (dr, err): (f64, f64),
+        tolerance_m: f64,
+    ) -> f64 {
+        let (a, pa) = (prev.extra.0 - self.state.t_s, prev.extra.1);
+        let (k, h2) = (-0.375 * h * h * h, 2.0 * h * h);
+        let dp = pa * (k / ((a + h) * a * (a - h))) - pb * (k / ((h + a) * h2))
+            + p0 * (2.0 * k / (a * h2))
+            + p1 * (k / ((h - a) * h2));
+        let dg = [dp[0] - dr, dp[1], dp[2]];
+        let (half_b, m) = (0.5 * self.model.width_m, &pr.middle_max);
+        // The rows only where their bound passes the guard (the same answer).
+        let bound = (dg[0].abs() * m[0] + dg[1].abs() * m[1] + dg[2].abs() * m[2]) * half_b.max(1.0);
+        if bound <= LOAD_GUARD * tolerance_m {
+            return err;
+        }
+        let dy = rows::<3, 3>(&pr.middle[1], &dg);
+        let load_err = dy[0].abs().max(dy[1].abs()).max(dy[2].abs() * half_b);
+        if load_err > LOAD_GUARD * tolerance_m {
+            load_err
+        } else {
+            err
+        }
+    }
+
+    /// Whether an exact step of length `h` in the partial contact set `set` holds (module docs,
+    /// "Partial contact"): the springs of the set stick, and the set holds, at the quarter points,
+    /// the middle and the end, and between them too. `states`: y at the start, the middle and the
+    /// end; `quarters` y at h/4 and 3h/4 (`None`: refused), computed only if the middle and the
+    /// end pass (a step refused there is refused by the whole test too: the same verdict, for
+    /// less); `to_u` the displacements of a state.
+    fn partial_set_holds(
+        &self,
+        set: ContactSet,
+        h: f64,
+        to_u: &dyn Fn(&[f64; 6]) -> [f64; 3],
+        [y0, ym, y]: [&[f64; 6]; 3],
+        quarters: impl FnOnce() -> Option<[[f64; 6]; 2]>,
+    ) -> bool {
+        let (x_m, springs) = (&self.model.x_m, self.model.x_m.len());
+        let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
+        let boundary = || boundary.iter().filter(|(i, _)| *i < springs);
+        if !boundary().all(|&(i, contact)| on_side(x_m[i], contact, ym) && on_side(x_m[i], contact, y)) {
+            return false;
+        }
+        if !self.set_sticks(set.lo, set.hi, to_u(y), h) || !self.set_sticks(set.lo, set.hi, to_u(ym), 0.5 * h) {
+            return false;
+        }
+        let Some([yq1, yq3]) = quarters() else {
+            return false;
+        };
+        let samples = [(0.0, *y0), (0.25 * h, yq1), (0.5 * h, *ym), (0.75 * h, yq3), (h, *y)];
+        if !boundary().all(|&(i, contact)| keeps_side(x_m[i], contact, &samples)) {
+            return false;
+        }
+        [&samples[1], &samples[3]].iter().all(|(s, ys)| self.set_sticks(set.lo, set.hi, to_u(ys), *s))
+    }
+}
+
+/// The free response of an exact step and the weight of R(h) in it, y(h) = y* + γ R(h): y* the
+/// propagated start `y0` plus the weights of the forces `g` at the interpolation's points
+/// (R in them where it is known): through the previous step's start (`hermite` `None`, R0 and R
+/// there in `g`), or through the step's middle less R's Hermite part from R0 and Ṙ0 (`hermite`
+/// `Some([R0, Ṙ0])`).
+fn free_response(pr: &Propagator, y0: &[f64; 6], g: [[f64; 3]; 3], hermite: Option<[f64; 2]>) -> ([f64; 6], [f64; 6]) {
+    let mut y = mul(&pr.e0, y0);
+    let w = if hermite.is_some() { &pr.middle } else { &pr.before };
+    for (w, g) in w.iter().zip(&g) {
+        let d = mul(w, g);
+        y.iter_mut().zip(d).for_each(|(a, b)| *a += b);
+    }
+    let Some(r) = hermite else {
+        return (y, pr.before[1][0].map(|w| -w));
+    };
+    y.iter_mut().zip(pr.hermite_x[0]).for_each(|(a, w)| *a -= w * r[0]);
+    y.iter_mut().zip(pr.hermite_x[1]).for_each(|(a, w)| *a -= w * r[1]);
+    (y, std::array::from_fn(|i| -pr.hermite_x[2][i]))
+}
+
+/// R(h), the root of R(y* + γ R) = R, a quadratic in R (module docs), taken without
+/// cancellation; `None` if it is not real. `sums`: n, Σx_i, Σd_i, Σx_i d_i and a_r of the set.
+fn root_of_r(
+    y: &[f64; 6],
+    gamma: &[f64; 6],
+    [n, sx, sum_d, sum_xd, a_ref]: [f64; 5],
+    ky: f64,
+    kappa: f64,
+) -> Option<f64> {
+    let (a, b) = (-ky * y[1], ky * y[2]);
+    let (se, sxe) = (n * y[0] - sum_d, sx * y[0] - sum_xd);
+    let qc = kappa * ((a - a_ref) * se + b * sxe);
+    let qb = kappa * ((a - a_ref) * n * gamma[0] - ky * gamma[1] * se + b * sx * gamma[0] + ky * gamma[2] * sxe) - 1.0;
+    let qa = kappa * ky * gamma[0] * (gamma[2] * sx - gamma[1] * n);
+    let disc = qb * qb - 4.0 * qa * qc;
+    if !(disc >= 0.0 && qb != 0.0) {
+        return None;
+    }
+    Some(-2.0 * qc / (qb + qb.signum() * disc.sqrt()))
+}
+
+/// The step's force as a quadratic in σ, c_0 + c_1 σ + c_2 σ², through its start `g0`, its end
+/// `g1` and the previous step's start `gb` (σ = −h), R in each.
+fn force_through_before(h: f64, g0: [f64; 3], g1: [f64; 3], gb: [f64; 3]) -> [[f64; 3]; 3] {
+    let h2 = h * h;
+    [
+        g0,
+        std::array::from_fn(|i| (g1[i] - gb[i]) / (2.0 * h)),
+        std::array::from_fn(|i| (g1[i] - 2.0 * g0[i] + gb[i]) / (2.0 * h2)),
+    ]
+}
+
+/// The step's force as a quadratic in σ: the load through σ = 0, h/2, h (`[l0, lm, l1]`, without
+/// R), less R through R0, Ṙ0 and R1 (`r`).
+fn force_through_middle(h: f64, [l0, lm, l1]: [[f64; 3]; 3], [r0, r0_rate, r1]: [f64; 3]) -> [[f64; 3]; 3] {
+    let mut c = [
+        l0,
+        std::array::from_fn(|i| (4.0 * lm[i] - 3.0 * l0[i] - l1[i]) / h),
+        std::array::from_fn(|i| 2.0 * (l0[i] - 2.0 * lm[i] + l1[i]) / (h * h)),
+    ];
+    c[0][0] -= r0;
+    c[1][0] -= r0_rate;
+    c[2][0] -= (r1 - r0 - r0_rate * h) / (h * h);
+    c
+}
+
+/// The state at σ inside the step under the same interpolated force (`c`), from the start `y0`
+/// by the propagator `e0` and the weights `w` of that point: its first `R` rows.
+fn at<const R: usize>(y0: &[f64; 6], c: &[[f64; 3]; 3], e0: &[[f64; 6]; 6], w: &[Block; 3]) -> [f64; R] {
+    let mut ys = rows::<R, 6>(e0, y0);
+    for (w, ck) in w.iter().zip(c) {
+        ys.iter_mut().zip(rows::<R, 3>(w, ck)).for_each(|(a, b)| *a += b);
+    }
+    ys
 }
 
 /// Whether u_y,i = u_y − θ x_i of the spring at `x` is on its side (in contact, < 0, if
