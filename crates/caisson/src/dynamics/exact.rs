@@ -282,6 +282,16 @@ pub(super) enum Third {
     Before(Vector3<f64>),
 }
 
+impl Third {
+    /// Its time in a step of length `h` from `t_s`, and its load.
+    fn point(self, t_s: f64, h: f64) -> (f64, Vector3<f64>) {
+        match self {
+            Third::Before(pb) => (t_s - h, pb),
+            Third::Middle(pm) => (t_s + 0.5 * h, pm),
+        }
+    }
+}
+
 /// Ladders kept per thread, the most recent last: the caissons of a design life's storms share
 /// their matrices (their weight in water changes with the tide, the propagators do not), and a
 /// sizing run alternates among a few widths.
@@ -651,24 +661,13 @@ impl Simulation {
         // a_r = W'/m, the normal force of a spring of the set at rest (W'/n in full contact).
         let a_ref = if full { ladder.a_ref } else { model.weight_n / n };
         let pr = ladder.rung(model, set, k).ok_or(Refused::Stick)?;
-        let law = self.model.law;
-        let (ky, kappa) = (law.ky_n_per_m, law.kappa_per_m);
-        // R at q = (u_x − s_1, u_y, θ).
-        let r_of = |q: &[f64]| {
-            let (a, b) = (-ky * q[1], ky * q[2]);
-            kappa * ((a - a_ref) * (n * q[0] - sum_d) + b * (sx * q[0] - sum_xd))
-        };
+        let (ky, kappa) = (self.model.law.ky_n_per_m, self.model.law.kappa_per_m);
+        let rem = Remainder { n, sx, sum_d, sum_xd, a_ref, ky, kappa };
         let (un, vn) = (self.state.u, self.state.v);
         let y0 = [un[0] - s1, un[1], un[2], vn[0], vn[1], vn[2]];
-        let r0 = r_of(&y0);
-        // Ṙ at the start: R's gradient in q times q̇ (needed with a middle third only).
-        let r0_rate = if let Third::Before(_) = third {
-            0.0
-        } else {
-            let (a, b) = (-ky * y0[1], ky * y0[2]);
-            let (se, sxe) = (n * y0[0] - sum_d, sx * y0[0] - sum_xd);
-            kappa * (-ky * y0[4] * se + (a - a_ref) * n * y0[3] + ky * y0[5] * sxe + b * sx * y0[3])
-        };
+        let r0 = rem.at(&y0);
+        // Ṙ at the start (needed with a middle third only).
+        let r0_rate = if let Third::Before(_) = third { 0.0 } else { rem.rate(&y0) };
         // The force g = p + (κ a_r Σd, 0, 0) − R e_x.
         let shift = kappa * a_ref * sum_d;
         let g = |p: Vector3<f64>, r: f64| [p[0] + shift - r, p[1], p[2]];
@@ -680,12 +679,10 @@ impl Simulation {
             (Third::Before(_), None) => return Err(Refused::Stick),
         };
         // R(y* + γ R) = R: a quadratic in R.
-        let r1 = root_of_r(&y, &gamma, [n, sx, sum_d, sum_xd, a_ref], ky, kappa).ok_or(Refused::Stick)?;
+        let r1 = rem.root(&y, &gamma).ok_or(Refused::Stick)?;
         y.iter_mut().zip(gamma).for_each(|(a, w)| *a += w * r1);
-        let q1 = Vector3::new(y[0], y[1], y[2]);
-        let v1 = Vector3::new(y[3], y[4], y[5]);
-        let u = [q1[0] + s1, q1[1], q1[2]];
-        let v = [v1[0], v1[1], v1[2]];
+        let (q1, v1) = (Vector3::new(y[0], y[1], y[2]), Vector3::new(y[3], y[4], y[5]));
+        let (u, v) = ([q1[0] + s1, q1[1], q1[2]], [v1[0], v1[1], v1[2]]);
         // The step's middle under the same interpolated force: its quadratic through the three
         // points (R linear on the first step of a phase: its value in the middle is the mean).
         let r_prev = prev.map_or(0.0, |p| p.r_start_n);
@@ -698,22 +695,13 @@ impl Simulation {
             Third::Before(pb) => force_through_before(h, g0, g1, g(pb, r_prev)),
             Third::Middle(pm) => force_through_middle(h, [g(p0, 0.0), g(pm, 0.0), g(p1, 0.0)], [r0, r0_rate, r1]),
         };
-        // The middle: all of it for a partial set's samples, its positions for full contact.
-        let ym = (!full).then(|| at::<6>(&y0, &c, &pr.half_e0, &pr.half_c));
-        let qm: [f64; 3] = match &ym {
-            Some(y) => [y[0], y[1], y[2]],
-            None => at::<3>(&y0, &c, &pr.half_e0, &pr.half_c),
-        };
+        let (ym, qm) = middle(pr, &y0, &c, full);
         // The error estimate: R in the middle against its interpolation there, as a force through
         // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
-        let dr = r_of(&qm) - r_mid;
+        let dr = rem.at(&qm) - r_mid;
         let w = &pr.middle[1][0];
         let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
-        // Through the previous step's start, the load's departure from its interpolation in the
-        // middle: the cubic through a fourth point of the load (the start of the step before, or
-        // its middle), −(3/8) h³ times its leading coefficient (the divided difference), with δR
-        // through the middle's weights: a step whose load the interpolation misses by more than
-        // LOAD_GUARD tolerances is refused too (module docs, the error estimate).
+        // Through the previous step's start, the load's own interpolation guarded too.
         let err = match (third, prev) {
             (Third::Before(pb), Some(p)) => {
                 self.load_guarded_error_m(pr, h, (pb, &p), [p0, p1], (dr, err), tolerance_m)
@@ -724,40 +712,44 @@ impl Simulation {
         if err > tolerance_m || err.is_nan() {
             return Err(Refused::Error);
         }
-        let extra = match third {
-            Third::Before(pb) => (self.state.t_s - h, pb),
-            Third::Middle(pm) => (self.state.t_s + 0.5 * h, pm),
-        };
+        let extra = third.point(self.state.t_s, h);
         // The acceleration at the end (not for a step refused by its error estimate).
         let acc = pr.minv * (Vector3::from(g1) - pr.k_l * q1 - pr.c_l * v1);
         let converged = Converged { u, v, a: [acc[0], acc[1], acc[2]], iterations: 0, residual: 0.0 };
-        let to_u = |y: &[f64; 6]| [y[0] + s1, y[1], y[2]];
-        if full {
-            // Every spring must stick in the middle of the step and at its end (the spring law's
-            // own test; the last one records the sums of the commit and the base reaction).
-            if !self.all_stick_at([([qm[0] + s1, qm[1], qm[2]], 0.5 * h), (u, h)]) {
-                return Err(Refused::Stick);
-            }
-            self.stick_sums(u, v, h);
-        } else {
-            // The springs of the set stick, and the set holds, at the quarter points, the middle
-            // and the end; the set holds between them too (module docs, "Partial contact"). The
-            // middle and the end first, without the quarter points: a step refused there is
-            // refused by the whole test too (the same verdict, for less).
-            let ym = ym.expect("computed for a partial set");
-            let quarters = || pr.quarters.as_ref().map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)]);
-            if !self.partial_set_holds(set, h, &to_u, [&y0, &ym, &y], quarters) {
-                return Err(Refused::Stick);
-            }
-            // Committed spring by spring (the lifted springs' slip positions follow u_x).
-            self.general_trial(u, h);
-            if self.trial_slips {
-                return Err(Refused::Stick);
-            }
+        if !self.exact_step_holds(set, k, h, &Sampled { s1, y0, ym, qm, y, c }) {
+            return Err(Refused::Stick);
         }
         self.exact_prev =
             Some(Previous { t_end_s: self.state.t_s + h, h_s: h, set: set.index, r_start_n: r0, p_start: p0, extra });
         Ok(converged)
+    }
+
+    /// Whether the exact step of rung `k` of contact set `set` (length `h`), sampled as `s`,
+    /// holds: in full contact every spring sticks in its middle and at its end (the spring law's
+    /// own test; the last one records the sums of the commit and the base reaction); in a partial
+    /// set [`Self::partial_set_holds`], and then no spring slips at the end, committed spring by
+    /// spring (the lifted springs' slip positions follow u_x).
+    fn exact_step_holds(&mut self, set: ContactSet, k: usize, h: f64, s: &Sampled) -> bool {
+        let Sampled { s1, y0, ym, qm, y, c } = *s;
+        let to_u = |y: &[f64; 6]| [y[0] + s1, y[1], y[2]];
+        let (u, v) = (to_u(&y), [y[3], y[4], y[5]]);
+        if set.full() {
+            if !self.all_stick_at([([qm[0] + s1, qm[1], qm[2]], 0.5 * h), (u, h)]) {
+                return false;
+            }
+            self.stick_sums(u, v, h);
+            return true;
+        }
+        let ym = ym.expect("computed for a partial set");
+        let Some(pr) = self.exact.as_ref().and_then(|l| l.rung(&self.model, set, k)) else {
+            return false;
+        };
+        let quarters = || pr.quarters.as_ref().map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)]);
+        if !self.partial_set_holds(set, h, &to_u, [&y0, &ym, &y], quarters) {
+            return false;
+        }
+        self.general_trial(u, h);
+        !self.trial_slips
     }
 
     /// The error estimate `err` of an exact step of length `h` through the previous step's start
@@ -851,25 +843,64 @@ fn free_response(pr: &Propagator, y0: &[f64; 6], g: [[f64; 3]; 3], hermite: Opti
     (y, std::array::from_fn(|i| -pr.hermite_x[2][i]))
 }
 
-/// R(h), the root of R(y* + γ R) = R, a quadratic in R (module docs), taken without
-/// cancellation; `None` if it is not real. `sums`: n, Σx_i, Σd_i, Σx_i d_i and a_r of the set.
-fn root_of_r(
-    y: &[f64; 6],
-    gamma: &[f64; 6],
-    [n, sx, sum_d, sum_xd, a_ref]: [f64; 5],
+/// An exact step sampled: the first spring's slip position `s1` (q_0 = u_x − s1), the state at
+/// its start, middle (whole for a partial set) and end, the middle's positions, and its force's
+/// quadratic coefficients.
+#[derive(Clone, Copy)]
+struct Sampled {
+    s1: f64,
+    y0: [f64; 6],
+    ym: Option<[f64; 6]>,
+    qm: [f64; 3],
+    y: [f64; 6],
+    c: [[f64; 3]; 3],
+}
+
+/// The shear's bilinear remainder R = κ [(a − a_r) Σe_i + b Σx_i e_i] of a contact set (module
+/// docs) as a function of q = (u_x − s_1, u_y, θ): a = −k_y u_y, b = k_y θ, Σe_i = n q_0 − Σd_i,
+/// Σx_i e_i = Σx_i q_0 − Σx_i d_i over the set's n springs.
+#[derive(Clone, Copy)]
+struct Remainder {
+    n: f64,
+    sx: f64,
+    sum_d: f64,
+    sum_xd: f64,
+    a_ref: f64,
     ky: f64,
     kappa: f64,
-) -> Option<f64> {
-    let (a, b) = (-ky * y[1], ky * y[2]);
-    let (se, sxe) = (n * y[0] - sum_d, sx * y[0] - sum_xd);
-    let qc = kappa * ((a - a_ref) * se + b * sxe);
-    let qb = kappa * ((a - a_ref) * n * gamma[0] - ky * gamma[1] * se + b * sx * gamma[0] + ky * gamma[2] * sxe) - 1.0;
-    let qa = kappa * ky * gamma[0] * (gamma[2] * sx - gamma[1] * n);
-    let disc = qb * qb - 4.0 * qa * qc;
-    if !(disc >= 0.0 && qb != 0.0) {
-        return None;
+}
+
+impl Remainder {
+    /// R at the positions of `q`.
+    fn at(&self, q: &[f64]) -> f64 {
+        let (a, b) = (-self.ky * q[1], self.ky * q[2]);
+        self.kappa * ((a - self.a_ref) * (self.n * q[0] - self.sum_d) + b * (self.sx * q[0] - self.sum_xd))
     }
-    Some(-2.0 * qc / (qb + qb.signum() * disc.sqrt()))
+
+    /// Ṙ at the state `y` = (q, q̇): R's gradient in q times q̇.
+    fn rate(&self, y: &[f64; 6]) -> f64 {
+        let (ky, n, sx) = (self.ky, self.n, self.sx);
+        let (a, b) = (-ky * y[1], ky * y[2]);
+        let (se, sxe) = (n * y[0] - self.sum_d, sx * y[0] - self.sum_xd);
+        self.kappa * (-ky * y[4] * se + (a - self.a_ref) * n * y[3] + ky * y[5] * sxe + b * sx * y[3])
+    }
+
+    /// R(h), the root of R(y* + γ R) = R, a quadratic in R (module docs), taken without
+    /// cancellation; `None` if it is not real.
+    fn root(&self, y: &[f64; 6], gamma: &[f64; 6]) -> Option<f64> {
+        let Remainder { n, sx, sum_d, sum_xd, a_ref, ky, kappa } = *self;
+        let (a, b) = (-ky * y[1], ky * y[2]);
+        let (se, sxe) = (n * y[0] - sum_d, sx * y[0] - sum_xd);
+        let qc = kappa * ((a - a_ref) * se + b * sxe);
+        let qb =
+            kappa * ((a - a_ref) * n * gamma[0] - ky * gamma[1] * se + b * sx * gamma[0] + ky * gamma[2] * sxe) - 1.0;
+        let qa = kappa * ky * gamma[0] * (gamma[2] * sx - gamma[1] * n);
+        let disc = qb * qb - 4.0 * qa * qc;
+        if !(disc >= 0.0 && qb != 0.0) {
+            return None;
+        }
+        Some(-2.0 * qc / (qb + qb.signum() * disc.sqrt()))
+    }
 }
 
 /// The step's force as a quadratic in σ, c_0 + c_1 σ + c_2 σ², through its start `g0`, its end
@@ -895,6 +926,17 @@ fn force_through_middle(h: f64, [l0, lm, l1]: [[f64; 3]; 3], [r0, r0_rate, r1]: 
     c[1][0] -= r0_rate;
     c[2][0] -= (r1 - r0 - r0_rate * h) / (h * h);
     c
+}
+
+/// The step's middle under its interpolated force `c` from the start `y0`: all of it for a
+/// partial set's samples (not `full`), and its positions.
+fn middle(pr: &Propagator, y0: &[f64; 6], c: &[[f64; 3]; 3], full: bool) -> (Option<[f64; 6]>, [f64; 3]) {
+    let ym = (!full).then(|| at::<6>(y0, c, &pr.half_e0, &pr.half_c));
+    let qm: [f64; 3] = match &ym {
+        Some(y) => [y[0], y[1], y[2]],
+        None => at::<3>(y0, c, &pr.half_e0, &pr.half_c),
+    };
+    (ym, qm)
 }
 
 /// The state at σ inside the step under the same interpolated force (`c`), from the start `y0`
