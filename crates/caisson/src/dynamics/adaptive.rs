@@ -211,6 +211,7 @@ impl Simulation {
     /// (after a Newton failure it may go below dt_min), cut at the load's next breakpoint and so
     /// as to leave no sliver shorter than dt_min before `t_end_s`; ended just past a lift-off or
     /// touch-down anticipated within it.
+    #[inline(always)]
     fn plan_step(&mut self, ctl: &mut StepControl, t: f64, t_end_s: f64) -> Plan {
         let p = ctl.p;
         let planned =
@@ -251,6 +252,7 @@ impl Simulation {
 
     /// The verdict on the converged try `c` of `plan` (module docs, "Events" and "Adaptive
     /// stepping"), with the controller's bookkeeping of events.
+    #[inline(always)]
     fn judge(&mut self, ctl: &mut StepControl, plan: &Plan, c: &Converged) -> Verdict {
         let (p, h) = (ctl.p, plan.h);
         if self.restart_at_start(c) {
@@ -313,6 +315,7 @@ impl Simulation {
 
     /// The local error of the converged try `c` of length `h`, m: the Zienkiewicz-Xie estimate
     /// of each row (θ as θ B/2) and the springs' slip positions' (`slip_error_m`).
+    #[inline(always)]
     fn error_estimate_m(&self, ctl: &StepControl, h: f64, c: &Converged) -> f64 {
         let an = self.state.a;
         let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * ctl.half_b];
@@ -325,6 +328,7 @@ impl StepControl {
     /// After the try of `plan` was accepted with the estimate's step ratio `ratio`: the next
     /// step's length. A step shortened to a breakpoint or landed on an event: the next one may
     /// be as long as the step planned before (the fragment does not restart the growth).
+    #[inline(always)]
     fn accepted(&mut self, plan: &Plan, ratio: f64) -> f64 {
         let (p, h) = (self.p, plan.h);
         self.landing = None;

@@ -609,6 +609,7 @@ impl Simulation {
     /// not one run, the set's last step was refused on its shortest rung and its end has not come,
     /// or no rung fits before the breakpoint `bp_s` and `t_end_s` (and half the way to the end of
     /// a step refused at an event).
+    #[inline(always)]
     fn exact_first_rung(&mut self, bp_s: f64, t_end_s: f64) -> Option<(ContactSet, usize)> {
         let t = self.state.t_s;
         if !self.exact_may_start() {
@@ -745,7 +746,7 @@ impl Simulation {
             return false;
         };
         let quarters = || pr.quarters.as_ref().map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)]);
-        if !self.partial_set_holds(set, h, &to_u, [&y0, &ym, &y], quarters) {
+        if !self.partial_set_holds(set, h, s1, [&y0, &ym, &y], quarters) {
             return false;
         }
         self.general_trial(u, h);
@@ -794,15 +795,16 @@ impl Simulation {
     /// the middle and the end, and between them too. `states`: y at the start, the middle and the
     /// end; `quarters` y at h/4 and 3h/4 (`None`: refused), computed only if the middle and the
     /// end pass (a step refused there is refused by the whole test too: the same verdict, for
-    /// less); `to_u` the displacements of a state.
+    /// less); `s1` the first spring's slip position (u_x = q_0 + s1).
     fn partial_set_holds(
         &self,
         set: ContactSet,
         h: f64,
-        to_u: &dyn Fn(&[f64; 6]) -> [f64; 3],
+        s1: f64,
         [y0, ym, y]: [&[f64; 6]; 3],
         quarters: impl FnOnce() -> Option<[[f64; 6]; 2]>,
     ) -> bool {
+        let to_u = |y: &[f64; 6]| [y[0] + s1, y[1], y[2]];
         let (x_m, springs) = (&self.model.x_m, self.model.x_m.len());
         let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
         let boundary = || boundary.iter().filter(|(i, _)| *i < springs);
@@ -828,6 +830,7 @@ impl Simulation {
 /// (R in them where it is known): through the previous step's start (`hermite` `None`, R0 and R
 /// there in `g`), or through the step's middle less R's Hermite part from R0 and Ṙ0 (`hermite`
 /// `Some([R0, Ṙ0])`).
+#[inline(always)]
 fn free_response(pr: &Propagator, y0: &[f64; 6], g: [[f64; 3]; 3], hermite: Option<[f64; 2]>) -> ([f64; 6], [f64; 6]) {
     let mut y = mul(&pr.e0, y0);
     let w = if hermite.is_some() { &pr.middle } else { &pr.before };
@@ -872,12 +875,14 @@ struct Remainder {
 
 impl Remainder {
     /// R at the positions of `q`.
+    #[inline(always)]
     fn at(&self, q: &[f64]) -> f64 {
         let (a, b) = (-self.ky * q[1], self.ky * q[2]);
         self.kappa * ((a - self.a_ref) * (self.n * q[0] - self.sum_d) + b * (self.sx * q[0] - self.sum_xd))
     }
 
     /// Ṙ at the state `y` = (q, q̇): R's gradient in q times q̇.
+    #[inline(always)]
     fn rate(&self, y: &[f64; 6]) -> f64 {
         let (ky, n, sx) = (self.ky, self.n, self.sx);
         let (a, b) = (-ky * y[1], ky * y[2]);
@@ -887,6 +892,7 @@ impl Remainder {
 
     /// R(h), the root of R(y* + γ R) = R, a quadratic in R (module docs), taken without
     /// cancellation; `None` if it is not real.
+    #[inline(always)]
     fn root(&self, y: &[f64; 6], gamma: &[f64; 6]) -> Option<f64> {
         let Remainder { n, sx, sum_d, sum_xd, a_ref, ky, kappa } = *self;
         let (a, b) = (-ky * y[1], ky * y[2]);
@@ -905,6 +911,7 @@ impl Remainder {
 
 /// The step's force as a quadratic in σ, c_0 + c_1 σ + c_2 σ², through its start `g0`, its end
 /// `g1` and the previous step's start `gb` (σ = −h), R in each.
+#[inline(always)]
 fn force_through_before(h: f64, g0: [f64; 3], g1: [f64; 3], gb: [f64; 3]) -> [[f64; 3]; 3] {
     let h2 = h * h;
     [
@@ -916,6 +923,7 @@ fn force_through_before(h: f64, g0: [f64; 3], g1: [f64; 3], gb: [f64; 3]) -> [[f
 
 /// The step's force as a quadratic in σ: the load through σ = 0, h/2, h (`[l0, lm, l1]`, without
 /// R), less R through R0, Ṙ0 and R1 (`r`).
+#[inline(always)]
 fn force_through_middle(h: f64, [l0, lm, l1]: [[f64; 3]; 3], [r0, r0_rate, r1]: [f64; 3]) -> [[f64; 3]; 3] {
     let mut c = [
         l0,
@@ -930,6 +938,7 @@ fn force_through_middle(h: f64, [l0, lm, l1]: [[f64; 3]; 3], [r0, r0_rate, r1]: 
 
 /// The step's middle under its interpolated force `c` from the start `y0`: all of it for a
 /// partial set's samples (not `full`), and its positions.
+#[inline(always)]
 fn middle(pr: &Propagator, y0: &[f64; 6], c: &[[f64; 3]; 3], full: bool) -> (Option<[f64; 6]>, [f64; 3]) {
     let ym = (!full).then(|| at::<6>(y0, c, &pr.half_e0, &pr.half_c));
     let qm: [f64; 3] = match &ym {
