@@ -166,7 +166,7 @@ impl Simulation {
         // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
         while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
             let t = self.state.t_s;
-            self.event_step = ctl.at_event;
+            self.run.event_step = ctl.at_event;
             if t >= ctl.breakpoint_s {
                 ctl.breakpoint_s = load.next_breakpoint_s(t);
             }
@@ -185,10 +185,10 @@ impl Simulation {
             match self.try_step(plan.h, self.load_vector(w)) {
                 Ok(c) => match self.judge(&mut ctl, &plan, &c) {
                     Verdict::RestartedAtStart => {}
-                    Verdict::Narrowed(s) | Verdict::EventFound(s) | Verdict::Rejected(s) => self.h_next = s,
+                    Verdict::Narrowed(s) | Verdict::EventFound(s) | Verdict::Rejected(s) => self.run.h_next = s,
                     Verdict::Accepted { ratio } => {
                         self.commit_observed(plan.h, c, t1, w, obs);
-                        self.h_next = ctl.accepted(&plan, ratio);
+                        self.run.h_next = ctl.accepted(&plan, ratio);
                     }
                 },
                 Err((iterations, residual)) => {
@@ -200,7 +200,7 @@ impl Simulation {
                     ctl.landing = None;
                     self.stats.substeps += 1;
                     self.stats.max_substep_level = self.stats.max_substep_level.max(ctl.level);
-                    self.h_next = (0.5 * plan.h).max(p.dt_min_s * 0.5f64.powi(ctl.level as i32));
+                    self.run.h_next = (0.5 * plan.h).max(p.dt_min_s * 0.5f64.powi(ctl.level as i32));
                 }
             }
         }
@@ -215,7 +215,7 @@ impl Simulation {
     fn plan_step(&mut self, ctl: &mut StepControl, t: f64, t_end_s: f64) -> Plan {
         let p = ctl.p;
         let planned =
-            if ctl.level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
+            if ctl.level > 0 { self.run.h_next.min(p.dt_max_s) } else { self.run.h_next.clamp(p.dt_min_s, p.dt_max_s) };
         let mut h = planned.min(t_end_s - t);
         let bp = ctl.breakpoint_s;
         if bp - t > p.dt_min_s && bp < t + h {
@@ -242,7 +242,7 @@ impl Simulation {
                     ctl.landing = Some(Landing { predicted: true, ..Landing::new(e, h) });
                     ctl.before_event_s = h;
                     ctl.at_event = true;
-                    self.event_step = true;
+                    self.run.event_step = true;
                     plan = Plan { kind: StepKind::ToAnticipatedEvent, h: to_event, ..plan };
                 }
             }

@@ -547,7 +547,7 @@ impl Simulation {
             return false;
         };
         // The load at the start: the committed step's, if it is known.
-        let p0 = match self.last_load {
+        let p0 = match self.run.last_load {
             Some((tl, p)) if tl == t => p,
             _ => self.load_vector(load.at(t)),
         };
@@ -559,7 +559,7 @@ impl Simulation {
             let h = ladder.h(k);
             let t1 = t + h;
             let known = middle.take().filter(|&(tm, _)| tm == t1);
-            let third = match self.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h && p.set == set.index) {
+            let third = match self.run.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h && p.set == set.index) {
                 Some(p) => Third::Before(p.p_start),
                 None => {
                     let tm = t + 0.5 * h;
@@ -575,7 +575,7 @@ impl Simulation {
                     self.stats.exact_partial_steps += u64::from(!set.full());
                     self.commit_observed(h, c, t1, w1, obs);
                     self.exact.as_mut().expect("checked above").climb_after(k);
-                    self.h_next = h;
+                    self.run.h_next = h;
                     return true;
                 }
                 Err(Refused::Error) if k + 1 < RUNGS => {
@@ -593,7 +593,7 @@ impl Simulation {
                     // event.
                     let ladder = self.exact.as_mut().expect("checked above");
                     (ladder.retry_s, ladder.retry_set) = (t1, set.index);
-                    self.h_next = 0.5 * h;
+                    self.run.h_next = 0.5 * h;
                     return false;
                 }
             }
@@ -673,7 +673,7 @@ impl Simulation {
         let shift = kappa * a_ref * sum_d;
         let g = |p: Vector3<f64>, r: f64| [p[0] + shift - r, p[1], p[2]];
         // y(h) = y* + γ R(h).
-        let prev = self.exact_prev.filter(|p| p.t_end_s == self.state.t_s && p.h_s == h && p.set == set.index);
+        let prev = self.run.exact_prev.filter(|p| p.t_end_s == self.state.t_s && p.h_s == h && p.set == set.index);
         let (mut y, gamma) = match (third, prev) {
             (Third::Before(pb), Some(p)) => free_response(pr, &y0, [g(p0, r0), g(p1, 0.0), g(pb, p.r_start_n)], None),
             (Third::Middle(pm), _) => free_response(pr, &y0, [g(p0, 0.0), g(pm, 0.0), g(p1, 0.0)], Some([r0, r0_rate])),
@@ -720,7 +720,7 @@ impl Simulation {
         if !self.exact_step_holds(set, k, h, &Sampled { s1, y0, ym, qm, y, c }) {
             return Err(Refused::Stick);
         }
-        self.exact_prev =
+        self.run.exact_prev =
             Some(Previous { t_end_s: self.state.t_s + h, h_s: h, set: set.index, r_start_n: r0, p_start: p0, extra });
         Ok(converged)
     }

@@ -460,23 +460,43 @@ pub struct Simulation {
     trial_slips: bool,
     pub stats: SolverStats,
     gravity: Vector3<f64>,
-    /// Adaptive stepping: the next step to try, s.
-    h_next: f64,
     /// The all-sticking fast path's sums and scratch (`sticking`).
     fast: sticking::FastPath,
     /// Adaptive stepping with [`Accel::exact_sticking`]: the propagators of all-sticking
     /// steps of dt_max/2^k (`exact`).
     exact: Option<exact::Ladder>,
+    /// What a run carries from one step to the next beside the state ([`Self::reset`] starts it
+    /// afresh).
+    run: RunMemory,
+}
+
+/// What a run carries from one step to the next beside its [`State`].
+struct RunMemory {
+    /// Adaptive stepping: the next step to try, s.
+    h_next: f64,
     /// The last committed step, if it was exact (its end and R at its start: `exact`).
     exact_prev: Option<exact::Previous>,
     /// The load (gravity included) of the last step committed by the adaptive stepping, and its
     /// time.
     last_load: Option<(f64, Vector3<f64>)>,
     /// The step being tried ends at a located event: the springs' vertical dashpots act as at
-    /// the step's start, and the acceleration restarts at its end ([`Self::restart_at_event`]).
+    /// the step's start, and the acceleration restarts at its end ([`Simulation::restart_at_event`]).
     event_step: bool,
-    /// The time of the last restart at a step's start ([`Self::restart_at_start`]).
+    /// The time of the last restart at a step's start ([`Simulation::restart_at_start`]).
     restarted_at_s: f64,
+}
+
+impl RunMemory {
+    /// A run's start: the first step `dt_s`, nothing remembered.
+    fn new(dt_s: f64) -> Self {
+        RunMemory {
+            h_next: dt_s,
+            exact_prev: None,
+            last_load: None,
+            event_step: false,
+            restarted_at_s: f64::NEG_INFINITY,
+        }
+    }
 }
 
 struct Converged {
@@ -509,13 +529,9 @@ impl Simulation {
             trial_slips: false,
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
-            h_next: solver.dt_s,
             fast,
             exact: None,
-            exact_prev: None,
-            last_load: None,
-            event_step: false,
-            restarted_at_s: f64::NEG_INFINITY,
+            run: RunMemory::new(solver.dt_s),
         };
         if let (Stepping::Adaptive(p), true) =
             (solver.stepping, solver.accel.exact_sticking && solver.accel.sticking_fast_path)
@@ -535,15 +551,11 @@ impl Simulation {
         self.state.v = [0.0; 3];
         self.state.a = [0.0; 3];
         self.state.springs.iter_mut().for_each(|s| *s = SpringState::default());
-        self.h_next = self.solver.dt_s;
+        self.run = RunMemory::new(self.solver.dt_s);
         self.fast.invalidate();
-        self.exact_prev = None;
         if let Some(l) = self.exact.as_mut() {
             l.restart();
         }
-        self.last_load = None;
-        self.event_step = false;
-        self.restarted_at_s = f64::NEG_INFINITY;
         let p0 = self.load_vector(load.at(0.0));
         // The general path: it leaves the springs' responses of the static equilibrium.
         let f = self.general_force(self.state.u, [0.0; 3], self.solver.dt_s);
@@ -639,7 +651,7 @@ impl Simulation {
     /// and [`Self::reaction`] are summed from).
     #[inline]
     fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
-        match (self.solver.locate_contact && self.committed_lifted(), self.event_step) {
+        match (self.solver.locate_contact && self.committed_lifted(), self.run.event_step) {
             (true, false) => self.springs_force::<true, false, true>(u, v, h),
             (false, false) => self.springs_force::<false, false, true>(u, v, h),
             (true, true) => self.springs_force::<true, true, true>(u, v, h),
@@ -674,7 +686,7 @@ impl Simulation {
 
     /// [`Self::general_force`]; with `RECONTACT` a spring lifted at the step's start and in
     /// contact at the trial touches within the step (module docs, "Events"); `EVENT` is
-    /// `self.event_step` ([`dashpot_acts`]); without `SUMS` only the trial responses (and
+    /// `self.run.event_step` ([`dashpot_acts`]); without `SUMS` only the trial responses (and
     /// `trial_slips`), the force returned 0 ([`Self::general_trial`]).
     #[inline]
     fn springs_force<const RECONTACT: bool, const EVENT: bool, const SUMS: bool>(
@@ -750,7 +762,7 @@ impl Simulation {
         let (mut k11, mut k12, mut k21, mut k22) = (0.0, 0.0, 0.0, 0.0);
         let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
         for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
-            if cdy > 0.0 && dashpot_acts(self.event_step, uy_n - th_n * x, r.normal_n) {
+            if cdy > 0.0 && dashpot_acts(self.run.event_step, uy_n - th_n * x, r.normal_n) {
                 k11 += kd;
                 k12 -= x * kd;
                 k21 -= x * kd;
@@ -1090,7 +1102,7 @@ impl Simulation {
     }
 
     fn commit(&mut self, h: f64, mut c: Converged) {
-        if self.event_step {
+        if self.run.event_step {
             c.a = self.restart_at_event(&c);
         }
         if self.fast.iterate.is_some() && !self.sticking_commit_possible() {
@@ -1190,7 +1202,7 @@ impl Simulation {
     /// step's start, q̈_n ← q̈_n − M⁻¹ ΔF (ΔF as in [`Self::restart_at_event`], at the start's
     /// velocity), and the step is to be retaken. Once per start time; `true` if it restarted.
     fn restart_at_start(&mut self, c: &Converged) -> bool {
-        if self.event_step || self.restarted_at_s == self.state.t_s {
+        if self.run.event_step || self.run.restarted_at_s == self.state.t_s {
             return false;
         }
         let da = self.dashpot_jump(self.state.u, c.u, self.state.v, EVENT_MIN_FRACTION);
@@ -1200,7 +1212,7 @@ impl Simulation {
         for (a, d) in self.state.a.iter_mut().zip(da.iter()) {
             *a -= d;
         }
-        self.restarted_at_s = self.state.t_s;
+        self.run.restarted_at_s = self.state.t_s;
         true
     }
 
@@ -1219,7 +1231,7 @@ impl Simulation {
         let t0 = self.state.t_s;
         let t1 = t0 + h;
         let w = load.at(t1);
-        self.event_step = event;
+        self.run.event_step = event;
         let tried = self.try_step(h, self.load_vector(w));
         match tried {
             Ok(c) => {
@@ -1236,7 +1248,7 @@ impl Simulation {
                 }
                 let it = c.iterations;
                 self.commit(h, c);
-                self.event_step = false;
+                self.run.event_step = false;
                 if obs.observes() {
                     if obs.reads_springs() {
                         self.fill_sticking_responses();
@@ -1258,7 +1270,7 @@ impl Simulation {
                 }
                 self.stats.substeps += 1;
                 self.stats.max_substep_level = self.stats.max_substep_level.max(level + 1);
-                self.event_step = false;
+                self.run.event_step = false;
                 self.advance(0.5 * h, level + 1, events, event, load, obs)?;
                 self.advance(t1 - self.state.t_s, level + 1, events, event, load, obs)
             }
@@ -1289,7 +1301,7 @@ impl Simulation {
             Stepping::Fixed => self.run_fixed(t_end_s, load, obs),
             Stepping::Adaptive(p) => self.run_adaptive(t_end_s, p, load, obs),
         };
-        self.event_step = false;
+        self.run.event_step = false;
         // What `reaction` and `springs` read after the run.
         self.fill_sticking_responses();
         r
@@ -1301,7 +1313,7 @@ impl Simulation {
         let it = c.iterations;
         self.commit(h, c);
         self.state.t_s = t1;
-        self.last_load = Some((t1, self.load_vector(w)));
+        self.run.last_load = Some((t1, self.load_vector(w)));
         if obs.observes() {
             if obs.reads_springs() {
                 self.fill_sticking_responses();
