@@ -4,6 +4,12 @@
 #
 #   scripts/same-numbers.sh REV                 # build REV (a git revision) and compare it with HEAD's working tree
 #   scripts/same-numbers.sh OLD_BIN NEW_BIN     # compare two binaries
+#   scripts/same-numbers.sh --stored            # compare the working tree's build with the stored digests
+#   scripts/same-numbers.sh --bless             # store the working tree's digests (a change of numbers)
+#
+# The stored digests (scripts/same-numbers/digests.txt: a SHA-256 of each normalised output) let CI
+# (.ci/run) prove that a commit moves no number without a second build; a commit that changes
+# numbers on purpose re-blesses them with the goldens (CONTRIBUTING.md).
 #
 # JSON outputs are compared as data, keys sorted, without the provenance (`caisson_version`,
 # `results_version`, a report's top-level `model`) that a newer build may add; text, CSV and SVG
@@ -14,7 +20,12 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
 
-if [ $# -eq 1 ]; then
+mode=compare
+if [ $# -eq 1 ] && { [ "$1" = --stored ] || [ "$1" = --bless ]; }; then
+    mode=${1#--}
+    cargo build --release -q -p caisson-cli
+    new_bin="$top/target/release/caisson"
+elif [ $# -eq 1 ]; then
     rev=$1
     wt="$top/target/same-numbers/base"
     rm -rf "$wt"
@@ -29,7 +40,7 @@ elif [ $# -eq 2 ]; then
     old_bin=$(realpath "$1")
     new_bin=$(realpath "$2")
 else
-    sed -n '2,12p' "$0"
+    sed -n '2,19p' "$0"
     exit 2
 fi
 
@@ -58,7 +69,9 @@ cases=(
 
 out="$top/target/same-numbers/out"
 rm -rf "$out"
-for side in old new; do
+sides="old new"
+[ "$mode" = compare ] || sides=new
+for side in $sides; do
     bin=${side}_bin
     for c in "${cases[@]}"; do
         name=${c%%|*}
@@ -102,6 +115,30 @@ if isinstance(doc, dict):
 json.dump(strip(doc), sys.stdout, sort_keys=True, indent=1)
 PY
 }
+
+stored="$top/scripts/same-numbers/digests.txt"
+if [ "$mode" != compare ]; then
+    # One line per output: the SHA-256 of its normalised text and its path under the outputs.
+    digests=$(while IFS= read -r -d '' f; do
+        rel=${f#"$out/new/"}
+        case "$rel" in */stderr) continue ;; esac
+        echo "$(normalise "$f" "$out/new/" | sha256sum | cut -d' ' -f1)  $rel"
+    done < <(find "$out/new" -type f -print0 | sort -z))
+    if [ "$mode" = bless ]; then
+        mkdir -p "$(dirname "$stored")"
+        echo "$digests" >"$stored"
+        echo "stored $(echo "$digests" | wc -l) digests of ${#cases[@]} commands in ${stored#"$top/"}"
+        exit 0
+    fi
+    if diff <(cat "$stored") <(echo "$digests") >"$out/digests.diff"; then
+        echo "compared $(echo "$digests" | wc -l) outputs of ${#cases[@]} commands with the stored digests: identical"
+        exit 0
+    fi
+    echo "outputs that differ from the stored digests (< stored, > this build):"
+    cat "$out/digests.diff"
+    echo "DIFFERENT: a change of numbers re-blesses them (scripts/same-numbers.sh --bless) with the goldens"
+    exit 1
+fi
 
 status=0
 compared=0

@@ -95,9 +95,12 @@ fn bench(c: &mut Criterion) {
     // At the example's controls (the sticking phases in exact steps of dt_max = 0.5 s), and by
     // Newmark steps at the controls it had before them (dt_max 0.2 s, `exact_sticking` off).
     let Stepping::Adaptive(controls) = design.solver().stepping else { panic!("the example steps adaptively") };
-    let newmark = SolverParams { exact_sticking: false, ..design.solver() }
-        .with_adaptive(AdaptiveParams { dt_max_s: 0.2, ..controls })
-        .unwrap();
+    let newmark = SolverParams {
+        accel: caisson::dynamics::Accel { exact_sticking: false, ..design.solver().accel },
+        ..design.solver()
+    }
+    .with_adaptive(AdaptiveParams { dt_max_s: 0.2, ..controls })
+    .unwrap();
     let mut g = c.benchmark_group("design_waves");
     for (name, solver) in [("8_waves_T12.8s", design.solver()), ("8_waves_T12.8s_newmark_dt0.2", newmark)] {
         let mut sim = Simulation::new(design.structure().model(), solver, &trains[0]);

@@ -1,4 +1,4 @@
-//! The Newton predictor (`SolverParams::predictor`, docs/model.md §9.1) changes how a step is
+//! The Newton predictor (`Accel::predictor`, docs/model.md §9.1) changes how a step is
 //! reached, not where it lands: every bundled example gives the same results with the default
 //! predictor (the last step's acceleration carried over) as with the previous engine's first
 //! iterate (δ = 0, results version 4 and before), to a stated tolerance, with far fewer Newton
@@ -21,7 +21,7 @@ mod support;
 
 use support::signature::{signature, train_values, Signature};
 
-use caisson::dynamics::{Predictor, Simulation, SolverParams, Stepping};
+use caisson::dynamics::{Accel, Predictor, Simulation, SolverParams, Stepping};
 use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
 use caisson::scenario::Scenario;
@@ -30,7 +30,7 @@ use std::collections::BTreeMap;
 type Results = BTreeMap<String, Vec<f64>>;
 
 fn with_predictor(sc: &Scenario, predictor: Predictor) -> Scenario {
-    sc.clone().with_solver(SolverParams { predictor, ..sc.solver() }).unwrap()
+    sc.clone().with_solver(SolverParams { accel: Accel { predictor, ..sc.solver().accel }, ..sc.solver() }).unwrap()
 }
 
 /// What an example computes (as in `regress_golden.rs`, without the time histories): a `[load]` run,
@@ -117,7 +117,8 @@ fn the_predictor_halves_the_newton_corrections_of_the_design_waves() {
     let site = &sc.waves.as_ref().unwrap().model;
     let period_s = 12.8;
     let per_step = |predictor| {
-        let solver = SolverParams { predictor, sticking_fast_path: false, ..sc.solver() };
+        let solver =
+            SolverParams { accel: Accel { predictor, sticking_fast_path: false, ..sc.solver().accel }, ..sc.solver() };
         let (mut steps, mut iterations) = (0, 0);
         for h in [9.0, 10.0, 11.0, 11.5, 12.0, 12.5, 12.7, 12.79] {
             let loads = site.evaluate_with(h, period_s, RegimeChoice::Auto).unwrap();

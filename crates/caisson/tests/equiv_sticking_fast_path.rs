@@ -1,4 +1,4 @@
-//! The all-sticking fast path (`SolverParams::sticking_fast_path`, docs/model.md §9.1) is the
+//! The all-sticking fast path (`Accel::sticking_fast_path`, docs/model.md §9.1) is the
 //! same model: with it on and off, every bundled example and the waves of the design example give
 //! the same results to well within the Newton tolerance's reach, in the same steps and with no
 //! more Newton iterations (to one in a thousand).
@@ -12,7 +12,8 @@
 //! accelerations and carry the difference on, and a wave that slides carries it into its slip.
 //! Only a decision that falls within that reach of its threshold (an error estimate at its
 //! limit, a spring at its friction cap) could take another branch; none does on these cases
-//! (identical step counts, asserted). Measured: at most 1.9e-7 of the largest value of a
+//! (identical step counts but where an unlocated touch-down's estimate tips, below). Measured
+//! before results version 24: at most 1.9e-7 of the largest value of a
 //! quantity on the examples (the sliding of a fragility storm of 2 h), 5e-9 on the design waves
 //! (`cargo test --release --test equiv_sticking_fast_path -- --nocapture` prints it). Tolerance: 1e-6 of the
 //! largest value of each quantity plus 1e-12 (m, N) for quantities near zero, five times the
@@ -21,7 +22,14 @@
 //! steps against its error tolerance, and one estimate within rounding of it can go either way,
 //! which moves that wave's sliding by a few tolerances: since results version 17 (the slip
 //! positions in the estimate) one does, on the fragility example's fourth storm (2.0e-6 m of
-//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 5 tolerances more.
+//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 5 tolerances more. So, since
+//! results version 24, is every adaptive run: with contact events unlocated (below) a spring that
+//! touches down within a step puts λ |Δu_x| into the error estimate, one more decision that the
+//! Newton tolerance's reach can tip, and then the steps part: measured 16 steps of the examples
+//! differ, 21 steps or rejections of the 1 329 steps of the design waves (at most 1 in 50 of a
+//! run's steps and 1 in 20 of a wave's asserted, Newton iterations within 0.5 % and 5 %), the
+//! values within 1.3e-4 of the largest (a life's largest storm sliding of the climate example)
+//! and within 5 tolerances on the design waves (1.1e-3 of a wave's value, 1e-6 m tolerance).
 //!
 //! Both runs leave lift-off and re-contact unlocated (`SolverParams::locate_contact` off): a
 //! located lift-off ends a step a millionth past N_i = 0, and whether a step lands on a spring
@@ -34,7 +42,7 @@ mod support;
 
 use support::signature::{signature, train_values, Signature};
 
-use caisson::dynamics::{SolverParams, Stepping};
+use caisson::dynamics::{Accel, SolverParams, Stepping};
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
 
@@ -46,8 +54,7 @@ type Work = Option<(u64, u64, u64)>;
 fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
     sc.clone()
         .with_solver(SolverParams {
-            sticking_fast_path: on,
-            exact_sticking: false,
+            accel: Accel { sticking_fast_path: on, exact_sticking: false, ..sc.solver().accel },
             locate_contact: false,
             ..sc.solver()
         })
@@ -121,7 +128,7 @@ fn compare(name: &str, old: &Results, new: &Results, reach_m: f64, largest: &mut
 fn the_fast_path_moves_no_example_beyond_rounding() {
     let examples = support::example_paths();
     let (mut compared, mut largest) = (0, (0.0f64, String::new()));
-    let (mut iterations, mut sticking) = (0, 0);
+    let (mut iterations, mut sticking, mut step_diffs) = (0, 0, 0);
     for path in &examples {
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
         let sc = caisson::scenario::load(path).unwrap();
@@ -130,16 +137,18 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         // A lifetime or fragility run takes thousands of adaptive steps, each accepted or
         // rejected against the error tolerance (module docs).
         let reach_m = match sc.solver().stepping {
-            Stepping::Adaptive(p) if sc.design.is_some() || sc.fragility.is_some() => 5.0 * p.tolerance_m,
+            Stepping::Adaptive(p) => 5.0 * p.tolerance_m,
             _ => 0.0,
         };
         compared += compare(&name, &old, &new, reach_m, &mut largest);
         if let (Some(o), Some(n)) = (old_work, new_work) {
-            assert_eq!(o.0, n.0, "{name}: steps without and with the fast path");
+            // The same steps but where an unlocated touch-down's estimate tipped (module docs).
+            assert!(o.0.abs_diff(n.0) * 50 <= o.0, "{name}: {} steps without and {} with the fast path", o.0, n.0);
+            step_diffs += o.0.abs_diff(n.0);
             // A direct step counts one iteration, where Newton's predictor may have landed inside
             // the tolerance with none (at rest, under no load).
             assert!(
-                n.1 as f64 <= 1.001 * o.1 as f64,
+                n.1 as f64 <= 1.005 * o.1 as f64,
                 "{name}: {} Newton iterations with the fast path, {} without",
                 n.1,
                 o.1
@@ -150,7 +159,7 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         }
     }
     println!(
-        "{compared} values of {} examples; largest relative difference {:.2e} ({}); {sticking} of {iterations} resisting forces all-sticking",
+        "{compared} values of {} examples; largest relative difference {:.2e} ({}); {sticking} of {iterations} resisting forces all-sticking; {step_diffs} steps differ",
         examples.len(),
         largest.0,
         largest.1
@@ -170,32 +179,40 @@ fn the_design_waves_are_the_same_with_the_fast_path() {
     let sc = support::example("design_breakwater.toml");
     let waves = |on: bool| {
         support::design_waves(SolverParams {
-            sticking_fast_path: on,
-            exact_sticking: false,
+            accel: Accel { sticking_fast_path: on, exact_sticking: false, ..sc.solver().accel },
             locate_contact: false,
             ..sc.solver()
         })
     };
     let (old, new) = (waves(false), waves(true));
-    let (mut steps, mut attempts, mut sticking, mut sliding_waves) = (0, 0, 0, 0);
+    // Five error tolerances, as for the examples' adaptive runs (module docs).
+    let Stepping::Adaptive(p) = sc.solver().stepping else { panic!("the example steps adaptively") };
+    let reach_m = 5.0 * p.tolerance_m;
+    let (mut steps, mut attempts, mut sticking, mut sliding_waves, mut step_diffs) = (0, 0, 0, 0, 0);
     let mut largest = 0.0f64;
     for (i, ((o, os), (n, ns))) in old.iter().zip(&new).enumerate() {
         for (a, b) in o.iter().zip(n) {
             let d = (a - b).abs();
-            assert!(d <= 1e-6 * a.abs() + 1e-12, "wave {i}: {b} with the fast path, {a} without");
+            assert!(d <= 1e-6 * a.abs() + 1e-12 + reach_m, "wave {i}: {b} with the fast path, {a} without");
             if a.abs() > 0.0 {
                 largest = largest.max(d / a.abs());
             }
         }
-        assert_eq!((os.steps, os.rejected_steps), (ns.steps, ns.rejected_steps), "wave {i}: steps and rejected steps");
-        assert!(ns.newton_iterations <= os.newton_iterations, "wave {i}: Newton iterations");
+        assert!(
+            os.steps.abs_diff(ns.steps) * 20 <= os.steps,
+            "wave {i}: {} steps without, {} with",
+            os.steps,
+            ns.steps
+        );
+        step_diffs += os.steps.abs_diff(ns.steps) + os.rejected_steps.abs_diff(ns.rejected_steps);
+        assert!(ns.newton_iterations as f64 <= 1.05 * os.newton_iterations as f64, "wave {i}: Newton iterations");
         assert_eq!(os.sticking_iterates, 0);
         steps += ns.steps;
         attempts += ns.steps + ns.rejected_steps;
         sticking += ns.sticking_iterates;
         sliding_waves += usize::from(o[0].abs() > 1e-3);
     }
-    println!("largest relative difference {largest:.2e}; {sticking} all-sticking resisting forces in {attempts} step attempts, {steps} steps");
+    println!("largest relative difference {largest:.2e}; {sticking} all-sticking resisting forces in {attempts} step attempts, {steps} steps; {step_diffs} steps or rejections differ");
     assert!(steps > 1000, "{steps} steps");
     assert!(sliding_waves >= 3 && sliding_waves < old.len(), "{sliding_waves} waves slid more than 1 mm");
     assert!(sticking as f64 > 0.5 * attempts as f64, "{sticking} all-sticking in {attempts} attempts");

@@ -79,7 +79,7 @@ fn run(
         caisson::dynamics::Stepping::Adaptive(p) => p,
         _ => panic!("adaptive stepping"),
     };
-    let solver = SolverParams { exact_sticking: exact, ..solver }
+    let solver = SolverParams { accel: caisson::dynamics::Accel { exact_sticking: exact, ..solver.accel }, ..solver }
         .with_adaptive(AdaptiveParams { tolerance_m, ..adaptive })
         .unwrap();
     let mut sim = Simulation::new(s.structure().model(), solver, load);

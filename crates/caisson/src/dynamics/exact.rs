@@ -282,6 +282,16 @@ pub(super) enum Third {
     Before(Vector3<f64>),
 }
 
+impl Third {
+    /// Its time in a step of length `h` from `t_s`, and its load.
+    fn point(self, t_s: f64, h: f64) -> (f64, Vector3<f64>) {
+        match self {
+            Third::Before(pb) => (t_s - h, pb),
+            Third::Middle(pm) => (t_s + 0.5 * h, pm),
+        }
+    }
+}
+
 /// Ladders kept per thread, the most recent last: the caissons of a design life's storms share
 /// their matrices (their weight in water changes with the tide, the propagators do not), and a
 /// sizing run alternates among a few widths.
@@ -401,10 +411,11 @@ impl Model {
 }
 
 impl Ladder {
-    /// The ladder of `model` for steps up to `dt_max_s`, sharing the propagators of this
-    /// thread's ladder of the same matrices and dt_max (the same numbers: nothing else enters
-    /// them). `None` if the longest step's cannot be built (a singular mass matrix).
-    pub fn cached(model: &Model, dt_max_s: f64) -> Option<Self> {
+    /// The ladder of `model` for steps up to `dt_max_s`, with `shared` sharing the propagators of
+    /// this thread's ladder of the same matrices and dt_max (the same numbers: nothing else enters
+    /// them; `Accel::cached_propagators`), else its own. `None` if the longest step's cannot be
+    /// built (a singular mass matrix).
+    pub fn cached(model: &Model, dt_max_s: f64, shared: bool) -> Option<Self> {
         let n = model.x_m.len();
         let (m, k, c) = Propagator::matrices(model, 0, n);
         let mut key = [0.0; 28];
@@ -412,18 +423,22 @@ impl Ladder {
         key[9..18].copy_from_slice(k.as_slice());
         key[18..27].copy_from_slice(c.as_slice());
         key[27] = dt_max_s;
-        let rungs = LADDERS.with(|l| {
-            let mut l = l.borrow_mut();
-            if let Some((_, _, r)) = l.iter().flatten().find(|(k, x, _)| *k == key && *x == model.x_m) {
-                return r.clone();
-            }
-            // Full contact and the sets lifted from either edge, 2n − 1 (at least one).
-            let sets = (2 * n).max(2) - 1;
-            let r: Rungs = (0..sets).map(|_| [const { OnceLock::new() }; RUNGS]).collect();
-            l.rotate_left(1);
-            l[CACHED_LADDERS - 1] = Some((key, model.x_m.clone(), r.clone()));
-            r
-        });
+        // Full contact and the sets lifted from either edge, 2n − 1 (at least one).
+        let fresh = || -> Rungs { (0..(2 * n).max(2) - 1).map(|_| [const { OnceLock::new() }; RUNGS]).collect() };
+        let rungs = if !shared {
+            fresh()
+        } else {
+            LADDERS.with(|l| {
+                let mut l = l.borrow_mut();
+                if let Some((_, _, r)) = l.iter().flatten().find(|(k, x, _)| *k == key && *x == model.x_m) {
+                    return r.clone();
+                }
+                let r = fresh();
+                l.rotate_left(1);
+                l[CACHED_LADDERS - 1] = Some((key, model.x_m.clone(), r.clone()));
+                r
+            })
+        };
         let h_s = std::array::from_fn(|k| dt_max_s / (1u32 << k) as f64);
         let ladder = Ladder {
             h_s,
@@ -438,6 +453,31 @@ impl Ladder {
         };
         ladder.rung(model, ContactSet::new(0, n, n), 0)?;
         Some(ladder)
+    }
+
+    /// After an exact step of rung `k` was kept: the next step climbs one rung, n rungs if the
+    /// estimate was within CLIMB^−n of the tolerance.
+    fn climb_after(&mut self, k: usize) {
+        let (mut up, mut r) = (1, self.ratio.get() * CLIMB * CLIMB);
+        while up < k && r <= 1.0 {
+            up += 1;
+            r *= CLIMB;
+        }
+        self.k = k.saturating_sub(up);
+    }
+
+    /// After an exact step of rung `k` was refused by its error estimate: one rung shorter, n + 1
+    /// if the estimate exceeds CLIMB^n tolerances (at most the shortest); the rung to try.
+    fn descend_after(&mut self, k: usize) -> usize {
+        let r = self.ratio.get();
+        let mut k = k + 1;
+        let mut r = r / CLIMB;
+        while k + 1 < RUNGS && r > 1.0 {
+            k += 1;
+            r /= CLIMB;
+        }
+        self.k = k;
+        k
     }
 
     /// The step length of rung `k`, s.
@@ -503,38 +543,11 @@ impl Simulation {
         obs: &mut O,
     ) -> bool {
         let t = self.state.t_s;
-        if !self.exact_may_start() {
-            if let Some(l) = self.exact.as_mut() {
-                (l.retry_s, l.ceiling_s) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-            }
-            return false;
-        }
-        let Some(set) = self.contact_set() else {
-            return false;
-        };
-        let Some(ladder) = self.exact.as_mut() else {
-            return false;
-        };
-        // After a step refused on the shortest rung, Newmark steps to its end in the same set.
-        if t < ladder.retry_s && set.index == ladder.retry_set {
-            return false;
-        }
-        if ladder.set != set.index {
-            // Another contact set (a lift or a touch-down has come): its own ladder, from the
-            // longest step in full contact and from dt_max/4 with springs lifted.
-            (ladder.set, ladder.k) = (set.index, if set.full() { 0 } else { PARTIAL_ENTRY_RUNG });
-            ladder.ceiling_s = f64::NEG_INFINITY;
-        }
-        let room = bp_s.min(t_end_s) - t;
-        // After a step refused at an event, at most half the way to that step's end (the event
-        // is bracketed by halving).
-        let half_way = if ladder.ceiling_s > t { 0.5 * (ladder.ceiling_s - t) * (1.0 + 1e-9) } else { f64::INFINITY };
-        // Less than the shortest rung to the breakpoint: Newmark steps to it.
-        let Some(first) = (ladder.k..RUNGS).find(|&k| ladder.h(k) <= room && ladder.h(k) <= half_way) else {
+        let Some((set, first)) = self.exact_first_rung(bp_s, t_end_s) else {
             return false;
         };
         // The load at the start: the committed step's, if it is known.
-        let p0 = match self.last_load {
+        let p0 = match self.run.last_load {
             Some((tl, p)) if tl == t => p,
             _ => self.load_vector(load.at(t)),
         };
@@ -546,7 +559,7 @@ impl Simulation {
             let h = ladder.h(k);
             let t1 = t + h;
             let known = middle.take().filter(|&(tm, _)| tm == t1);
-            let third = match self.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h && p.set == set.index) {
+            let third = match self.run.exact_prev.filter(|p| p.t_end_s == t && p.h_s == h && p.set == set.index) {
                 Some(p) => Third::Before(p.p_start),
                 None => {
                     let tm = t + 0.5 * h;
@@ -561,29 +574,12 @@ impl Simulation {
                     self.stats.exact_steps += 1;
                     self.stats.exact_partial_steps += u64::from(!set.full());
                     self.commit_observed(h, c, t1, w1, obs);
-                    // The next step climbs one rung, n rungs if the estimate is within CLIMB^−n
-                    // of the tolerance.
-                    let ladder = self.exact.as_mut().expect("checked above");
-                    let (mut up, mut r) = (1, ladder.ratio.get() * CLIMB * CLIMB);
-                    while up < k && r <= 1.0 {
-                        up += 1;
-                        r *= CLIMB;
-                    }
-                    ladder.k = k.saturating_sub(up);
-                    self.h_next = h;
+                    self.exact.as_mut().expect("checked above").climb_after(k);
+                    self.run.h_next = h;
                     return true;
                 }
                 Err(Refused::Error) if k + 1 < RUNGS => {
-                    // One rung shorter, n + 1 if the estimate exceeds CLIMB^n tolerances.
-                    let ladder = self.exact.as_mut().expect("checked above");
-                    let r = ladder.ratio.get();
-                    k += 1;
-                    let mut r = r / CLIMB;
-                    while k + 1 < RUNGS && r > 1.0 {
-                        k += 1;
-                        r /= CLIMB;
-                    }
-                    ladder.k = k;
+                    k = self.exact.as_mut().expect("checked above").descend_after(k);
                     continue;
                 }
                 Err(Refused::Stick) if k + 1 < RUNGS => {
@@ -597,13 +593,50 @@ impl Simulation {
                     // event.
                     let ladder = self.exact.as_mut().expect("checked above");
                     (ladder.retry_s, ladder.retry_set) = (t1, set.index);
-                    self.h_next = 0.5 * h;
+                    self.run.h_next = 0.5 * h;
                     return false;
                 }
             }
             k += 1;
         }
         false
+    }
+
+    /// The contact set of the committed state and the rung of its ladder to try first (module
+    /// docs, "The ladder"), or `None` where no exact step is tried: the state is not one where
+    /// every spring in contact sticks (and then the event a refused step saw has come: the steps
+    /// after it are neither held back nor kept short on its account), the springs in contact are
+    /// not one run, the set's last step was refused on its shortest rung and its end has not come,
+    /// or no rung fits before the breakpoint `bp_s` and `t_end_s` (and half the way to the end of
+    /// a step refused at an event).
+    #[inline(always)]
+    fn exact_first_rung(&mut self, bp_s: f64, t_end_s: f64) -> Option<(ContactSet, usize)> {
+        let t = self.state.t_s;
+        if !self.exact_may_start() {
+            if let Some(l) = self.exact.as_mut() {
+                (l.retry_s, l.ceiling_s) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+            }
+            return None;
+        }
+        let set = self.contact_set()?;
+        let ladder = self.exact.as_mut()?;
+        // After a step refused on the shortest rung, Newmark steps to its end in the same set.
+        if t < ladder.retry_s && set.index == ladder.retry_set {
+            return None;
+        }
+        if ladder.set != set.index {
+            // Another contact set (a lift or a touch-down has come): its own ladder, from the
+            // longest step in full contact and from dt_max/4 with springs lifted.
+            (ladder.set, ladder.k) = (set.index, if set.full() { 0 } else { PARTIAL_ENTRY_RUNG });
+            ladder.ceiling_s = f64::NEG_INFINITY;
+        }
+        let room = bp_s.min(t_end_s) - t;
+        // After a step refused at an event, at most half the way to that step's end (the event
+        // is bracketed by halving).
+        let half_way = if ladder.ceiling_s > t { 0.5 * (ladder.ceiling_s - t) * (1.0 + 1e-9) } else { f64::INFINITY };
+        // Less than the shortest rung to the breakpoint: Newmark steps to it.
+        let first = (ladder.k..RUNGS).find(|&k| ladder.h(k) <= room && ladder.h(k) <= half_way)?;
+        Some((set, first))
     }
 
     /// One step of rung `k` of the ladder of contact set `set` from the committed state (module
@@ -629,68 +662,28 @@ impl Simulation {
         // a_r = W'/m, the normal force of a spring of the set at rest (W'/n in full contact).
         let a_ref = if full { ladder.a_ref } else { model.weight_n / n };
         let pr = ladder.rung(model, set, k).ok_or(Refused::Stick)?;
-        let law = self.model.law;
-        let (ky, kappa) = (law.ky_n_per_m, law.kappa_per_m);
-        // R at q = (u_x − s_1, u_y, θ).
-        let r_of = |q: &[f64]| {
-            let (a, b) = (-ky * q[1], ky * q[2]);
-            kappa * ((a - a_ref) * (n * q[0] - sum_d) + b * (sx * q[0] - sum_xd))
-        };
+        let (ky, kappa) = (self.model.law.ky_n_per_m, self.model.law.kappa_per_m);
+        let rem = Remainder { n, sx, sum_d, sum_xd, a_ref, ky, kappa };
         let (un, vn) = (self.state.u, self.state.v);
         let y0 = [un[0] - s1, un[1], un[2], vn[0], vn[1], vn[2]];
-        let r0 = r_of(&y0);
-        // Ṙ at the start: R's gradient in q times q̇ (needed with a middle third only).
-        let r0_rate = if let Third::Before(_) = third {
-            0.0
-        } else {
-            let (a, b) = (-ky * y0[1], ky * y0[2]);
-            let (se, sxe) = (n * y0[0] - sum_d, sx * y0[0] - sum_xd);
-            kappa * (-ky * y0[4] * se + (a - a_ref) * n * y0[3] + ky * y0[5] * sxe + b * sx * y0[3])
-        };
+        let r0 = rem.at(&y0);
+        // Ṙ at the start (needed with a middle third only).
+        let r0_rate = if let Third::Before(_) = third { 0.0 } else { rem.rate(&y0) };
         // The force g = p + (κ a_r Σd, 0, 0) − R e_x.
         let shift = kappa * a_ref * sum_d;
         let g = |p: Vector3<f64>, r: f64| [p[0] + shift - r, p[1], p[2]];
-        let mut y = mul(&pr.e0, &y0);
-        let mut add = |w: &Block, g: [f64; 3]| {
-            let d = mul(w, &g);
-            y.iter_mut().zip(d).for_each(|(a, b)| *a += b);
-        };
         // y(h) = y* + γ R(h).
-        let prev = self.exact_prev.filter(|p| p.t_end_s == self.state.t_s && p.h_s == h && p.set == set.index);
-        let gamma: [f64; 6] = match (third, prev) {
-            (Third::Before(pb), Some(p)) => {
-                add(&pr.before[0], g(p0, r0));
-                add(&pr.before[1], g(p1, 0.0));
-                add(&pr.before[2], g(pb, p.r_start_n));
-                pr.before[1][0].map(|w| -w)
-            }
-            (Third::Middle(pm), _) => {
-                add(&pr.middle[0], g(p0, 0.0));
-                add(&pr.middle[1], g(pm, 0.0));
-                add(&pr.middle[2], g(p1, 0.0));
-                y.iter_mut().zip(pr.hermite_x[0]).for_each(|(a, w)| *a -= w * r0);
-                y.iter_mut().zip(pr.hermite_x[1]).for_each(|(a, w)| *a -= w * r0_rate);
-                std::array::from_fn(|i| -pr.hermite_x[2][i])
-            }
+        let prev = self.run.exact_prev.filter(|p| p.t_end_s == self.state.t_s && p.h_s == h && p.set == set.index);
+        let (mut y, gamma) = match (third, prev) {
+            (Third::Before(pb), Some(p)) => free_response(pr, &y0, [g(p0, r0), g(p1, 0.0), g(pb, p.r_start_n)], None),
+            (Third::Middle(pm), _) => free_response(pr, &y0, [g(p0, 0.0), g(pm, 0.0), g(p1, 0.0)], Some([r0, r0_rate])),
             (Third::Before(_), None) => return Err(Refused::Stick),
         };
         // R(y* + γ R) = R: a quadratic in R.
-        let (a, b) = (-ky * y[1], ky * y[2]);
-        let (se, sxe) = (n * y[0] - sum_d, sx * y[0] - sum_xd);
-        let qc = kappa * ((a - a_ref) * se + b * sxe);
-        let qb =
-            kappa * ((a - a_ref) * n * gamma[0] - ky * gamma[1] * se + b * sx * gamma[0] + ky * gamma[2] * sxe) - 1.0;
-        let qa = kappa * ky * gamma[0] * (gamma[2] * sx - gamma[1] * n);
-        let disc = qb * qb - 4.0 * qa * qc;
-        if !(disc >= 0.0 && qb != 0.0) {
-            return Err(Refused::Stick);
-        }
-        let r1 = -2.0 * qc / (qb + qb.signum() * disc.sqrt());
+        let r1 = rem.root(&y, &gamma).ok_or(Refused::Stick)?;
         y.iter_mut().zip(gamma).for_each(|(a, w)| *a += w * r1);
-        let q1 = Vector3::new(y[0], y[1], y[2]);
-        let v1 = Vector3::new(y[3], y[4], y[5]);
-        let u = [q1[0] + s1, q1[1], q1[2]];
-        let v = [v1[0], v1[1], v1[2]];
+        let (q1, v1) = (Vector3::new(y[0], y[1], y[2]), Vector3::new(y[3], y[4], y[5]));
+        let (u, v) = ([q1[0] + s1, q1[1], q1[2]], [v1[0], v1[1], v1[2]]);
         // The step's middle under the same interpolated force: its quadratic through the three
         // points (R linear on the first step of a phase: its value in the middle is the mean).
         let r_prev = prev.map_or(0.0, |p| p.r_start_n);
@@ -699,76 +692,20 @@ impl Simulation {
             Third::Middle(_) => 0.75 * r0 + 0.25 * r1 + 0.25 * h * r0_rate,
         };
         let (g0, g1) = (g(p0, r0), g(p1, r1));
-        let c: [[f64; 3]; 3] = match third {
-            Third::Before(pb) => {
-                let gb = g(pb, r_prev);
-                let h2 = h * h;
-                [
-                    g0,
-                    std::array::from_fn(|i| (g1[i] - gb[i]) / (2.0 * h)),
-                    std::array::from_fn(|i| (g1[i] - 2.0 * g0[i] + gb[i]) / (2.0 * h2)),
-                ]
-            }
-            Third::Middle(pm) => {
-                // The load through σ = 0, h/2, h, less R through R0, Ṙ0 and R1.
-                let (l0, lm, l1) = (g(p0, 0.0), g(pm, 0.0), g(p1, 0.0));
-                let mut c = [
-                    l0,
-                    std::array::from_fn(|i| (4.0 * lm[i] - 3.0 * l0[i] - l1[i]) / h),
-                    std::array::from_fn(|i| 2.0 * (l0[i] - 2.0 * lm[i] + l1[i]) / (h * h)),
-                ];
-                c[0][0] -= r0;
-                c[1][0] -= r0_rate;
-                c[2][0] -= (r1 - r0 - r0_rate * h) / (h * h);
-                c
-            }
+        let c = match third {
+            Third::Before(pb) => force_through_before(h, g0, g1, g(pb, r_prev)),
+            Third::Middle(pm) => force_through_middle(h, [g(p0, 0.0), g(pm, 0.0), g(p1, 0.0)], [r0, r0_rate, r1]),
         };
-        // The state at σ inside the step under the same interpolated force.
-        fn at<const R: usize>(y0: &[f64; 6], c: &[[f64; 3]; 3], e0: &[[f64; 6]; 6], w: &[Block; 3]) -> [f64; R] {
-            let mut ys = rows::<R, 6>(e0, y0);
-            for (w, ck) in w.iter().zip(c) {
-                ys.iter_mut().zip(rows::<R, 3>(w, ck)).for_each(|(a, b)| *a += b);
-            }
-            ys
-        }
-        // The middle: all of it for a partial set's samples, its positions for full contact.
-        let ym = (!full).then(|| at::<6>(&y0, &c, &pr.half_e0, &pr.half_c));
-        let qm: [f64; 3] = match &ym {
-            Some(y) => [y[0], y[1], y[2]],
-            None => at::<3>(&y0, &c, &pr.half_e0, &pr.half_c),
-        };
+        let (ym, qm) = middle(pr, &y0, &c, full);
         // The error estimate: R in the middle against its interpolation there, as a force through
         // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
-        let dr = r_of(&qm) - r_mid;
+        let dr = rem.at(&qm) - r_mid;
         let w = &pr.middle[1][0];
         let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
-        // Through the previous step's start, the load's departure from its interpolation in the
-        // middle: the cubic through a fourth point of the load (the start of the step before, or
-        // its middle), −(3/8) h³ times its leading coefficient (the divided difference), with δR
-        // through the middle's weights: a step whose load the interpolation misses by more than
-        // LOAD_GUARD tolerances is refused too (module docs, the error estimate).
+        // Through the previous step's start, the load's own interpolation guarded too.
         let err = match (third, prev) {
             (Third::Before(pb), Some(p)) => {
-                let (a, pa) = (p.extra.0 - self.state.t_s, p.extra.1);
-                let (k, h2) = (-0.375 * h * h * h, 2.0 * h * h);
-                let dp = pa * (k / ((a + h) * a * (a - h))) - pb * (k / ((h + a) * h2))
-                    + p0 * (2.0 * k / (a * h2))
-                    + p1 * (k / ((h - a) * h2));
-                let dg = [dp[0] - dr, dp[1], dp[2]];
-                let (half_b, m) = (0.5 * self.model.width_m, &pr.middle_max);
-                // The rows only where their bound passes the guard (the same answer).
-                let bound = (dg[0].abs() * m[0] + dg[1].abs() * m[1] + dg[2].abs() * m[2]) * half_b.max(1.0);
-                if bound <= LOAD_GUARD * tolerance_m {
-                    err
-                } else {
-                    let dy = rows::<3, 3>(&pr.middle[1], &dg);
-                    let load_err = dy[0].abs().max(dy[1].abs()).max(dy[2].abs() * half_b);
-                    if load_err > LOAD_GUARD * tolerance_m {
-                        load_err
-                    } else {
-                        err
-                    }
-                }
+                self.load_guarded_error_m(pr, h, (pb, &p), [p0, p1], (dr, err), tolerance_m)
             }
             _ => err,
         };
@@ -776,61 +713,249 @@ impl Simulation {
         if err > tolerance_m || err.is_nan() {
             return Err(Refused::Error);
         }
-        let extra = match third {
-            Third::Before(pb) => (self.state.t_s - h, pb),
-            Third::Middle(pm) => (self.state.t_s + 0.5 * h, pm),
-        };
+        let extra = third.point(self.state.t_s, h);
         // The acceleration at the end (not for a step refused by its error estimate).
         let acc = pr.minv * (Vector3::from(g1) - pr.k_l * q1 - pr.c_l * v1);
         let converged = Converged { u, v, a: [acc[0], acc[1], acc[2]], iterations: 0, residual: 0.0 };
-        let to_u = |y: &[f64; 6]| [y[0] + s1, y[1], y[2]];
-        if full {
-            // Every spring must stick in the middle of the step and at its end (the spring law's
-            // own test; the last one records the sums of the commit and the base reaction).
-            if !self.all_stick_at([([qm[0] + s1, qm[1], qm[2]], 0.5 * h), (u, h)]) {
-                return Err(Refused::Stick);
-            }
-            self.stick_sums(u, v, h);
-        } else {
-            // The springs of the set stick, and the set holds, at the quarter points, the middle
-            // and the end; the set holds between them too (module docs, "Partial contact"). The
-            // middle and the end first, without the quarter points: a step refused there is
-            // refused by the whole test too (the same verdict, for less).
-            let ym = ym.expect("computed for a partial set");
-            let (x_m, springs) = (&self.model.x_m, self.model.x_m.len());
-            let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
-            let boundary = || boundary.iter().filter(|(i, _)| *i < springs);
-            if !boundary().all(|&(i, contact)| on_side(x_m[i], contact, &ym) && on_side(x_m[i], contact, &y)) {
-                return Err(Refused::Stick);
-            }
-            if !self.set_sticks(set.lo, set.hi, to_u(&y), h) || !self.set_sticks(set.lo, set.hi, to_u(&ym), 0.5 * h) {
-                return Err(Refused::Stick);
-            }
-            let [yq1, yq3] = pr
-                .quarters
-                .as_ref()
-                .map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)])
-                .ok_or(Refused::Stick)?;
-            let samples = [(0.0, y0), (0.25 * h, yq1), (0.5 * h, ym), (0.75 * h, yq3), (h, y)];
-            let x_m = &self.model.x_m;
-            if !boundary().all(|&(i, contact)| keeps_side(x_m[i], contact, &samples)) {
-                return Err(Refused::Stick);
-            }
-            for (s, ys) in [&samples[1], &samples[3]] {
-                if !self.set_sticks(set.lo, set.hi, to_u(ys), *s) {
-                    return Err(Refused::Stick);
-                }
-            }
-            // Committed spring by spring (the lifted springs' slip positions follow u_x).
-            self.general_trial(u, h);
-            if self.trial_slips {
-                return Err(Refused::Stick);
-            }
+        if !self.exact_step_holds(set, k, h, &Sampled { s1, y0, ym, qm, y, c }) {
+            return Err(Refused::Stick);
         }
-        self.exact_prev =
+        self.run.exact_prev =
             Some(Previous { t_end_s: self.state.t_s + h, h_s: h, set: set.index, r_start_n: r0, p_start: p0, extra });
         Ok(converged)
     }
+
+    /// Whether the exact step of rung `k` of contact set `set` (length `h`), sampled as `s`,
+    /// holds: in full contact every spring sticks in its middle and at its end (the spring law's
+    /// own test; the last one records the sums of the commit and the base reaction); in a partial
+    /// set [`Self::partial_set_holds`], and then no spring slips at the end, committed spring by
+    /// spring (the lifted springs' slip positions follow u_x).
+    fn exact_step_holds(&mut self, set: ContactSet, k: usize, h: f64, s: &Sampled) -> bool {
+        let Sampled { s1, y0, ym, qm, y, c } = *s;
+        let to_u = |y: &[f64; 6]| [y[0] + s1, y[1], y[2]];
+        let (u, v) = (to_u(&y), [y[3], y[4], y[5]]);
+        if set.full() {
+            if !self.all_stick_at([([qm[0] + s1, qm[1], qm[2]], 0.5 * h), (u, h)]) {
+                return false;
+            }
+            self.stick_sums(u, v, h);
+            return true;
+        }
+        let ym = ym.expect("computed for a partial set");
+        let Some(pr) = self.exact.as_ref().and_then(|l| l.rung(&self.model, set, k)) else {
+            return false;
+        };
+        let quarters = || pr.quarters.as_ref().map(|[a, b]| [at(&y0, &c, &a.e0, &a.c), at(&y0, &c, &b.e0, &b.c)]);
+        if !self.partial_set_holds(set, h, s1, [&y0, &ym, &y], quarters) {
+            return false;
+        }
+        self.general_trial(u, h);
+        !self.trial_slips
+    }
+
+    /// The error estimate `err` of an exact step of length `h` through the previous step's start
+    /// (`pb`, the load there, and `prev`), with the load's departure from its interpolation in
+    /// the middle: the cubic through a fourth point of the load (the start of the step before, or
+    /// its middle), −(3/8) h³ times its leading coefficient (the divided difference), with δR
+    /// (`dr`) through the middle's weights; a step whose load the interpolation misses by more
+    /// than LOAD_GUARD tolerances is refused too (module docs, the error estimate). `ends`: the
+    /// loads at the step's start and end.
+    fn load_guarded_error_m(
+        &self,
+        pr: &Propagator,
+        h: f64,
+        (pb, prev): (Vector3<f64>, &Previous),
+        [p0, p1]: [Vector3<f64>; 2],
+        (dr, err): (f64, f64),
+        tolerance_m: f64,
+    ) -> f64 {
+        let (a, pa) = (prev.extra.0 - self.state.t_s, prev.extra.1);
+        let (k, h2) = (-0.375 * h * h * h, 2.0 * h * h);
+        let dp = pa * (k / ((a + h) * a * (a - h))) - pb * (k / ((h + a) * h2))
+            + p0 * (2.0 * k / (a * h2))
+            + p1 * (k / ((h - a) * h2));
+        let dg = [dp[0] - dr, dp[1], dp[2]];
+        let (half_b, m) = (0.5 * self.model.width_m, &pr.middle_max);
+        // The rows only where their bound passes the guard (the same answer).
+        let bound = (dg[0].abs() * m[0] + dg[1].abs() * m[1] + dg[2].abs() * m[2]) * half_b.max(1.0);
+        if bound <= LOAD_GUARD * tolerance_m {
+            return err;
+        }
+        let dy = rows::<3, 3>(&pr.middle[1], &dg);
+        let load_err = dy[0].abs().max(dy[1].abs()).max(dy[2].abs() * half_b);
+        if load_err > LOAD_GUARD * tolerance_m {
+            load_err
+        } else {
+            err
+        }
+    }
+
+    /// Whether an exact step of length `h` in the partial contact set `set` holds (module docs,
+    /// "Partial contact"): the springs of the set stick, and the set holds, at the quarter points,
+    /// the middle and the end, and between them too. `states`: y at the start, the middle and the
+    /// end; `quarters` y at h/4 and 3h/4 (`None`: refused), computed only if the middle and the
+    /// end pass (a step refused there is refused by the whole test too: the same verdict, for
+    /// less); `s1` the first spring's slip position (u_x = q_0 + s1).
+    fn partial_set_holds(
+        &self,
+        set: ContactSet,
+        h: f64,
+        s1: f64,
+        [y0, ym, y]: [&[f64; 6]; 3],
+        quarters: impl FnOnce() -> Option<[[f64; 6]; 2]>,
+    ) -> bool {
+        let to_u = |y: &[f64; 6]| [y[0] + s1, y[1], y[2]];
+        let (x_m, springs) = (&self.model.x_m, self.model.x_m.len());
+        let boundary = [(set.lo.wrapping_sub(1), false), (set.lo, true), (set.hi - 1, true), (set.hi, false)];
+        let boundary = || boundary.iter().filter(|(i, _)| *i < springs);
+        if !boundary().all(|&(i, contact)| on_side(x_m[i], contact, ym) && on_side(x_m[i], contact, y)) {
+            return false;
+        }
+        if !self.set_sticks(set.lo, set.hi, to_u(y), h) || !self.set_sticks(set.lo, set.hi, to_u(ym), 0.5 * h) {
+            return false;
+        }
+        let Some([yq1, yq3]) = quarters() else {
+            return false;
+        };
+        let samples = [(0.0, *y0), (0.25 * h, yq1), (0.5 * h, *ym), (0.75 * h, yq3), (h, *y)];
+        if !boundary().all(|&(i, contact)| keeps_side(x_m[i], contact, &samples)) {
+            return false;
+        }
+        [&samples[1], &samples[3]].iter().all(|(s, ys)| self.set_sticks(set.lo, set.hi, to_u(ys), *s))
+    }
+}
+
+/// The free response of an exact step and the weight of R(h) in it, y(h) = y* + γ R(h): y* the
+/// propagated start `y0` plus the weights of the forces `g` at the interpolation's points
+/// (R in them where it is known): through the previous step's start (`hermite` `None`, R0 and R
+/// there in `g`), or through the step's middle less R's Hermite part from R0 and Ṙ0 (`hermite`
+/// `Some([R0, Ṙ0])`).
+#[inline(always)]
+fn free_response(pr: &Propagator, y0: &[f64; 6], g: [[f64; 3]; 3], hermite: Option<[f64; 2]>) -> ([f64; 6], [f64; 6]) {
+    let mut y = mul(&pr.e0, y0);
+    let w = if hermite.is_some() { &pr.middle } else { &pr.before };
+    for (w, g) in w.iter().zip(&g) {
+        let d = mul(w, g);
+        y.iter_mut().zip(d).for_each(|(a, b)| *a += b);
+    }
+    let Some(r) = hermite else {
+        return (y, pr.before[1][0].map(|w| -w));
+    };
+    y.iter_mut().zip(pr.hermite_x[0]).for_each(|(a, w)| *a -= w * r[0]);
+    y.iter_mut().zip(pr.hermite_x[1]).for_each(|(a, w)| *a -= w * r[1]);
+    (y, std::array::from_fn(|i| -pr.hermite_x[2][i]))
+}
+
+/// An exact step sampled: the first spring's slip position `s1` (q_0 = u_x − s1), the state at
+/// its start, middle (whole for a partial set) and end, the middle's positions, and its force's
+/// quadratic coefficients.
+#[derive(Clone, Copy)]
+struct Sampled {
+    s1: f64,
+    y0: [f64; 6],
+    ym: Option<[f64; 6]>,
+    qm: [f64; 3],
+    y: [f64; 6],
+    c: [[f64; 3]; 3],
+}
+
+/// The shear's bilinear remainder R = κ [(a − a_r) Σe_i + b Σx_i e_i] of a contact set (module
+/// docs) as a function of q = (u_x − s_1, u_y, θ): a = −k_y u_y, b = k_y θ, Σe_i = n q_0 − Σd_i,
+/// Σx_i e_i = Σx_i q_0 − Σx_i d_i over the set's n springs.
+#[derive(Clone, Copy)]
+struct Remainder {
+    n: f64,
+    sx: f64,
+    sum_d: f64,
+    sum_xd: f64,
+    a_ref: f64,
+    ky: f64,
+    kappa: f64,
+}
+
+impl Remainder {
+    /// R at the positions of `q`.
+    #[inline(always)]
+    fn at(&self, q: &[f64]) -> f64 {
+        let (a, b) = (-self.ky * q[1], self.ky * q[2]);
+        self.kappa * ((a - self.a_ref) * (self.n * q[0] - self.sum_d) + b * (self.sx * q[0] - self.sum_xd))
+    }
+
+    /// Ṙ at the state `y` = (q, q̇): R's gradient in q times q̇.
+    #[inline(always)]
+    fn rate(&self, y: &[f64; 6]) -> f64 {
+        let (ky, n, sx) = (self.ky, self.n, self.sx);
+        let (a, b) = (-ky * y[1], ky * y[2]);
+        let (se, sxe) = (n * y[0] - self.sum_d, sx * y[0] - self.sum_xd);
+        self.kappa * (-ky * y[4] * se + (a - self.a_ref) * n * y[3] + ky * y[5] * sxe + b * sx * y[3])
+    }
+
+    /// R(h), the root of R(y* + γ R) = R, a quadratic in R (module docs), taken without
+    /// cancellation; `None` if it is not real.
+    #[inline(always)]
+    fn root(&self, y: &[f64; 6], gamma: &[f64; 6]) -> Option<f64> {
+        let Remainder { n, sx, sum_d, sum_xd, a_ref, ky, kappa } = *self;
+        let (a, b) = (-ky * y[1], ky * y[2]);
+        let (se, sxe) = (n * y[0] - sum_d, sx * y[0] - sum_xd);
+        let qc = kappa * ((a - a_ref) * se + b * sxe);
+        let qb =
+            kappa * ((a - a_ref) * n * gamma[0] - ky * gamma[1] * se + b * sx * gamma[0] + ky * gamma[2] * sxe) - 1.0;
+        let qa = kappa * ky * gamma[0] * (gamma[2] * sx - gamma[1] * n);
+        let disc = qb * qb - 4.0 * qa * qc;
+        if !(disc >= 0.0 && qb != 0.0) {
+            return None;
+        }
+        Some(-2.0 * qc / (qb + qb.signum() * disc.sqrt()))
+    }
+}
+
+/// The step's force as a quadratic in σ, c_0 + c_1 σ + c_2 σ², through its start `g0`, its end
+/// `g1` and the previous step's start `gb` (σ = −h), R in each.
+#[inline(always)]
+fn force_through_before(h: f64, g0: [f64; 3], g1: [f64; 3], gb: [f64; 3]) -> [[f64; 3]; 3] {
+    let h2 = h * h;
+    [
+        g0,
+        std::array::from_fn(|i| (g1[i] - gb[i]) / (2.0 * h)),
+        std::array::from_fn(|i| (g1[i] - 2.0 * g0[i] + gb[i]) / (2.0 * h2)),
+    ]
+}
+
+/// The step's force as a quadratic in σ: the load through σ = 0, h/2, h (`[l0, lm, l1]`, without
+/// R), less R through R0, Ṙ0 and R1 (`r`).
+#[inline(always)]
+fn force_through_middle(h: f64, [l0, lm, l1]: [[f64; 3]; 3], [r0, r0_rate, r1]: [f64; 3]) -> [[f64; 3]; 3] {
+    let mut c = [
+        l0,
+        std::array::from_fn(|i| (4.0 * lm[i] - 3.0 * l0[i] - l1[i]) / h),
+        std::array::from_fn(|i| 2.0 * (l0[i] - 2.0 * lm[i] + l1[i]) / (h * h)),
+    ];
+    c[0][0] -= r0;
+    c[1][0] -= r0_rate;
+    c[2][0] -= (r1 - r0 - r0_rate * h) / (h * h);
+    c
+}
+
+/// The step's middle under its interpolated force `c` from the start `y0`: all of it for a
+/// partial set's samples (not `full`), and its positions.
+#[inline(always)]
+fn middle(pr: &Propagator, y0: &[f64; 6], c: &[[f64; 3]; 3], full: bool) -> (Option<[f64; 6]>, [f64; 3]) {
+    let ym = (!full).then(|| at::<6>(y0, c, &pr.half_e0, &pr.half_c));
+    let qm: [f64; 3] = match &ym {
+        Some(y) => [y[0], y[1], y[2]],
+        None => at::<3>(y0, c, &pr.half_e0, &pr.half_c),
+    };
+    (ym, qm)
+}
+
+/// The state at σ inside the step under the same interpolated force (`c`), from the start `y0`
+/// by the propagator `e0` and the weights `w` of that point: its first `R` rows.
+fn at<const R: usize>(y0: &[f64; 6], c: &[[f64; 3]; 3], e0: &[[f64; 6]; 6], w: &[Block; 3]) -> [f64; R] {
+    let mut ys = rows::<R, 6>(e0, y0);
+    for (w, ck) in w.iter().zip(c) {
+        ys.iter_mut().zip(rows::<R, 3>(w, ck)).for_each(|(a, b)| *a += b);
+    }
+    ys
 }
 
 /// Whether u_y,i = u_y − θ x_i of the spring at `x` is on its side (in contact, < 0, if
@@ -1027,9 +1152,13 @@ mod tests {
         }
         let (dt_max, period) = (0.05, 2.03);
         let run = |exact: bool, tolerance_m: f64| {
-            let solver = SolverParams { dt_s: 1e-4, exact_sticking: exact, ..SolverParams::default() }
-                .with_adaptive(AdaptiveParams { dt_max_s: dt_max, tolerance_m, ..AdaptiveParams::for_first_step(1e-4) })
-                .unwrap();
+            let solver = SolverParams {
+                dt_s: 1e-4,
+                accel: crate::dynamics::Accel { exact_sticking: exact, ..Default::default() },
+                ..SolverParams::default()
+            }
+            .with_adaptive(AdaptiveParams { dt_max_s: dt_max, tolerance_m, ..AdaptiveParams::for_first_step(1e-4) })
+            .unwrap();
             let mut sim = simulation_with(DampingMode::Elastic, VerticalDamping::Springs, MassMatrix::Diagonal, solver);
             let train = push_wave(&sim, 1.2, period);
             sim.reset(&train);

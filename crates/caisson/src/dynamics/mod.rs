@@ -37,7 +37,8 @@
 //! plus the trapezoidal rule's in its elastic displacement, h² κ N_i |ė_{n+1} − ė_n| / (12 c_d)
 //! (with the dashpot beside the springs, the `elastic` mode); of a spring that touches down within
 //! the step, λ (1 − λ) |h u̇_x,n − Δu_x|, the straight line's departure from the step's quadratic
-//! where it touches. The largest is e. After an accepted step the next is
+//! where it touches (without [`SolverParams::locate_contact`], the `seed-2011` profile, where
+//! such a spring takes u_x,n as its slip position, λ |Δu_x|). The largest is e. After an accepted step the next is
 //! h·min(2, 0.9 (tol/‖e‖)^{1/3}) (at least 0.2 h; the cube root by `fast_cbrt`), within
 //! [dt_min, dt_max]; after a step shortened to a breakpoint, or landed on an event (below), it may
 //! grow past 2 h up to the step planned before it, or the step in which the event was found, so
@@ -54,7 +55,7 @@
 //! pulsating load. A step that fails to converge is halved as in the fixed mode (at most
 //! `max_substep_levels` times in a row).
 //!
-//! **Sticking phases** ([`SolverParams::exact_sticking`], adaptive stepping): from a committed
+//! **Sticking phases** ([`Accel::exact_sticking`], adaptive stepping): from a committed
 //! state where every spring in contact sticks (all of them in contact, or with
 //! [`SolverParams::locate_contact`] some lifted), a step of dt_max/2^k (k = 0 … 3: `exact`'s
 //! ladder, one per contact set) with no load
@@ -69,7 +70,7 @@
 //! sticking, g = κ N_i e_lim − |κ N_i e_i + c_d ė_i|, interpolated linearly between the step's
 //! start (g_0 > 0) and end (g_1 < 0), puts the onset at θ = g_0/(g_0 − g_1) of the step; the
 //! step is retaken to θ (1 + 1e-6) h, just past the earliest onset, then the rest of the
-//! fixed step. The adaptive stepper instead lands on the event ([`Landing`]): it retakes the step
+//! fixed step. The adaptive stepper instead lands on the event (`adaptive::Landing`): it retakes the step
 //! until it ends past the event within its last hundredth, each length the root of the event's
 //! margin g(s) at the ends of the steps tried (inverse quadratic interpolation through the last
 //! three, else the Illinois rule) aimed 0.25 % of the step past it, at most 6 retakes. An onset
@@ -119,12 +120,13 @@
 //! the springs are tested one by one only where these say one may: the same answers, so the same
 //! numbers to the last bit.
 
+mod adaptive;
 mod exact;
 mod params;
 mod solve3;
 mod sticking;
 
-pub use params::{AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
+pub use params::{Accel, AdaptiveParams, Predictor, SolverParams, Stepping, MAX_FIXED_STEPS};
 
 use crate::foundation::{DampingMode, Foundation, SpringLaw, SpringResponse, SpringState, VerticalDamping};
 use crate::loads::{LoadHistory, WaveForce};
@@ -170,76 +172,6 @@ struct Event {
     /// g0 > 0 > g1.
     g0: f64,
     g1: f64,
-}
-
-/// An event being landed on by the adaptive stepping: the longest step from the current state
-/// known to end before it (`lo`) and the shortest known to end past it (`hi`), each with the
-/// event's margin g at its end. The next step length is the root of g(s) by inverse quadratic
-/// interpolation through these two and the end the last step replaced (as in Brent's method,
-/// Brent 1973 ch. 4) if it falls inside the bracket, else by the Illinois variant of regula
-/// falsi (Dowell & Jarratt 1971: the end kept twice in a row has its margin halved).
-#[derive(Debug, Clone, Copy)]
-struct Landing {
-    spring: usize,
-    kind: EventKind,
-    /// (step length s, margin g(s)).
-    lo: (f64, f64),
-    hi: (f64, f64),
-    /// Which end moved last: `Some(true)` the upper.
-    moved_hi: Option<bool>,
-    /// Steps retaken so far.
-    tries: usize,
-    /// Predicted ([`Simulation::contact_ahead`]), not found: a step that ends short of it is kept.
-    predicted: bool,
-}
-
-impl Landing {
-    fn new(e: Event, h: f64) -> Self {
-        Landing {
-            spring: e.spring,
-            kind: e.kind,
-            lo: (0.0, e.g0),
-            hi: (h, e.g1),
-            moved_hi: None,
-            tries: 0,
-            predicted: false,
-        }
-    }
-
-    /// The step of length `s` ended with margin `g`; the next step length to try.
-    fn narrow(&mut self, s: f64, g: f64) -> f64 {
-        let upper = g <= 0.0;
-        let old = if upper { self.hi } else { self.lo };
-        if upper {
-            self.hi = (s, g);
-        } else {
-            self.lo = (s, g);
-        }
-        self.tries += 1;
-        let ((a, ga), (b, gb)) = (self.lo, self.hi);
-        let (c, gc) = old;
-        // Inverse quadratic interpolation: s(g) through the three points, at g = 0.
-        if ga != gc && gb != gc {
-            let q = a * gb * gc / ((ga - gb) * (ga - gc))
-                + b * ga * gc / ((gb - ga) * (gb - gc))
-                + c * ga * gb / ((gc - ga) * (gc - gb));
-            if q > a && q < b {
-                self.moved_hi = Some(upper);
-                return q * (1.0 + EVENT_LEAD);
-            }
-        }
-        if self.moved_hi == Some(upper) {
-            // The same end moved twice: halve the other's margin (Illinois).
-            if upper {
-                self.lo.1 *= 0.5;
-            } else {
-                self.hi.1 *= 0.5;
-            }
-        }
-        self.moved_hi = Some(upper);
-        let ((a, ga), (b, gb)) = (self.lo, self.hi);
-        (a + (b - a) * ga / (ga - gb)) * (1.0 + EVENT_LEAD)
-    }
 }
 
 /// Why a run stopped.
@@ -528,23 +460,43 @@ pub struct Simulation {
     trial_slips: bool,
     pub stats: SolverStats,
     gravity: Vector3<f64>,
-    /// Adaptive stepping: the next step to try, s.
-    h_next: f64,
     /// The all-sticking fast path's sums and scratch (`sticking`).
     fast: sticking::FastPath,
-    /// Adaptive stepping with [`SolverParams::exact_sticking`]: the propagators of all-sticking
+    /// Adaptive stepping with [`Accel::exact_sticking`]: the propagators of all-sticking
     /// steps of dt_max/2^k (`exact`).
     exact: Option<exact::Ladder>,
+    /// What a run carries from one step to the next beside the state ([`Self::reset`] starts it
+    /// afresh).
+    run: RunMemory,
+}
+
+/// What a run carries from one step to the next beside its [`State`].
+struct RunMemory {
+    /// Adaptive stepping: the next step to try, s.
+    h_next: f64,
     /// The last committed step, if it was exact (its end and R at its start: `exact`).
     exact_prev: Option<exact::Previous>,
     /// The load (gravity included) of the last step committed by the adaptive stepping, and its
     /// time.
     last_load: Option<(f64, Vector3<f64>)>,
     /// The step being tried ends at a located event: the springs' vertical dashpots act as at
-    /// the step's start, and the acceleration restarts at its end ([`Self::restart_at_event`]).
+    /// the step's start, and the acceleration restarts at its end ([`Simulation::restart_at_event`]).
     event_step: bool,
-    /// The time of the last restart at a step's start ([`Self::restart_at_start`]).
+    /// The time of the last restart at a step's start ([`Simulation::restart_at_start`]).
     restarted_at_s: f64,
+}
+
+impl RunMemory {
+    /// A run's start: the first step `dt_s`, nothing remembered.
+    fn new(dt_s: f64) -> Self {
+        RunMemory {
+            h_next: dt_s,
+            exact_prev: None,
+            last_load: None,
+            event_step: false,
+            restarted_at_s: f64::NEG_INFINITY,
+        }
+    }
 }
 
 struct Converged {
@@ -577,16 +529,14 @@ impl Simulation {
             trial_slips: false,
             stats: SolverStats { min_step_s: f64::INFINITY, ..SolverStats::default() },
             gravity,
-            h_next: solver.dt_s,
             fast,
             exact: None,
-            exact_prev: None,
-            last_load: None,
-            event_step: false,
-            restarted_at_s: f64::NEG_INFINITY,
+            run: RunMemory::new(solver.dt_s),
         };
-        if let (Stepping::Adaptive(p), true) = (solver.stepping, solver.exact_sticking && solver.sticking_fast_path) {
-            sim.exact = exact::Ladder::cached(&sim.model, p.dt_max_s);
+        if let (Stepping::Adaptive(p), true) =
+            (solver.stepping, solver.accel.exact_sticking && solver.accel.sticking_fast_path)
+        {
+            sim.exact = exact::Ladder::cached(&sim.model, p.dt_max_s, solver.accel.cached_propagators);
         }
         sim.reset(load);
         sim
@@ -601,15 +551,11 @@ impl Simulation {
         self.state.v = [0.0; 3];
         self.state.a = [0.0; 3];
         self.state.springs.iter_mut().for_each(|s| *s = SpringState::default());
-        self.h_next = self.solver.dt_s;
+        self.run = RunMemory::new(self.solver.dt_s);
         self.fast.invalidate();
-        self.exact_prev = None;
         if let Some(l) = self.exact.as_mut() {
             l.restart();
         }
-        self.last_load = None;
-        self.event_step = false;
-        self.restarted_at_s = f64::NEG_INFINITY;
         let p0 = self.load_vector(load.at(0.0));
         // The general path: it leaves the springs' responses of the static equilibrium.
         let f = self.general_force(self.state.u, [0.0; 3], self.solver.dt_s);
@@ -673,7 +619,7 @@ impl Simulation {
 
     /// Resisting force f_S (springs, and their dashpots) at trial displacement `u` and velocity
     /// `v`, from the committed spring states: in closed form while every spring is in contact
-    /// and sticks (`sticking`, when [`SolverParams::sticking_fast_path`]), else spring by spring.
+    /// and sticks (`sticking`, when [`Accel::sticking_fast_path`]), else spring by spring.
     ///
     /// `stick_first`: the fast path's test is tried before the general path (the iterate is
     /// likely all-sticking); otherwise the general path goes first, and the fast path is taken
@@ -683,7 +629,7 @@ impl Simulation {
     /// iteration").
     #[inline]
     fn resisting_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64, stick_first: bool) -> Vector3<f64> {
-        if !self.solver.sticking_fast_path {
+        if !self.solver.accel.sticking_fast_path {
             return self.general_force(u, v, h);
         }
         if stick_first {
@@ -705,7 +651,7 @@ impl Simulation {
     /// and [`Self::reaction`] are summed from).
     #[inline]
     fn general_force(&mut self, u: [f64; 3], v: [f64; 3], h: f64) -> Vector3<f64> {
-        match (self.solver.locate_contact && self.committed_lifted(), self.event_step) {
+        match (self.solver.locate_contact && self.committed_lifted(), self.run.event_step) {
             (true, false) => self.springs_force::<true, false, true>(u, v, h),
             (false, false) => self.springs_force::<false, false, true>(u, v, h),
             (true, true) => self.springs_force::<true, true, true>(u, v, h),
@@ -740,7 +686,7 @@ impl Simulation {
 
     /// [`Self::general_force`]; with `RECONTACT` a spring lifted at the step's start and in
     /// contact at the trial touches within the step (module docs, "Events"); `EVENT` is
-    /// `self.event_step` ([`dashpot_acts`]); without `SUMS` only the trial responses (and
+    /// `self.run.event_step` ([`dashpot_acts`]); without `SUMS` only the trial responses (and
     /// `trial_slips`), the force returned 0 ([`Self::general_trial`]).
     #[inline]
     fn springs_force<const RECONTACT: bool, const EVENT: bool, const SUMS: bool>(
@@ -816,7 +762,7 @@ impl Simulation {
         let (mut k11, mut k12, mut k21, mut k22) = (0.0, 0.0, 0.0, 0.0);
         let (uy_n, th_n) = (self.state.u[1], self.state.u[2]);
         for (&x, r) in self.model.x_m.iter().zip(&self.trial) {
-            if cdy > 0.0 && dashpot_acts(self.event_step, uy_n - th_n * x, r.normal_n) {
+            if cdy > 0.0 && dashpot_acts(self.run.event_step, uy_n - th_n * x, r.normal_n) {
                 k11 += kd;
                 k12 -= x * kd;
                 k21 -= x * kd;
@@ -951,7 +897,7 @@ impl Simulation {
     /// The ends of the runs of springs in and out of contact answer first
     /// ([`Self::contact_kept_ahead`]); the springs are tested one by one only if they do not.
     fn contact_ahead(&self, h: f64) -> Option<Event> {
-        if self.contact_kept_ahead(h) {
+        if self.solver.accel.contact_runs && self.contact_kept_ahead(h) {
             None
         } else {
             self.contact_ahead_each(h)
@@ -1045,19 +991,36 @@ impl Simulation {
     /// * a spring re-contacting within the step takes the straight line's u_x where it touches,
     ///   at the fraction λ of the step (`foundation::spring`, "Re-contact"); the step's own
     ///   u_x is the quadratic u_x,n + λ h u̇_x,n + λ² (Δu_x − h u̇_x,n), λ (1 − λ) |h u̇_x,n − Δu_x|
-    ///   from the line.
+    ///   from the line; without [`SolverParams::locate_contact`] (the `seed-2011` profile) it
+    ///   takes u_x,n, λ |Δu_x| from where it touches (issue 34: unseen, a caisson rocking on its
+    ///   springs slid back by where the steps fell, up to 7.5 % on
+    ///   `tests/data/accuracy/pari_ten_springs.toml`).
     ///
     /// 0 when every spring sticks at the step's end (no slip position moved).
     fn slip_error_m(&self, h: f64, c: &Converged, ux_error_m: f64) -> f64 {
         if self.fast.iterate.is_some() {
-            return 0.0;
+            // Every spring in contact and sticking at the step's end: none slipped; without
+            // located contact a spring lifted at its start touched down (the closed form gives it
+            // u_x,n as its slip position, as spring by spring).
+            if self.solver.locate_contact || !self.committed_lifted() {
+                return 0.0;
+            }
+            let (un, mut touch) = (self.state.u, 0.0f64);
+            for &x in &self.model.x_m {
+                let uy_start = un[1] - un[2] * x;
+                if uy_start >= 0.0 {
+                    touch = touch.max(uy_start / (uy_start - (c.u[1] - c.u[2] * x)));
+                }
+            }
+            return touch * (c.u[0] - un[0]).abs();
         }
-        let recontact = self.solver.locate_contact && self.committed_lifted();
+        let recontact = self.committed_lifted();
         if !recontact && !self.trial_slips {
             // No spring slips at the step's end (`trial_slips` is false only then) and none
             // touches down within it: the sums below would be 0.
             return 0.0;
         }
+        let locate = self.solver.locate_contact;
         let cd = self.model.spring_dashpot_ns_per_m;
         let (un, vx_n) = (self.state.u, self.state.v[0]);
         let chord = (h * vx_n - (c.u[0] - un[0])).abs();
@@ -1077,11 +1040,13 @@ impl Simulation {
             let uy_start = un[1] - un[2] * x;
             if recontact && uy_start >= 0.0 {
                 let lambda = uy_start / (uy_start - (c.u[1] - c.u[2] * x));
-                touch = touch.max(lambda * (1.0 - lambda));
+                touch = touch.max(if locate { lambda * (1.0 - lambda) } else { lambda });
             }
         }
         let slip = if slipping { ux_error_m + h * h * rate / (12.0 * cd.max(f64::MIN_POSITIVE)) } else { 0.0 };
-        slip.max(touch * chord)
+        // Located, the touch-down's error is the line's departure from the step's quadratic;
+        // not located (`seed-2011`), the spring takes u_x,n, λ Δu_x from where it touches.
+        slip.max(touch * if locate { chord } else { (c.u[0] - un[0]).abs() })
     }
 
     /// Newton-Raphson for one step of length `h` to load `p`. Commits nothing.
@@ -1095,14 +1060,14 @@ impl Simulation {
         let an = Vector3::from(self.state.a);
         let tol = self.solver.tolerance * self.model.weight_n;
         let inv_b = 1.0 / self.model.width_m;
-        if self.solver.sticking_fast_path && self.fast.direct {
+        if self.solver.accel.sticking_fast_path && self.fast.direct {
             if let Some(c) = self.direct_sticking_step(h, p, tol) {
                 return Ok(c);
             }
         }
         // M and C read in place (not copied per step), K_dyn only for a step that iterates.
         let k_dyn = self.model.mass * c1 + self.model.damping * (gamma * c2);
-        let mut delta = match self.solver.predictor {
+        let mut delta = match self.solver.accel.predictor {
             Predictor::LastDisplacement => Vector3::zeros(),
             Predictor::ConstantAcceleration => vn * h + an * (0.5 * h * h),
         };
@@ -1137,7 +1102,7 @@ impl Simulation {
     }
 
     fn commit(&mut self, h: f64, mut c: Converged) {
-        if self.event_step {
+        if self.run.event_step {
             c.a = self.restart_at_event(&c);
         }
         if self.fast.iterate.is_some() && !self.sticking_commit_possible() {
@@ -1213,11 +1178,14 @@ impl Simulation {
     #[inline]
     fn contact_may_change(&self, u0: [f64; 3], u1: [f64; 3]) -> bool {
         let xs = &self.model.x_m[..];
+        let touch = |u: [f64; 3], x: f64| u[1] - u[2] * x < 0.0;
+        if !self.solver.accel.contact_runs {
+            return xs.iter().any(|&x| touch(u0, x) != touch(u1, x));
+        }
         let Some(&lo) = xs.first() else {
             return false;
         };
         let hi = xs[xs.len() - 1];
-        let touch = |u: [f64; 3], x: f64| u[1] - u[2] * x < 0.0;
         let (first, last) = (touch(u0, lo), touch(u0, hi));
         if touch(u1, lo) != first || touch(u1, hi) != last {
             return true;
@@ -1234,7 +1202,7 @@ impl Simulation {
     /// step's start, q̈_n ← q̈_n − M⁻¹ ΔF (ΔF as in [`Self::restart_at_event`], at the start's
     /// velocity), and the step is to be retaken. Once per start time; `true` if it restarted.
     fn restart_at_start(&mut self, c: &Converged) -> bool {
-        if self.event_step || self.restarted_at_s == self.state.t_s {
+        if self.run.event_step || self.run.restarted_at_s == self.state.t_s {
             return false;
         }
         let da = self.dashpot_jump(self.state.u, c.u, self.state.v, EVENT_MIN_FRACTION);
@@ -1244,7 +1212,7 @@ impl Simulation {
         for (a, d) in self.state.a.iter_mut().zip(da.iter()) {
             *a -= d;
         }
-        self.restarted_at_s = self.state.t_s;
+        self.run.restarted_at_s = self.state.t_s;
         true
     }
 
@@ -1263,7 +1231,7 @@ impl Simulation {
         let t0 = self.state.t_s;
         let t1 = t0 + h;
         let w = load.at(t1);
-        self.event_step = event;
+        self.run.event_step = event;
         let tried = self.try_step(h, self.load_vector(w));
         match tried {
             Ok(c) => {
@@ -1280,7 +1248,7 @@ impl Simulation {
                 }
                 let it = c.iterations;
                 self.commit(h, c);
-                self.event_step = false;
+                self.run.event_step = false;
                 if obs.observes() {
                     if obs.reads_springs() {
                         self.fill_sticking_responses();
@@ -1302,7 +1270,7 @@ impl Simulation {
                 }
                 self.stats.substeps += 1;
                 self.stats.max_substep_level = self.stats.max_substep_level.max(level + 1);
-                self.event_step = false;
+                self.run.event_step = false;
                 self.advance(0.5 * h, level + 1, events, event, load, obs)?;
                 self.advance(t1 - self.state.t_s, level + 1, events, event, load, obs)
             }
@@ -1333,166 +1301,10 @@ impl Simulation {
             Stepping::Fixed => self.run_fixed(t_end_s, load, obs),
             Stepping::Adaptive(p) => self.run_adaptive(t_end_s, p, load, obs),
         };
-        self.event_step = false;
+        self.run.event_step = false;
         // What `reaction` and `springs` read after the run.
         self.fill_sticking_responses();
         r
-    }
-
-    /// Adaptive stepping to `t_end_s` (module docs).
-    fn run_adaptive<L: LoadHistory + ?Sized, O: Observer + ?Sized>(
-        &mut self,
-        t_end_s: f64,
-        p: AdaptiveParams,
-        load: &L,
-        obs: &mut O,
-    ) -> Result<(), SolveError> {
-        let c_err = (self.solver.beta - 1.0 / 6.0).abs();
-        let half_b = 0.5 * self.model.width_m;
-        let mut level = 0usize;
-        // Events located in a row, and whether the step to try was shortened to end at one.
-        let (mut events, mut at_event) = (0usize, false);
-        // The event being landed on, while the steps to it are retaken, and the length of the
-        // step in which it was found (or predicted): the step after the event may be as long.
-        let mut landing: Option<Landing> = None;
-        let mut before_event_s = 0.0f64;
-        // The load's next breakpoint after the step's start: it stays the next one until the
-        // steps pass it, so it is looked up again only then.
-        let mut bp = f64::NEG_INFINITY;
-        // Round-off guard: never plan a step shorter than this fraction of dt_min to land on t_end.
-        while t_end_s - self.state.t_s > 1e-3 * p.dt_min_s {
-            let t = self.state.t_s;
-            self.event_step = at_event;
-            if t >= bp {
-                bp = load.next_breakpoint_s(t);
-            }
-            // From a state where every spring in contact sticks, an exact step if one fits before
-            // the breakpoint (`exact`); where a spring would slip, lift or touch down, the
-            // Newmark step instead.
-            if level == 0 && !at_event && self.exact_advance(bp, t_end_s, p.tolerance_m, load, obs) {
-                continue;
-            }
-            // After a Newton failure the halved step may go below dt_min.
-            let planned =
-                if level > 0 { self.h_next.min(p.dt_max_s) } else { self.h_next.clamp(p.dt_min_s, p.dt_max_s) };
-            let mut h = planned.min(t_end_s - t);
-            if bp - t > p.dt_min_s && bp < t + h {
-                h = bp - t;
-            }
-            // Do not leave a sliver shorter than dt_min before t_end.
-            if t_end_s - (t + h) < p.dt_min_s {
-                h = t_end_s - t;
-            }
-            let truncated = h < planned;
-            // A lift-off or touch-down ahead within the step: the step ends just past it.
-            if level == 0
-                && !at_event
-                && landing.is_none()
-                && events < MAX_EVENTS_PER_STEP
-                && self.solver.locate_contact
-            {
-                if let Some(e) = self.contact_ahead(h) {
-                    let to_event = e.theta * h * (1.0 + EVENT_LEAD);
-                    if to_event < h * (1.0 - EVENT_MIN_FRACTION) && to_event >= p.dt_min_s {
-                        self.stats.located_events += 1;
-                        landing = Some(Landing { predicted: true, ..Landing::new(e, h) });
-                        before_event_s = h;
-                        h = to_event;
-                        at_event = true;
-                        self.event_step = true;
-                    }
-                }
-            }
-            let t1 = t + h;
-            let w = load.at(t1);
-            match self.try_step(h, self.load_vector(w)) {
-                Ok(c) => {
-                    if self.restart_at_start(&c) {
-                        continue;
-                    }
-                    let contact = self.solver.locate_contact;
-                    if let Some(l) = landing.as_mut() {
-                        // A step retaken to end at an event: narrowed until it ends just past
-                        // it (the event in its last hundredth), or just short of it.
-                        let next = match self.event_fraction(h, &c, contact) {
-                            Some(e) if (e.spring, e.kind) == (l.spring, l.kind) => Some(l.narrow(h, e.g1)),
-                            Some(e) => {
-                                // Another event before it: land on that one instead.
-                                *l = Landing { tries: l.tries + 1, ..Landing::new(e, h) };
-                                Some(e.theta * h * (1.0 + EVENT_LEAD))
-                            }
-                            None => {
-                                let (g0, g1) = self.event_margins(l.kind, l.spring, h, &c);
-                                let g = g1 * g0.signum();
-                                // Short of it by more than a hundredth of the step.
-                                if g > 0.0 && !l.predicted {
-                                    Some(l.narrow(h, g)).filter(|s| s - h > EVENT_MIN_FRACTION * h)
-                                } else {
-                                    None
-                                }
-                            }
-                        };
-                        if let Some(s) = next.filter(|&s| l.tries <= MAX_LOCATE_TRIES && s >= p.dt_min_s) {
-                            self.h_next = s;
-                            continue;
-                        }
-                    }
-                    if landing.is_none() && !at_event && events < MAX_EVENTS_PER_STEP && h > p.dt_min_s {
-                        // The step's first event: the step is retaken to land on it.
-                        if let Some(e) = self.event_fraction(h, &c, contact).filter(|e| e.theta * h >= p.dt_min_s) {
-                            self.stats.located_events += 1;
-                            events += 1;
-                            at_event = true;
-                            landing = Some(Landing::new(e, h));
-                            before_event_s = h;
-                            self.h_next = e.theta * h * (1.0 + EVENT_LEAD);
-                            level = 0;
-                            continue;
-                        }
-                    }
-                    let an = self.state.a;
-                    let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * half_b];
-                    let ux_err = c_err * h * h * da[0];
-                    let err = (c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, &c, ux_err));
-                    let ratio = if err > 0.0 { 0.9 * fast_cbrt(p.tolerance_m / err) } else { f64::INFINITY };
-                    if err > p.tolerance_m && h > p.dt_min_s {
-                        // Retried shorter by the estimate as h^(5/2) (module docs, "Adaptive
-                        // stepping": the step after an event, where nearly every rejection falls).
-                        self.stats.rejected_steps += 1;
-                        let shrink = 0.9 * (p.tolerance_m / err).powf(0.4);
-                        self.h_next = (h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s);
-                        landing = None;
-                        continue;
-                    }
-                    if err > p.tolerance_m {
-                        self.stats.forced_min_steps += 1;
-                    }
-                    self.commit_observed(h, c, t1, w, obs);
-                    landing = None;
-                    // A step shortened to a breakpoint or landed on an event: the next one may be as
-                    // long as the step planned before (the fragment does not restart the growth).
-                    let cap = if truncated { planned.max(2.0 * h) } else { 2.0 * h };
-                    let cap = if at_event { cap.max(before_event_s) } else { cap };
-                    self.h_next = (h * ratio).min(cap).max(0.2 * h).clamp(p.dt_min_s, p.dt_max_s);
-                    level = 0;
-                    if !at_event {
-                        events = 0;
-                    }
-                    at_event = false;
-                }
-                Err((iterations, residual)) => {
-                    if level >= self.solver.max_substep_levels {
-                        return Err(SolveError::NonConvergence { t_s: t1, iterations, levels: level, residual });
-                    }
-                    level += 1;
-                    landing = None;
-                    self.stats.substeps += 1;
-                    self.stats.max_substep_level = self.stats.max_substep_level.max(level);
-                    self.h_next = (0.5 * h).max(p.dt_min_s * 0.5f64.powi(level as i32));
-                }
-            }
-        }
-        Ok(())
     }
 
     /// Commit the converged step `c` of length `h` ending at `t1` under the load `w`, and show it
@@ -1501,7 +1313,7 @@ impl Simulation {
         let it = c.iterations;
         self.commit(h, c);
         self.state.t_s = t1;
-        self.last_load = Some((t1, self.load_vector(w)));
+        self.run.last_load = Some((t1, self.load_vector(w)));
         if obs.observes() {
             if obs.reads_springs() {
                 self.fill_sticking_responses();

@@ -57,6 +57,66 @@ pub enum Predictor {
     ConstantAcceleration,
 }
 
+/// The engine's accelerators: the fast paths that stand in for the plain path (Newmark steps,
+/// each iterated by Newton from δ = 0 with the springs summed one by one), one field each, and
+/// what each claims against it (ARCHITECTURE.md lists them; `tests/equiv_accel.rs` checks every
+/// claim with each accelerator off in turn and all off). [`Accel::auto`] is every one on (the
+/// default), [`Accel::none`] the plain path; a scenario picks one by `[solver] accel`. Not
+/// results, so not reported.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Accel {
+    /// The first Newton iterate ([`Predictor`]): the constant-acceleration predictor, or off
+    /// Chopra's δ = 0. Claims: the same step within the Newton tolerance.
+    pub predictor: Predictor,
+    /// While every spring is in contact and sticks, the resisting force and its tangent in closed
+    /// form, and an all-sticking step solved directly (`dynamics::sticking`). Claims: within the
+    /// Newton tolerance's reach (1e-6 of a value on the examples).
+    pub sticking_fast_path: bool,
+    /// Adaptive stepping: all-sticking phases advanced by exact steps (`dynamics::exact`, with
+    /// its ladder of step lengths and its partial contact sets). Needs
+    /// [`Self::sticking_fast_path`]; off under the `seed-2011` profile. Claims: within the
+    /// adaptive tolerance's reach (a different step sequence, the same accuracy:
+    /// `tests/verify_adaptive_accuracy.rs`).
+    pub exact_sticking: bool,
+    /// The exact steps' propagators shared per thread among caissons of the same matrices
+    /// (`exact::Ladder::cached`). Claims: the same bits.
+    pub cached_propagators: bool,
+    /// Whether a spring's contact changes over a step, or may change ahead, read from the ends
+    /// of the runs of springs in and out of contact (`Simulation::contact_may_change`,
+    /// `Simulation::contact_ahead`). Claims: the same bits.
+    pub contact_runs: bool,
+}
+
+impl Accel {
+    /// Every accelerator on (the default; `exact_sticking` then follows the profile).
+    pub fn auto() -> Self {
+        Accel {
+            predictor: Predictor::ConstantAcceleration,
+            sticking_fast_path: true,
+            exact_sticking: true,
+            cached_propagators: true,
+            contact_runs: true,
+        }
+    }
+
+    /// The plain path: every accelerator off.
+    pub fn none() -> Self {
+        Accel {
+            predictor: Predictor::LastDisplacement,
+            sticking_fast_path: false,
+            exact_sticking: false,
+            cached_propagators: false,
+            contact_runs: false,
+        }
+    }
+}
+
+impl Default for Accel {
+    fn default() -> Self {
+        Accel::auto()
+    }
+}
+
 /// Newmark and Newton-Raphson controls (docs/model.md §9.1).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SolverParams {
@@ -66,23 +126,9 @@ pub struct SolverParams {
     /// Newmark γ (default ½) and β (default ¼): average acceleration.
     pub gamma: f64,
     pub beta: f64,
-    /// The first Newton iterate of a step.
-    pub predictor: Predictor,
-    /// Sum the resisting force and its tangent in closed form while every spring is in contact
-    /// and sticks, and solve an all-sticking step directly (docs/model.md §9.1; default on).
-    /// Off, every iterate goes spring by spring and every step by Newton: the same model,
-    /// results within the Newton tolerance's reach (1e-6 of a value at most on the examples,
-    /// `crates/caisson/tests/equiv_sticking_fast_path.rs`); the switch exists for that comparison. Not a
-    /// result, so not reported.
+    /// The accelerators ([`Accel`]).
     #[serde(skip)]
-    pub sticking_fast_path: bool,
-    /// Adaptive stepping: advance an all-sticking phase by steps of dt_max solved exactly
-    /// (exponential integration of the linear part, `dynamics::exact`; docs/model.md §9.1), the
-    /// Newmark step taken only where a spring slips, lifts or the load has a breakpoint.
-    /// Default on; off under the `seed-2011` profile, whose numbers reproduce the paper. Needs
-    /// [`Self::sticking_fast_path`]. Part of the numerics of a results version, not reported.
-    #[serde(skip)]
-    pub exact_sticking: bool,
+    pub accel: Accel,
     /// Adaptive stepping: locate lift-off and re-contact within the step as the onsets of slip
     /// are; both steppings: locate the end of a slip, and give a spring that touches down within
     /// a step its slip position where it touches (docs/model.md §9.1, "Events"). Default on; off
@@ -106,9 +152,7 @@ impl Default for SolverParams {
             stepping: Stepping::Fixed,
             gamma: 0.5,
             beta: 0.25,
-            predictor: Predictor::ConstantAcceleration,
-            sticking_fast_path: true,
-            exact_sticking: true,
+            accel: Accel::auto(),
             locate_contact: true,
             max_iterations: 30,
             max_substep_levels: 8,
@@ -183,11 +227,20 @@ impl SolverParams {
         Ok(self)
     }
 
-    /// The numerics of `profile`: [`Self::exact_sticking`] and [`Self::locate_contact`] on under
-    /// `consistent`, off under `seed-2011` (whose numbers reproduce the paper).
+    /// The numerics of `profile`: [`Self::locate_contact`] and [`Accel::exact_sticking`] on under
+    /// `consistent`, off under `seed-2011` (whose numbers reproduce the paper); the exact steps
+    /// only with [`Accel::sticking_fast_path`], which they need (so [`Accel::none`] stays off).
     pub fn for_profile(mut self, profile: crate::Profile) -> Self {
-        self.exact_sticking = profile == crate::Profile::Consistent;
-        self.locate_contact = self.exact_sticking;
+        self.locate_contact = profile == crate::Profile::Consistent;
+        self.accel.exact_sticking = self.locate_contact && self.accel.sticking_fast_path;
+        self
+    }
+
+    /// The accelerators `accel`, as the profile has them ([`Self::for_profile`]: the exact steps
+    /// are on only where it steps them and `accel` has them).
+    pub fn with_accel(mut self, accel: Accel) -> Self {
+        let exact = self.accel.exact_sticking;
+        self.accel = Accel { exact_sticking: accel.exact_sticking && exact, ..accel };
         self
     }
 

@@ -692,7 +692,7 @@ mod tests {
                 };
                 let record = |on: bool| {
                     let mut sim = simulation(mode, vertical);
-                    sim.solver.sticking_fast_path = on;
+                    sim.solver.accel.sticking_fast_path = on;
                     let mut rec = Record::default();
                     sim.run_until(0.2, &load, &mut rec).unwrap();
                     let last =

@@ -317,6 +317,8 @@ pub struct SolverTable {
     pub dt_min_s: Option<f64>,
     pub dt_max_s: Option<f64>,
     pub error_tolerance_m: Option<f64>,
+    /// The accelerators: `"auto"` (every one, the default) or `"none"` (the plain path).
+    pub accel: Option<String>,
 }
 
 /// Parse scenario text. `path` is used in messages only.

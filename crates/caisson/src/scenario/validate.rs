@@ -10,7 +10,7 @@ use super::{
     FOUNDATION_KEYS, LOAD_KEYS, SOLVER_KEYS,
 };
 use crate::analysis::Structure;
-use crate::dynamics::{AdaptiveParams, SolverParams};
+use crate::dynamics::{Accel, AdaptiveParams, SolverParams};
 use crate::foundation::{AddedMassSpec, DampingMode, FoundationSpec, Soil, VerticalDamping};
 use crate::loads::pulse::{StaticRamp, TrianglePulse};
 use crate::loads::series::ForceSeries;
@@ -607,6 +607,12 @@ fn validate_solver(f: &ScenarioFile, duration_s: f64) -> R<SolverParams> {
     if let Some(v) = t.output_interval_s {
         s = s.with_output_interval_s(v);
     }
+    // The profile then turns the exact steps off where it does not take them (`for_profile`).
+    s.accel = choice(
+        "[solver] accel",
+        t.accel.as_deref().unwrap_or("auto"),
+        &[("auto", Accel::auto()), ("none", Accel::none())],
+    )?;
     s.check_run(duration_s).map_err(err)?;
     Ok(s)
 }
