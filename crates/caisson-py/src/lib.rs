@@ -1312,6 +1312,35 @@ fn _bench_loads_s(py: Python<'_>, sc: &CoreScenario, heights_m: PyReadonlyArray1
     })
 }
 
+/// `caisson.report`: the calculation note of the scenario files `scenarios` (several: side by
+/// side) into `out` (report.html; report.pdf where a headless Chromium is found and `pdf`), by
+/// the CLI's own exporter (`caisson report`, docs/report.md). Returns the files written.
+#[pyfunction]
+#[pyo3(signature = (scenarios, out, threads=0, pdf=true))]
+fn report(py: Python<'_>, scenarios: Vec<String>, out: String, threads: usize, pdf: bool) -> PyResult<Vec<String>> {
+    check_threads(py, threads)?;
+    let args = caisson_cli::cli::ReportArgs {
+        scenarios: scenarios.iter().map(std::path::PathBuf::from).collect(),
+        out: std::path::PathBuf::from(&out),
+        threads,
+        no_pdf: !pdf,
+    };
+    py.detach(|| caisson_cli::cmd_report::run(args)).map_err(|e| {
+        if e.downcast_ref::<caisson_cli::InputError>().is_some() {
+            scenario_error(py, e.to_string(), None, None, None)
+        } else {
+            run_error(format!("{e:#}"))
+        }
+    })?;
+    let dir = Path::new(&out);
+    Ok(["report.html", "report.pdf"]
+        .iter()
+        .map(|f| dir.join(f))
+        .filter(|p| p.is_file())
+        .map(|p| p.display().to_string())
+        .collect())
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -1322,6 +1351,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RESULTS_VERSION", caisson::RESULTS_VERSION)?;
     m.add_class::<CoreScenario>()?;
     m.add_function(wrap_pyfunction!(run_load, m)?)?;
+    m.add_function(wrap_pyfunction!(report, m)?)?;
     m.add_function(wrap_pyfunction!(run_trains, m)?)?;
     m.add_function(wrap_pyfunction!(spectrum, m)?)?;
     m.add_function(wrap_pyfunction!(loads_report, m)?)?;

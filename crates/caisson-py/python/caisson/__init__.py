@@ -736,6 +736,35 @@ from ._size import merge, read_checkpoint, resume, size  # noqa: E402
 __all__ += ["size", "read_checkpoint", "resume", "merge"]
 
 
+def report(scenarios, out: Union[str, os.PathLike], *, threads: int = 0, pdf: bool = True) -> list:
+    """The calculation note of ``caisson report`` (docs/report.md): ``report.html`` (self-contained)
+    and, where a headless Chromium is found and ``pdf``, ``report.pdf`` (A4) in ``out``, by the
+    CLI's own exporter, so the note is the CLI's byte for byte. ``scenarios``: a scenario file,
+    a :class:`Scenario`, or a list of them (two or more are set side by side). A
+    :class:`Scenario` is written to a temporary TOML file under its own file name (a scenario
+    that reads a force series is given as its file). Returns the paths written. Raises
+    :class:`ScenarioError` for what the CLI refuses (exit 2) and :class:`RunError` for a run
+    that failed. The note's runs cannot be stopped by Ctrl-C from Python."""
+    import tempfile
+
+    items = scenarios if isinstance(scenarios, (list, tuple)) else [scenarios]
+    with tempfile.TemporaryDirectory(prefix="caisson-report-") as tmp:
+        paths = []
+        for i, sc in enumerate(items):
+            if isinstance(sc, Scenario):
+                name = Path(sc.path).name if sc.path else f"scenario_{i + 1}.toml"
+                d = Path(tmp) / str(i)
+                d.mkdir()
+                (d / name).write_text(sc.to_toml())
+                paths.append(str(d / name))
+            else:
+                paths.append(os.fspath(sc))
+        return _core.report(paths, os.fspath(out), threads, pdf)
+
+
+__all__ += ["report"]
+
+
 def __dir__() -> list:
     """The package's names (``__all__``), not the modules and typing names it imports."""
     return sorted(__all__)

@@ -105,3 +105,11 @@ def fit_lognormal(im: Any, k: Any, n: Any) -> dict: ...
 
 # Sizing, and the CLI's design checkpoints and shards (module _size, typed in its source).
 from ._size import merge as merge, read_checkpoint as read_checkpoint, resume as resume, size as size
+
+def report(
+    scenarios: Union[str, os.PathLike, Scenario, Sequence[Union[str, os.PathLike, Scenario]]],
+    out: Union[str, os.PathLike],
+    *,
+    threads: int = 0,
+    pdf: bool = True,
+) -> list[str]: ...
