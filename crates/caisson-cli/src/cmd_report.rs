@@ -28,7 +28,6 @@ use caisson::loads::risetime::load_rng;
 use caisson::report::loads::LoadsReport;
 use caisson::report::ModelReport;
 use caisson::scenario::{self, Scenario};
-use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
@@ -139,14 +138,7 @@ fn alternative(path: &Path, sc: &Scenario, threads: usize) -> Result<Alternative
         crate::work::say(crate::work::check("design", &estimate, &crate::work::DESIGN)?);
         let pb = progress(design.lives as u64, "lives", "");
         let indices: Vec<usize> = (0..design.lives).collect();
-        let on_life = |_: usize, _: &StormOutcome| {
-            pb.inc(1);
-            if crate::interrupt::requested() {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        };
+        let on_life = |_: usize, _: &StormOutcome| crate::interrupt::tick(&pb);
         let lives = with_threads(threads, || run.run(&indices, &on_life))?.context("the design run failed")?;
         pb.finish_and_clear();
         if lives.len() < design.lives {
@@ -162,14 +154,7 @@ fn alternative(path: &Path, sc: &Scenario, threads: usize) -> Result<Alternative
         crate::work::say(crate::work::check("size", &estimate, &crate::work::SIZE)?);
         let pb = progress((sizer.candidates() * sizer.params.lives) as u64, "candidates", "lives");
         let mut width = |w: f64, _: bool| pb.set_message(format!("B = {w:.3} m"));
-        let life = || {
-            pb.inc(1);
-            if crate::interrupt::requested() {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        };
+        let life = || crate::interrupt::tick(&pb);
         let mut candidate = |_: &caisson::analysis::sizing::Candidate| Ok(());
         let hooks = Hooks { width: &mut width, life: &life, candidate: &mut candidate };
         let report = with_threads(threads, || sizer.run(&[], hooks))?.map_err(|e| match e {

@@ -18,7 +18,6 @@ use caisson::report::size::{CandidateReport, GodaWidth, SizeReport};
 use caisson::scenario;
 use std::fmt::Write as _;
 use std::io::Write as _;
-use std::ops::ControlFlow;
 use std::path::Path;
 
 /// The checkpoint of a sizing run in `--out`: a header line, then one line per finished
@@ -169,14 +168,7 @@ fn drive(
                 pb.set_message(format!("B = {w:.3} m"));
             }
         };
-        let life = || {
-            pb.inc(1);
-            if crate::interrupt::requested() {
-                ControlFlow::Break(())
-            } else {
-                ControlFlow::Continue(())
-            }
-        };
+        let life = || crate::interrupt::tick(pb);
         let mut candidate = |c: &Candidate| -> std::result::Result<(), String> {
             let Some((header_line, f)) = writer.as_mut() else { return Ok(()) };
             let path = checkpoint.expect("a checkpoint with a writer");

@@ -95,6 +95,17 @@ pub mod interrupt {
     pub fn requested() -> bool {
         INTERRUPTED.load(Ordering::SeqCst)
     }
+
+    /// One item done on `pb`; whether the run goes on (not after Ctrl-C): the per-life hook of
+    /// the drivers' runs.
+    pub fn tick(pb: &indicatif::ProgressBar) -> std::ops::ControlFlow<()> {
+        pb.inc(1);
+        if requested() {
+            std::ops::ControlFlow::Break(())
+        } else {
+            std::ops::ControlFlow::Continue(())
+        }
+    }
 }
 
 /// The argument parser's message as every other error: `Error: ...` (clap writes `error: ...`).

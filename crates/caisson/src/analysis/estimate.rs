@@ -54,11 +54,20 @@ impl Estimate {
         Estimate { value: mean, standard_error: se, ci95: [mean - Z95 * se, mean + Z95 * se] }
     }
 
-    /// The proportion `k` of `n` (n > 0) with its binomial standard error and Wilson interval.
+    /// The proportion `k` of `n` with its binomial standard error and Wilson interval; of no
+    /// trial (n = 0), 0 within [0, 1] (nothing is known).
     pub fn proportion(k: u64, n: u64) -> Estimate {
+        if n == 0 {
+            return Estimate { value: 0.0, standard_error: 0.0, ci95: [0.0, 1.0] };
+        }
         let p = k as f64 / n as f64;
         Estimate { value: p, standard_error: (p * (1.0 - p) / n as f64).sqrt(), ci95: wilson_ci95(k, n) }
     }
+}
+
+/// The normal 95 % interval mean ± z·se of a mean with standard error `se` (module docs).
+pub fn normal_ci95(mean: f64, se: f64) -> [f64; 2] {
+    [mean - Z95 * se, mean + Z95 * se]
 }
 
 /// The Wilson score 95 % interval of `k` successes in `n` > 0 trials (module docs).
@@ -121,6 +130,11 @@ mod tests {
         let far = Estimate::mean([1e9 + 1.0, 1e9 + 2.0, 1e9 + 3.0, 1e9 + 4.0]);
         assert!((far.standard_error - 0.645_497_224).abs() < 1e-6, "{far:?}");
         assert_eq!(Estimate::mean([7.0]).standard_error, 0.0);
+        // The normal interval by hand: 2.5 ± 1.959964 × 0.5 = [1.520018, 3.479982].
+        let ci = normal_ci95(2.5, 0.5);
+        assert!((ci[0] - 1.520_018).abs() < 1e-6 && (ci[1] - 3.479_982).abs() < 1e-6, "{ci:?}");
+        // A share of no lives knows nothing: 0 within [0, 1].
+        assert_eq!(Estimate::proportion(0, 0), Estimate { value: 0.0, standard_error: 0.0, ci95: [0.0, 1.0] });
     }
 
     /// Wilson intervals by hand (module docs' formula evaluated separately): 7 of 50 → [0.069508,

@@ -37,7 +37,7 @@
 //! Φ(margin / SE) of the tightest criterion, the normal-approximation probability that the
 //! criterion is met.
 
-use super::estimate::{wilson_ci95, Z95 as Z_CI95};
+use super::estimate::{normal_ci95, Estimate};
 use super::fragility::normal_cdf;
 use super::lifetime::{
     capped_statistics, FailureLimits, HeelPressureExceedance, ImpulsiveShare, LifeCounts, StormOutcome,
@@ -186,22 +186,24 @@ pub fn model_point(
     let (uncapped, uncapped_se) = mean_and_se(magnitudes.iter().copied());
     let share = |k: Option<usize>| modes.iter().filter(|m| k.map_or(m.iter().any(|&f| f), |k| m[k])).count() as f64 / n;
     let lives = magnitudes.len() as u64;
-    // A share k/n of the lives back to its count k (exact: k/n rounds to the nearest double).
-    let wilson = |p: f64| if lives == 0 { [0.0, 1.0] } else { wilson_ci95((p * n).round() as u64, lives) };
+    let failures = modes.iter().filter(|m| m.iter().any(|&f| f)).count() as u64;
+    // The lives beyond the exceedance criterion's S_lim, a failed life beyond it.
+    let beyond = |t: f64| magnitudes.iter().zip(&failed).filter(|(&m, &f)| f || m > t).count() as u64;
+    let exceedance = criteria.exceedance.map(|e| Estimate::proportion(beyond(e.sliding_m), lives));
     let exceedance_probability = s.exceedance.first().map_or(0.0, |(_, p)| *p);
     ModelPoint {
         expected_sliding_m: mean,
         expected_sliding_standard_error_m: se,
-        expected_sliding_ci95_m: [mean - Z_CI95 * se, mean + Z_CI95 * se],
+        expected_sliding_ci95_m: normal_ci95(mean, se),
         expected_sliding_uncapped_m: uncapped,
         expected_sliding_uncapped_standard_error_m: uncapped_se,
-        expected_sliding_uncapped_ci95_m: [uncapped - Z_CI95 * uncapped_se, uncapped + Z_CI95 * uncapped_se],
+        expected_sliding_uncapped_ci95_m: normal_ci95(uncapped, uncapped_se),
         p50_m: pct(50.0),
         p95_m: pct(95.0),
         exceedance_probability,
-        exceedance_probability_ci95: if s.exceedance.is_empty() { [0.0, 0.0] } else { wilson(exceedance_probability) },
+        exceedance_probability_ci95: exceedance.map_or([0.0, 0.0], |e| e.ci95),
         failure_probability: share(None),
-        failure_probability_ci95: wilson(share(None)),
+        failure_probability_ci95: Estimate::proportion(failures, lives).ci95,
         failure_by_sliding_probability: share(Some(0)),
         failure_by_rotation_probability: share(Some(1)),
         failure_by_heel_pressure_probability: share(Some(2)),

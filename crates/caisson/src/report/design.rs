@@ -3,7 +3,7 @@
 use super::{fingerprint, ModelReport, Provenance};
 use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
-use crate::analysis::estimate::{percentile_ci95, Estimate, Z95};
+use crate::analysis::estimate::{normal_ci95, percentile_ci95, Estimate};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
     ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
@@ -117,17 +117,9 @@ impl FailureMode {
     }
 }
 
-/// The proportion `k` of `n` lives with its Wilson interval; of no life, 0 within [0, 1].
+/// The proportion `k` of `n` lives with its Wilson interval ([`Estimate::proportion`]).
 fn proportion(k: usize, n: usize) -> Estimate {
-    if n == 0 {
-        return Estimate { value: 0.0, standard_error: 0.0, ci95: [0.0, 1.0] };
-    }
     Estimate::proportion(k as u64, n as u64)
-}
-
-/// The normal 95 % interval of a mean with standard error `se`.
-fn ci95(mean: f64, se: f64) -> [f64; 2] {
-    [mean - Z95 * se, mean + Z95 * se]
 }
 
 /// The statistics of the lives that did not fail.
@@ -203,13 +195,13 @@ impl ModelStatistics {
         ModelStatistics {
             expected_sliding_m: s.mean_m,
             expected_sliding_standard_error_m: se,
-            expected_sliding_ci95_m: ci95(s.mean_m, se),
+            expected_sliding_ci95_m: normal_ci95(s.mean_m, se),
             expected_sliding_per_year_m: per_year.0,
             expected_sliding_per_year_standard_error_m: per_year.1,
-            expected_sliding_per_year_ci95_m: ci95(per_year.0, per_year.1),
+            expected_sliding_per_year_ci95_m: normal_ci95(per_year.0, per_year.1),
             expected_sliding_uncapped_m: uncapped,
             expected_sliding_uncapped_standard_error_m: uncapped_se,
-            expected_sliding_uncapped_ci95_m: ci95(uncapped, uncapped_se),
+            expected_sliding_uncapped_ci95_m: normal_ci95(uncapped, uncapped_se),
             percentiles_m: percentiles(&s),
             percentiles_ci95_m: PercentileIntervals::of(&capped),
             exceedance_probability: s
@@ -232,7 +224,7 @@ impl ModelStatistics {
                 lives: sv.lives,
                 expected_sliding_m: sv.mean_m,
                 expected_sliding_standard_error_m: sv_se,
-                expected_sliding_ci95_m: ci95(sv.mean_m, sv_se),
+                expected_sliding_ci95_m: normal_ci95(sv.mean_m, sv_se),
                 percentiles_m: percentiles(&sv),
                 percentiles_ci95_m: PercentileIntervals::of(&surviving),
             },
