@@ -226,7 +226,9 @@ class DesignStatistics(_ReadsAsReport):
     ``waves``, ``simulated_waves`` (the waves drawn and those run through the dynamic model);
     ``heel_pressure_exceedance``: P(q_heel > q_a) of the dynamic model's lives (``allowable_kpa``,
     ``probability``, ``standard_error``, ``lives``, ``exact_from_kpa``, ``largest_kpa``);
-    ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``design.json``.
+    ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``design.json``;
+    ``sampling``: how a stratified design sampled its lives (``pool_lives``, ``simulated_lives``,
+    ``strata``), ``None`` when every life was simulated.
 
     It also reads as that dict (``stats["dynamic"]["failure"]["probability"]``, ``dict(stats)``,
     ``stats == json.load(open("design.json"))``).
@@ -241,6 +243,7 @@ class DesignStatistics(_ReadsAsReport):
     heel_pressure_exceedance: Mapping
     warnings: tuple
     report: dict
+    sampling: Optional[Mapping] = None
 
     @staticmethod
     def of(report: dict) -> "DesignStatistics":
@@ -254,6 +257,7 @@ class DesignStatistics(_ReadsAsReport):
             heel_pressure_exceedance=dict(report["dynamic"]["heel_pressure_exceedance"]),
             warnings=ResultWarning.all_of(report),
             report=report,
+            sampling=report.get("sampling"),
         )
 
     def __repr__(self) -> str:

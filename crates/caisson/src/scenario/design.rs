@@ -11,6 +11,7 @@ use super::{ScenarioError, ScenarioFile};
 use crate::analysis::climate::{
     Climate, SeaLevelError, SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods, MAX_SEA_LEVEL_POINTS,
 };
+use crate::analysis::lifetime::Sampling;
 use crate::analysis::lifetime::{
     DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution, MAX_LIFE_YEARS,
 };
@@ -50,6 +51,8 @@ pub struct DesignTable {
     /// Extra sliding thresholds, m (0.03, 0.1, 0.3, 1 and 3 m are always reported).
     pub thresholds_m: Option<Vec<f64>>,
     pub screen: Option<bool>,
+    /// `"plain"` (default: every life simulated) or `"stratified"` (docs/design.md).
+    pub sampling: Option<String>,
     /// The failure limit on the caisson's distance from its place, m (default B/4).
     pub failure_sliding_m: Option<f64>,
     /// The failure limit on the caisson's rotation, rad (default 0.01).
@@ -229,6 +232,11 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         failure_rotation_rad: t.failure_rotation_rad.unwrap_or(ROCKING_LIMIT_RAD),
         allowable_heel_pressure_pa,
         failure_heel_pressure_pa,
+        sampling: super::validate::choice(
+            "[design] sampling",
+            t.sampling.as_deref().unwrap_or("plain"),
+            &[("plain", Sampling::Plain), ("stratified", Sampling::Stratified)],
+        )?,
     };
     params.checked().map_err(|e| match e.quantity {
         // Shown in hours, as read (the rule's bounds in seconds, shown in hours).
