@@ -109,7 +109,9 @@ pub struct Accel {
     pub draw_above_threshold: bool,
     /// The bound of the all-sticking response (`analysis::stick_bound`): a pulsating wave it
     /// shows sticking is not run (its rotation settled at the life's end). Claims: the same bits
-    /// but the counts of simulated and screened waves.
+    /// but the counts of simulated and screened waves (which move together) and the largest heel
+    /// pressure below the screen's heel pressure (at most the one without the bound, as the
+    /// screen has it).
     pub stick_bound: bool,
 }
 
