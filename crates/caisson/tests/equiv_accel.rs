@@ -36,7 +36,7 @@
 mod support;
 
 use caisson::analysis::lifetime::StormOutcome;
-use caisson::dynamics::{Accel, Predictor, SolverParams, Stepping};
+use caisson::dynamics::{Accel, AdaptiveParams, Predictor, SolverParams, Stepping};
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
 use support::signature::{signature, train_values, Signature};
@@ -137,11 +137,13 @@ fn with_accel(sc: &Scenario, accel: Accel) -> Scenario {
 }
 
 /// Compare `new` with `reference` (all on) under `claim`: the values compared. A value beyond a
-/// tolerance claim is still kept where `converged` (fixed steps of dt0/16, single runs only) is at
-/// least as close to it with all on as with the accelerator off: the plain path, not the
-/// accelerator, is then the one off (an adaptive Newmark step sequence that lags the phase of a
-/// vibrating caisson and so moves a slip onset: docs/model.md §9.1, "What no local estimate
-/// decides"); such values are counted in `plain_off`.
+/// tolerance claim is still kept where `converged` (single runs: fixed steps of dt0/16; a design's
+/// lives: adaptive steps at tolerance 1e-10 m) is at least as close to it with all on as with the
+/// accelerator off: the plain path, not the accelerator, is then the one off (an adaptive Newmark
+/// step sequence that lags the phase of a vibrating caisson and so moves a slip onset:
+/// docs/model.md §9.1, "What no local estimate decides"; on the design examples, whose tolerance
+/// is 1e-6 m, Newmark steps instead of the exact ones move design_breakwater's life 3 from
+/// 5.284 mm to 4.748 mm, converged 5.283 mm); such values are counted in `plain_off`.
 fn compare(
     what: &str,
     reference: &Results,
@@ -220,11 +222,20 @@ fn check(name: &str, sc: &Scenario, worst: &mut BTreeMap<&'static str, f64>) -> 
     let mut converged = || {
         converged_values
             .get_or_insert_with(|| {
-                if sc.load.is_none() {
+                if sc.load.is_some() {
+                    let fine = SolverParams { dt_s: 6.25e-6, stepping: Stepping::Fixed, ..sc.solver() };
+                    return results(&sc.clone().with_solver(fine.with_output_interval_s(1e-3)).unwrap());
+                }
+                if sc.design.is_none() || !adaptive {
                     return Results::new();
                 }
-                let fine = SolverParams { dt_s: 6.25e-6, stepping: Stepping::Fixed, ..sc.solver() };
-                results(&sc.clone().with_solver(fine.with_output_interval_s(1e-3)).unwrap())
+                // A design's lives (hundreds of waves of 10 s and more): adaptive steps at a
+                // tolerance 1e4 times the default's tighter, 0.01 s at most (the exact steps on or
+                // off then agree within 3e-6 of a life's sliding).
+                let p = AdaptiveParams { dt_min_s: 1e-6, dt_max_s: 0.01, tolerance_m: 1e-10 };
+                let s = sc.solver();
+                let fine = SolverParams { dt_s: s.dt_s.min(0.01), ..s }.with_adaptive(p).unwrap();
+                results(&sc.clone().with_solver(fine).unwrap())
             })
             .clone()
     };
@@ -253,6 +264,11 @@ fn every_example_meets_each_accelerators_claim() {
     }
     println!("largest relative difference within the claims per accelerator off: {worst:?}; {plain_off} values beyond, the plain path further from converged");
     assert_eq!(FAILED.with(|f| f.get()), 0, "values beyond their claims (printed)");
+    // Measured: 12 values (the sliding and the largest storm's of design_breakwater's life 3 and
+    // breaking_site_15m's life 13, with the exact steps off, with the sticking fast path they need
+    // off, and with all off: Newmark steps at the examples' tolerance of 1e-6 m); the count may
+    // not grow.
+    assert!(plain_off <= 12, "{plain_off} values where the plain path is further from converged");
     assert_eq!(examples, 15);
     assert!(compared > 500, "{compared} values compared");
 }

@@ -34,7 +34,7 @@ fn with_predictor(sc: &Scenario, predictor: Predictor) -> Scenario {
 }
 
 /// What an example computes (as in `regress_golden.rs`, without the time histories): a `[load]` run,
-/// realization 0 of the wave trains, the first 3 lives of a design, 2 storms of a fragility run;
+/// realization 0 of the wave trains, the first `GOLDEN_LIVES` (14) lives of a design, 2 storms of a fragility run;
 /// and the Newton iterations where the driver reports them.
 fn results(sc: &Scenario) -> (Results, Option<u64>) {
     let mut out = Results::new();

@@ -62,7 +62,7 @@ fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
 }
 
 /// What an example computes (as in `equiv_predictor.rs`): a `[load]` run, realization 0 of the wave
-/// trains, the first 3 lives of a design, 2 storms of a fragility run.
+/// trains, the first `GOLDEN_LIVES` (14) lives of a design, 2 storms of a fragility run.
 fn results(sc: &Scenario) -> (Results, Work) {
     let mut out = Results::new();
     let mut work = None;
