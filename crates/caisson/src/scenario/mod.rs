@@ -780,7 +780,8 @@ impl Scenario {
     /// failure limits of `[design]`, if any, for this caisson's width) and the lifetime's fast
     /// paths of `[solver] accel` ([`crate::dynamics::Accel`]): the screen if both `screen` (the
     /// design's `[design] screen`, or the caller's) and the policy have it, and the screen's load
-    /// bound, drawing above the threshold and stick bound only with the screen.
+    /// bound, drawing above the threshold and stick bound as the policy has them (they act only
+    /// with the screen; so `[design] screen = false` keeps the fingerprint it had).
     pub fn storm_case(&self, screen: bool) -> Result<StormCase<'_>, ScenarioError> {
         let w = self.waves_for("a design or fragility run")?;
         if let Some(d) = &self.design {
@@ -794,10 +795,10 @@ impl Scenario {
             model: &w.model,
             rigid_block_mu: w.rigid_block_mu(&self.structure.foundation),
             screen,
-            screen_load_bound: screen && accel.screen_load_bound,
-            stick_bound: screen && accel.stick_bound,
+            screen_load_bound: accel.screen_load_bound,
+            stick_bound: accel.stick_bound,
             settle_rotation: true,
-            draws: if screen && accel.draw_above_threshold { WaveDraws::AboveThreshold } else { WaveDraws::EveryWave },
+            draws: if accel.draw_above_threshold { WaveDraws::AboveThreshold } else { WaveDraws::EveryWave },
             failure: self.design.as_ref().map(|d| d.failure_limits(self.structure.caisson.width_m)),
             heel_screen_pa: self.design.as_ref().map_or(f64::INFINITY, DesignParams::heel_screen_pa),
         })

@@ -326,7 +326,8 @@ impl LifeParams {
 /// reference and the lifetime's fast paths. Those are the lifetime fields of the policy
 /// [`crate::dynamics::Accel`] (`screen`, `screen_load_bound`, `draw_above_threshold`,
 /// `stick_bound`, as [`crate::scenario::Scenario::storm_case`] resolves them: the screen where
-/// both `[design] screen` and the policy have it, the others only with the screen), kept here
+/// both `[design] screen` and the policy have it, the others as the policy has them, acting only
+/// with the screen), kept here
 /// resolved so that a run with another solver (the work estimate's coarse pilot) screens the same.
 #[derive(Debug, Clone, Copy)]
 pub struct StormCase<'a> {
