@@ -455,7 +455,7 @@ fn compare_life(
     for (column, c) in &LIFE_COLUMNS {
         let (a, b) = (value(c, reference), value(c, new));
         let within = |rel: f64, abs: f64| (a - b).abs() <= rel * scale[column] + abs;
-        let counts = matches!(column.as_ref(), "simulated_waves" | "screened_waves");
+        let counts = matches!(*column, "simulated_waves" | "screened_waves");
         let heel = *column == "max_heel_pressure_kpa";
         // A wave's slide goes to the shoreward or the seaward sum by its sign: both move within
         // the tolerance of the life's movement, the larger of the two sums.
