@@ -39,7 +39,6 @@ use caisson::analysis::lifetime::StormOutcome;
 use caisson::dynamics::{Accel, AdaptiveParams, Predictor, SolverParams, Stepping};
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
-use support::signature::{signature, train_values, Signature};
 
 type Results = BTreeMap<String, Vec<f64>>;
 
@@ -92,48 +91,36 @@ fn variants(on: Accel) -> Vec<(&'static str, Accel, Claim, Claim)> {
     ]
 }
 
-/// What `sc` computes (the values of `tests/equiv_sticking_fast_path.rs`), with its step count.
+/// What `sc` computes (the values of `tests/equiv_sticking_fast_path.rs`), with its step count
+/// and a life's or storm's largest rotation.
 fn results(sc: &Scenario) -> Results {
-    let mut out = Results::new();
-    match signature(sc, false) {
-        Signature::Load(r) => {
-            let r = r.summary;
-            for (key, v) in [
-                ("permanent_sliding_m", r.permanent_sliding_m),
-                ("max_horizontal_displacement_m", r.max_horizontal_displacement_m),
-                ("max_rotation_rad", r.max_rotation_rad),
-                ("max_horizontal_reaction_n", r.max_horizontal_reaction_n),
-                ("max_spring_normal_n", r.max_spring_normal_n),
-                ("min_spring_normal_n", r.min_spring_normal_n),
-                ("max_spring_shear_n", r.max_spring_shear_n),
-                ("final_displacement_m", r.final_displacement_m),
-                ("final_rotation_rad", r.final_rotation_rad),
-                ("slip_events", r.slip_events as f64),
-                ("steps", r.solver.steps as f64),
-            ] {
-                out.insert(key.into(), vec![v]);
-            }
-        }
-        Signature::Lives(lives) => {
-            out.insert("life_sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
-            out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|o| o.max_storm_sliding_m).collect());
-            out.insert("life_max_rotation_rad".into(), lives.iter().map(|o| o.max_rotation_rad).collect());
-        }
-        Signature::Storms(storms) => {
-            out.insert("storm_sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
-            out.insert("storm_max_rotation_rad".into(), storms.iter().map(|o| o.max_rotation_rad).collect());
-        }
-        Signature::Train(r, _) => {
-            train_values(&mut out, &r);
-            out.insert("steps".into(), vec![r.solver.steps as f64]);
-        }
-    }
-    out
+    let keys = [
+        "permanent_sliding_m",
+        "max_horizontal_displacement_m",
+        "max_rotation_rad",
+        "max_horizontal_reaction_n",
+        "max_spring_normal_n",
+        "min_spring_normal_n",
+        "max_spring_shear_n",
+        "final_displacement_m",
+        "final_rotation_rad",
+        "slip_events",
+        "steps",
+        "life_sliding_m",
+        "life_max_storm_sliding_m",
+        "life_max_rotation_rad",
+        "storm_sliding_m",
+        "storm_max_rotation_rad",
+        "wave_sliding_m",
+        "wave_max_horizontal_reaction_n",
+        "sliding_m",
+    ];
+    support::signature::pick(support::signature::values(sc).0, &keys)
 }
 
 /// `sc` with the accelerators `accel`.
 fn with_accel(sc: &Scenario, accel: Accel) -> Scenario {
-    sc.clone().with_solver(SolverParams { accel, ..sc.solver() }).unwrap()
+    support::signature::with_accel(sc, |_| accel)
 }
 
 /// Compare `new` with `reference` (all on) under `claim`: the values compared. A value beyond a
