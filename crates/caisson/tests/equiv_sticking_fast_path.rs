@@ -40,8 +40,6 @@
 
 mod support;
 
-use support::signature::{signature, train_values, Signature};
-
 use caisson::dynamics::{Accel, SolverParams, Stepping};
 use caisson::scenario::Scenario;
 use std::collections::BTreeMap;
@@ -62,44 +60,30 @@ fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
 }
 
 /// What an example computes (as in `equiv_predictor.rs`): a `[load]` run, realization 0 of the wave
-/// trains, the first 3 lives of a design, 2 storms of a fragility run.
+/// trains, the first `GOLDEN_LIVES` (14) lives of a design, 2 storms of a fragility run.
 fn results(sc: &Scenario) -> (Results, Work) {
-    let mut out = Results::new();
-    let mut work = None;
-    match signature(sc, false) {
-        Signature::Load(r) => {
-            let r = r.summary;
-            for (key, v) in [
-                ("permanent_sliding_m", r.permanent_sliding_m),
-                ("max_horizontal_displacement_m", r.max_horizontal_displacement_m),
-                ("max_rotation_rad", r.max_rotation_rad),
-                ("max_horizontal_reaction_n", r.max_horizontal_reaction_n),
-                ("max_spring_normal_n", r.max_spring_normal_n),
-                ("min_spring_normal_n", r.min_spring_normal_n),
-                ("max_spring_shear_n", r.max_spring_shear_n),
-                ("final_displacement_m", r.final_displacement_m),
-                ("final_rotation_rad", r.final_rotation_rad),
-                ("max_dashpot_moment_nm", r.max_dashpot_moment_nm),
-                ("slip_events", r.slip_events as f64),
-            ] {
-                out.insert(key.into(), vec![v]);
-            }
-            work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
-        }
-        Signature::Lives(lives) => {
-            out.insert("life_sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
-            out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|o| o.max_storm_sliding_m).collect());
-            out.insert("life_simulated_waves".into(), lives.iter().map(|o| o.simulated_waves as f64).collect());
-        }
-        Signature::Storms(storms) => {
-            out.insert("storm_sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
-        }
-        Signature::Train(r, _) => {
-            train_values(&mut out, &r);
-            work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
-        }
-    }
-    (out, work)
+    let (all, stats) = support::signature::values(sc);
+    let keys = [
+        "permanent_sliding_m",
+        "max_horizontal_displacement_m",
+        "max_rotation_rad",
+        "max_horizontal_reaction_n",
+        "max_spring_normal_n",
+        "min_spring_normal_n",
+        "max_spring_shear_n",
+        "final_displacement_m",
+        "final_rotation_rad",
+        "max_dashpot_moment_nm",
+        "slip_events",
+        "life_sliding_m",
+        "life_max_storm_sliding_m",
+        "life_simulated_waves",
+        "storm_sliding_m",
+        "wave_sliding_m",
+        "wave_max_horizontal_reaction_n",
+        "sliding_m",
+    ];
+    (support::signature::pick(all, &keys), stats.map(|s| (s.steps, s.newton_iterations, s.sticking_iterates)))
 }
 
 /// The largest difference of `new` from `old` relative to the largest |value| of each quantity,

@@ -80,9 +80,10 @@
 //! is none below the breaker height at the wall); in the other storms the nodes up to the highest
 //! node height where those bounds up to it pass neither test (found by bisection) are false without
 //! their loads, the same grid as every node's loads
-//! (`tests::the_bisected_screen_grid_is_every_nodes_grid`). The friction used is the smaller of μ_s
+//! (`tests::the_bisected_screen_grid_is_every_nodes_grid`; off by [`StormCase::screen_load_bound`]). The friction used is the smaller of μ_s
 //! and the rigid block's μ, so a screened wave slides neither model. The share of waves screened is
-//! reported; `screen = false` runs every wave (on the same waves, [`WaveDraws::EveryWave`], the
+//! reported; `screen = false` (`[design] screen`, or the policy's `Accel::screen` off:
+//! [`StormCase::screen`]) runs every wave (on the same waves, [`WaveDraws::EveryWave`], the
 //! screened run gives the same totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
 //! **The stick bound**. The static test lets through many waves that then neither slide nor lift

@@ -323,27 +323,36 @@ impl LifeParams {
 }
 
 /// What the storms act on: the structure at still water, the site's wave loads, the rigid-block
-/// reference and whether to screen.
+/// reference and the lifetime's fast paths. Those are the lifetime fields of the policy
+/// [`crate::dynamics::Accel`] (`screen`, `screen_load_bound`, `draw_above_threshold`,
+/// `stick_bound`, as [`crate::scenario::Scenario::storm_case`] resolves them: the screen where
+/// both `[design] screen` and the policy have it, the others as the policy has them, acting only
+/// with the screen), kept here
+/// resolved so that a run with another solver (the work estimate's coarse pilot) screens the same.
 #[derive(Debug, Clone, Copy)]
 pub struct StormCase<'a> {
     pub structure: &'a Structure,
     /// The wave-load model at still water (its regime choice is used per wave).
     pub model: &'a WaveLoadModel,
     pub rigid_block_mu: f64,
-    /// Skip the waves that cannot slide the caisson (module docs).
+    /// Skip the waves that cannot slide the caisson (module docs; `Accel::screen`).
     pub screen: bool,
+    /// With the screen, leave the grid's rows and nodes that the bound of the loads over all
+    /// heights up to theirs holds false without their loads (module docs, "The screen";
+    /// `Accel::screen_load_bound`): `false` computes every node's loads (the same grid).
+    pub screen_load_bound: bool,
     /// With the screen, answer the pulsating waves that the bound of the all-sticking response
     /// shows can neither slide nor lift the caisson without running them (module docs, "The
-    /// screen"; [`crate::analysis::stick_bound`]): `false` runs them all (the tests'
-    /// reference).
+    /// screen"; [`crate::analysis::stick_bound`]; `Accel::stick_bound`): `false` runs them all
+    /// (the tests' reference).
     pub stick_bound: bool,
     /// With the stick bound, run the answered waves whose rotation bound may exceed the largest
     /// rotation (module docs, "The stick bound"), so that `max_rotation_rad` is every wave's:
     /// `false` leaves it the largest of the waves run, for what reads only the counts (the work
     /// estimate's screen pilot, whose short lives would run them far more often than a life).
     pub settle_rotation: bool,
-    /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
-    /// wave is drawn and simulated.
+    /// How a screened storm draws its waves (module docs, "Drawing"; `Accel::draw_above_threshold`);
+    /// without the screen every wave is drawn and simulated.
     pub draws: WaveDraws,
     /// The failure limits whose failing wave a life (or storm) records (module docs, "Failure");
     /// `None`: no failure is recorded. Every life runs to its end either way.
