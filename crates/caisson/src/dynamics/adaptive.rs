@@ -125,9 +125,9 @@ enum Verdict {
 }
 
 /// The error estimate of a converged Newmark try, m, and how it grows with the step: as h³ (the
-/// local error), or as h² where a step in which no spring slips is held to the tolerance per
-/// `StepControl::coherent_s` of time (its local error times coherent_s/h: module docs of
-/// [`crate::dynamics`], "Sticking phases' phase lag").
+/// local error), or as h² where a step that ends with every spring in contact and sticking is
+/// held to the tolerance per `StepControl::coherent_s` of time (its local error times
+/// coherent_s/h: module docs of [`crate::dynamics`], "Adaptive stepping").
 #[derive(Debug, Clone, Copy)]
 struct Estimate {
     err_m: f64,
@@ -165,9 +165,9 @@ struct StepControl {
     /// |β − 1/6|, the Zienkiewicz-Xie constant, and B/2, the rotation's lever in the estimate.
     c_err: f64,
     half_b: f64,
-    /// Half the natural period of the horizontal mode, s: a step in which no spring slips, if
-    /// shorter, is held to the tolerance per this much time ([`Estimate`]; 0 if the period is
-    /// not finite).
+    /// Half the natural period of the horizontal mode, s: a step that ends with every spring in
+    /// contact and sticking, if shorter, is held to the tolerance per this much time
+    /// ([`Estimate`]; 0 if the period is not finite).
     coherent_s: f64,
     /// Halvings in a row after Newton failures.
     level: usize,
@@ -357,17 +357,21 @@ impl Simulation {
 
     /// The error estimate of the converged try `c` of length `h`: the local error, m, the
     /// Zienkiewicz-Xie estimate of each row (θ as θ B/2) and the springs' slip positions'
-    /// (`slip_error_m`); where no spring slips at the step's end and the step is shorter than
-    /// `coherent_s`, that times coherent_s/h, the error per unit step ([`Estimate`]).
+    /// (`slip_error_m`); where every spring is in contact and sticks at the step's end and the
+    /// step is shorter than `coherent_s`, that times coherent_s/h, the error per unit step
+    /// ([`Estimate`]).
     #[inline(always)]
     fn error_estimate_m(&self, ctl: &StepControl, h: f64, c: &Converged) -> Estimate {
         let an = self.state.a;
         let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * ctl.half_b];
         let ux_err = ctl.c_err * h * h * da[0];
         let err_m = (ctl.c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, c, ux_err));
-        // No spring slips at the step's end: the all-sticking iterate, or the general one
-        // without a slipping spring.
-        let sticking = self.fast.iterate.is_some() || !self.trial_slips;
+        // Every spring in contact and sticking at the step's end (the all-sticking iterate), or,
+        // without the exact steps, every spring in contact sticking (some lifted): a sticking
+        // phase, whose Newmark error is the phase lag of its vibration. With the exact steps
+        // those phases with springs lifted are stepped exactly (`exact`, "Partial contact"),
+        // and a Newmark step among them is one the exact path declined.
+        let sticking = self.fast.iterate.is_some() || (self.exact.is_none() && !self.trial_slips);
         if sticking && h < ctl.coherent_s {
             Estimate { err_m: err_m * (ctl.coherent_s / h), per_unit_step: true }
         } else {
