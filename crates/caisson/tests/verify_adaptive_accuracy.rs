@@ -466,9 +466,8 @@ fn grazing_toe_meets_converged_fixed_steps() {
 /// held per unit step (results version 24: seven of them `seed-2011` cases whose slip onset
 /// moved with Newmark's phase lag of the sticking vibration, up to 11 % and 16 %; module docs of
 /// `caisson::dynamics`), 3 after: three undamped cases of the consistent profile that rock on
-/// part of their base (1.2 % to 1.5 % in the sliding; one's peak u_x 6.8 %, reached while it
-/// rocks after the slide), where a slip onset or a lift of a toe spring that converged steps
-/// find is stepped over or not.
+/// part of their base (1.5 %, 2.0 % and 12.7 % in the sliding), where a slip onset or a lift of
+/// a toe spring that converged steps find in a short excursion is found or not.
 #[test]
 fn random_family_meets_converged_fixed_steps() {
     use rand::{Rng, SeedableRng};
