@@ -366,12 +366,14 @@ impl Simulation {
         let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * ctl.half_b];
         let ux_err = ctl.c_err * h * h * da[0];
         let err_m = (ctl.c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, c, ux_err));
-        // Every spring in contact and sticking at the step's end (the all-sticking iterate), or,
-        // without the exact steps, every spring in contact sticking (some lifted): a sticking
-        // phase, whose Newmark error is the phase lag of its vibration. With the exact steps
-        // those phases with springs lifted are stepped exactly (`exact`, "Partial contact"),
-        // and a Newmark step among them is one the exact path declined.
-        let sticking = self.fast.iterate.is_some() || (self.exact.is_none() && !self.trial_slips);
+        // A sticking phase, whose Newmark error is the phase lag of its vibration: every spring
+        // in contact and sticking at the step's end (the all-sticking iterate, or the general
+        // one with none slipping and none lifted), or, without located contact (`seed-2011`),
+        // every spring in contact sticking (some lifted). With located contact the phases with
+        // springs lifted are stepped exactly (`exact`, "Partial contact"), and a Newmark step
+        // among them is one the exact path declined. The same rule with the accelerators off.
+        let sticking = self.fast.iterate.is_some()
+            || (!self.trial_slips && (!self.solver.locate_contact || self.trial.iter().all(|r| r.normal_n > 0.0)));
         if sticking && h < ctl.coherent_s {
             Estimate { err_m: err_m * (ctl.coherent_s / h), per_unit_step: true }
         } else {
