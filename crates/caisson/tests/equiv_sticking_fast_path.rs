@@ -22,7 +22,11 @@
 //! steps against its error tolerance, and one estimate within rounding of it can go either way,
 //! which moves that wave's sliding by a few tolerances: since results version 17 (the slip
 //! positions in the estimate) one does, on the fragility example's fourth storm (2.0e-6 m of
-//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 5 tolerances more. So, since
+//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 25 tolerances more: since the
+//! sticking phases' error is held per unit step (the adaptive module docs), a step length that
+//! parts there changes the steps of the rest of the sticking phase, each within its own error per
+//! half period, and the fourth storm's sliding moves by 2.1e-5 m (21 tolerances, 1.5e-4 of its
+//! 0.139 m; measured on the merge of that rule). So, since
 //! results version 24, is every adaptive run: with contact events unlocated (below) a spring that
 //! touches down within a step puts λ |Δu_x| into the error estimate, one more decision that the
 //! Newton tolerance's reach can tip, and then the steps part: measured 16 steps of the examples
@@ -121,7 +125,7 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         // A lifetime or fragility run takes thousands of adaptive steps, each accepted or
         // rejected against the error tolerance (module docs).
         let reach_m = match sc.solver().stepping {
-            Stepping::Adaptive(p) => 5.0 * p.tolerance_m,
+            Stepping::Adaptive(p) => 25.0 * p.tolerance_m,
             _ => 0.0,
         };
         compared += compare(&name, &old, &new, reach_m, &mut largest);
