@@ -305,8 +305,12 @@ pub struct SizeParams {
     /// The widths searched, m (lo < hi).
     pub range_m: (f64, f64),
     pub criteria: Criteria,
-    /// Lives per candidate.
+    /// Lives per candidate (with `auto`, the most a candidate may take).
     pub lives: usize,
+    /// `[size] lives = "auto"`: each candidate's lives to this target precision
+    /// ([`crate::analysis::lifetime::AutoLives`]); absent from the fingerprint when `None`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub auto: Option<crate::analysis::lifetime::AutoLives>,
     /// Width tolerance of the bisection, m.
     pub tolerance_m: f64,
     /// Widths of the design curve's grid (≥ 2, ends included).
@@ -341,6 +345,9 @@ impl SizeParams {
         }
         self.criteria.checked()?;
         count("lives", self.lives, 1, 1_000_000)?;
+        if let Some(a) = self.auto {
+            a.checked()?;
+        }
         count("curve_points", self.curve_points, 2, 100)?;
         interval("tolerance_m", self.tolerance_m, (hi - lo) * 1e-6, hi - lo, true)?;
         self.conventional.checked()?;

@@ -10,8 +10,23 @@
 //! life depends on ([`design_fingerprint`], the checkpoint's header), the work estimate of
 //! [`crate::analysis::work::design`] and the report of [`DesignReport::new`]. The front-ends keep
 //! what is theirs: the checkpoint file, the progress, stopping, the outputs.
+//!
+//! **Lives to a target precision** (`[design] lives = "auto"`, [`AutoLives`]; docs/design.md):
+//! [`Designer::run_auto`] runs lives in batches of [`AUTO_BATCH_LIVES`] in index order and stops
+//! at the first batch boundary k where the rule, read from the report's statistics of lives 0..k
+//! ([`DesignReport::judge`]), is met, or at the budget (`max_lives`, the design's `lives`). A
+//! stopping point depends only on lives 0..k, so threads, resumes and shards find the same one;
+//! shards run fixed ranges, and [`Designer::stopping_point`] applies the rule over the boundaries
+//! of the lives they hold, in order (what `caisson merge` does). The report of lives 0..k carries
+//! the rule's verdict ([`DesignReport::precision`]) and, if the budget ran out first, the
+//! `precision-not-met` warning.
 
-use crate::analysis::lifetime::{run_lives, DesignParams, FailureLimits, LifeFailed, StormCase, StormOutcome};
+use crate::analysis::checks::precision_warning;
+use crate::analysis::lifetime::{
+    auto_boundaries, run_lives, AutoLives, AutoPrecision, DesignParams, FailureLimits, LifeFailed, StormCase,
+    StormOutcome, AUTO_BATCH_LIVES,
+};
+use std::collections::BTreeMap;
 use crate::analysis::site::WaveSetup;
 use crate::analysis::work::{self, WorkEstimate};
 use crate::dynamics::Stepping;
@@ -22,7 +37,8 @@ use std::ops::ControlFlow;
 /// How a design run departs from the scenario's `[design]`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct DesignOptions {
-    /// The number of lives (the CLI's `--lives`, a merge's lives); `None`: `[design] lives`.
+    /// The number of lives (the CLI's `--lives`, a merge's lives): exactly these, `lives =
+    /// "auto"` turned off; `None`: `[design] lives`.
     pub lives: Option<usize>,
     /// Every wave through the dynamic model (no screen), on a scenario made by [`brute_force`].
     pub brute_force: bool,
@@ -51,6 +67,7 @@ impl<'a> Designer<'a> {
         if let Some(n) = options.lives {
             // 1 to 1e7 (checked by the parser, as `[design] lives`).
             design.lives = n;
+            design.auto = None;
         }
         if options.brute_force {
             design.screen = false;
@@ -85,15 +102,121 @@ impl<'a> Designer<'a> {
         run_lives(&self.case, &self.design.life, self.design.seed, indices, on_life)
     }
 
-    /// The report of `lives` (lives 0..N in index order): statistics, the model and the warnings.
+    /// The report of `lives` (lives 0..N in index order): statistics, the model and the warnings;
+    /// with `lives = "auto"` the rule's verdict on them and, if not met, its warning.
     pub fn report(&self, lives: &[StormOutcome]) -> DesignReport {
-        DesignReport::new(&self.design, &self.case, Some(self.waves), lives)
+        let mut r = DesignReport::new(&self.design, &self.case, Some(self.waves), lives);
+        if let Some(auto) = &self.design.auto {
+            let p = r.judge(auto, self.design.lives);
+            r.precision = Some(p);
+            r.warnings.extend(precision_warning(&p, "the design run"));
+        }
+        r
     }
 
-    /// The statistics of `lives` alone ([`DesignReport::statistics`]: no model, no warnings).
+    /// The statistics of `lives` alone ([`DesignReport::statistics`]: no model, no warnings;
+    /// with `lives = "auto"` the rule's verdict).
     pub fn statistics(&self, lives: &[StormOutcome]) -> DesignReport {
         let failure_m = self.failure_limits().sliding_m;
-        DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives)
+        let mut r = DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives);
+        r.precision = self.design.auto.map(|auto| r.judge(&auto, self.design.lives));
+        r
+    }
+
+    /// The rule of `lives = "auto"` on lives 0..n (`lives`, in index order): the verdict of the
+    /// report's statistics ([`DesignReport::judge`]); `None` with a fixed number of lives.
+    pub fn judge(&self, lives: &[StormOutcome]) -> Option<AutoPrecision> {
+        let failure_m = self.failure_limits().sliding_m;
+        let auto = self.design.auto?;
+        let r = DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives);
+        Some(r.judge(&auto, self.design.lives))
+    }
+
+    /// Where `lives = "auto"` stops on the lives `held` (any indices, e.g. the shards' of a
+    /// merge): the first batch boundary k, over the boundaries whose lives 0..k are all held, in
+    /// order, at which the rule is met, or the budget's end. `None` with a fixed number of lives.
+    pub fn stopping_point(&self, held: &BTreeMap<usize, StormOutcome>) -> Option<Stopping> {
+        self.design.auto?;
+        // The lives 0..m held without a gap.
+        let m = held.keys().enumerate().take_while(|(k, &i)| *k == i).count().min(self.design.lives);
+        let prefix: Vec<StormOutcome> = held.values().take(m).copied().collect();
+        for k in auto_boundaries(self.design.lives).take_while(|&k| k <= m) {
+            let p = self.judge(&prefix[..k]).expect("auto");
+            if p.met || k == self.design.lives {
+                return Some(Stopping::At(k, p));
+            }
+        }
+        Some(Stopping::NotReached { held: m, last_boundary: m / AUTO_BATCH_LIVES * AUTO_BATCH_LIVES })
+    }
+
+    /// `lives = "auto"` (module docs): batch after batch, the lives not in `done` run
+    /// ([`Self::run`], `on_life` sees each and may stop the run), until the rule is met on lives
+    /// 0..k or the budget is spent. With a fixed number of lives, the batches run to `lives`
+    /// without the rule.
+    pub fn run_auto(
+        &self,
+        done: &BTreeMap<usize, StormOutcome>,
+        on_life: &(dyn Fn(usize, &StormOutcome) -> ControlFlow<()> + Sync),
+    ) -> Result<AutoRun, LifeFailed> {
+        let mut computed: Vec<(usize, StormOutcome)> = Vec::new();
+        let mut lives: Vec<StormOutcome> = Vec::new();
+        let mut start = 0;
+        for k in auto_boundaries(self.design.lives) {
+            let todo: Vec<usize> = (start..k).filter(|i| !done.contains_key(i)).collect();
+            let ran = self.run(&todo, on_life)?;
+            let stopped = ran.len() < todo.len();
+            let mut ran = ran.into_iter().peekable();
+            for i in start..k {
+                match done.get(&i) {
+                    Some(o) => lives.push(*o),
+                    None => {
+                        if let Some(&(_, o)) = ran.peek().filter(|(j, _)| *j == i) {
+                            lives.push(o);
+                            computed.push(ran.next().expect("peeked"));
+                        }
+                    }
+                }
+            }
+            computed.extend(ran);
+            if stopped {
+                return Ok(AutoRun::Stopped { computed });
+            }
+            start = k;
+            match self.judge(&lives) {
+                Some(p) if p.met || k == self.design.lives => return Ok(AutoRun::Done { lives, computed, precision: Some(p) }),
+                Some(_) => {}
+                None if k == self.design.lives => return Ok(AutoRun::Done { lives, computed, precision: None }),
+                None => {}
+            }
+        }
+        unreachable!("the last boundary is the budget")
+    }
+}
+
+/// Where `lives = "auto"` stops on the lives a merge holds ([`Designer::stopping_point`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stopping {
+    /// At lives 0..k, with the rule's verdict there (met, or the budget's end).
+    At(usize, AutoPrecision),
+    /// Lives 0..`held` are held without a gap and the rule is met at no boundary up to
+    /// `last_boundary`: the lives beyond are needed.
+    NotReached { held: usize, last_boundary: usize },
+}
+
+/// What [`Designer::run_auto`] ran.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AutoRun {
+    /// Lives 0..k (those of `done` and those run), the lives this call ran (index, outcome) and
+    /// the rule's verdict at k.
+    Done { lives: Vec<StormOutcome>, computed: Vec<(usize, StormOutcome)>, precision: Option<AutoPrecision> },
+    /// `on_life` stopped the run: the lives it ran before it stopped.
+    Stopped { computed: Vec<(usize, StormOutcome)> },
+}
+
+impl Designer<'_> {
+    /// The rule's target, if `lives = "auto"`.
+    pub fn auto(&self) -> Option<AutoLives> {
+        self.design.auto
     }
 }
 
