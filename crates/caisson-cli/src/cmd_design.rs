@@ -229,20 +229,21 @@ fn open_run_checkpoint(
     }
 }
 
-/// Refuse to report `done` lives of the lives `asked` (a number, or words) that did not all
-/// finish: interrupted (Ctrl-C) or stopped by `--stop-after`, the finished lives `kept` there.
-/// Called only when some are missing, or with `asked` the whole number of lives.
-fn refuse_incomplete(done: usize, asked: &str, kept: &str) -> Result<()> {
-    if asked.parse::<usize>().is_ok_and(|n| done >= n) {
+/// Refuse to report `done` of `asked` lives (`None`: of those `lives = "auto"` needs, not known
+/// yet) that did not all finish: interrupted (Ctrl-C) or stopped by `--stop-after`, the finished
+/// lives `kept` there.
+fn refuse_incomplete(done: usize, asked: Option<usize>, kept: &str) -> Result<()> {
+    if asked.is_some_and(|n| done >= n) {
         return Ok(());
     }
+    let of = asked.map_or("lives (lives = \"auto\": before its stopping point)".to_string(), |n| format!("of {n} lives"));
     if crate::interrupt::requested() {
         return Err(anyhow::Error::new(crate::Interrupted(format!(
-            "interrupted (Ctrl-C) after {done} of {asked} lives; the finished lives are in {kept}: run again with --resume to complete"
+            "interrupted (Ctrl-C) after {done} {of}; the finished lives are in {kept}: run again with --resume to complete"
         ))));
     }
     anyhow::bail!(
-        "stopped after {done} of {asked} lives (--stop-after); the finished lives are in {kept}; run again with --resume to complete"
+        "stopped after {done} {of} (--stop-after); the finished lives are in {kept}; run again with --resume to complete"
     )
 }
 
@@ -364,8 +365,8 @@ pub fn run(args: DesignArgs) -> Result<()> {
         // Lives to a target precision: lives 0..k are reported (a resumed checkpoint may hold
         // lives beyond k: kept in it, not reported).
         (true, Some(_)) => {}
-        (true, None) => refuse_incomplete(done.len(), "the (\"auto\")", &kept())?,
-        (false, _) => refuse_incomplete(done.len(), &format!("{}", range.len()), &kept())?,
+        (true, None) => refuse_incomplete(done.len(), None, &kept())?,
+        (false, _) => refuse_incomplete(done.len(), Some(range.len()), &kept())?,
     }
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);

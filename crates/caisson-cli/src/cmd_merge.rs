@@ -164,6 +164,9 @@ pub fn run(args: MergeArgs) -> Result<()> {
         None => read_shards(&shards, &fingerprint, n, &args)?,
         Some(_) => auto_lives(&run, read_auto_shards(&shards, &fingerprint, n, &args)?, &shards, &args)?,
     };
+    // The header of one run: lives 0..N, or with `lives = "auto"` the budget's range 0..max_lives
+    // (holding lives 0..k, as the run's checkpoint does).
+    let header_range = 0..n;
     let n = lives.len();
 
     // The merged checkpoint: the header and the lines of one run of lives 0..N.
@@ -172,7 +175,7 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
     // The checkpoint and the outputs of report_lives: one set.
     let _set = crate::output::OutSet::open(&args.out);
-    write_merged_checkpoint(&cp_path, &Header::new(fingerprint, &(0..n), brute_force).line(), &lives)?;
+    write_merged_checkpoint(&cp_path, &Header::new(fingerprint, &header_range, brute_force).line(), &lives)?;
     if !args.json {
         crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
     }
