@@ -262,6 +262,86 @@ mod tests {
         assert_ne!(brute.fingerprint(), run.fingerprint());
     }
 
+    /// The rule of `lives = "auto"` by hand (t = 0.05, floor 10⁻³), 7 verdicts:
+    /// - E|S| 0.4 m, SE 0.02 m: 0.02/0.4 = 0.05 ≤ 0.05, met; SE 0.0201: 0.05025, not;
+    /// - 400 failures of 4000 (p = 0.1): √((1 − p)/k) = √(0.9/400) = 0.047434 ≤ 0.05, met; 300 of
+    ///   3000: √(0.9/300) = 0.054772, not;
+    /// - no failure of 3000: Wilson upper z²/(n + z²) = 3.841459/3003.841459 = 1.27885e-3 ≥ 10⁻³,
+    ///   not; of 4000: 3.841459/4003.841459 = 9.59443e-4 < 10⁻³, met (relative error null);
+    /// - every life at 0 (E|S| = 0, SE = 0): relative error 0, met.
+    #[test]
+    fn the_rule_of_auto_lives_by_hand() {
+        let auto = AutoLives { target_relative_error: 0.05 };
+        let p = auto.judge((0.4, 0.02), 400, 4000, 10_000);
+        assert!(p.expected_sliding_met && p.failure_met && p.met, "{p:?}");
+        assert!((p.expected_sliding_relative_error - 0.05).abs() < 1e-15);
+        assert!((p.failure_relative_error.unwrap() - 0.047_434_164).abs() < 1e-9, "{p:?}");
+        assert!(!auto.judge((0.4, 0.0201), 400, 4000, 10_000).expected_sliding_met);
+        let p = auto.judge((0.4, 0.02), 300, 3000, 10_000);
+        assert!((p.failure_relative_error.unwrap() - 0.054_772_256).abs() < 1e-9 && !p.failure_met && !p.met, "{p:?}");
+        let p = auto.judge((0.4, 0.02), 0, 3000, 10_000);
+        assert_eq!(p.failure_relative_error, None);
+        assert!((p.failure_probability_upper - 1.278_85e-3).abs() < 1e-8 && !p.failure_met, "{p:?}");
+        let p = auto.judge((0.4, 0.02), 0, 4000, 10_000);
+        assert!((p.failure_probability_upper - 9.594_43e-4).abs() < 1e-9 && p.failure_met && p.met, "{p:?}");
+        let p = auto.judge((0.0, 0.0), 0, 4000, 10_000);
+        assert_eq!(p.expected_sliding_relative_error, 0.0);
+        assert!(p.met, "{p:?}");
+        assert_eq!((p.lives, p.max_lives, p.batch_lives), (4000, 10_000, AUTO_BATCH_LIVES));
+        assert!(AutoLives { target_relative_error: 0.0 }.checked().is_err());
+        assert!(AutoLives { target_relative_error: 0.51 }.checked().is_err());
+        assert_eq!(auto_boundaries(1200).collect::<Vec<_>>(), [500, 1000, 1200]);
+    }
+
+    /// Where "auto" stops on lives made by hand (t = 0.1; the small design's limit B/4 = 5 m):
+    /// the surviving lives |S| alternately 0.5 and 1.5 m, a failed life (by sliding, 6 m) every
+    /// 10th life of 0..500 (50) and every 10th plus lives 501, 503, ..., 519 (60) of 500..1000.
+    /// At 500: √((1 − 0.1)/50) = 0.1342 > 0.1, not met. At 1000: k = 110, p = 0.11,
+    /// √(0.89/110) = 0.08995 ≤ 0.1; E|S| (failed at 5 m) has the relative error 0.03 < 0.1 (the
+    /// capped values' SE over their mean, checked below by hand from the values): met, the run
+    /// stops at 1000. With life 700 missing the held lives end at 700 and no boundary up to 500
+    /// meets it; with a budget of 700 the rule stops at 700 (k = 50 + 20 + 10 = 80, p = 0.1143,
+    /// √(0.8857/80) = 0.1052 > 0.1), not met, and the report warns.
+    #[test]
+    fn auto_stops_at_the_first_boundary_where_the_rule_is_met() {
+        let sc = small_design();
+        let mut run = Designer::new(&sc, "test", DesignOptions::default()).unwrap();
+        run.design.auto = Some(AutoLives { target_relative_error: 0.1 });
+        run.design.lives = 2000;
+        assert_eq!(run.failure_limits().sliding_m, 5.0);
+        let life = |i: usize| {
+            let failed = i % 10 == 0 || ((500..520).contains(&i) && i % 2 == 1);
+            let s = if failed { 6.0 } else if i % 2 == 0 { 0.5 } else { 1.5 };
+            StormOutcome { sliding_m: s, failed_by_sliding: u64::from(failed), ..StormOutcome::default() }
+        };
+        let held: BTreeMap<usize, StormOutcome> = (0..1500).map(|i| (i, life(i))).collect();
+        let lives: Vec<StormOutcome> = held.values().copied().collect();
+        let p500 = run.judge(&lives[..500]).unwrap();
+        assert!((p500.failure_relative_error.unwrap() - (0.9f64 / 50.0).sqrt()).abs() < 1e-12 && !p500.met, "{p500:?}");
+        let Some(Stopping::At(k, p)) = run.stopping_point(&held) else { panic!("a stopping point") };
+        assert_eq!(k, 1000);
+        assert!((p.failure_relative_error.unwrap() - (0.89f64 / 110.0).sqrt()).abs() < 1e-12 && p.met, "{p:?}");
+        // E|S| by hand from the capped values of lives 0..1000.
+        let capped: Vec<f64> = lives[..1000].iter().map(|l| if l.failed() { 5.0 } else { l.sliding_m }).collect();
+        let mean = capped.iter().sum::<f64>() / 1000.0;
+        let var = capped.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / 999.0;
+        let rel = (var / 1000.0).sqrt() / mean;
+        assert!((p.expected_sliding_relative_error - rel).abs() < 1e-12 && rel < 0.1, "{rel} {p:?}");
+        // The report of lives 0..k says the same.
+        assert_eq!(run.statistics(&lives[..1000]).precision, Some(p));
+        let mut gap = held.clone();
+        gap.remove(&700);
+        assert_eq!(run.stopping_point(&gap), Some(Stopping::NotReached { held: 700, last_boundary: 500 }));
+        run.design.lives = 700;
+        let Some(Stopping::At(k, p)) = run.stopping_point(&held) else { panic!("the budget's end") };
+        assert_eq!((k, p.met, p.max_lives), (700, false, 700));
+        assert!((p.failure_relative_error.unwrap() - ((1.0 - 80.0 / 700.0) / 80.0f64).sqrt()).abs() < 1e-12);
+        let r = run.report(&lives[..700]);
+        assert!(r.warnings.iter().any(|w| w.code == "precision-not-met"), "{:?}", r.warnings);
+        run.design.auto = None;
+        assert_eq!(run.stopping_point(&held), None);
+    }
+
     /// A scenario without `[design]` is refused naming the front-end.
     #[test]
     fn a_scenario_without_a_design_is_refused_naming_who_asked() {
