@@ -236,7 +236,8 @@ fn refuse_incomplete(done: usize, asked: Option<usize>, kept: &str) -> Result<()
     if asked.is_some_and(|n| done >= n) {
         return Ok(());
     }
-    let of = asked.map_or("lives (lives = \"auto\": before its stopping point)".to_string(), |n| format!("of {n} lives"));
+    let of =
+        asked.map_or("lives (lives = \"auto\": before its stopping point)".to_string(), |n| format!("of {n} lives"));
     if crate::interrupt::requested() {
         return Err(anyhow::Error::new(crate::Interrupted(format!(
             "interrupted (Ctrl-C) after {done} {of}; the finished lives are in {kept}: run again with --resume to complete"
@@ -590,7 +591,10 @@ pub(crate) fn precision_text(p: &caisson::analysis::lifetime::AutoPrecision) -> 
         None => "- (no failure)".into(),
     };
     let floor = if p.failure_met && !p.failure_relative_error.is_some_and(|r| r <= p.target_relative_error) {
-        format!(" (P(failure) below {:.0e}: its 95 % upper bound {:.2e})", p.failure_probability_floor, p.failure_probability_upper)
+        format!(
+            " (P(failure) below {:.0e}: its 95 % upper bound {:.2e})",
+            p.failure_probability_floor, p.failure_probability_upper
+        )
     } else {
         String::new()
     };

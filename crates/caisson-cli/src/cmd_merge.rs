@@ -221,7 +221,13 @@ fn read_auto_shards(
         held.push(holds(&cp.lives));
         for (i, o) in cp.lives {
             if i >= n {
-                return Err(merge_error(MergeError::Beyond { shard: k, life: i, lives: n }, shards, (&ranges, &held), n, args));
+                return Err(merge_error(
+                    MergeError::Beyond { shard: k, life: i, lives: n },
+                    shards,
+                    (&ranges, &held),
+                    n,
+                    args,
+                ));
             }
             if let Some(&first) = owner.get(&i) {
                 return Err(merge_error(
@@ -266,7 +272,8 @@ fn auto_lives(
             Ok(held.into_values().take(k).collect())
         }
         Stopping::NotReached { held: m, last_boundary } => {
-            let next = held.keys().find(|&&i| i >= m).map_or(String::new(), |&i| format!(" (the next life held is {i})"));
+            let next =
+                held.keys().find(|&&i| i >= m).map_or(String::new(), |&i| format!(" (the next life held is {i})"));
             Err(input_err(format!(
                 "lives = \"auto\": the {} shards hold lives 0..{m} without a gap{next}, and the target relative error {} is met at no batch boundary up to {last_boundary}: the shards do not reach the stopping point; run more lives from {m} (`caisson design {file} --life-range {m}..END --out DIR`) and merge that shard too",
                 shards.len(),

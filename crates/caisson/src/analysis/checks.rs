@@ -702,7 +702,12 @@ pub fn precision_warning(p: &AutoPrecision, what: &str) -> Option<Warning> {
         return None;
     }
     let failure = p.failure_relative_error.map_or_else(
-        || format!("no failure, its 95 % upper bound {:.2e} not below {:.0e}", p.failure_probability_upper, p.failure_probability_floor),
+        || {
+            format!(
+                "no failure, its 95 % upper bound {:.2e} not below {:.0e}",
+                p.failure_probability_upper, p.failure_probability_floor
+            )
+        },
         |r| format!("{r:.3}"),
     );
     Some(Warning::new(

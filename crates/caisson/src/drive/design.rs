@@ -26,12 +26,12 @@ use crate::analysis::lifetime::{
     auto_boundaries, run_lives, AutoLives, AutoPrecision, DesignParams, FailureLimits, LifeFailed, StormCase,
     StormOutcome, AUTO_BATCH_LIVES,
 };
-use std::collections::BTreeMap;
 use crate::analysis::site::WaveSetup;
 use crate::analysis::work::{self, WorkEstimate};
 use crate::dynamics::Stepping;
 use crate::report::design::{design_fingerprint, DesignReport};
 use crate::scenario::{Scenario, ScenarioError};
+use std::collections::BTreeMap;
 use std::ops::ControlFlow;
 
 /// How a design run departs from the scenario's `[design]`.
@@ -183,7 +183,9 @@ impl<'a> Designer<'a> {
             }
             start = k;
             match self.judge(&lives) {
-                Some(p) if p.met || k == self.design.lives => return Ok(AutoRun::Done { lives, computed, precision: Some(p) }),
+                Some(p) if p.met || k == self.design.lives => {
+                    return Ok(AutoRun::Done { lives, computed, precision: Some(p) })
+                }
                 Some(_) => {}
                 None if k == self.design.lives => return Ok(AutoRun::Done { lives, computed, precision: None }),
                 None => {}
@@ -311,7 +313,13 @@ mod tests {
         assert_eq!(run.failure_limits().sliding_m, 5.0);
         let life = |i: usize| {
             let failed = i % 10 == 0 || ((500..520).contains(&i) && i % 2 == 1);
-            let s = if failed { 6.0 } else if i % 2 == 0 { 0.5 } else { 1.5 };
+            let s = if failed {
+                6.0
+            } else if i % 2 == 0 {
+                0.5
+            } else {
+                1.5
+            };
             StormOutcome { sliding_m: s, failed_by_sliding: u64::from(failed), ..StormOutcome::default() }
         };
         let held: BTreeMap<usize, StormOutcome> = (0..1500).map(|i| (i, life(i))).collect();

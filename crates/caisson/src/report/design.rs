@@ -5,8 +5,8 @@ use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warni
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
 use crate::analysis::estimate::{normal_ci95, percentile_ci95, Estimate};
 use crate::analysis::lifetime::{
-    capped_statistics, life_statistics, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
-    ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
+    capped_statistics, life_statistics, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, FailureLimits,
+    HeelPressureExceedance, ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
 };
 use crate::analysis::site::WaveSetup;
 use crate::analysis::sizing::failure_modes;

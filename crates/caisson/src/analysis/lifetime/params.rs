@@ -533,9 +533,11 @@ impl AutoLives {
         let n = lives.max(1) as f64;
         let p = failures as f64 / n;
         let failure_relative_error = (failures > 0).then(|| (p * (1.0 - p) / n).sqrt() / p);
-        let upper = if lives == 0 { 1.0 } else { crate::analysis::estimate::wilson_ci95(failures as u64, lives as u64)[1] };
+        let upper =
+            if lives == 0 { 1.0 } else { crate::analysis::estimate::wilson_ci95(failures as u64, lives as u64)[1] };
         let expected_sliding_met = lives > 0 && es <= t;
-        let failure_met = lives > 0 && (failure_relative_error.is_some_and(|r| r <= t) || upper < FAILURE_PROBABILITY_FLOOR);
+        let failure_met =
+            lives > 0 && (failure_relative_error.is_some_and(|r| r <= t) || upper < FAILURE_PROBABILITY_FLOOR);
         AutoPrecision {
             target_relative_error: t,
             lives,
