@@ -100,12 +100,34 @@ pub struct DesignTable {
     pub period_spectral_width: Option<f64>,
 }
 
-/// A `lives` key as written: a whole number or a word (`"auto"`).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(untagged)]
+/// A `lives` key as written: a whole number or a word (`"auto"`); any other type is refused
+/// with the words of what is allowed.
+#[derive(Debug, Clone)]
 pub enum LivesKey {
     Count(i64),
     Word(String),
+}
+
+impl<'de> Deserialize<'de> for LivesKey {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = LivesKey;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a whole number (or \"auto\": lives to `target_relative_error`)")
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<LivesKey, E> {
+                Ok(LivesKey::Count(v))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<LivesKey, E> {
+                Ok(LivesKey::Count(i64::try_from(v).unwrap_or(i64::MAX)))
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<LivesKey, E> {
+                Ok(LivesKey::Word(v.to_string()))
+            }
+        }
+        d.deserialize_any(V)
+    }
 }
 
 /// The lives of `table`'s `lives`, `target_relative_error` and `max_lives` keys: a fixed count
