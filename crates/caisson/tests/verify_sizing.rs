@@ -118,6 +118,7 @@ fn sizing_through_the_engine_returns_the_closed_form_width() {
                 rigid_block: point(exact_m(b)),
                 heel_pressure_exceedance: Default::default(),
                 life_counts: LifeCounts::default(),
+                precision: None,
             })
         })
         .unwrap();

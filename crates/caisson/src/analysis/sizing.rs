@@ -146,9 +146,31 @@ pub struct Candidate {
     /// What the life warnings of the dynamic model's lives need
     /// ([`super::checks::candidate_warnings`]).
     pub life_counts: LifeCounts,
+    /// `[size] lives = "auto"`: the rule's verdict on this candidate's lives (how many it took,
+    /// the relative errors, met or not); absent with a fixed number of lives.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub precision: Option<crate::analysis::lifetime::AutoPrecision>,
 }
 
 impl Candidate {
+    /// The rule of `lives = "auto"` ([`crate::analysis::lifetime::AutoLives::judge`]) on this
+    /// candidate's statistics: the dynamic model's capped E|S| with its standard error and its
+    /// failed lives, as the candidate reports them — the one place the sizing reads them for the
+    /// rule. `max_lives`: the budget, reported beside.
+    pub fn judge(
+        &self,
+        auto: &crate::analysis::lifetime::AutoLives,
+        max_lives: usize,
+    ) -> crate::analysis::lifetime::AutoPrecision {
+        let d = &self.dynamic;
+        auto.judge(
+            (d.expected_sliding_m, d.expected_sliding_standard_error_m),
+            self.life_counts.failed_lives,
+            self.lives,
+            max_lives,
+        )
+    }
+
     pub fn point(&self, m: SizedModel) -> &ModelPoint {
         match m {
             SizedModel::Dynamic => &self.dynamic,
@@ -243,6 +265,7 @@ pub fn candidate(
         rigid_block: model_point(&rigid, &rigid_modes, failure.sliding_m, criteria, counts.rigid_block_impulsive),
         heel_pressure_exceedance: HeelPressureExceedance::of(lives, heel_pa.0, heel_pa.1),
         life_counts: counts,
+        precision: None,
     }
 }
 
@@ -607,6 +630,7 @@ mod tests {
                     rigid_block: point(3.0 / (b * b)),
                     heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
+                    precision: None,
                 })
             })
             .unwrap();
@@ -646,6 +670,7 @@ mod tests {
                     rigid_block: point(k / (b * b)),
                     heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
+                    precision: None,
                 })
             }
         };
