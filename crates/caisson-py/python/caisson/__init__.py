@@ -650,7 +650,11 @@ class Design:
         return DesignStatistics.of(json.loads(_core.design_statistics(self._scenario._core, cols, life_sorted.tolist())))
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
-        """All lives at once: (:class:`DesignStatistics`, lives DataFrame)."""
+        """All lives at once: (:class:`DesignStatistics`, lives DataFrame); with ``[design] lives
+        = "auto"`` the lives :meth:`simulate_auto` runs."""
+        if self.auto is not None:
+            lives = self.simulate_auto(threads=threads, progress=progress)
+            return self.statistics(lives), lives
         lives = self.simulate_lives(threads=threads, progress=progress)
         return self.statistics(lives), lives
 
