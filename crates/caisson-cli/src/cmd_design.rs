@@ -406,6 +406,9 @@ fn compute_lives(
     Ok(results)
 }
 
+/// Lives run, by index.
+type Lives = Vec<(usize, StormOutcome)>;
+
 /// `lives = "auto"` ([`Designer::run_auto`]) on `threads` workers, the lives `done` reused, each
 /// life run appended to the checkpoint as [`compute_lives`] does; returns the lives run and where
 /// the rule stopped (lives 0..k), `None` if the run was stopped first.
@@ -416,7 +419,7 @@ fn compute_auto(
     pb: &indicatif::ProgressBar,
     threads: usize,
     stop_after: usize,
-) -> Result<(Vec<(usize, StormOutcome)>, Option<usize>)> {
+) -> Result<(Lives, Option<usize>)> {
     let finished_now = AtomicUsize::new(0);
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
     let on_life = on_life_hook(slot, pb, &finished_now, &write_error, stop_after);

@@ -57,7 +57,7 @@ fn auto_gives_the_same_lives_on_any_threads_resume_and_shards() {
     let p = &j["precision"];
     let k = p["lives"].as_u64().unwrap() as usize;
     assert_eq!(j["lives"].as_u64(), Some(k as u64));
-    assert!(k % 500 == 0 && k > 500 && k < 4000, "a stop at a batch boundary past the first: {k}");
+    assert!(k.is_multiple_of(500) && k > 500 && k < 4000, "a stop at a batch boundary past the first: {k}");
     assert_eq!(
         (p["met"].as_bool(), p["max_lives"].as_u64(), p["batch_lives"].as_u64()),
         (Some(true), Some(4000), Some(500))

@@ -312,10 +312,10 @@ mod tests {
         run.design.lives = 2000;
         assert_eq!(run.failure_limits().sliding_m, 5.0);
         let life = |i: usize| {
-            let failed = i % 10 == 0 || ((500..520).contains(&i) && i % 2 == 1);
+            let failed = i.is_multiple_of(10) || ((500..520).contains(&i) && !i.is_multiple_of(2));
             let s = if failed {
                 6.0
-            } else if i % 2 == 0 {
+            } else if i.is_multiple_of(2) {
                 0.5
             } else {
                 1.5
