@@ -24,6 +24,14 @@
 //! a life at or beyond N; and lives 0..N that are in no shard (the first missing range, how many
 //! are missing, and the shard to complete if one was run for them).
 //!
+//! **`lives = "auto"`** (docs/design.md, "Lives to a target precision"): a shard cannot know
+//! where the run stops, so it runs its fixed range; the merge reads every shard's lives (any
+//! indices below the budget `max_lives`, each in one shard), applies the rule over the batch
+//! boundaries of the lives 0..m held without a gap, in order ([`Designer::stopping_point`]), and
+//! reports lives 0..k as one run would (saying how many lives beyond k it did not use; the
+//! merged checkpoint's header is the run's, 0..max_lives). Shards that reach no stopping point
+//! are refused, naming the lives held and the range to run next. `--lives N` merges exactly N.
+//!
 //! A progress bar (on a terminal) counts the lives read. Ctrl-C stops at once: the outputs are
 //! written to temporary files and renamed into place whole (`output.rs`), and the lock of the
 //! output checkpoint is removed.
