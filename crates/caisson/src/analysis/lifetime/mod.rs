@@ -232,9 +232,11 @@ mod wave;
 pub use life::{run_lives, simulate_life, LifeFailed};
 pub use outcome::{LifeColumn, StormOutcome, LIFE_COLUMNS};
 pub use params::{
-    failure_rotation_rad, DesignParams, ErrorModel, ErrorScope, Errors, FailureLimits, LifeParams, StormCase,
-    StormDistribution, StormInput, WaveDraws, MAX_FAILURE_ROTATION_RAD, MAX_LIFE_YEARS, MAX_LIVES, MAX_STORM_HEIGHT_M,
-    STANDARD_THRESHOLDS_M, STORM_WAVE_WORDS_LOG2,
+    auto_boundaries, failure_rotation_rad, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, Errors,
+    FailureLimits, LifeParams, StormCase, StormDistribution, StormInput, WaveDraws, AUTO_BATCH_LIVES,
+    DEFAULT_AUTO_MAX_LIVES, DEFAULT_TARGET_RELATIVE_ERROR, FAILURE_PROBABILITY_FLOOR, MAX_FAILURE_ROTATION_RAD,
+    MAX_LIFE_YEARS, MAX_LIVES, MAX_STORM_HEIGHT_M, MAX_TARGET_RELATIVE_ERROR, STANDARD_THRESHOLDS_M,
+    STORM_WAVE_WORDS_LOG2,
 };
 pub use screen::PSI_IMPULSE;
 pub use statistics::{

@@ -322,6 +322,7 @@ fn life_constructors_name_what_they_refuse() {
         failure_rotation_rad: MAX_FAILURE_ROTATION_RAD,
         allowable_heel_pressure_pa: 500e3,
         failure_heel_pressure_pa: Some(1e7),
+        auto: None,
     };
     assert_eq!(design.thresholds_m, [0.03, 0.05, 0.1, 0.3, 1.0, 3.0]);
     assert_eq!(DesignParams::thresholds_m(&[0.2, -0.1]).unwrap_err().0, 1);
