@@ -124,7 +124,7 @@ pub struct DesignArgs {
     /// Worker threads (0: one per core). Results do not depend on it.
     #[arg(long, default_value_t = 0, value_parser = threads)]
     pub threads: usize,
-    /// Override `[design] lives` (1 to 10000000).
+    /// Override `[design] lives` (1 to 10000000): exactly N lives, `lives = "auto"` off.
     #[arg(long, value_parser = lives)]
     pub lives: Option<usize>,
     /// Run only lives START..END (END exclusive) as a shard: its checkpoint and lives.csv in

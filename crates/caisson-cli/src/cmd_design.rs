@@ -54,7 +54,7 @@ use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::lifetime::{LifeColumn, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::stratified::TwoPhase;
-use caisson::drive::design::{DesignOptions, Designer, Sample};
+use caisson::drive::design::{AutoRun, DesignOptions, Designer, Sample};
 use caisson::report::design::DesignReport;
 use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
@@ -303,20 +303,23 @@ fn open_run_checkpoint(
     }
 }
 
-/// Refuse to report `done` of `asked` lives: interrupted (Ctrl-C) or stopped by `--stop-after`,
-/// the finished lives `kept` there.
-fn refuse_incomplete(done: usize, asked: usize, kept: &str) -> Result<()> {
-    if done < asked && crate::interrupt::requested() {
+/// Refuse to report `done` of `asked` lives (`None`: of those `lives = "auto"` needs, not known
+/// yet) that did not all finish: interrupted (Ctrl-C) or stopped by `--stop-after`, the finished
+/// lives `kept` there.
+fn refuse_incomplete(done: usize, asked: Option<usize>, kept: &str) -> Result<()> {
+    if asked.is_some_and(|n| done >= n) {
+        return Ok(());
+    }
+    let of =
+        asked.map_or("lives (lives = \"auto\": before its stopping point)".to_string(), |n| format!("of {n} lives"));
+    if crate::interrupt::requested() {
         return Err(anyhow::Error::new(crate::Interrupted(format!(
-            "interrupted (Ctrl-C) after {done} of {asked} lives; the finished lives are in {kept}: run again with --resume to complete"
+            "interrupted (Ctrl-C) after {done} {of}; the finished lives are in {kept}: run again with --resume to complete"
         ))));
     }
-    if done < asked {
-        anyhow::bail!(
-            "stopped after {done} of {asked} lives (--stop-after); the finished lives are in {kept}; run again with --resume to complete"
-        );
-    }
-    Ok(())
+    anyhow::bail!(
+        "stopped after {done} {of} (--stop-after); the finished lives are in {kept}; run again with --resume to complete"
+    )
 }
 
 /// The outputs of a shard (`--life-range`): its `lives.csv` in `dir` (the checkpoint is kept),
@@ -406,6 +409,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
         }
     }
     let todo: Vec<usize> = wanted.iter().copied().filter(|i| !done.contains_key(i)).collect();
+    // `lives = "auto"` of a whole run (a shard runs its fixed range: `caisson merge` applies the
+    // rule): batches until the target is met, lives 0..max_lives at most.
+    let auto = run.auto().is_some() && !shard;
     crate::work::say(note);
     let pb = progress(wanted.len() as u64, "lives", "");
     pb.set_position(done.len() as u64);
@@ -422,12 +428,16 @@ pub fn run(args: DesignArgs) -> Result<()> {
                 opened
             })
         });
-        let computed = compute_lives(&run, &todo, slot.as_ref(), &pb, args.threads, stop_after);
+        let computed = if auto {
+            compute_auto(&run, &done, slot.as_ref(), &pb, args.threads, stop_after)
+        } else {
+            compute_lives(&run, &todo, slot.as_ref(), &pb, args.threads, stop_after).map(|r| (r, None))
+        };
         (computed, opener.map_or(Ok(()), |o| o.join().expect("the checkpoint's opening thread panicked")))
     });
     // The checkpoint's own error first: the run stopped because of it.
     opened?;
-    let results = computed?;
+    let (results, stop) = computed?;
     let lines = match slot {
         Some(slot) => {
             let mut slot = slot.into_inner().unwrap_or_else(|e| e.into_inner());
@@ -439,7 +449,13 @@ pub fn run(args: DesignArgs) -> Result<()> {
     };
     done.extend(results);
     let kept = || checkpoint.as_ref().map_or("no checkpoint".into(), |p| p.display().to_string());
-    refuse_incomplete(done.len(), wanted.len(), &kept())?;
+    match (auto, stop) {
+        // Lives to a target precision: lives 0..k are reported (a resumed checkpoint may hold
+        // lives beyond k: kept in it, not reported).
+        (true, Some(_)) => {}
+        (true, None) => refuse_incomplete(done.len(), None, &kept())?,
+        (false, _) => refuse_incomplete(done.len(), Some(wanted.len()), &kept())?,
+    }
     outside.append(&mut outside_extra);
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);
@@ -450,7 +466,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
         let dir = args.out.as_deref().expect("--life-range requires --out");
         return write_shard(dir, &done, &range, &args.scenario, checkpoint.as_deref(), &kept());
     }
-    let lives: Vec<StormOutcome> = done.into_values().collect();
+    let lives: Vec<StormOutcome> = done.into_values().take(stop.unwrap_or(usize::MAX)).collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
     report_lives(&run, &lives, sample.as_ref(), args.json, args.out.as_deref(), &keep)
 }
@@ -468,7 +484,55 @@ fn compute_lives(
 ) -> Result<Vec<(usize, StormOutcome)>> {
     let finished_now = AtomicUsize::new(0);
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
-    let on_life = |i: usize, o: &StormOutcome| {
+    let on_life = on_life_hook(slot, pb, &finished_now, &write_error, stop_after);
+    let results = with_threads(threads, || run.run(todo, &on_life))?.context("the design run failed")?;
+    pb.finish_and_clear();
+    drop(on_life);
+    if let Some(e) = write_error.into_inner().expect("error slot") {
+        return Err(e);
+    }
+    Ok(results)
+}
+
+/// Lives run, by index.
+type Lives = Vec<(usize, StormOutcome)>;
+
+/// `lives = "auto"` ([`Designer::run_auto`]) on `threads` workers, the lives `done` reused, each
+/// life run appended to the checkpoint as [`compute_lives`] does; returns the lives run and where
+/// the rule stopped (lives 0..k), `None` if the run was stopped first.
+fn compute_auto(
+    run: &Designer<'_>,
+    done: &BTreeMap<usize, StormOutcome>,
+    slot: Option<&Mutex<Slot>>,
+    pb: &indicatif::ProgressBar,
+    threads: usize,
+    stop_after: usize,
+) -> Result<(Lives, Option<usize>)> {
+    let finished_now = AtomicUsize::new(0);
+    let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
+    let on_life = on_life_hook(slot, pb, &finished_now, &write_error, stop_after);
+    let ran = with_threads(threads, || run.run_auto(done, &on_life))?.context("the design run failed")?;
+    pb.finish_and_clear();
+    drop(on_life);
+    if let Some(e) = write_error.into_inner().expect("error slot") {
+        return Err(e);
+    }
+    Ok(match ran {
+        AutoRun::Done { lives, computed, .. } => (computed, Some(lives.len())),
+        AutoRun::Stopped { computed } => (computed, None),
+    })
+}
+
+/// What every finished life does: its checkpoint line (or the error that stops the run), the
+/// progress bar, and the stop after `stop_after` lives of this process or at Ctrl-C.
+fn on_life_hook<'a>(
+    slot: Option<&'a Mutex<Slot>>,
+    pb: &'a indicatif::ProgressBar,
+    finished_now: &'a AtomicUsize,
+    write_error: &'a Mutex<Option<anyhow::Error>>,
+    stop_after: usize,
+) -> impl Fn(usize, &StormOutcome) -> ControlFlow<()> + Sync + 'a {
+    move |i: usize, o: &StormOutcome| {
         if let Some(slot) = slot {
             match slot.lock().expect("checkpoint lock").append(i, o) {
                 Ok(true) => {}
@@ -485,13 +549,7 @@ fn compute_lives(
         } else {
             ControlFlow::Continue(())
         }
-    };
-    let results = with_threads(threads, || run.run(todo, &on_life))?.context("the design run failed")?;
-    pb.finish_and_clear();
-    if let Some(e) = write_error.into_inner().expect("error slot") {
-        return Err(e);
     }
-    Ok(results)
 }
 
 /// The checkpoint rewritten with the lives in index order, whatever the order they finished in:
@@ -617,6 +675,9 @@ fn design_header(r: &DesignReport, t: &mut String) {
             per.join(", ")
         );
     }
+    if let Some(p) = &r.precision {
+        let _ = writeln!(t, "{}", precision_text(p));
+    }
     if let Some(c) = &r.climate {
         let _ = writeln!(t, "{}", c.describe());
     }
@@ -630,6 +691,32 @@ fn design_header(r: &DesignReport, t: &mut String) {
         t,
         "every life runs to its end; a failed life enters E|S|, the percentiles and P(|S| > s) at the sliding limit, and E|S| as simulated (Shimosako & Takahashi 1999) with its whole life"
     );
+}
+
+/// The verdict of `lives = "auto"` in words: the lives it took, the target, the relative errors
+/// reached and whether the target was met.
+pub(crate) fn precision_text(p: &caisson::analysis::lifetime::AutoPrecision) -> String {
+    let failure = match p.failure_relative_error {
+        Some(r) => format!("{r:.3}"),
+        None => "- (no failure)".into(),
+    };
+    let floor = if p.failure_met && !p.failure_relative_error.is_some_and(|r| r <= p.target_relative_error) {
+        format!(
+            " (P(failure) below {:.0e}: its 95 % upper bound {:.2e})",
+            p.failure_probability_floor, p.failure_probability_upper
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "lives to a target precision: {} lives (batches of {}, at most {}); relative standard error of E|S| {:.3}, of P(failure) {failure}{floor}; target {}: {}",
+        p.lives,
+        p.batch_lives,
+        p.max_lives,
+        p.expected_sliding_relative_error,
+        p.target_relative_error,
+        if p.met { "met" } else { "NOT met (the budget ran out first)" }
+    )
 }
 
 /// The dynamic model beside the rigid block: E|S|, percentiles, exceedance and failure.

@@ -24,6 +24,14 @@
 //! a life at or beyond N; and lives 0..N that are in no shard (the first missing range, how many
 //! are missing, and the shard to complete if one was run for them).
 //!
+//! **`lives = "auto"`** (docs/design.md, "Lives to a target precision"): a shard cannot know
+//! where the run stops, so it runs its fixed range; the merge reads every shard's lives (any
+//! indices below the budget `max_lives`, each in one shard), applies the rule over the batch
+//! boundaries of the lives 0..m held without a gap, in order ([`Designer::stopping_point`]), and
+//! reports lives 0..k as one run would (saying how many lives beyond k it did not use; the
+//! merged checkpoint's header is the run's, 0..max_lives). Shards that reach no stopping point
+//! are refused, naming the lives held and the range to run next. `--lives N` merges exactly N.
+//!
 //! A progress bar (on a terminal) counts the lives read. Ctrl-C stops at once: the outputs are
 //! written to temporary files and renamed into place whole (`output.rs`), and the lock of the
 //! output checkpoint is removed.
@@ -164,7 +172,15 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let sample = crate::output::with_threads(0, || run.sample(0..n))?;
     let indices = run.to_simulate(0..n, sample.as_ref());
     let wanted = sample.as_ref().map(|_| indices.as_slice());
-    let lives = read_shards(&shards, &fingerprint, n, wanted, &args)?;
+    let lives = match run.auto() {
+        None => read_shards(&shards, &fingerprint, n, wanted, &args)?,
+        Some(_) => auto_lives(&run, read_auto_shards(&shards, &fingerprint, n, &args)?, &shards, &args)?,
+    };
+    // The header of one run: lives 0..N, or with `lives = "auto"` the budget's range 0..max_lives
+    // (holding lives 0..k, as the run's checkpoint does).
+    let header_range = 0..n;
+    // The lives merged: 0..k (a stratified run: its sample of 0..N).
+    let n = if sample.is_some() { n } else { lives.len() };
 
     // The merged checkpoint: the header and the lines of one run of lives 0..N.
     ensure_dir(&args.out)?;
@@ -172,12 +188,113 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
     // The checkpoint and the outputs of report_lives: one set.
     let _set = crate::output::OutSet::open(&args.out);
-    let header = Header::new(fingerprint, &(0..n), brute_force).line();
+    let header = Header::new(fingerprint, &header_range, brute_force).line();
     write_merged_checkpoint(&cp_path, &header, indices.iter().copied().zip(&lives))?;
     if !args.json {
         crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
     }
     report_lives(&run, &lives, sample.as_ref(), args.json, Some(&args.out), &[])
+}
+
+/// Every shard's lives (each life from one shard only), for `lives = "auto"`: the stopping point
+/// is not known before they are read, so lives at any index up to the budget `n` are taken and
+/// gaps are allowed (the rule reads the lives 0..k held without a gap).
+fn read_auto_shards(
+    shards: &[Shard],
+    fingerprint: &str,
+    n: usize,
+    args: &MergeArgs,
+) -> Result<std::collections::BTreeMap<usize, StormOutcome>> {
+    let file = args.scenario.display().to_string();
+    let mut all: std::collections::BTreeMap<usize, StormOutcome> = std::collections::BTreeMap::new();
+    let mut owner: std::collections::BTreeMap<usize, usize> = std::collections::BTreeMap::new();
+    let mut held: Vec<String> = Vec::with_capacity(shards.len());
+    let mut ranges: Vec<Range<usize>> = Vec::with_capacity(shards.len());
+    let pb = progress(n as u64, "reading the shards", "lives");
+    for (k, s) in shards.iter().enumerate() {
+        let reader = Reader {
+            who: s.name(),
+            this: format!("{file} gives"),
+            again: "run that shard again (or leave it out)".into(),
+            line_fix:
+                "remove that line (and any after it) and complete the shard with --resume, or run that shard again"
+                    .into(),
+        };
+        let cp = read_checkpoint(&s.checkpoint, &reader, &|_| fingerprint.to_owned(), &|| pb.inc(1))?;
+        if cp.torn_bytes > 0 {
+            return Err(input_err(format!(
+                "{}: its checkpoint {} ends in a line cut short ({} bytes: the run stopped while writing it): complete the shard first (`caisson design {file} --life-range {} --resume --out {}` drops that line)",
+                s.name(),
+                s.checkpoint.display(),
+                cp.torn_bytes,
+                text(&cp.header.range()),
+                s.arg.display()
+            )));
+        }
+        ranges.push(cp.header.range());
+        held.push(holds(&cp.lives));
+        for (i, o) in cp.lives {
+            if i >= n {
+                return Err(merge_error(
+                    MergeError::Beyond { shard: k, life: i, lives: n },
+                    shards,
+                    (&ranges, &held),
+                    n,
+                    args,
+                ));
+            }
+            if let Some(&first) = owner.get(&i) {
+                return Err(merge_error(
+                    MergeError::Overlap { life: i, first, second: k },
+                    shards,
+                    (&ranges, &held),
+                    n,
+                    args,
+                ));
+            }
+            owner.insert(i, k);
+            all.insert(i, o);
+        }
+    }
+    pb.finish_and_clear();
+    Ok(all)
+}
+
+/// The lives where `lives = "auto"` stops on the lives the shards hold
+/// ([`Designer::stopping_point`](caisson::drive::design::Designer::stopping_point): the rule over
+/// the batch boundaries in order), or the refusal that names the lives still needed.
+fn auto_lives(
+    run: &caisson::drive::design::Designer<'_>,
+    held: std::collections::BTreeMap<usize, StormOutcome>,
+    shards: &[Shard],
+    args: &MergeArgs,
+) -> Result<Vec<StormOutcome>> {
+    use caisson::drive::design::Stopping;
+    let file = args.scenario.display();
+    match run.stopping_point(&held).expect("lives = \"auto\"") {
+        Stopping::At(k, p) => {
+            let beyond = held.range(k..).count();
+            if !args.json {
+                let met = if p.met { "met" } else { "not met: the budget ran out first" };
+                let unused = if beyond > 0 { format!("; {beyond} lives beyond it not used") } else { String::new() };
+                crate::sayln!(
+                    "lives = \"auto\": the target relative error {} is {met} at {k} lives (batches of {}){unused}",
+                    p.target_relative_error,
+                    p.batch_lives
+                );
+            }
+            Ok(held.into_values().take(k).collect())
+        }
+        Stopping::NotReached { held: m, last_boundary } => {
+            let next =
+                held.keys().find(|&&i| i >= m).map_or(String::new(), |&i| format!(" (the next life held is {i})"));
+            Err(input_err(format!(
+                "lives = \"auto\": the {} shards hold lives 0..{m} without a gap{next}, and the target relative error {} is met at no batch boundary up to {last_boundary}: the shards do not reach the stopping point; run more lives from {m} (`caisson design {file} --life-range {m}..END --out DIR`) and merge that shard too",
+                shards.len(),
+                run.auto().map_or(0.0, |a| a.target_relative_error)
+            )))
+        }
+    }
 }
 
 /// Each shard given once, none still running, all run with or all without --brute-force (which

@@ -139,12 +139,22 @@ fn alternative(path: &Path, sc: &Scenario, threads: usize) -> Result<Alternative
         let pb = progress(design.lives as u64, "lives", "");
         let indices: Vec<usize> = (0..design.lives).collect();
         let on_life = |_: usize, _: &StormOutcome| crate::interrupt::tick(&pb);
-        let lives = with_threads(threads, || run.run(&indices, &on_life))?.context("the design run failed")?;
+        let interrupted = || anyhow::Error::new(crate::Interrupted("interrupted (Ctrl-C); nothing was written".into()));
+        let lives: Vec<StormOutcome> = if run.auto().is_some() {
+            // `lives = "auto"`: the lives to the target, as `caisson design` runs them.
+            let done = std::collections::BTreeMap::new();
+            match with_threads(threads, || run.run_auto(&done, &on_life))?.context("the design run failed")? {
+                caisson::drive::design::AutoRun::Done { lives, .. } => lives,
+                caisson::drive::design::AutoRun::Stopped { .. } => return Err(interrupted()),
+            }
+        } else {
+            let lives = with_threads(threads, || run.run(&indices, &on_life))?.context("the design run failed")?;
+            if lives.len() < design.lives {
+                return Err(interrupted());
+            }
+            lives.into_iter().map(|(_, o)| o).collect()
+        };
         pb.finish_and_clear();
-        if lives.len() < design.lives {
-            return Err(anyhow::Error::new(crate::Interrupted("interrupted (Ctrl-C); nothing was written".into())));
-        }
-        let lives: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
         let report = run.report(&lives);
         alt.design = Some(DesignPart { report, lives, params: design.clone() });
     }

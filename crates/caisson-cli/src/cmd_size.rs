@@ -377,12 +377,19 @@ fn size_text(r: &SizeReport) -> String {
     if let Some(f) = c.failure_probability {
         crit.push(format!("P(failure) ≤ {f}"));
     }
+    let lives = match r.target_relative_error {
+        Some(target) => format!(
+            "lives per width to a target relative error {target} of E|S| and P(failure) (lives = \"auto\": batches of {}, at most {})",
+            caisson::analysis::lifetime::AUTO_BATCH_LIVES,
+            r.lives_per_candidate
+        ),
+        None => format!("{} lives per width", r.lives_per_candidate),
+    };
     let _ = writeln!(
         t,
-        "criterion over a life of {} years: {}; {} lives per width (seed {}, the same lives at every width)",
+        "criterion over a life of {} years: {}; {lives} (seed {}, the same lives at every width)",
         r.life_years,
         crit.join(" and "),
-        r.lives_per_candidate,
         r.seed
     );
     if let Some(c) = &r.climate {
@@ -399,6 +406,11 @@ fn size_text(r: &SizeReport) -> String {
         "each estimate with its 95 % interval (± its half-width, or (low-high)), to the digits the interval supports"
     );
     candidate_table(r, exceed, &mut t);
+    for k in &r.candidates {
+        if let Some(p) = &k.precision {
+            let _ = writeln!(t, "B = {:.2} m: {}", k.width_m, crate::cmd_design::precision_text(p));
+        }
+    }
     let at = r.dynamic.width_m().and_then(|w| r.candidates.iter().find(|k| k.width_m == w)).or(r.candidates.last());
     if let Some(k) = at {
         let (d, b) = (&k.dynamic.impulsive, &k.rigid_block.impulsive);

@@ -32,15 +32,15 @@ pub const CAMPAIGN: Advice = Advice {
 };
 
 pub const DESIGN: Advice = Advice {
-    steps: "lower --lives (or `[design] lives`, or the lives of --life-range), `[design] life_years` or `[design] storm_duration_h`, or raise `[solver] dt_max_s` (with --brute-force, `[solver] dt_s`)",
-    waves: "lower --lives (or `[design] lives`, or the lives of --life-range), `[design] life_years` or `[design] storm_duration_h`",
-    memory: "lower --lives (or `[design] lives`, or the lives of --life-range)",
+    steps: "lower --lives (or `[design] lives` or, with lives = \"auto\", `[design] max_lives`, or the lives of --life-range), `[design] life_years` or `[design] storm_duration_h`, or raise `[solver] dt_max_s` (with --brute-force, `[solver] dt_s`)",
+    waves: "lower --lives (or `[design] lives` or, with lives = \"auto\", `[design] max_lives`, or the lives of --life-range), `[design] life_years` or `[design] storm_duration_h`",
+    memory: "lower --lives (or `[design] lives` or, with lives = \"auto\", `[design] max_lives`, or the lives of --life-range)",
     disk: "",
 };
 
 pub const SIZE: Advice = Advice {
-    steps: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
-    waves: "lower `[size] lives`, `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    steps: "lower `[size] lives` (with \"auto\", `[size] max_lives`), `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
+    waves: "lower `[size] lives` (with \"auto\", `[size] max_lives`), `[size] curve_points` or `[design] life_years`, raise `[size] tolerance_m` or narrow `[size] range_m`",
     memory: "lower `[size] lives`",
     disk: "",
 };

@@ -258,7 +258,13 @@ fn values_of_the_wrong_kind_are_explained() {
             "springs = 10.0",
             &["`[foundation] springs` must be a whole number, got 10.0"],
         ),
-        ("design", &design, "lives = 5000", "lives = 2.5", &["`[design] lives` must be a whole number, got 2.5"]),
+        (
+            "design",
+            &design,
+            "lives = 5000",
+            "lives = 2.5",
+            &["`[design] lives` must be a whole number (or \"auto\": lives to `target_relative_error`), got 2.5"],
+        ),
         (
             "fragility",
             &fragility,

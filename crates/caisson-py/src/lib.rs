@@ -195,6 +195,12 @@ impl CoreScenario {
     fn design_lives(&self) -> Option<usize> {
         self.sc.design.as_ref().map(|d| d.lives)
     }
+
+    /// `[design] lives = "auto"`: its target relative error (`design_lives` is then the budget).
+    #[getter]
+    fn design_target_relative_error(&self) -> Option<f64> {
+        self.sc.design.as_ref().and_then(|d| d.auto).map(|a| a.target_relative_error)
+    }
     /// The typed parameters as the library holds them (SI), JSON text (for inspection only).
     fn structure_json(&self) -> PyResult<String> {
         serde_json::to_string(self.sc.structure()).map_err(|e| PyRuntimeError::new_err(e.to_string()))
@@ -968,6 +974,51 @@ fn design_lives<'py>(
     Ok(d)
 }
 
+/// `[design] lives = "auto"`: lives 0..k, k where the rule stops (the first batch boundary
+/// where the target is met, or the budget `max_lives`; [`Designer::run_auto`]), as columns of
+/// [`design_lives`]. Estimated and budgeted on the budget's lives.
+#[pyfunction]
+#[pyo3(signature = (sc, threads=1, progress=None))]
+fn design_auto<'py>(
+    py: Python<'py>,
+    sc: &CoreScenario,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let run = designer(py, &sc.sc, None)?;
+    if run.auto().is_none() {
+        return Err(PyValueError::new_err(
+            "the scenario's `[design] lives` is a number: simulate_auto needs `lives = \"auto\"` (simulate_lives runs a number of lives)",
+        ));
+    }
+    let total = run.design.lives;
+    let (e, advice, command) = estimate_of(py, &sc.sc, "design", Some(total), true, None)?;
+    check_work(py, command, &e, advice)?;
+    let done = std::collections::BTreeMap::new();
+    let (ran, stop) = drive_keep(py, threads, total, progress, |ctl| {
+        run.run_auto(&done, &|_, _| {
+            if ctl.cancelled() {
+                return ControlFlow::Break(());
+            }
+            ctl.count();
+            ControlFlow::Continue(())
+        })
+    })?;
+    let lives = match ran {
+        Some(r) => match r.map_err(|e| run_error(format!("{e}: {}", e.source)))? {
+            caisson::drive::design::AutoRun::Done { lives, .. } => lives.into_iter().enumerate().collect(),
+            caisson::drive::design::AutoRun::Stopped { computed } => computed,
+        },
+        None => Vec::new(),
+    };
+    let d = lives_columns(py, &lives)?;
+    if let Some(e) = stop {
+        let _ = e.value(py).setattr("lives", &d);
+        return Err(e);
+    }
+    Ok(d)
+}
+
 /// The columns of `lives` (sorted by index): `life`, then [`LIFE_COLUMNS`].
 fn lives_columns<'py>(py: Python<'py>, lives: &[(usize, StormOutcome)]) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -1007,7 +1058,7 @@ fn design_statistics(
     life: Vec<usize>,
     lives: Option<usize>,
 ) -> PyResult<String> {
-    let run = designer(py, &sc.sc, lives)?;
+    let run = designer(py, &sc.sc, None)?;
     let mut rows: Vec<serde_json::Map<String, serde_json::Value>> = Vec::new();
     for (name, column) in LIFE_COLUMNS {
         let item = columns
@@ -1045,7 +1096,28 @@ fn design_statistics(
             lives.len()
         )));
     }
-    let n = run.design.lives;
+    if run.auto().is_some() {
+        // `lives = "auto"`: the rule over the batch boundaries of the lives given, in order, as
+        // `caisson merge` applies it (gaps beyond the stopping point do not matter).
+        let given = life.len();
+        let held: std::collections::BTreeMap<usize, StormOutcome> = life.into_iter().zip(lives).collect();
+        if held.len() < given {
+            return Err(PyValueError::new_err("a life appears more than once"));
+        }
+        return match run.stopping_point(&held) {
+            Some(caisson::drive::design::Stopping::At(k, _)) => {
+                let lives: Vec<StormOutcome> = held.into_values().take(k).collect();
+                report_json(&run.report(&lives), "design")
+            }
+            Some(caisson::drive::design::Stopping::NotReached { held: m, last_boundary }) => Err(PyValueError::new_err(format!(
+                "lives = \"auto\": the lives given hold lives 0..{m} without a gap, and the target relative error {} is met at no batch boundary up to {last_boundary}: they do not reach the stopping point; simulate more lives from {m} (`Design.simulate_lives(range({m}, END))`) and add them",
+                run.auto().map_or(0.0, |a| a.target_relative_error)
+            ))),
+            None => Err(PyValueError::new_err("not lives = \"auto\"")),
+        };
+    }
+    // A stratified design's pool: the Design's lives.
+    let n = lives.unwrap_or(run.design.lives);
     let sample = py.detach(|| run.sample(0..n));
     let lives = match &sample {
         Some(s) => sampled(life, lives, n, &s.pool.indices())?,
@@ -1402,6 +1474,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(surf_zone_heights, m)?)?;
     m.add_function(wrap_pyfunction!(campaign, m)?)?;
     m.add_function(wrap_pyfunction!(design_lives, m)?)?;
+    m.add_function(wrap_pyfunction!(design_auto, m)?)?;
     m.add_function(wrap_pyfunction!(design_statistics, m)?)?;
     m.add_function(wrap_pyfunction!(design_sample, m)?)?;
     m.add_function(wrap_pyfunction!(life_columns, m)?)?;

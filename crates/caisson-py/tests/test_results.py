@@ -65,7 +65,7 @@ def test_a_whole_float_is_the_whole_number_it_equals():
     assert caisson.Design(sc.replace(design={"lives": 10.0})).lives == 10
     with pytest.raises(caisson.ScenarioError) as err:
         sc.replace(design={"lives": 10.5})
-    assert str(err.value) == "replace(design={'lives': 10.5}): `[design] lives` must be a whole number, got 10.5"
+    assert str(err.value) == "replace(design={'lives': 10.5}): `[design] lives` must be a whole number (or \"auto\": lives to `target_relative_error`), got 10.5"
     # A real-valued key reads a whole float exactly (22.0 written as 22).
     assert sc.replace(caisson={"width_m": 22.0}).to_dict()["caisson"]["width_m"] == 22
 

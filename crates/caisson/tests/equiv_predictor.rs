@@ -19,8 +19,6 @@
 
 mod support;
 
-use support::signature::{signature, train_values, Signature};
-
 use caisson::dynamics::{Accel, Predictor, Simulation, SolverParams, Stepping};
 use caisson::loads::history::WaveTrain;
 use caisson::loads::regime::RegimeChoice;
@@ -30,37 +28,27 @@ use std::collections::BTreeMap;
 type Results = BTreeMap<String, Vec<f64>>;
 
 fn with_predictor(sc: &Scenario, predictor: Predictor) -> Scenario {
-    sc.clone().with_solver(SolverParams { accel: Accel { predictor, ..sc.solver().accel }, ..sc.solver() }).unwrap()
+    support::signature::with_accel(sc, |a| Accel { predictor, ..a })
 }
 
 /// What an example computes (as in `regress_golden.rs`, without the time histories): a `[load]` run,
-/// realization 0 of the wave trains, the first 3 lives of a design, 2 storms of a fragility run;
+/// realization 0 of the wave trains, the first `GOLDEN_LIVES` (14) lives of a design, 2 storms of a fragility run;
 /// and the Newton iterations where the driver reports them.
 fn results(sc: &Scenario) -> (Results, Option<u64>) {
-    let mut out = Results::new();
-    let mut iterations = None;
-    match signature(sc, false) {
-        Signature::Load(r) => {
-            let r = r.summary;
-            out.insert("permanent_sliding_m".into(), vec![r.permanent_sliding_m]);
-            out.insert("max_horizontal_displacement_m".into(), vec![r.max_horizontal_displacement_m]);
-            out.insert("max_horizontal_reaction_n".into(), vec![r.max_horizontal_reaction_n]);
-            out.insert("final_rotation_rad".into(), vec![r.final_rotation_rad]);
-            iterations = Some(r.solver.newton_iterations);
-        }
-        Signature::Lives(lives) => {
-            out.insert("life_sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
-            out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|o| o.max_storm_sliding_m).collect());
-        }
-        Signature::Storms(storms) => {
-            out.insert("storm_sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
-        }
-        Signature::Train(r, _) => {
-            train_values(&mut out, &r);
-            iterations = Some(r.solver.newton_iterations);
-        }
-    }
-    (out, iterations)
+    let (all, stats) = support::signature::values(sc);
+    let keys = [
+        "permanent_sliding_m",
+        "max_horizontal_displacement_m",
+        "max_horizontal_reaction_n",
+        "final_rotation_rad",
+        "life_sliding_m",
+        "life_max_storm_sliding_m",
+        "storm_sliding_m",
+        "wave_sliding_m",
+        "wave_max_horizontal_reaction_n",
+        "sliding_m",
+    ];
+    (support::signature::pick(all, &keys), stats.map(|s| s.newton_iterations))
 }
 
 #[test]

@@ -22,7 +22,11 @@
 //! steps against its error tolerance, and one estimate within rounding of it can go either way,
 //! which moves that wave's sliding by a few tolerances: since results version 17 (the slip
 //! positions in the estimate) one does, on the fragility example's fourth storm (2.0e-6 m of
-//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 5 tolerances more. So, since
+//! 0.77 m at its tolerance of 1e-6 m); those runs are held within 25 tolerances more: since the
+//! sticking phases' error is held per unit step (the adaptive module docs), a step length that
+//! parts there changes the steps of the rest of the sticking phase, each within its own error per
+//! half period, and the fourth storm's sliding moves by 2.1e-5 m (21 tolerances, 1.5e-4 of its
+//! 0.139 m; measured on the merge of that rule). So, since
 //! results version 24, is every adaptive run: with contact events unlocated (below) a spring that
 //! touches down within a step puts λ |Δu_x| into the error estimate, one more decision that the
 //! Newton tolerance's reach can tip, and then the steps part: measured 16 steps of the examples
@@ -39,8 +43,6 @@
 //! way; this file compares that.
 
 mod support;
-
-use support::signature::{signature, train_values, Signature};
 
 use caisson::dynamics::{Accel, SolverParams, Stepping};
 use caisson::scenario::Scenario;
@@ -62,44 +64,30 @@ fn with_fast_path(sc: &Scenario, on: bool) -> Scenario {
 }
 
 /// What an example computes (as in `equiv_predictor.rs`): a `[load]` run, realization 0 of the wave
-/// trains, the first 3 lives of a design, 2 storms of a fragility run.
+/// trains, the first `GOLDEN_LIVES` (14) lives of a design, 2 storms of a fragility run.
 fn results(sc: &Scenario) -> (Results, Work) {
-    let mut out = Results::new();
-    let mut work = None;
-    match signature(sc, false) {
-        Signature::Load(r) => {
-            let r = r.summary;
-            for (key, v) in [
-                ("permanent_sliding_m", r.permanent_sliding_m),
-                ("max_horizontal_displacement_m", r.max_horizontal_displacement_m),
-                ("max_rotation_rad", r.max_rotation_rad),
-                ("max_horizontal_reaction_n", r.max_horizontal_reaction_n),
-                ("max_spring_normal_n", r.max_spring_normal_n),
-                ("min_spring_normal_n", r.min_spring_normal_n),
-                ("max_spring_shear_n", r.max_spring_shear_n),
-                ("final_displacement_m", r.final_displacement_m),
-                ("final_rotation_rad", r.final_rotation_rad),
-                ("max_dashpot_moment_nm", r.max_dashpot_moment_nm),
-                ("slip_events", r.slip_events as f64),
-            ] {
-                out.insert(key.into(), vec![v]);
-            }
-            work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
-        }
-        Signature::Lives(lives) => {
-            out.insert("life_sliding_m".into(), lives.iter().map(|o| o.sliding_m).collect());
-            out.insert("life_max_storm_sliding_m".into(), lives.iter().map(|o| o.max_storm_sliding_m).collect());
-            out.insert("life_simulated_waves".into(), lives.iter().map(|o| o.simulated_waves as f64).collect());
-        }
-        Signature::Storms(storms) => {
-            out.insert("storm_sliding_m".into(), storms.iter().map(|o| o.sliding_m).collect());
-        }
-        Signature::Train(r, _) => {
-            train_values(&mut out, &r);
-            work = Some((r.solver.steps, r.solver.newton_iterations, r.solver.sticking_iterates));
-        }
-    }
-    (out, work)
+    let (all, stats) = support::signature::values(sc);
+    let keys = [
+        "permanent_sliding_m",
+        "max_horizontal_displacement_m",
+        "max_rotation_rad",
+        "max_horizontal_reaction_n",
+        "max_spring_normal_n",
+        "min_spring_normal_n",
+        "max_spring_shear_n",
+        "final_displacement_m",
+        "final_rotation_rad",
+        "max_dashpot_moment_nm",
+        "slip_events",
+        "life_sliding_m",
+        "life_max_storm_sliding_m",
+        "life_simulated_waves",
+        "storm_sliding_m",
+        "wave_sliding_m",
+        "wave_max_horizontal_reaction_n",
+        "sliding_m",
+    ];
+    (support::signature::pick(all, &keys), stats.map(|s| (s.steps, s.newton_iterations, s.sticking_iterates)))
 }
 
 /// The largest difference of `new` from `old` relative to the largest |value| of each quantity,
@@ -137,7 +125,7 @@ fn the_fast_path_moves_no_example_beyond_rounding() {
         // A lifetime or fragility run takes thousands of adaptive steps, each accepted or
         // rejected against the error tolerance (module docs).
         let reach_m = match sc.solver().stepping {
-            Stepping::Adaptive(p) => 5.0 * p.tolerance_m,
+            Stepping::Adaptive(p) => 25.0 * p.tolerance_m,
             _ => 0.0,
         };
         compared += compare(&name, &old, &new, reach_m, &mut largest);

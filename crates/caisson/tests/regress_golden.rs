@@ -5,8 +5,9 @@
 //!   F_x, R_x) and the permanent sliding;
 //! * a wave example (`[waves]`, no `[design]` / `[fragility]`): realization 0 of its wave trains
 //!   with its time history sampled at 41 instants and the sliding of every wave (both models);
-//! * a design example: its first 3 lives (both models, wave counts, the impulsive waves' sliding
-//!   and the largest heel pressure);
+//! * a design example: its first 14 lives (`support::signature::GOLDEN_LIVES`: both models, wave
+//!   counts, the impulsive waves' sliding and the largest heel pressure), enough that every
+//!   accelerator acts on them ([`the_golden_lives_exercise_every_accelerator`]);
 //! * the fragility example: 2 storms at its lowest and highest heights.
 //!
 //! Tolerance: |a − b| ≤ 1e-6 · max |series| (+ 1e-12 for all-zero series). The same build gives
@@ -106,4 +107,81 @@ fn every_example_matches_its_golden_results() {
         checked += 1;
     }
     assert_eq!(checked, 15, "examples checked: {examples:?}");
+}
+
+/// What the golden lives of each design example (`support::signature::GOLDEN_LIVES`) do, so that
+/// every accelerator (`caisson::dynamics::Accel`, ARCHITECTURE.md "Accelerators") acts on them:
+/// waves reach the dynamic model (simulated > 0), the screen skips some (screened > 0), a life
+/// slides (and rocks), and each accelerator that moves a number when off does move one: the
+/// predictor, the all-sticking fast path and, under the `consistent` profile, the exact sticking
+/// steps (some golden value changes bit; the exact steps are the only user of the cached
+/// propagators), the stick bound (more waves simulated without it) and the drawing above the
+/// threshold (other waves drawn: the simulated counts or the sliding change); the stick bound
+/// where the waves are pulsating (it leaves impulsive ones to the engine). The screen's load
+/// bound and the contact runs claim the same bits, so nothing shows them off; they act on every
+/// screened storm and every step (the lifetime unit test
+/// `the_bisected_screen_grid_is_every_nodes_grid` asserts that the load bound cuts nodes).
+#[test]
+fn the_golden_lives_exercise_every_accelerator() {
+    use caisson::dynamics::{Accel, Predictor, SolverParams};
+    let run = |sc: &Scenario, accel: Accel| -> Vec<caisson::analysis::lifetime::StormOutcome> {
+        let sc = sc.clone().with_solver(SolverParams { accel, ..sc.solver() }).unwrap();
+        match support::signature::signature(&sc, false) {
+            Signature::Lives(lives) => lives,
+            _ => unreachable!("a design example"),
+        }
+    };
+    let values = |lives: &[caisson::analysis::lifetime::StormOutcome]| -> Vec<u64> {
+        lives
+            .iter()
+            .flat_map(|o| {
+                [o.sliding_m, o.max_rotation_rad, o.max_heel_pressure_kpa, o.simulated_waves as f64].map(f64::to_bits)
+            })
+            .collect()
+    };
+    let (mut designs, mut pulsating) = (0, 0);
+    for path in support::example_paths() {
+        let sc = caisson::scenario::load(&path).unwrap();
+        if sc.design.is_none() {
+            continue;
+        }
+        let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+        let on = sc.solver().accel;
+        let lives = run(&sc, on);
+        assert_eq!(lives.len(), support::signature::GOLDEN_LIVES, "{name}");
+        let total =
+            |f: fn(&caisson::analysis::lifetime::StormOutcome) -> u64, lives: &[_]| lives.iter().map(f).sum::<u64>();
+        let (simulated, screened) = (total(|o| o.simulated_waves, &lives), total(|o| o.screened_waves, &lives));
+        let (sliding, rocking) =
+            (lives.iter().filter(|o| o.sliding_m != 0.0).count(), total(|o| o.rocking_waves, &lives));
+        println!(
+            "{name}: {simulated} waves simulated, {screened} screened, {sliding} lives slide, {rocking} rocking waves"
+        );
+        assert!(simulated > 0 && screened > 0, "{name}: the dynamic model and the screen must be reached");
+        assert!(sliding > 0 && rocking > 0, "{name}: a golden life must slide and rock");
+        let mut moves = vec![
+            ("predictor", Accel { predictor: Predictor::LastDisplacement, ..on }),
+            ("sticking_fast_path", Accel { sticking_fast_path: false, ..on }),
+            ("draw_above_threshold", Accel { draw_above_threshold: false, ..on }),
+        ];
+        if on.exact_sticking {
+            moves.push(("exact_sticking", Accel { exact_sticking: false, ..on }));
+        }
+        for (switch, accel) in moves {
+            assert_ne!(values(&run(&sc, accel)), values(&lives), "{name}: {switch} off moves no golden number");
+        }
+        let without = run(&sc, Accel { stick_bound: false, ..on });
+        let answered = total(|o| o.simulated_waves, &without) - simulated;
+        let impulsive = total(|o| o.impulsive_waves, &lives);
+        println!("{name}: the stick bound answered {answered} waves ({impulsive} of {simulated} simulated impulsive)");
+        // It leaves impulsive waves to the engine: under breaking_site_15m's breaking waves nearly
+        // every wave the screen lets through is impulsive (1237 of 1239), and it answers none.
+        if impulsive == 0 {
+            assert!(answered > 0, "{name}: the stick bound answered no golden wave");
+            pulsating += 1;
+        }
+        designs += 1;
+    }
+    assert_eq!(designs, 4, "design examples checked");
+    assert_eq!(pulsating, 3, "design examples whose stick bound was checked");
 }

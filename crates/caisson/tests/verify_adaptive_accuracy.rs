@@ -336,7 +336,12 @@ fn accuracy_case(name: &str) -> Scenario {
 /// 1e-3 to 1e-5 s, 4.59 to 4.97 mm against the converged 4.9646 mm (up to −7.5 %; the issue's
 /// 4.722 mm). With λ |Δu_x| in the slip positions' estimate (`slip_error_m`), measured 4.895 to
 /// 4.983 mm: within max(1 µm, 1.5 %) on all six (1.4 % at 5e-4 s, the others within 0.4 %),
-/// and the peak u_x within 0.2 %.
+/// and the peak u_x within 0.2 %. With the sticking steps held per unit step (results version
+/// 24): −1.34 %, −1.31 %, +0.23 %, −1.34 %, −0.11 %, −0.06 % (first steps 1e-3 to 1e-5 s), the
+/// peak within 0.18 %: the issue's 1 % is not met. The runs 1.3 % off step over a slip of two
+/// toe springs at 0.186 s, 1 ms long while the caisson stands on five springs, that fixed steps
+/// of dt0/16 and dt0/32 find (its margin dips below zero between two step ends that are both
+/// sticking), and slide back less after it.
 #[test]
 fn pari_ten_springs_meets_converged_fixed_steps() {
     let s = accuracy_case("pari_ten_springs.toml");
@@ -358,19 +363,21 @@ fn pari_ten_springs_meets_converged_fixed_steps() {
 
 /// Issue 34's first held-out case (`tests/data/accuracy/pari_two_springs.toml`: diagonal mass,
 /// 2 springs, μ_s = 0.6, μ_d = 0.4, a 0.06 s triangle with uplift) is a knife's edge of the
-/// model, not of the stepper: its seaward spring lifts, the caisson stands on the shoreward spring
-/// alone, and the spring's elastic displacement u_x − s peaks 7.5e-11 m (2e-6 of it) above its
-/// static limit e_s = μ_s W'/K_x = 32.96 µm. Reaching e_s releases (μ_s − μ_d) N at once, so the
-/// converged sliding is discontinuous in the load: 13.19 mm at the case's 9.1266 kN and at
-/// 9.12655 kN, 12.73 mm at 9.1265 kN (−1.1e-5 of it). Fixed average-acceleration steps keep
-/// the amplitude of the rocking (the scheme conserves the energy of a linear system whatever the
-/// step), so every fixed step from 1e-4 to 3e-6 s finds the slip; an adaptive step that varies
-/// errs in amplitude too: 1.5e-7 m by the peak at the default tolerance, 1.8e-10 m at 1e-12 m, both
-/// more than the 7.5e-11 m margin, and it lands on the other side of the edge (12.77 mm,
-/// −3.2 %). Not a missed event (the cubic Hermite of each step stays below e_s), and no local
-/// error control at a tolerance of nanometres can decide it. Held here: the edge itself (the
-/// converged results on either side of it), and the adaptive result within 1 % of the converged
-/// one just below the edge, which it follows.
+/// model: its seaward spring lifts, the caisson stands on the shoreward spring alone, and the
+/// spring's elastic displacement u_x − s peaks 7.5e-11 m (2e-6 of it) above its static limit
+/// e_s = μ_s W'/K_x = 32.96 µm. Reaching e_s releases (μ_s − μ_d) N at once, so the converged
+/// sliding is discontinuous in the load: 13.19 mm at the case's 9.1266 kN and at 9.12655 kN,
+/// 12.73 mm at 9.1265 kN (−1.1e-5 of it). The converged answer is well defined (fixed steps of
+/// 1e-4 to 1.6e-6 s within 0.06 % of one another: average acceleration keeps the amplitude of
+/// the rocking whatever the step) but ill-conditioned: a method meets it only with u_x − s
+/// within 7.5e-11 m at the peak, 1/70 of the default tolerance. Measured (results version 24
+/// with the sticking steps held per unit step): adaptive at tolerances 5e-9 to 5e-12 m, 12.72
+/// to 12.73 mm, the branch below the edge, converging to the other side only beyond that; at
+/// the default tolerance adaptive follows the branch below the edge up to 9.13 kN (+4e-4) and
+/// the branch above from 9.135 kN (+9.4e-4: an error of about 3e-8 m in u_x − s at the peak;
+/// from 9.15 kN before, +2.6e-3). Held here: the edge itself (the converged results on either
+/// side of it), and the adaptive result within 1 % of the converged one on either branch a
+/// little further from the edge (−1.1e-5 below, +1.5e-3 above), which it follows.
 #[test]
 fn pari_two_springs_is_a_knife_edge_of_the_model() {
     let s = accuracy_case("pari_two_springs.toml");
@@ -382,22 +389,67 @@ fn pari_two_springs_is_a_knife_edge_of_the_model() {
         support::scenario(&text.replace("peak_horizontal_kn = 9.1266", &format!("peak_horizontal_kn = {kn}")))
     };
     let (adaptive, at_case) = adaptive_and_converged(&s, 1e-4);
-    let (_, below) = adaptive_and_converged(&with_peak(9.1265), 1e-4);
+    let (adaptive_below, below) = adaptive_and_converged(&with_peak(9.1265), 1e-4);
     let (_, just_above) = adaptive_and_converged(&with_peak(9.12655), 1e-4);
+    let (adaptive_above, above) = adaptive_and_converged(&with_peak(9.14), 1e-4);
     // The edge: 3.5 % between two loads 1.1e-5 apart, the case above it.
     assert!(at_case[0] > 1.03 * below[0], "at the case {} m, 1.1e-5 below {} m", at_case[0], below[0]);
     assert!((just_above[0] - at_case[0]).abs() < 1e-3 * at_case[0], "{} m, {} m", just_above[0], at_case[0]);
-    // The adaptive result follows the branch below the edge.
-    assert!(
-        (adaptive[0] - below[0]).abs() <= 0.01 * below[0],
-        "adaptive {} m, below the edge {} m",
-        adaptive[0],
-        below[0]
-    );
+    assert!((above[0] - at_case[0]).abs() < 1e-2 * at_case[0], "{} m, {} m", above[0], at_case[0]);
+    // Either branch, away from the edge: the adaptive result within 1 % of the converged one.
+    let mut checked = 0;
+    for (what, a, c) in [("below", adaptive_below, below), ("above", adaptive_above, above)] {
+        assert!((a[0] - c[0]).abs() <= 0.01 * c[0], "{what} the edge: adaptive {} m, converged {} m", a[0], c[0]);
+        checked += 1;
+    }
+    assert_eq!(checked, 2);
     println!(
-        "two springs: adaptive {:.6e} m, converged {:.6e} m, below the edge {:.6e} m",
-        adaptive[0], at_case[0], below[0]
+        "two springs: adaptive {:.6e} m, converged {:.6e} m, below the edge {:.6e} m (adaptive {:.6e}), 1.5e-3 above {:.6e} m (adaptive {:.6e})",
+        adaptive[0], at_case[0], below[0], adaptive_below[0], above[0], adaptive_above[0]
     );
+}
+
+/// Issue 34's third held-out case (`tests/data/accuracy/grazing_toe.toml`: the seed's Table 5
+/// caisson undamped under the consistent profile, a 0.1 s triangle 0.1 m above its base): it
+/// slides (0.139 mm) and rocks, and its seaward spring comes within 0.05 N of lifting (least N
+/// of fixed steps of 6.25e-6 s; 3.125e-6 s and 1e-5 s within 0.4 mN of it, and their sliding
+/// within 1e-10 m). A lift resets the spring's shear, and the run that lifts it (the load 1.8e-5
+/// higher, 5.6837 kN) slides 2.1 % more: a wrong lift, one step's error in u_y of that spring,
+/// would be seen by the bound. Adaptive stepping at its defaults (first steps 1e-3 to 1e-5 s)
+/// within max(1 µm, 1 %) of the converged sliding, not lifting it either. Measured at results
+/// version 24 with the sticking steps held per unit step: 0.041 % (least N 0.31 N; at 5.6837 kN
+/// adaptive does not lift the spring either and is 2.07 % below the converged run that does,
+/// the same knife's edge as `pari_two_springs_is_a_knife_edge_of_the_model`, 1e-5 of the load).
+#[test]
+fn grazing_toe_meets_converged_fixed_steps() {
+    let s = accuracy_case("grazing_toe.toml");
+    let (least_n, converged) = least_normal_n(&s, Stepping::Fixed, 6.25e-6);
+    assert!(least_n > 0.0 && least_n < 0.3, "grazing: least N {least_n} N");
+    assert!(converged > 1e-4, "it slides: {converged} m");
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/accuracy/grazing_toe.toml"),
+    )
+    .unwrap();
+    let lifting = support::scenario(&text.replace("peak_horizontal_kn = 5.6836", "peak_horizontal_kn = 5.6837"));
+    let (least_lifting, sliding_lifting) = least_normal_n(&lifting, Stepping::Fixed, 6.25e-6);
+    assert_eq!(least_lifting, 0.0, "1.8e-5 more load lifts the spring");
+    assert!(sliding_lifting > 1.015 * converged, "the lift's shear reset: {sliding_lifting} m against {converged} m");
+    let mut checked = 0;
+    let mut worst = 0.0f64;
+    for dt0_s in [1e-3, 1e-4, 1e-5] {
+        let solver =
+            SolverParams { dt_s: dt0_s, ..s.solver() }.with_adaptive(AdaptiveParams::for_first_step(dt0_s)).unwrap();
+        let (_, adaptive) = least_normal_n(&s.clone().with_solver(solver).unwrap(), solver.stepping, dt0_s);
+        let err = (adaptive - converged).abs();
+        worst = worst.max(err / converged);
+        assert!(
+            err <= (1e-6f64).max(0.01 * converged),
+            "first step {dt0_s} s: adaptive {adaptive} m, converged {converged} m"
+        );
+        checked += 1;
+    }
+    println!("grazing toe: worst relative error of the sliding {worst:.2e}");
+    assert_eq!(checked, 3);
 }
 
 /// A random family of held-out cases (seeded, so the same cases every run): the PARI flume
@@ -406,14 +458,21 @@ fn pari_two_springs_is_a_knife_edge_of_the_model() {
 /// without added mass; a triangle impulsive (rise 5 to 30 ms) or pulsating (0.1 to 0.4 s), 1.1 to
 /// 2.0 times μ_s W' (impulsive) or 1.0 to 1.4 (pulsating), at 0.1 to 0.8 m, with uplift of 0.1
 /// to 0.25 of it or none. Adaptive stepping at its defaults against fixed steps of dt0/16 =
-/// 6.25e-6 s: the permanent sliding and the peak u_x within max(1 µm, 1 %). Knife's edges of the
-/// model (`pari_two_springs_is_a_knife_edge_of_the_model`) can fall in such a family; the count of
+/// 6.25e-6 s (dt0/32 within 0.04 % of it on every case beyond the bound): the permanent sliding
+/// and the peak u_x within max(1 µm, 1 %). Knife's edges of the model
+/// (`pari_two_springs_is_a_knife_edge_of_the_model`) can fall in such a family; the count of
 /// cases beyond the bound is held at what was measured (a ratchet: the test fails if it grows),
-/// and every case is printed with its errors.
+/// and every case is printed with its errors. Measured: 13 of 40 before the sticking steps were
+/// held per unit step (results version 24: seven of them `seed-2011` cases whose slip onset
+/// moved with Newmark's phase lag of the sticking vibration, up to 11 % and 16 %; module docs of
+/// `caisson::dynamics`), 3 after: three undamped cases of the consistent profile that rock on
+/// part of their base (1.5 %, 2.0 % and 12.7 % in the sliding), where a slip onset or a lift of
+/// a toe spring that converged steps find in a short excursion is found or not.
 #[test]
 fn random_family_meets_converged_fixed_steps() {
     use rand::{Rng, SeedableRng};
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(34);
+    // Most missed and worst ratio of the error to the bound (sliding or peak).
     let (mut checked, mut missed, mut worst) = (0, 0, 0.0f64);
     for k in 0..FAMILY_CASES {
         let profile = if k % 2 == 0 { "consistent" } else { "seed-2011" };
@@ -464,8 +523,7 @@ duration_s = {d}
         let (adaptive, converged) = adaptive_and_converged(&s, 1e-4);
         let err = [(adaptive[0] - converged[0]).abs(), (adaptive[1] - converged[1]).abs()];
         let bound = [(1e-6f64).max(0.01 * converged[0].abs()), (1e-6f64).max(0.01 * converged[1].abs())];
-        let rel = err[0].max(1e-6) / converged[0].abs().max(1e-6);
-        worst = worst.max(rel);
+        worst = worst.max(err[0] / bound[0]).max(err[1] / bound[1]);
         let miss = err[0] > bound[0] || err[1] > bound[1];
         missed += usize::from(miss);
         println!(
@@ -474,11 +532,11 @@ duration_s = {d}
         );
         checked += 1;
     }
-    println!("{missed} of {checked} beyond max(1 µm, 1 %); worst relative error of the sliding {worst:.2e}");
+    println!("{missed} of {checked} beyond max(1 µm, 1 %); worst error {worst:.2} times the bound");
     assert_eq!(checked, FAMILY_CASES);
     assert!(missed <= FAMILY_MISSES, "{missed} of {checked} cases beyond max(1 µm, 1 %)");
 }
 
 /// The family's size, and the cases beyond the bound measured on it (the ratchet).
 const FAMILY_CASES: usize = 40;
-const FAMILY_MISSES: usize = 13;
+const FAMILY_MISSES: usize = 3;

@@ -98,6 +98,7 @@ fn sizing_through_the_engine_returns_the_closed_form_width() {
             range_m: (0.5, 1.5),
             criteria: Criteria { expected_sliding_m: Some(s_a), ..Criteria::default() },
             lives: 1,
+            auto: None,
             tolerance_m,
             curve_points: 5,
             conventional: Default::default(),
@@ -117,6 +118,7 @@ fn sizing_through_the_engine_returns_the_closed_form_width() {
                 rigid_block: point(exact_m(b)),
                 heel_pressure_exceedance: Default::default(),
                 life_counts: LifeCounts::default(),
+                precision: None,
             })
         })
         .unwrap();

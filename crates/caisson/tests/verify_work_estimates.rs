@@ -39,7 +39,8 @@ fn off(estimate: f64, real: f64) -> f64 {
 
 /// The adaptive pilot (the first wave of realization 0 of each condition) against every wave of
 /// every realization: the trains' waves are alike in height, so their steps per second are too.
-/// Measured: 1-2 % off; 15 % allowed.
+/// Measured: 5-11 % off (the pilot of three waves, since the sticking phases are held per unit
+/// step; 1-2 % before); 15 % allowed.
 #[test]
 fn train_and_campaign_steps_are_within_15_percent_of_the_real_steps() {
     let mut checked = 0;
@@ -49,6 +50,7 @@ fn train_and_campaign_steps_are_within_15_percent_of_the_real_steps() {
         let e = work::train(&case, Histories::None);
         assert!(matches!(e.steps_from, StepsFrom::Pilot { .. }), "{name}: adaptive steps are piloted");
         let real: u64 = run_realizations(&case, &|| {}).unwrap().realizations.iter().map(|r| r.solver.steps).sum();
+        println!("{name}: estimated {} steps, ran {real}", e.steps);
         assert!(off(e.steps, real as f64) < 0.15, "{name}: estimated {} steps, ran {real}", e.steps);
         assert_eq!(e.waves, 150.0, "{name}: 10 realizations × 15 waves");
         checked += 1;
@@ -58,6 +60,7 @@ fn train_and_campaign_steps_are_within_15_percent_of_the_real_steps() {
         let e = work::campaign(&c.setups, false);
         let r = run_campaign(&c.setups, &|| {}).unwrap();
         let real: u64 = r.iter().flat_map(|c| &c.summary.realizations).map(|r| r.solver.steps).sum();
+        println!("{name}: estimated {} steps, ran {real}", e.steps);
         assert!(off(e.steps, real as f64) < 0.15, "{name}: estimated {} steps, ran {real}", e.steps);
         assert_eq!(e.waves, 2250.0, "{name}: 15 conditions × 10 realizations × 15 waves");
         checked += 1;

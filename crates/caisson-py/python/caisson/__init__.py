@@ -532,6 +532,28 @@ class Design:
         idx = _core.design_sample(self._scenario._core, self._lives, threads)
         return list(range(self._lives)) if idx is None else idx
 
+    @property
+    def auto(self) -> Optional[float]:
+        """``[design] lives = "auto"``: its target relative error (``lives`` is then the budget,
+        ``max_lives``); ``None`` with a number of lives."""
+        return self._scenario._core.design_target_relative_error
+
+    def simulate_auto(self, *, threads: int = 1, progress: Progress = None) -> pd.DataFrame:
+        """``[design] lives = "auto"`` (docs/design.md, "Lives to a target precision"): lives
+        0 .. k − 1 in batches of 500, k the first batch boundary where the relative standard
+        errors of E|S| and of P(failure) meet ``target_relative_error``, or the budget
+        ``max_lives``: the same lives as ``caisson design`` on any thread count.
+        :meth:`statistics` of them is ``design.json``, with its ``precision``. Shards of
+        :meth:`simulate_lives` given to :meth:`statistics` stop at the same k (the rule of
+        ``caisson merge``). Raises ``ValueError`` for a scenario with a number of lives."""
+        try:
+            cols = _core.design_auto(self._scenario._core, threads, progress)
+        except KeyboardInterrupt as e:
+            if isinstance(getattr(e, "lives", None), dict):
+                e.lives = self._frame(e.lives)
+            raise
+        return self._frame(cols)
+
     def _frame(self, cols: dict) -> pd.DataFrame:
         """Lives as a DataFrame that names this design (``attrs[LIVES_OF]``)."""
         frame = pd.DataFrame(cols)
@@ -637,7 +659,11 @@ class Design:
         )
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
-        """All lives at once: (:class:`DesignStatistics`, lives DataFrame)."""
+        """All lives at once: (:class:`DesignStatistics`, lives DataFrame); with ``[design] lives
+        = "auto"`` the lives :meth:`simulate_auto` runs."""
+        if self.auto is not None:
+            lives = self.simulate_auto(threads=threads, progress=progress)
+            return self.statistics(lives), lives
         lives = self.simulate_lives(threads=threads, progress=progress)
         return self.statistics(lives), lives
 

@@ -244,6 +244,12 @@ class DesignStatistics(_ReadsAsReport):
     warnings: tuple
     report: dict
     sampling: Optional[Mapping] = None
+    #: ``[design] lives = "auto"``: how many lives it took, the target, the relative errors
+    #: reached and whether the target was met (``lives``, ``max_lives``, ``batch_lives``,
+    #: ``target_relative_error``, ``expected_sliding_relative_error``,
+    #: ``failure_relative_error``, ``failure_probability_upper``, ``met``, ...); ``None`` with a
+    #: number of lives.
+    precision: Optional[Mapping] = None
 
     @staticmethod
     def of(report: dict) -> "DesignStatistics":
@@ -258,6 +264,7 @@ class DesignStatistics(_ReadsAsReport):
             warnings=ResultWarning.all_of(report),
             report=report,
             sampling=report.get("sampling"),
+            precision=dict(report["precision"]) if "precision" in report else None,
         )
 
     def __repr__(self) -> str:
@@ -350,6 +357,9 @@ class SizeResult(_ReadsAsReport):
                     else:
                         row[f"{model}_{k}"] = v
                 row[f"{model}_meets"] = c.get(f"{model}_meets")
+            # `[size] lives = "auto"`: the candidate's verdict (precision_lives, precision_met, ...).
+            for k, v in (c.get("precision") or {}).items():
+                row[f"precision_{k}"] = v
             for k, v in (c.get("heel_pressure_exceedance") or {}).items():
                 if isinstance(v, (list, tuple)):
                     row.update(zip(_interval_columns(f"heel_pressure_exceedance_{k}"), v))

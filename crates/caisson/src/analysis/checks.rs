@@ -25,7 +25,7 @@
 //! | `impulsive-share-outside-goda-conditions` | the same at a site outside Goda's (2000) conditions of a danger of impulsive breaking (docs/model.md §1.4) under the design sea of `[waves]` | the impacts that make the answer are ones Goda's practice does not expect there |
 
 use super::conventional::static_check;
-use super::lifetime::{FailureLimits, ImpulsiveShare, LifeCounts, StormOutcome};
+use super::lifetime::{AutoPrecision, FailureLimits, ImpulsiveShare, LifeCounts, StormOutcome};
 use super::limits::{FAILURE_FRACTION_OF_WIDTH, ROCKING_LIMIT_RAD, SEAWARD_REPORT_M};
 use super::run::Response;
 use super::site::WaveSetup;
@@ -692,4 +692,36 @@ pub fn storm_warnings<'a>(storms: impl Iterator<Item = &'a StormOutcome>, width_
         ),
         &[("storms_beyond_width", beyond as f64), ("storms", n as f64), ("max_storm_sliding_m", worst), ("width_m", width_m)],
     )]
+}
+
+/// `lives = "auto"` whose budget ran out before the target precision (`precision-not-met`):
+/// the statistics are of the budget's lives, less precise than asked; `what` names the run ("the
+/// design run", "the candidate at 23.5 m").
+pub fn precision_warning(p: &AutoPrecision, what: &str) -> Option<Warning> {
+    if p.met {
+        return None;
+    }
+    let failure = p.failure_relative_error.map_or_else(
+        || {
+            format!(
+                "no failure, its 95 % upper bound {:.2e} not below {:.0e}",
+                p.failure_probability_upper, p.failure_probability_floor
+            )
+        },
+        |r| format!("{r:.3}"),
+    );
+    Some(Warning::new(
+        "precision-not-met",
+        format!(
+            "{what} took its whole budget of {} lives (max_lives) without reaching the target relative error {}: E|S| {:.3}, P(failure) {failure}; its statistics are less precise than asked: raise max_lives (and the work budget) or the target",
+            p.max_lives, p.target_relative_error, p.expected_sliding_relative_error
+        ),
+        &[
+            ("lives", p.lives as f64),
+            ("max_lives", p.max_lives as f64),
+            ("target_relative_error", p.target_relative_error),
+            ("expected_sliding_relative_error", p.expected_sliding_relative_error),
+            ("failure_probability_upper", p.failure_probability_upper),
+        ],
+    ))
 }

@@ -146,9 +146,31 @@ pub struct Candidate {
     /// What the life warnings of the dynamic model's lives need
     /// ([`super::checks::candidate_warnings`]).
     pub life_counts: LifeCounts,
+    /// `[size] lives = "auto"`: the rule's verdict on this candidate's lives (how many it took,
+    /// the relative errors, met or not); absent with a fixed number of lives.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub precision: Option<crate::analysis::lifetime::AutoPrecision>,
 }
 
 impl Candidate {
+    /// The rule of `lives = "auto"` ([`crate::analysis::lifetime::AutoLives::judge`]) on this
+    /// candidate's statistics: the dynamic model's capped E|S| with its standard error and its
+    /// failed lives, as the candidate reports them — the one place the sizing reads them for the
+    /// rule. `max_lives`: the budget, reported beside.
+    pub fn judge(
+        &self,
+        auto: &crate::analysis::lifetime::AutoLives,
+        max_lives: usize,
+    ) -> crate::analysis::lifetime::AutoPrecision {
+        let d = &self.dynamic;
+        auto.judge(
+            (d.expected_sliding_m, d.expected_sliding_standard_error_m),
+            self.life_counts.failed_lives,
+            self.lives,
+            max_lives,
+        )
+    }
+
     pub fn point(&self, m: SizedModel) -> &ModelPoint {
         match m {
             SizedModel::Dynamic => &self.dynamic,
@@ -243,6 +265,7 @@ pub fn candidate(
         rigid_block: model_point(&rigid, &rigid_modes, failure.sliding_m, criteria, counts.rigid_block_impulsive),
         heel_pressure_exceedance: HeelPressureExceedance::of(lives, heel_pa.0, heel_pa.1),
         life_counts: counts,
+        precision: None,
     }
 }
 
@@ -305,8 +328,12 @@ pub struct SizeParams {
     /// The widths searched, m (lo < hi).
     pub range_m: (f64, f64),
     pub criteria: Criteria,
-    /// Lives per candidate.
+    /// Lives per candidate (with `auto`, the most a candidate may take).
     pub lives: usize,
+    /// `[size] lives = "auto"`: each candidate's lives to this target precision
+    /// ([`crate::analysis::lifetime::AutoLives`]); absent from the fingerprint when `None`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub auto: Option<crate::analysis::lifetime::AutoLives>,
     /// Width tolerance of the bisection, m.
     pub tolerance_m: f64,
     /// Widths of the design curve's grid (≥ 2, ends included).
@@ -341,6 +368,9 @@ impl SizeParams {
         }
         self.criteria.checked()?;
         count("lives", self.lives, 1, 1_000_000)?;
+        if let Some(a) = self.auto {
+            a.checked()?;
+        }
         count("curve_points", self.curve_points, 2, 100)?;
         interval("tolerance_m", self.tolerance_m, (hi - lo) * 1e-6, hi - lo, true)?;
         self.conventional.checked()?;
@@ -484,6 +514,7 @@ mod tests {
             range_m: (12.0, 30.0),
             criteria: Criteria { expected_sliding_m: Some(0.1), ..Criteria::default() },
             lives: 100,
+            auto: None,
             tolerance_m: 0.25,
             curve_points: 8,
             conventional: super::super::conventional::ConventionalCriteria::default(),
@@ -583,6 +614,7 @@ mod tests {
                 range_m: (5.0, 30.0),
                 criteria: Criteria { expected_sliding_m: Some(s_a), ..Criteria::default() },
                 lives: 1,
+                auto: None,
                 tolerance_m: 0.01,
                 curve_points: 6,
                 conventional: Default::default(),
@@ -598,6 +630,7 @@ mod tests {
                     rigid_block: point(3.0 / (b * b)),
                     heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
+                    precision: None,
                 })
             })
             .unwrap();
@@ -622,6 +655,7 @@ mod tests {
             range_m: (5.0, 6.0),
             criteria: Criteria { expected_sliding_m: Some(0.01), ..Criteria::default() },
             lives: 1,
+            auto: None,
             tolerance_m: 0.1,
             curve_points: 3,
             conventional: Default::default(),
@@ -636,6 +670,7 @@ mod tests {
                     rigid_block: point(k / (b * b)),
                     heel_pressure_exceedance: HeelPressureExceedance::default(),
                     life_counts: LifeCounts::default(),
+                    precision: None,
                 })
             }
         };

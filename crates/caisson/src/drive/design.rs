@@ -10,22 +10,36 @@
 //! life depends on ([`design_fingerprint`], the checkpoint's header), the work estimate of
 //! [`crate::analysis::work::design`] and the report of [`DesignReport::new`]. The front-ends keep
 //! what is theirs: the checkpoint file, the progress, stopping, the outputs.
+//!
+//! **Lives to a target precision** (`[design] lives = "auto"`, [`AutoLives`]; docs/design.md):
+//! [`Designer::run_auto`] runs lives in batches of [`AUTO_BATCH_LIVES`] in index order and stops
+//! at the first batch boundary k where the rule, read from the report's statistics of lives 0..k
+//! ([`DesignReport::judge`]), is met, or at the budget (`max_lives`, the design's `lives`). A
+//! stopping point depends only on lives 0..k, so threads, resumes and shards find the same one;
+//! shards run fixed ranges, and [`Designer::stopping_point`] applies the rule over the boundaries
+//! of the lives they hold, in order (what `caisson merge` does). The report of lives 0..k carries
+//! the rule's verdict ([`DesignReport::precision`]) and, if the budget ran out first, the
+//! `precision-not-met` warning.
 
+use crate::analysis::checks::precision_warning;
 use crate::analysis::lifetime::sampling::{Pool, Strata};
 use crate::analysis::lifetime::{
-    run_lives, DesignParams, FailureLimits, LifeFailed, Sampling, StormCase, StormOutcome,
+    auto_boundaries, run_lives, AutoLives, AutoPrecision, DesignParams, FailureLimits, LifeFailed, Sampling, StormCase,
+    StormOutcome, AUTO_BATCH_LIVES,
 };
 use crate::analysis::site::WaveSetup;
 use crate::analysis::work::{self, WorkEstimate};
 use crate::dynamics::Stepping;
 use crate::report::design::{design_fingerprint, DesignReport};
 use crate::scenario::{Scenario, ScenarioError};
+use std::collections::BTreeMap;
 use std::ops::{ControlFlow, Range};
 
 /// How a design run departs from the scenario's `[design]`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct DesignOptions {
-    /// The number of lives (the CLI's `--lives`, a merge's lives); `None`: `[design] lives`.
+    /// The number of lives (the CLI's `--lives`, a merge's lives): exactly these, `lives =
+    /// "auto"` turned off; `None`: `[design] lives`.
     pub lives: Option<usize>,
     /// Every wave through the dynamic model (no screen), on a scenario made by [`brute_force`].
     pub brute_force: bool,
@@ -61,6 +75,7 @@ impl<'a> Designer<'a> {
         if let Some(n) = options.lives {
             // 1 to 1e7 (checked by the parser, as `[design] lives`).
             design.lives = n;
+            design.auto = None;
         }
         if options.brute_force {
             design.screen = false;
@@ -95,9 +110,16 @@ impl<'a> Designer<'a> {
         run_lives(&self.case, &self.design.life, self.design.seed, indices, on_life)
     }
 
-    /// The report of `lives` (lives 0..N in index order): statistics, the model and the warnings.
+    /// The report of `lives` (lives 0..N in index order): statistics, the model and the warnings;
+    /// with `lives = "auto"` the rule's verdict on them and, if not met, its warning.
     pub fn report(&self, lives: &[StormOutcome]) -> DesignReport {
-        DesignReport::new(&self.design, &self.case, Some(self.waves), lives)
+        let mut r = DesignReport::new(&self.design, &self.case, Some(self.waves), lives);
+        if let Some(auto) = &self.design.auto {
+            let p = r.judge(auto, self.design.lives);
+            r.precision = Some(p);
+            r.warnings.extend(precision_warning(&p, "the design run"));
+        }
+        r
     }
 
     /// A stratified run's strata and its pool of the lives `range` ([`crate::analysis::lifetime::sampling`],
@@ -128,10 +150,111 @@ impl<'a> Designer<'a> {
         }
     }
 
-    /// The statistics of `lives` alone ([`DesignReport::statistics`]: no model, no warnings).
+    /// The statistics of `lives` alone ([`DesignReport::statistics`]: no model, no warnings;
+    /// with `lives = "auto"` the rule's verdict).
     pub fn statistics(&self, lives: &[StormOutcome]) -> DesignReport {
         let failure_m = self.failure_limits().sliding_m;
-        DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives)
+        let mut r = DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives);
+        r.precision = self.design.auto.map(|auto| r.judge(&auto, self.design.lives));
+        r
+    }
+
+    /// The rule of `lives = "auto"` on lives 0..n (`lives`, in index order): the verdict of the
+    /// report's statistics ([`DesignReport::judge`]); `None` with a fixed number of lives.
+    pub fn judge(&self, lives: &[StormOutcome]) -> Option<AutoPrecision> {
+        let failure_m = self.failure_limits().sliding_m;
+        let auto = self.design.auto?;
+        let r = DesignReport::statistics(&self.design, self.case.rigid_block_mu, failure_m, lives);
+        Some(r.judge(&auto, self.design.lives))
+    }
+
+    /// Where `lives = "auto"` stops on the lives `held` (any indices, e.g. the shards' of a
+    /// merge): the first batch boundary k, over the boundaries whose lives 0..k are all held, in
+    /// order, at which the rule is met, or the budget's end. `None` with a fixed number of lives.
+    pub fn stopping_point(&self, held: &BTreeMap<usize, StormOutcome>) -> Option<Stopping> {
+        self.design.auto?;
+        // The lives 0..m held without a gap.
+        let m = held.keys().enumerate().take_while(|(k, &i)| *k == i).count().min(self.design.lives);
+        let prefix: Vec<StormOutcome> = held.values().take(m).copied().collect();
+        for k in auto_boundaries(self.design.lives).take_while(|&k| k <= m) {
+            let p = self.judge(&prefix[..k]).expect("auto");
+            if p.met || k == self.design.lives {
+                return Some(Stopping::At(k, p));
+            }
+        }
+        Some(Stopping::NotReached { held: m, last_boundary: m / AUTO_BATCH_LIVES * AUTO_BATCH_LIVES })
+    }
+
+    /// `lives = "auto"` (module docs): batch after batch, the lives not in `done` run
+    /// ([`Self::run`], `on_life` sees each and may stop the run), until the rule is met on lives
+    /// 0..k or the budget is spent. With a fixed number of lives, the batches run to `lives`
+    /// without the rule.
+    pub fn run_auto(
+        &self,
+        done: &BTreeMap<usize, StormOutcome>,
+        on_life: &(dyn Fn(usize, &StormOutcome) -> ControlFlow<()> + Sync),
+    ) -> Result<AutoRun, LifeFailed> {
+        let mut computed: Vec<(usize, StormOutcome)> = Vec::new();
+        let mut lives: Vec<StormOutcome> = Vec::new();
+        let mut start = 0;
+        for k in auto_boundaries(self.design.lives) {
+            let todo: Vec<usize> = (start..k).filter(|i| !done.contains_key(i)).collect();
+            let ran = self.run(&todo, on_life)?;
+            let stopped = ran.len() < todo.len();
+            let mut ran = ran.into_iter().peekable();
+            for i in start..k {
+                match done.get(&i) {
+                    Some(o) => lives.push(*o),
+                    None => {
+                        if let Some(&(_, o)) = ran.peek().filter(|(j, _)| *j == i) {
+                            lives.push(o);
+                            computed.push(ran.next().expect("peeked"));
+                        }
+                    }
+                }
+            }
+            computed.extend(ran);
+            if stopped {
+                return Ok(AutoRun::Stopped { computed });
+            }
+            start = k;
+            match self.judge(&lives) {
+                Some(p) if p.met || k == self.design.lives => {
+                    return Ok(AutoRun::Done { lives, computed, precision: Some(p) })
+                }
+                Some(_) => {}
+                None if k == self.design.lives => return Ok(AutoRun::Done { lives, computed, precision: None }),
+                None => {}
+            }
+        }
+        unreachable!("the last boundary is the budget")
+    }
+}
+
+/// Where `lives = "auto"` stops on the lives a merge holds ([`Designer::stopping_point`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stopping {
+    /// At lives 0..k, with the rule's verdict there (met, or the budget's end).
+    At(usize, AutoPrecision),
+    /// Lives 0..`held` are held without a gap and the rule is met at no boundary up to
+    /// `last_boundary`: the lives beyond are needed.
+    NotReached { held: usize, last_boundary: usize },
+}
+
+/// What [`Designer::run_auto`] ran.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AutoRun {
+    /// Lives 0..k (those of `done` and those run), the lives this call ran (index, outcome) and
+    /// the rule's verdict at k.
+    Done { lives: Vec<StormOutcome>, computed: Vec<(usize, StormOutcome)>, precision: Option<AutoPrecision> },
+    /// `on_life` stopped the run: the lives it ran before it stopped.
+    Stopped { computed: Vec<(usize, StormOutcome)> },
+}
+
+impl Designer<'_> {
+    /// The rule's target, if `lives = "auto"`.
+    pub fn auto(&self) -> Option<AutoLives> {
+        self.design.auto
     }
 }
 
@@ -175,6 +298,92 @@ mod tests {
         let brute = Designer::new(&sc, "test", DesignOptions { lives: None, brute_force: true }).unwrap();
         assert!(!brute.design.screen && !brute.case.screen);
         assert_ne!(brute.fingerprint(), run.fingerprint());
+    }
+
+    /// The rule of `lives = "auto"` by hand (t = 0.05, floor 10⁻³), 7 verdicts:
+    /// - E|S| 0.4 m, SE 0.02 m: 0.02/0.4 = 0.05 ≤ 0.05, met; SE 0.0201: 0.05025, not;
+    /// - 400 failures of 4000 (p = 0.1): √((1 − p)/k) = √(0.9/400) = 0.047434 ≤ 0.05, met; 300 of
+    ///   3000: √(0.9/300) = 0.054772, not;
+    /// - no failure of 3000: Wilson upper z²/(n + z²) = 3.841459/3003.841459 = 1.27885e-3 ≥ 10⁻³,
+    ///   not; of 4000: 3.841459/4003.841459 = 9.59443e-4 < 10⁻³, met (relative error null);
+    /// - every life at 0 (E|S| = 0, SE = 0): relative error 0, met.
+    #[test]
+    fn the_rule_of_auto_lives_by_hand() {
+        let auto = AutoLives { target_relative_error: 0.05 };
+        let p = auto.judge((0.4, 0.02), 400, 4000, 10_000);
+        assert!(p.expected_sliding_met && p.failure_met && p.met, "{p:?}");
+        assert!((p.expected_sliding_relative_error - 0.05).abs() < 1e-15);
+        assert!((p.failure_relative_error.unwrap() - 0.047_434_164).abs() < 1e-9, "{p:?}");
+        assert!(!auto.judge((0.4, 0.0201), 400, 4000, 10_000).expected_sliding_met);
+        let p = auto.judge((0.4, 0.02), 300, 3000, 10_000);
+        assert!((p.failure_relative_error.unwrap() - 0.054_772_256).abs() < 1e-9 && !p.failure_met && !p.met, "{p:?}");
+        let p = auto.judge((0.4, 0.02), 0, 3000, 10_000);
+        assert_eq!(p.failure_relative_error, None);
+        assert!((p.failure_probability_upper - 1.278_85e-3).abs() < 1e-8 && !p.failure_met, "{p:?}");
+        let p = auto.judge((0.4, 0.02), 0, 4000, 10_000);
+        assert!((p.failure_probability_upper - 9.594_43e-4).abs() < 1e-9 && p.failure_met && p.met, "{p:?}");
+        let p = auto.judge((0.0, 0.0), 0, 4000, 10_000);
+        assert_eq!(p.expected_sliding_relative_error, 0.0);
+        assert!(p.met, "{p:?}");
+        assert_eq!((p.lives, p.max_lives, p.batch_lives), (4000, 10_000, AUTO_BATCH_LIVES));
+        assert!(AutoLives { target_relative_error: 0.0 }.checked().is_err());
+        assert!(AutoLives { target_relative_error: 0.51 }.checked().is_err());
+        assert_eq!(auto_boundaries(1200).collect::<Vec<_>>(), [500, 1000, 1200]);
+    }
+
+    /// Where "auto" stops on lives made by hand (t = 0.1; the small design's limit B/4 = 5 m):
+    /// the surviving lives |S| alternately 0.5 and 1.5 m, a failed life (by sliding, 6 m) every
+    /// 10th life of 0..500 (50) and every 10th plus lives 501, 503, ..., 519 (60) of 500..1000.
+    /// At 500: √((1 − 0.1)/50) = 0.1342 > 0.1, not met. At 1000: k = 110, p = 0.11,
+    /// √(0.89/110) = 0.08995 ≤ 0.1; E|S| (failed at 5 m) has the relative error 0.03 < 0.1 (the
+    /// capped values' SE over their mean, checked below by hand from the values): met, the run
+    /// stops at 1000. With life 700 missing the held lives end at 700 and no boundary up to 500
+    /// meets it; with a budget of 700 the rule stops at 700 (k = 50 + 20 + 10 = 80, p = 0.1143,
+    /// √(0.8857/80) = 0.1052 > 0.1), not met, and the report warns.
+    #[test]
+    fn auto_stops_at_the_first_boundary_where_the_rule_is_met() {
+        let sc = small_design();
+        let mut run = Designer::new(&sc, "test", DesignOptions::default()).unwrap();
+        run.design.auto = Some(AutoLives { target_relative_error: 0.1 });
+        run.design.lives = 2000;
+        assert_eq!(run.failure_limits().sliding_m, 5.0);
+        let life = |i: usize| {
+            let failed = i.is_multiple_of(10) || ((500..520).contains(&i) && !i.is_multiple_of(2));
+            let s = if failed {
+                6.0
+            } else if i.is_multiple_of(2) {
+                0.5
+            } else {
+                1.5
+            };
+            StormOutcome { sliding_m: s, failed_by_sliding: u64::from(failed), ..StormOutcome::default() }
+        };
+        let held: BTreeMap<usize, StormOutcome> = (0..1500).map(|i| (i, life(i))).collect();
+        let lives: Vec<StormOutcome> = held.values().copied().collect();
+        let p500 = run.judge(&lives[..500]).unwrap();
+        assert!((p500.failure_relative_error.unwrap() - (0.9f64 / 50.0).sqrt()).abs() < 1e-12 && !p500.met, "{p500:?}");
+        let Some(Stopping::At(k, p)) = run.stopping_point(&held) else { panic!("a stopping point") };
+        assert_eq!(k, 1000);
+        assert!((p.failure_relative_error.unwrap() - (0.89f64 / 110.0).sqrt()).abs() < 1e-12 && p.met, "{p:?}");
+        // E|S| by hand from the capped values of lives 0..1000.
+        let capped: Vec<f64> = lives[..1000].iter().map(|l| if l.failed() { 5.0 } else { l.sliding_m }).collect();
+        let mean = capped.iter().sum::<f64>() / 1000.0;
+        let var = capped.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / 999.0;
+        let rel = (var / 1000.0).sqrt() / mean;
+        assert!((p.expected_sliding_relative_error - rel).abs() < 1e-12 && rel < 0.1, "{rel} {p:?}");
+        // The report of lives 0..k says the same.
+        assert_eq!(run.statistics(&lives[..1000]).precision, Some(p));
+        let mut gap = held.clone();
+        gap.remove(&700);
+        assert_eq!(run.stopping_point(&gap), Some(Stopping::NotReached { held: 700, last_boundary: 500 }));
+        run.design.lives = 700;
+        let Some(Stopping::At(k, p)) = run.stopping_point(&held) else { panic!("the budget's end") };
+        assert_eq!((k, p.met, p.max_lives), (700, false, 700));
+        assert!((p.failure_relative_error.unwrap() - ((1.0 - 80.0 / 700.0) / 80.0f64).sqrt()).abs() < 1e-12);
+        let r = run.report(&lives[..700]);
+        assert!(r.warnings.iter().any(|w| w.code == "precision-not-met"), "{:?}", r.warnings);
+        run.design.auto = None;
+        assert_eq!(run.stopping_point(&held), None);
     }
 
     /// A scenario without `[design]` is refused naming the front-end.

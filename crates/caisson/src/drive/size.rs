@@ -10,13 +10,19 @@
 //! scenario at each width, under the design wave of its `[waves]`). The report computes its own
 //! warnings ([`SizeReport::new`]).
 //!
+//! With `[size] lives = "auto"` ([`crate::analysis::lifetime::AutoLives`]) each candidate runs
+//! its lives in batches of [`crate::analysis::lifetime::AUTO_BATCH_LIVES`] and stops at the first
+//! boundary where its own statistics meet the target ([`Candidate::judge`]), at most `[size]
+//! max_lives`: each width takes the lives it needs (lives 0..k of the seed, common random numbers
+//! over the widths' common lives), and the candidate records the verdict (`precision`).
+//!
 //! The front-ends keep what is theirs through [`Hooks`]: the progress, stopping (Ctrl-C), and
 //! the checkpoint of the finished candidates (the CLI's file; its codec is
 //! [`crate::report::checkpoint`]): candidates read back from it are passed in `done` and reused,
 //! never run again.
 
 use crate::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave};
-use crate::analysis::lifetime::{run_lives, DesignParams, LifeFailed, StormOutcome};
+use crate::analysis::lifetime::{auto_boundaries, run_lives, DesignParams, LifeFailed, StormOutcome};
 use crate::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, SizeParams};
 use crate::analysis::work::{self, WorkEstimate};
 use crate::loads::safety::SafetyFactors;
@@ -131,22 +137,35 @@ impl<'a> Sizer<'a> {
             let sw = self.at_width(w)?;
             let case = sw.storm_case(design.screen)?;
             width(w, false);
-            let indices: Vec<usize> = (0..p.lives).collect();
-            let lives = run_lives(&case, &design.life, design.seed, &indices, &|_, _| life())
-                .map_err(|source| SizeError::Run { width_m: w, source })?;
-            if lives.len() < p.lives {
-                return Err(SizeError::Stopped { width_m: w });
-            }
-            let outcomes: Vec<StormOutcome> = lives.into_iter().map(|(_, o)| o).collect();
             let heel_pa = (design.allowable_heel_pressure_pa, design.heel_screen_pa());
-            let c = candidate(
-                w,
-                sw.caisson().weight_in_water_n,
-                &outcomes,
-                &design.failure_limits(w),
-                &p.criteria,
-                heel_pa,
-            );
+            let of = |outcomes: &[StormOutcome]| {
+                candidate(w, sw.caisson().weight_in_water_n, outcomes, &design.failure_limits(w), &p.criteria, heel_pa)
+            };
+            // A fixed number of lives is one batch; "auto" stops at the first boundary where the
+            // candidate's statistics meet the target (module docs).
+            let boundaries: Vec<usize> = match p.auto {
+                Some(_) => auto_boundaries(p.lives).collect(),
+                None => vec![p.lives],
+            };
+            let mut outcomes: Vec<StormOutcome> = Vec::new();
+            let mut c = None;
+            for k in boundaries {
+                let indices: Vec<usize> = (outcomes.len()..k).collect();
+                let lives = run_lives(&case, &design.life, design.seed, &indices, &|_, _| life())
+                    .map_err(|source| SizeError::Run { width_m: w, source })?;
+                if lives.len() < indices.len() {
+                    return Err(SizeError::Stopped { width_m: w });
+                }
+                outcomes.extend(lives.into_iter().map(|(_, o)| o));
+                let mut at_k = of(&outcomes);
+                at_k.precision = p.auto.map(|auto| at_k.judge(&auto, p.lives));
+                let met = at_k.precision.is_none_or(|q| q.met);
+                c = Some(at_k);
+                if met {
+                    break;
+                }
+            }
+            let c = c.expect("at least one boundary");
             finished(&c).map_err(SizeError::Candidate)?;
             Ok(c)
         };

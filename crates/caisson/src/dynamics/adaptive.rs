@@ -119,8 +119,44 @@ enum Verdict {
     EventFound(f64),
     /// The error estimate is over the tolerance: retried with this length.
     Rejected(f64),
-    /// Kept; the error estimate's step ratio 0.9 (tol/‖e‖)^{1/3}.
+    /// Kept; the error estimate's step ratio 0.9 (tol/‖e‖)^{1/3} (^{1/2} for an estimate per
+    /// unit step: [`Estimate`]).
     Accepted { ratio: f64 },
+}
+
+/// The error estimate of a converged Newmark try, m, and how it grows with the step: as h³ (the
+/// local error), or as h² where a step that ends with every spring in contact and sticking is
+/// held to the tolerance per `StepControl::coherent_s` of time (its local error times
+/// coherent_s/h: module docs of [`crate::dynamics`], "Adaptive stepping").
+#[derive(Debug, Clone, Copy)]
+struct Estimate {
+    err_m: f64,
+    per_unit_step: bool,
+}
+
+impl Estimate {
+    /// The step ratio after an accepted step: 0.9 (tol/‖e‖)^{1/3}, or ^{1/2} per unit step.
+    #[inline(always)]
+    fn ratio(&self, tol_m: f64) -> f64 {
+        if self.err_m <= 0.0 {
+            f64::INFINITY
+        } else if self.per_unit_step {
+            0.9 * (tol_m / self.err_m).sqrt()
+        } else {
+            0.9 * fast_cbrt(tol_m / self.err_m)
+        }
+    }
+
+    /// The retry's ratio after a rejection: 0.9 (tol/‖e‖)^{2/5} (module docs, "Adaptive
+    /// stepping"), or ^{1/2} per unit step.
+    #[inline(always)]
+    fn shrink(&self, tol_m: f64) -> f64 {
+        if self.per_unit_step {
+            0.9 * (tol_m / self.err_m).sqrt()
+        } else {
+            0.9 * (tol_m / self.err_m).powf(0.4)
+        }
+    }
 }
 
 /// What one try of the adaptive stepping leaves for the next.
@@ -129,6 +165,10 @@ struct StepControl {
     /// |β − 1/6|, the Zienkiewicz-Xie constant, and B/2, the rotation's lever in the estimate.
     c_err: f64,
     half_b: f64,
+    /// Half the natural period of the horizontal mode, s: a step that ends with every spring in
+    /// contact and sticking, if shorter, is held to the tolerance per this much time
+    /// ([`Estimate`]; 0 if the period is not finite).
+    coherent_s: f64,
     /// Halvings in a row after Newton failures.
     level: usize,
     /// Events located in a row, and whether the step to try was shortened to end at one.
@@ -156,6 +196,7 @@ impl Simulation {
             p,
             c_err: (self.solver.beta - 1.0 / 6.0).abs(),
             half_b: 0.5 * self.model.width_m,
+            coherent_s: Some(0.5 * self.model.natural_period_s()).filter(|t| t.is_finite()).unwrap_or(0.0),
             level: 0,
             events: 0,
             at_event: false,
@@ -297,13 +338,14 @@ impl Simulation {
                 return Verdict::EventFound(e.theta * h * (1.0 + EVENT_LEAD));
             }
         }
-        let err = self.error_estimate_m(ctl, h, c);
-        let ratio = if err > 0.0 { 0.9 * fast_cbrt(p.tolerance_m / err) } else { f64::INFINITY };
+        let est = self.error_estimate_m(ctl, h, c);
+        let err = est.err_m;
+        let ratio = est.ratio(p.tolerance_m);
         if err > p.tolerance_m && h > p.dt_min_s {
             // Retried shorter by the estimate as h^(5/2) (module docs, "Adaptive stepping": the
-            // step after an event, where nearly every rejection falls).
+            // step after an event, where nearly every rejection falls), or as h² per unit step.
             self.stats.rejected_steps += 1;
-            let shrink = 0.9 * (p.tolerance_m / err).powf(0.4);
+            let shrink = est.shrink(p.tolerance_m);
             ctl.landing = None;
             return Verdict::Rejected((h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s));
         }
@@ -313,14 +355,30 @@ impl Simulation {
         Verdict::Accepted { ratio }
     }
 
-    /// The local error of the converged try `c` of length `h`, m: the Zienkiewicz-Xie estimate
-    /// of each row (θ as θ B/2) and the springs' slip positions' (`slip_error_m`).
+    /// The error estimate of the converged try `c` of length `h`: the local error, m, the
+    /// Zienkiewicz-Xie estimate of each row (θ as θ B/2) and the springs' slip positions'
+    /// (`slip_error_m`); where every spring is in contact and sticks at the step's end and the
+    /// step is shorter than `coherent_s`, that times coherent_s/h, the error per unit step
+    /// ([`Estimate`]).
     #[inline(always)]
-    fn error_estimate_m(&self, ctl: &StepControl, h: f64, c: &Converged) -> f64 {
+    fn error_estimate_m(&self, ctl: &StepControl, h: f64, c: &Converged) -> Estimate {
         let an = self.state.a;
         let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * ctl.half_b];
         let ux_err = ctl.c_err * h * h * da[0];
-        (ctl.c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, c, ux_err))
+        let err_m = (ctl.c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, c, ux_err));
+        // A sticking phase, whose Newmark error is the phase lag of its vibration: every spring
+        // in contact and sticking at the step's end (the all-sticking iterate, or the general
+        // one with none slipping and none lifted), or, without located contact (`seed-2011`),
+        // every spring in contact sticking (some lifted). With located contact the phases with
+        // springs lifted are stepped exactly (`exact`, "Partial contact"), and a Newmark step
+        // among them is one the exact path declined. The same rule with the accelerators off.
+        let sticking = self.fast.iterate.is_some()
+            || (!self.trial_slips && (!self.solver.locate_contact || self.trial.iter().all(|r| r.normal_n > 0.0)));
+        if sticking && h < ctl.coherent_s {
+            Estimate { err_m: err_m * (ctl.coherent_s / h), per_unit_step: true }
+        } else {
+            Estimate { err_m, per_unit_step: false }
+        }
     }
 }
 

@@ -58,11 +58,15 @@ pub enum Predictor {
 }
 
 /// The engine's accelerators: the fast paths that stand in for the plain path (Newmark steps,
-/// each iterated by Newton from δ = 0 with the springs summed one by one), one field each, and
-/// what each claims against it (ARCHITECTURE.md lists them; `tests/equiv_accel.rs` checks every
-/// claim with each accelerator off in turn and all off). [`Accel::auto`] is every one on (the
-/// default), [`Accel::none`] the plain path; a scenario picks one by `[solver] accel`. Not
-/// results, so not reported.
+/// each iterated by Newton from δ = 0 with the springs summed one by one; in a design or
+/// fragility run, every wave drawn and run through the dynamic model), one field each, and what
+/// each claims against it (ARCHITECTURE.md lists them; `tests/equiv_accel.rs` checks every claim
+/// with each accelerator off in turn and all off). [`Accel::auto`] is every one on (the
+/// default), [`Accel::none`] the plain path; a scenario picks one by `[solver] accel`. The
+/// lifetime switches reach a run through [`crate::scenario::Scenario::storm_case`], which
+/// resolves them into the [`crate::analysis::lifetime::StormCase`] (the screen only where
+/// `[design] screen` has it too). Not results, so not reported (the screen and the drawing are
+/// in a design's fingerprint through the `StormCase`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Accel {
     /// The first Newton iterate ([`Predictor`]): the constant-acceleration predictor, or off
@@ -85,6 +89,30 @@ pub struct Accel {
     /// of the runs of springs in and out of contact (`Simulation::contact_may_change`,
     /// `Simulation::contact_ahead`). Claims: the same bits.
     pub contact_runs: bool,
+    /// The lifetime screen (`analysis::lifetime`, "The screen"): a wave that provably neither
+    /// slides nor lifts the caisson (nor presses its heel to the screen's heel pressure) is not
+    /// run. Off, every wave is drawn and run (and the three below, which need it, are off).
+    /// Claims, on the same waves (every wave drawn): the life's sliding within 1 µm, the rigid
+    /// block's to rounding, the largest heel pressure the same where it reaches the screen's heel
+    /// pressure; the counts of simulated and screened waves move.
+    pub screen: bool,
+    /// The screen's bound of the loads over all heights up to one (`PeriodLoads::peak_bound`): a
+    /// storm's grid row left false where it holds up to H_max, else its nodes up to where it
+    /// holds, by bisection, without their loads (`StormScreen::grid`). Claims: the same grid,
+    /// so the same bits.
+    pub screen_load_bound: bool,
+    /// A screened storm draws only the waves above the lowest height its screen lets through,
+    /// largest first (`WaveDraws::AboveThreshold`; off: every wave drawn and tested,
+    /// `WaveDraws::EveryWave`). Claims: the same storms and the same distribution of every
+    /// per-life output, not the same waves (`tests/equiv_lifetime.rs` holds the statistics
+    /// within a few standard errors).
+    pub draw_above_threshold: bool,
+    /// The bound of the all-sticking response (`analysis::stick_bound`): a pulsating wave it
+    /// shows sticking is not run (its rotation settled at the life's end). Claims: the same bits
+    /// but the counts of simulated and screened waves (which move together) and the largest heel
+    /// pressure below the screen's heel pressure (at most the one without the bound, as the
+    /// screen has it).
+    pub stick_bound: bool,
 }
 
 impl Accel {
@@ -96,6 +124,10 @@ impl Accel {
             exact_sticking: true,
             cached_propagators: true,
             contact_runs: true,
+            screen: true,
+            screen_load_bound: true,
+            draw_above_threshold: true,
+            stick_bound: true,
         }
     }
 
@@ -107,6 +139,10 @@ impl Accel {
             exact_sticking: false,
             cached_propagators: false,
             contact_runs: false,
+            screen: false,
+            screen_load_bound: false,
+            draw_above_threshold: false,
+            stick_bound: false,
         }
     }
 }

@@ -6,8 +6,8 @@ use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDire
 use crate::analysis::estimate::{normal_ci95, percentile_ci95, Estimate};
 use crate::analysis::lifetime::sampling::{Pool, Strata, STRATA};
 use crate::analysis::lifetime::{
-    capped_statistics, life_statistics, DesignParams, ErrorModel, ErrorScope, FailureLimits, HeelPressureExceedance,
-    ImpulsiveShare, LifeParams, LifeStatistics, Sampling, StormCase, StormOutcome, WaveDraws,
+    capped_statistics, life_statistics, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, FailureLimits,
+    HeelPressureExceedance, ImpulsiveShare, LifeParams, LifeStatistics, Sampling, StormCase, StormOutcome, WaveDraws,
 };
 use crate::analysis::site::WaveSetup;
 use crate::analysis::sizing::failure_modes;
@@ -504,6 +504,10 @@ pub struct DesignReport {
     pub lives: usize,
     pub life_years: usize,
     pub seed: u64,
+    /// `lives = "auto"`: how many lives it took, the target, the relative errors reached and
+    /// whether the target was met ([`AutoLives`]); absent with a fixed number of lives.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub precision: Option<AutoPrecision>,
     pub screen: bool,
     /// The failure limit on the caisson's distance from its place, m (`[design]
     /// failure_sliding_m`, default a quarter of the base width).
@@ -551,6 +555,15 @@ impl DesignReport {
         report
     }
 
+    /// The rule of `lives = "auto"` ([`AutoLives::judge`]) on these statistics: the dynamic
+    /// model's capped E|S| with its standard error and its failed lives, as reported — the one
+    /// place the rule reads the statistics, so it follows any change of their estimators.
+    /// `max_lives`: the run's budget, reported beside.
+    pub fn judge(&self, auto: &AutoLives, max_lives: usize) -> AutoPrecision {
+        let s = &self.dynamic.sliding;
+        auto.judge((s.expected_sliding_m, s.expected_sliding_standard_error_m), s.failure.lives, self.lives, max_lives)
+    }
+
     /// The statistics alone (no warnings) of `lives` of design `p`, with the failure limit
     /// `failure_sliding_m` ([`DesignParams::failure_limit_m`]): for a table of many designs
     /// (the validation report) and tests.
@@ -574,6 +587,7 @@ impl DesignReport {
             lives: lives.len(),
             life_years: years,
             seed: p.seed,
+            precision: None,
             screen: p.screen,
             failure_sliding_m,
             failure_rotation_rad: p.failure_rotation_rad,

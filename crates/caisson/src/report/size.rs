@@ -2,7 +2,7 @@
 
 use super::{kn, ModelReport, Provenance};
 use crate::analysis::checks::{
-    breaking_load_warnings, candidate_warnings, impulsive_warnings, structure_warnings, Warning,
+    breaking_load_warnings, candidate_warnings, impulsive_warnings, precision_warning, structure_warnings, Warning,
 };
 use crate::analysis::conventional::Reached;
 use crate::analysis::conventional::{ChecksAtWidth, ConventionalCriteria, ConventionalWidth, DesignWave};
@@ -30,6 +30,10 @@ pub struct CandidateReport {
     /// Whether the criteria hold at the estimate (dynamic model, rigid block).
     pub dynamic_meets: bool,
     pub rigid_block_meets: bool,
+    /// `[size] lives = "auto"`: the lives this width took and the rule's verdict on them
+    /// ([`Candidate::judge`]); absent with a fixed number of lives.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub precision: Option<crate::analysis::lifetime::AutoPrecision>,
 }
 
 /// The width of Goda's conventional design (docs/size.md, [`crate::analysis::conventional`]):
@@ -70,7 +74,13 @@ pub struct SizeReport {
     pub variable: &'static str,
     pub range_m: (f64, f64),
     pub criteria: Criteria,
+    /// Lives per candidate; with `[size] lives = "auto"` the most a candidate may take
+    /// (`max_lives`), each candidate's own in its `precision`.
     pub lives_per_candidate: usize,
+    /// `[size] lives = "auto"`: the target relative error of each candidate's E|S| and
+    /// P(failure); absent with a fixed number of lives.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_relative_error: Option<f64>,
     pub life_years: usize,
     pub seed: u64,
     /// The climate choices of `[design]` that are not today's model; absent if none (set by the
@@ -84,7 +94,7 @@ pub struct SizeReport {
     pub goda: GodaWidth,
     /// Every evaluated width, by width.
     pub candidates: Vec<CandidateReport>,
-    /// Lives simulated (candidates × lives per candidate).
+    /// Lives simulated (the candidates' lives summed).
     pub lives_simulated: usize,
     pub warnings: Vec<Warning>,
 }
@@ -120,6 +130,7 @@ impl SizeReport {
                     heel_pressure_exceedance: c.heel_pressure_exceedance,
                     dynamic_meets: p.criteria.met(&c.dynamic, c.lives, 0.0),
                     rigid_block_meets: p.criteria.met(&c.rigid_block, c.lives, 0.0),
+                    precision: c.precision,
                 }
             })
             .collect();
@@ -130,6 +141,7 @@ impl SizeReport {
             range_m: p.range_m,
             criteria: p.criteria,
             lives_per_candidate: p.lives,
+            target_relative_error: p.auto.map(|a| a.target_relative_error),
             life_years: design.life.life_years,
             seed: design.seed,
             climate: super::design::ClimateChoices::of(&design.life),
@@ -185,7 +197,8 @@ fn candidate_life_warnings(candidates: &[Candidate], r: &SizeReport, design: &De
     order
         .into_iter()
         .flat_map(|c| {
-            candidate_warnings(c, &design.failure_limits(c.width_m)).into_iter().map(move |mut w| {
+            let precision = c.precision.and_then(|p| precision_warning(&p, "this candidate's lives"));
+            candidate_warnings(c, &design.failure_limits(c.width_m)).into_iter().chain(precision).map(move |mut w| {
                 let which = if Some(c.width_m) == required { ", the required width" } else { "" };
                 w.message = format!("at B = {:.2} m{which}: {}", c.width_m, w.message);
                 w.numbers.insert("width_m", c.width_m);

@@ -13,7 +13,8 @@ use crate::analysis::climate::{
 };
 use crate::analysis::lifetime::Sampling;
 use crate::analysis::lifetime::{
-    DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution, MAX_LIFE_YEARS,
+    AutoLives, DesignParams, ErrorModel, ErrorScope, Errors, LifeParams, StormDistribution, DEFAULT_AUTO_MAX_LIVES,
+    DEFAULT_TARGET_RELATIVE_ERROR, MAX_LIFE_YEARS,
 };
 use crate::analysis::limits::ROCKING_LIMIT_RAD;
 use crate::waves::periods::DEFAULT_SPECTRAL_WIDTH;
@@ -28,7 +29,12 @@ type R<T> = Result<T, ScenarioError>;
 #[serde(deny_unknown_fields)]
 pub struct DesignTable {
     pub life_years: Option<i64>,
-    pub lives: Option<i64>,
+    /// A whole number, or `"auto"` (lives to `target_relative_error`, at most `max_lives`).
+    pub lives: Option<LivesKey>,
+    /// `lives = "auto"`: the target relative standard error of E|S| and of P(failure).
+    pub target_relative_error: Option<f64>,
+    /// `lives = "auto"`: the most lives the run may take.
+    pub max_lives: Option<i64>,
     pub seed: Option<i64>,
     /// `"weibull"` or `"gumbel"`.
     pub storm_distribution: Option<String>,
@@ -95,6 +101,89 @@ pub struct DesignTable {
     pub wave_periods: Option<String>,
     /// Longuet-Higgins periods: the spectral width ν.
     pub period_spectral_width: Option<f64>,
+}
+
+/// A `lives` key as written: a whole number or a word (`"auto"`); any other type is refused
+/// with the words of what is allowed.
+#[derive(Debug, Clone)]
+pub enum LivesKey {
+    Count(i64),
+    Word(String),
+}
+
+impl<'de> Deserialize<'de> for LivesKey {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl serde::de::Visitor<'_> for V {
+            type Value = LivesKey;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a whole number (or \"auto\": lives to `target_relative_error`)")
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<LivesKey, E> {
+                Ok(LivesKey::Count(v))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<LivesKey, E> {
+                Ok(LivesKey::Count(i64::try_from(v).unwrap_or(i64::MAX)))
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<LivesKey, E> {
+                Ok(LivesKey::Word(v.to_string()))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// The lives of `table`'s `lives`, `target_relative_error` and `max_lives` keys: a fixed count
+/// (`default` when absent, refused outside 1..=`hi`), or with `lives = "auto"` the budget
+/// (`max_lives`, default [`DEFAULT_AUTO_MAX_LIVES`] capped at `hi`) and the target (default
+/// [`DEFAULT_TARGET_RELATIVE_ERROR`]); the two keys of "auto" are refused beside a count.
+pub(super) fn lives_keys(
+    table: &str,
+    (lives, target, max_lives): (&Option<LivesKey>, Option<f64>, Option<i64>),
+    default: (usize, Option<AutoLives>),
+    hi: usize,
+) -> R<(usize, Option<AutoLives>)> {
+    let whole = |key: &str, n: i64| -> R<usize> {
+        if (1..=hi as i64).contains(&n) {
+            Ok(n as usize)
+        } else {
+            Err(ScenarioError::range(&format!("{table} {key}"), n, format!("must be a whole number from 1 to {hi}")))
+        }
+    };
+    match lives {
+        Some(LivesKey::Word(w)) if w == "auto" => {
+            let target_relative_error = target.unwrap_or(DEFAULT_TARGET_RELATIVE_ERROR);
+            let auto = AutoLives { target_relative_error }.checked().map_err(|e| {
+                ScenarioError::range(
+                    &format!("{table} target_relative_error"),
+                    super::fmt_value(target_relative_error),
+                    e.allowed.describe(1.0, "the relative standard error of E|S| and of P(failure), e.g. 0.05"),
+                )
+            })?;
+            let budget = max_lives.map_or(Ok(DEFAULT_AUTO_MAX_LIVES.min(hi)), |n| whole("max_lives", n))?;
+            Ok((budget, Some(auto)))
+        }
+        Some(LivesKey::Word(w)) => Err(ScenarioError::range(
+            &format!("{table} lives"),
+            format!("\"{w}\""),
+            format!("must be a whole number from 1 to {hi}, or \"auto\" (lives to `target_relative_error`)"),
+        )),
+        other => {
+            for (key, given) in [("target_relative_error", target.is_some()), ("max_lives", max_lives.is_some())] {
+                if given {
+                    return Err(ScenarioError::Conflict {
+                        message: format!(
+                            "`{table} {key}` is used only with lives = \"auto\" (lives to a target precision); set `{table} lives = \"auto\"` or remove it"
+                        ),
+                    });
+                }
+            }
+            match other {
+                Some(LivesKey::Count(n)) => Ok((whole("lives", *n)?, None)),
+                _ => Ok(default),
+            }
+        }
+    }
 }
 
 /// How a value of a key is shown in its refusal: as the key's value is read
@@ -213,6 +302,8 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
     let thresholds_m = DesignParams::thresholds_m(extra)
         .map_err(|(i, e)| shown_under(&format!("[design] thresholds_m[{i}]"), e, "m", Shown::Plain))?;
     let seed = seed_of("[design] seed", t.seed)?;
+    let (lives, auto) =
+        lives_keys("[design]", (&t.lives, t.target_relative_error, t.max_lives), (5000, None), MAX_LIVES)?;
     let params = DesignParams {
         life: LifeParams {
             life_years,
@@ -224,7 +315,7 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             errors,
             climate,
         },
-        lives: count("lives", t.lives, 5000, MAX_LIVES)?,
+        lives,
         seed,
         thresholds_m,
         screen: t.screen.unwrap_or(true),
@@ -237,7 +328,15 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
             t.sampling.as_deref().unwrap_or("plain"),
             &[("plain", Sampling::Plain), ("stratified", Sampling::Stratified)],
         )?,
+        auto,
     };
+    if params.sampling == Sampling::Stratified && params.auto.is_some() {
+        return Err(ScenarioError::range(
+            "[design] sampling",
+            "\"stratified\"",
+            "is not yet combined with lives = \"auto\": give a number of lives (the pool; about 5 % of them are simulated), or sampling = \"plain\"",
+        ));
+    }
     params.checked().map_err(|e| match e.quantity {
         // Shown in hours, as read (the rule's bounds in seconds, shown in hours).
         "storm_duration_s" => ScenarioError::range(

@@ -776,22 +776,29 @@ impl Scenario {
     }
 
     /// The storms' case of a design or fragility run: the structure, the site's wave loads,
-    /// the rigid-block μ (`[waves] rigid_block_mu`, default μ_s) and where a life ends (the
-    /// failure limits of `[design]`, if any, for this caisson's width).
+    /// the rigid-block μ (`[waves] rigid_block_mu`, default μ_s), where a life ends (the
+    /// failure limits of `[design]`, if any, for this caisson's width) and the lifetime's fast
+    /// paths of `[solver] accel` ([`crate::dynamics::Accel`]): the screen if both `screen` (the
+    /// design's `[design] screen`, or the caller's) and the policy have it, and the screen's load
+    /// bound, drawing above the threshold and stick bound as the policy has them (they act only
+    /// with the screen; so `[design] screen = false` keeps the fingerprint it had).
     pub fn storm_case(&self, screen: bool) -> Result<StormCase<'_>, ScenarioError> {
         let w = self.waves_for("a design or fragility run")?;
         if let Some(d) = &self.design {
             // At high tide the caisson is more submerged: its weight in water must stay positive.
             coherence::check_high_water(&self.structure.caisson, self.water_density_kg_per_m3, d)?;
         }
+        let accel = self.structure.solver.accel;
+        let screen = screen && accel.screen;
         Ok(StormCase {
             structure: &self.structure,
             model: &w.model,
             rigid_block_mu: w.rigid_block_mu(&self.structure.foundation),
             screen,
-            stick_bound: true,
+            screen_load_bound: accel.screen_load_bound,
+            stick_bound: accel.stick_bound,
             settle_rotation: true,
-            draws: WaveDraws::AboveThreshold,
+            draws: if accel.draw_above_threshold { WaveDraws::AboveThreshold } else { WaveDraws::EveryWave },
             failure: self.design.as_ref().map(|d| d.failure_limits(self.structure.caisson.width_m)),
             heel_screen_pa: self.design.as_ref().map_or(f64::INFINITY, DesignParams::heel_screen_pa),
         })

@@ -31,8 +31,13 @@ pub struct SizeTable {
     pub exceedance_probability: Option<f64>,
     /// Criterion: P(failure) ≤ this.
     pub failure_probability: Option<f64>,
-    /// Lives per candidate width (default `[design] lives`).
-    pub lives: Option<i64>,
+    /// Lives per candidate width (default `[design] lives`), or `"auto"`.
+    pub lives: Option<super::design::LivesKey>,
+    /// `lives = "auto"`: the target relative standard error of each candidate's E|S| and
+    /// P(failure).
+    pub target_relative_error: Option<f64>,
+    /// `lives = "auto"`: the most lives of a candidate.
+    pub max_lives: Option<i64>,
     /// Width tolerance, m (default 0.25).
     pub tolerance_m: Option<f64>,
     /// Widths of the design curve's grid (default 8).
@@ -46,6 +51,9 @@ pub struct SizeTable {
     /// Whether the heel pressure limits the conventional width (default false: reported, warned).
     pub heel_pressure_governs: Option<bool>,
 }
+
+/// Most lives per candidate (`[size] lives` or `max_lives`).
+pub const MAX_SIZE_LIVES: usize = 1_000_000;
 
 /// Default width tolerance, m.
 pub const DEFAULT_TOLERANCE_M: f64 = 0.25;
@@ -79,9 +87,12 @@ fn keyed_size(e: SizeParamError) -> ScenarioError {
     }
 }
 
-/// Read `[size]` into [`SizeParams`] (`design_lives`: `[design] lives`, the default lives per
-/// candidate), which checks the values ([`SizeParams::checked`]).
-pub(super) fn validate_size(file: &ScenarioFile, design_lives: usize) -> R<SizeParams> {
+/// Read `[size]` into [`SizeParams`] (`design_lives`: `[design] lives` and its "auto", the
+/// default lives per candidate), which checks the values ([`SizeParams::checked`]).
+pub(super) fn validate_size(
+    file: &ScenarioFile,
+    design_lives: (usize, Option<crate::analysis::lifetime::AutoLives>),
+) -> R<SizeParams> {
     let t = file.size.as_ref().ok_or_else(|| ScenarioError::missing("[size]", "add a [size] table"))?;
     match t.variable.as_deref() {
         None | Some("width_m") => {}
@@ -106,12 +117,16 @@ pub(super) fn validate_size(file: &ScenarioFile, design_lives: usize) -> R<SizeP
             Err(ScenarioError::range(&format!("[size] {key}"), n, format!("must be a whole number from {lo} to {hi}")))
         }
     };
-    let lives = whole("lives", t.lives, design_lives, 1, 1_000_000)?;
+    let (design_n, design_auto) = design_lives;
+    let default = (if design_auto.is_some() { design_n.min(MAX_SIZE_LIVES) } else { design_n }, design_auto);
+    let (lives, auto) =
+        super::design::lives_keys("[size]", (&t.lives, t.target_relative_error, t.max_lives), default, MAX_SIZE_LIVES)?;
     let curve_points = whole("curve_points", t.curve_points, DEFAULT_CURVE_POINTS, 2, 100)?;
     let params = SizeParams {
         range_m: (lo, hi),
         criteria: criteria(t)?,
         lives,
+        auto,
         tolerance_m: t.tolerance_m.unwrap_or(DEFAULT_TOLERANCE_M),
         curve_points,
         conventional: ConventionalCriteria {

@@ -153,7 +153,7 @@ fn with_studies(f: &ScenarioFile, mut sc: Scenario) -> R<Scenario> {
         let size = sc
             .design
             .as_ref()
-            .map(|d| d.lives)
+            .map(|d| (d.lives, d.auto))
             .ok_or_else(|| {
                 ScenarioError::missing("[design]", "a [size] table sizes a design: add the [design] table it runs")
             })

@@ -82,9 +82,10 @@
 //! is none below the breaker height at the wall); in the other storms the nodes up to the highest
 //! node height where those bounds up to it pass neither test (found by bisection) are false without
 //! their loads, the same grid as every node's loads
-//! (`tests::the_bisected_screen_grid_is_every_nodes_grid`). The friction used is the smaller of μ_s
+//! (`tests::the_bisected_screen_grid_is_every_nodes_grid`; off by [`StormCase::screen_load_bound`]). The friction used is the smaller of μ_s
 //! and the rigid block's μ, so a screened wave slides neither model. The share of waves screened is
-//! reported; `screen = false` runs every wave (on the same waves, [`WaveDraws::EveryWave`], the
+//! reported; `screen = false` (`[design] screen`, or the policy's `Accel::screen` off:
+//! [`StormCase::screen`]) runs every wave (on the same waves, [`WaveDraws::EveryWave`], the
 //! screened run gives the same totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
 //! **The stick bound**. The static test lets through many waves that then neither slide nor lift
@@ -234,9 +235,11 @@ mod wave;
 pub use life::{run_lives, simulate_life, LifeFailed};
 pub use outcome::{LifeColumn, StormOutcome, LIFE_COLUMNS};
 pub use params::{
-    failure_rotation_rad, DesignParams, ErrorModel, ErrorScope, Errors, FailureLimits, LifeParams, Sampling, StormCase,
-    StormDistribution, StormInput, WaveDraws, MAX_FAILURE_ROTATION_RAD, MAX_LIFE_YEARS, MAX_LIVES, MAX_STORM_HEIGHT_M,
-    STANDARD_THRESHOLDS_M, STORM_WAVE_WORDS_LOG2,
+    auto_boundaries, failure_rotation_rad, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, Errors,
+    FailureLimits, LifeParams, Sampling, StormCase, StormDistribution, StormInput, WaveDraws, AUTO_BATCH_LIVES,
+    DEFAULT_AUTO_MAX_LIVES, DEFAULT_TARGET_RELATIVE_ERROR, FAILURE_PROBABILITY_FLOOR, MAX_FAILURE_ROTATION_RAD,
+    MAX_LIFE_YEARS, MAX_LIVES, MAX_STORM_HEIGHT_M, MAX_TARGET_RELATIVE_ERROR, STANDARD_THRESHOLDS_M,
+    STORM_WAVE_WORDS_LOG2,
 };
 pub use screen::PSI_IMPULSE;
 pub use statistics::{

@@ -323,27 +323,36 @@ impl LifeParams {
 }
 
 /// What the storms act on: the structure at still water, the site's wave loads, the rigid-block
-/// reference and whether to screen.
+/// reference and the lifetime's fast paths. Those are the lifetime fields of the policy
+/// [`crate::dynamics::Accel`] (`screen`, `screen_load_bound`, `draw_above_threshold`,
+/// `stick_bound`, as [`crate::scenario::Scenario::storm_case`] resolves them: the screen where
+/// both `[design] screen` and the policy have it, the others as the policy has them, acting only
+/// with the screen), kept here
+/// resolved so that a run with another solver (the work estimate's coarse pilot) screens the same.
 #[derive(Debug, Clone, Copy)]
 pub struct StormCase<'a> {
     pub structure: &'a Structure,
     /// The wave-load model at still water (its regime choice is used per wave).
     pub model: &'a WaveLoadModel,
     pub rigid_block_mu: f64,
-    /// Skip the waves that cannot slide the caisson (module docs).
+    /// Skip the waves that cannot slide the caisson (module docs; `Accel::screen`).
     pub screen: bool,
+    /// With the screen, leave the grid's rows and nodes that the bound of the loads over all
+    /// heights up to theirs holds false without their loads (module docs, "The screen";
+    /// `Accel::screen_load_bound`): `false` computes every node's loads (the same grid).
+    pub screen_load_bound: bool,
     /// With the screen, answer the pulsating waves that the bound of the all-sticking response
     /// shows can neither slide nor lift the caisson without running them (module docs, "The
-    /// screen"; [`crate::analysis::stick_bound`]): `false` runs them all (the tests'
-    /// reference).
+    /// screen"; [`crate::analysis::stick_bound`]; `Accel::stick_bound`): `false` runs them all
+    /// (the tests' reference).
     pub stick_bound: bool,
     /// With the stick bound, run the answered waves whose rotation bound may exceed the largest
     /// rotation (module docs, "The stick bound"), so that `max_rotation_rad` is every wave's:
     /// `false` leaves it the largest of the waves run, for what reads only the counts (the work
     /// estimate's screen pilot, whose short lives would run them far more often than a life).
     pub settle_rotation: bool,
-    /// How a screened storm draws its waves (module docs, "Drawing"); without the screen every
-    /// wave is drawn and simulated.
+    /// How a screened storm draws its waves (module docs, "Drawing"; `Accel::draw_above_threshold`);
+    /// without the screen every wave is drawn and simulated.
     pub draws: WaveDraws,
     /// The failure limits whose failing wave a life (or storm) records (module docs, "Failure");
     /// `None`: no failure is recorded. Every life runs to its end either way.
@@ -435,6 +444,9 @@ pub struct DesignParams {
     pub failure_heel_pressure_pa: Option<f64>,
     /// Which lives are simulated ([`Sampling`]).
     pub sampling: Sampling,
+    /// `lives = "auto"`: run lives in batches until the target precision is met, `lives` being
+    /// then the most lives the run may take ([`AutoLives`]); `None`: exactly `lives` lives.
+    pub auto: Option<AutoLives>,
 }
 
 /// Which of a design run's lives are simulated (`[design] sampling`).
@@ -447,6 +459,128 @@ pub enum Sampling {
     /// A share of each stratum of the lives' storm severity, the estimates weighted
     /// ([`super::sampling`]).
     Stratified,
+}
+
+/// Lives to a target precision (`[design] lives = "auto"`, and `[size]`'s per candidate;
+/// docs/design.md, "Lives to a target precision").
+///
+/// The lives run in batches of [`AUTO_BATCH_LIVES`] in index order, and after each batch the
+/// rule ([`AutoLives::judge`]) is applied to the statistics of lives 0..k (k the batch's end):
+/// the run stops at the first k where it is met, or at the budget (the run's `lives`, `[design]
+/// max_lives`) if it is never met. The rule reads only lives 0..k, each of which depends only on
+/// the seed and its index, so the stopping point — and so every statistic — is the same on any
+/// thread count, shard split or resume.
+///
+/// The rule, with t the target relative error:
+///
+/// - **E|S|** (the dynamic model's, each failed life at the sliding limit): its standard error
+///   over its mean, SE/E|S| ≤ t; with every life at 0 (E|S| = 0 and SE = 0) the relative error is
+///   0 (no life slid: nothing varies);
+/// - **P(failure)** (k failed lives of n): the binomial standard error √(p(1 − p)/n) over p =
+///   k/n, √((1 − p)/(k)) ≤ t — which needs about (1 − p)/t² failures, 400 at t = 0.05 — **or**
+///   P(failure) shown negligible: the Wilson 95 % upper bound below
+///   [`FAILURE_PROBABILITY_FLOOR`]. At k = 0 the relative error is undefined and only the bound
+///   can meet the target (about 3.84/n < 10⁻³, 3 840 lives without a failure).
+///
+/// Both must be met.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct AutoLives {
+    /// t, the target relative standard error of E|S| and of P(failure) (default
+    /// [`DEFAULT_TARGET_RELATIVE_ERROR`]).
+    pub target_relative_error: f64,
+}
+
+/// The default target relative error of `lives = "auto"`: 5 %, a 95 % interval of about ±10 %
+/// of the value — the second significant digit of E|S| and of P(failure) known to about one unit,
+/// what the design example's 5000 lives give today (E|S| 0.355 ± 0.018 m, P(failure) 0.068 with a
+/// relative error of 5.2 %). Halving it costs four times the lives.
+pub const DEFAULT_TARGET_RELATIVE_ERROR: f64 = 0.05;
+
+/// The lives of a batch of `lives = "auto"`: the rule is applied every 500 lives. Small enough
+/// that a run stops within 10 % of the lives it needs once past 5000, large enough that both
+/// threads stay busy (a batch's end leaves a core idle for at most one life) and that the
+/// statistics recomputed at each boundary (O(n log n)) stay a small part of the run.
+pub const AUTO_BATCH_LIVES: usize = 500;
+
+/// The default budget of `lives = "auto"` (`max_lives`): 100 000 lives, what a relative error of
+/// 5 % on a lifetime P(failure) of 1 % needs ((1 − p)/(p t²) = 39 600 lives) with room to spare;
+/// 160 s of CPU at the design example's 1.6 ms a life. A smaller P(failure) is met by the floor.
+pub const DEFAULT_AUTO_MAX_LIVES: usize = 100_000;
+
+/// The floor of P(failure) in the rule of `lives = "auto"` ([`AutoLives`]): a P(failure) whose
+/// Wilson 95 % upper bound is below 10⁻³ is taken as negligible: a tenth of the smallest lifetime
+/// probability of failure a design would read to one significant digit from the default budget
+/// (1 %, above). Without a failure it takes 3 840 lives to show.
+pub const FAILURE_PROBABILITY_FLOOR: f64 = 1e-3;
+
+/// The largest target relative error: beyond 0.5 not even the first digit is known.
+pub const MAX_TARGET_RELATIVE_ERROR: f64 = 0.5;
+
+/// What the rule of [`AutoLives`] found of lives 0..n: the `precision` object of design.json and
+/// of each candidate of size.json.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct AutoPrecision {
+    /// The target t.
+    pub target_relative_error: f64,
+    /// The lives it took (the statistics' lives), and the most the run could take.
+    pub lives: usize,
+    pub max_lives: usize,
+    /// The batch of the rule, lives ([`AUTO_BATCH_LIVES`]).
+    pub batch_lives: usize,
+    /// SE/E|S| of the dynamic model's capped E|S| (0 when no life slid).
+    pub expected_sliding_relative_error: f64,
+    /// SE/P of the dynamic model's P(failure); `None` (null) without a failed life.
+    pub failure_relative_error: Option<f64>,
+    /// The Wilson 95 % upper bound of P(failure), and the floor below which it meets the target.
+    pub failure_probability_upper: f64,
+    pub failure_probability_floor: f64,
+    pub expected_sliding_met: bool,
+    pub failure_met: bool,
+    /// Both met: the run stopped at the target; `false`: the budget ran out first.
+    pub met: bool,
+}
+
+impl AutoLives {
+    /// The target if in range: t in (0, [`MAX_TARGET_RELATIVE_ERROR`]], refused naming
+    /// `target_relative_error`.
+    pub fn checked(self) -> Result<Self, ParamError> {
+        interval("target_relative_error", self.target_relative_error, 0.0, MAX_TARGET_RELATIVE_ERROR, true)?;
+        Ok(self)
+    }
+
+    /// The rule (type docs) on E|S| = `mean` with standard error `se`, and `failures` failed
+    /// lives of `lives`; `max_lives` is reported beside.
+    pub fn judge(&self, (mean, se): (f64, f64), failures: usize, lives: usize, max_lives: usize) -> AutoPrecision {
+        let t = self.target_relative_error;
+        let es = if se == 0.0 { 0.0 } else { se / mean };
+        let n = lives.max(1) as f64;
+        let p = failures as f64 / n;
+        let failure_relative_error = (failures > 0).then(|| (p * (1.0 - p) / n).sqrt() / p);
+        let upper =
+            if lives == 0 { 1.0 } else { crate::analysis::estimate::wilson_ci95(failures as u64, lives as u64)[1] };
+        let expected_sliding_met = lives > 0 && es <= t;
+        let failure_met =
+            lives > 0 && (failure_relative_error.is_some_and(|r| r <= t) || upper < FAILURE_PROBABILITY_FLOOR);
+        AutoPrecision {
+            target_relative_error: t,
+            lives,
+            max_lives,
+            batch_lives: AUTO_BATCH_LIVES,
+            expected_sliding_relative_error: es,
+            failure_relative_error,
+            failure_probability_upper: upper,
+            failure_probability_floor: FAILURE_PROBABILITY_FLOOR,
+            expected_sliding_met,
+            failure_met,
+            met: expected_sliding_met && failure_met,
+        }
+    }
+}
+
+/// The batch boundaries of `lives = "auto"` up to the budget `max_lives`: 500, 1000, …, and
+/// `max_lives` itself if it is not a multiple of [`AUTO_BATCH_LIVES`].
+pub fn auto_boundaries(max_lives: usize) -> impl Iterator<Item = usize> {
+    (1..=max_lives.div_ceil(AUTO_BATCH_LIVES)).map(move |b| (b * AUTO_BATCH_LIVES).min(max_lives))
 }
 
 /// Most lives of a design run (`[design] lives`, the CLI's `--lives`, Python's `Design(lives=)`).
@@ -488,7 +622,8 @@ impl DesignParams {
         if let Some(q) = self.failure_heel_pressure_pa {
             heel_pressure_limit("failure_heel_pressure_pa", q)?;
         }
-        Ok(DesignParams { life, ..self })
+        let auto = self.auto.map(AutoLives::checked).transpose()?;
+        Ok(DesignParams { life, auto, ..self })
     }
 
     /// The reported thresholds: [`STANDARD_THRESHOLDS_M`] and `extra_m`, sorted, each once;

@@ -130,18 +130,20 @@ pub(super) struct StormScreen {
 
 impl StormScreen {
     /// The grid of storm `s` on `site` (every node false without the screen); `t13` are the
-    /// loads and the bound at the storm's T1/3 (the one period node of waves at T1/3).
+    /// loads and the bound at the storm's T1/3 (the one period node of waves at T1/3). The bound
+    /// of the loads is used where [`StormCase::screen_load_bound`] has it.
     pub(super) fn new(
         st: &StormCase<'_>,
         s: &StormInput,
         site: &StormSite,
         t13: (&PeriodLoads<'_>, ScreenBound),
     ) -> Self {
-        Self::grid(st, s, site, t13, true)
+        Self::grid(st, s, site, t13, st.screen_load_bound)
     }
 
-    /// [`Self::new`]; `bisect`: leave the nodes the bound of the loads up to their height holds
-    /// without their loads (`false`: every node's loads, the tests' reference).
+    /// [`Self::new`]; `bisect`: leave the rows and the nodes the bound of the loads up to their
+    /// height holds false without their loads (`false`: every node's loads, the tests' reference
+    /// and [`StormCase::screen_load_bound`] off).
     pub(super) fn grid(
         st: &StormCase<'_>,
         s: &StormInput,
@@ -174,7 +176,7 @@ impl StormScreen {
             // bisection; the bound covers every lower node whatever the others give) are false
             // without their loads.
             let still_up_to = |h: f64| loads_at.peak_bound(h).is_some_and(|b| !may_pass(&s.scaled(&b), &bound));
-            if still_up_to(hmax) {
+            if bisect && still_up_to(hmax) {
                 continue;
             }
             let node_h = |i: usize| (i as f64 * dh).max(1e-3 * hmax);
