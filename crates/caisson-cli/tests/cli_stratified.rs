@@ -107,3 +107,13 @@ fn a_bad_sampling_is_refused() {
     let file = write(dir.path(), "d.toml", &design_text(10, 1, "sampling = \"importance\""));
     refused(&["design", s(&file)], &["[design] sampling", "\"importance\"", "\"plain\"", "\"stratified\""]);
 }
+
+/// `caisson size` does not yet sample: a stratified `[design]` is refused, not run plain.
+#[test]
+fn size_refuses_a_stratified_design() {
+    let text = std::fs::read_to_string(support::example("size_breakwater.toml")).unwrap();
+    let text = text.replacen("[design]", "[design]\nsampling = \"stratified\"", 1);
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(dir.path(), "s.toml", &text);
+    refused(&["size", s(&file)], &["[design] sampling", "\"stratified\"", "is not yet used by `caisson size`"]);
+}

@@ -83,6 +83,13 @@ impl<'a> Sizer<'a> {
     pub fn new(sc: &'a Scenario, what: &str) -> Result<Self, SizeError> {
         let params = *sc.size_for(what)?;
         let design = sc.design_for(what)?.clone();
+        if design.sampling == crate::analysis::lifetime::Sampling::Stratified {
+            return Err(SizeError::Scenario(ScenarioError::range(
+                "[design] sampling",
+                "\"stratified\"",
+                format!("is not yet used by {what} (it sizes on every life): set sampling = \"plain\" or remove it; `caisson design` of one width takes it"),
+            )));
+        }
         if sc.caisson_spec().construction().is_none() {
             return Err(SizeError::NoConstruction(what.to_string()));
         }
