@@ -7,7 +7,7 @@
 mod support;
 
 use std::path::Path;
-use support::{caisson, design_text, refused, s, write};
+use support::{caisson, design_text, refused, s, site, write};
 
 const OUTPUTS: [&str; 5] = ["design.json", "lives.csv", "histogram.svg", "exceedance.svg", "heel_pressure.svg"];
 
@@ -108,12 +108,48 @@ fn a_bad_sampling_is_refused() {
     refused(&["design", s(&file)], &["[design] sampling", "\"importance\"", "\"plain\"", "\"stratified\""]);
 }
 
-/// `caisson size` does not yet sample: a stratified `[design]` is refused, not run plain.
+/// `caisson size` with a stratified `[design]`: the same lives at every width (their storms'
+/// severity does not depend on the caisson), each candidate the stratified estimate of `caisson
+/// design` at its width, and the same size.json on 1 and 2 threads; `[size] lives = "auto"` beside
+/// it is refused.
 #[test]
-fn size_refuses_a_stratified_design() {
-    let text = std::fs::read_to_string(support::example("size_breakwater.toml")).unwrap();
-    let text = text.replacen("[design]", "[design]\nsampling = \"stratified\"", 1);
+fn a_stratified_sizing_is_the_design_at_each_width() {
     let dir = tempfile::tempdir().unwrap();
+    let keys = "range_m = [8.0, 30.0]\nexpected_sliding_m = 0.05\ntolerance_m = 2.0\ncurve_points = 3\nlives = 3000";
+    let text = site::with(&support::sizing_text(keys), "design", "sampling = \"stratified\"");
     let file = write(dir.path(), "s.toml", &text);
-    refused(&["size", s(&file)], &["[design] sampling", "\"stratified\"", "is not yet used by `caisson size`"]);
+    let size = |threads: &str| {
+        let o = caisson().args(["size", s(&file), "--json", "--threads", threads]).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    let one = size("1");
+    assert!(one == size("2"), "size.json differs between 1 and 2 threads");
+    let j: serde_json::Value = serde_json::from_slice(&one).unwrap();
+    let candidates = j["candidates"].as_array().unwrap();
+    let mut compared = 0;
+    for c in candidates.iter().take(2) {
+        let w = c["width_m"].as_f64().unwrap();
+        let at = site::with(&site::without(&text, "caisson", &["width_m"]), "caisson", &format!("width_m = {w}"));
+        let f = write(dir.path(), "w.toml", &at);
+        let o = caisson().args(["design", s(&f), "--json", "--lives", "3000"]).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let d: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(d["sampling"]["pool_lives"], 3000);
+        for (key, design_key) in [("expected_sliding_m", "expected_sliding_m"), ("failure_probability", "failure")] {
+            let want = if design_key == "failure" {
+                d["dynamic"]["failure"]["probability"].as_f64().unwrap()
+            } else {
+                d["dynamic"][design_key].as_f64().unwrap()
+            };
+            let got = c["dynamic"][key].as_f64().unwrap();
+            assert!((got - want).abs() <= 1e-12 * want.abs().max(1e-12), "{w} m {key}: size {got}, design {want}");
+            compared += 1;
+        }
+    }
+    assert_eq!(compared, 4);
+    let auto = support::sizing_text("range_m = [8.0, 30.0]\nexpected_sliding_m = 0.05\nlives = \"auto\"");
+    let auto = site::with(&auto, "design", "sampling = \"stratified\"");
+    let f = write(dir.path(), "auto.toml", &auto);
+    refused(&["size", s(&f)], &["[design] sampling", "[size] lives = \"auto\""]);
 }

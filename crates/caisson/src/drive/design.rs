@@ -90,8 +90,13 @@ impl<'a> Designer<'a> {
         design_fingerprint(&self.case, &self.design)
     }
 
-    /// The work of `lives` lives of this run (a shard's, or the run's own count).
+    /// The work of `lives` lives of this run (a shard's, or the run's own count; a stratified
+    /// run's of the lives it simulates, [`crate::analysis::lifetime::sampling::work_lives`]).
     pub fn estimate(&self, lives: usize) -> WorkEstimate {
+        let lives = match self.design.sampling {
+            Sampling::Stratified => crate::analysis::lifetime::sampling::work_lives(lives),
+            Sampling::Plain => lives,
+        };
         work::design(&self.case, &DesignParams { lives, ..self.design.clone() }, self.waves)
     }
 

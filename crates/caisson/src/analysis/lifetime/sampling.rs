@@ -45,6 +45,26 @@ pub const STRATA: usize = 6;
 pub const STRATUM_QUANTILES: [f64; STRATA - 1] = [0.6, 0.8, 0.9, 0.96, 0.99];
 /// The share of each stratum's lives simulated, lowest first.
 pub const STRATUM_FRACTIONS: [f64; STRATA] = [0.01, 0.03, 0.1, 0.2, 0.3, 0.4];
+/// The share of a pool the sample simulates on average: Σ_h (q_h − q_{h−1}) f_h over the strata's
+/// quantile bounds, 4.7 %.
+pub fn expected_share() -> f64 {
+    let mut lower = 0.0;
+    let mut share = 0.0;
+    for (h, f) in STRATUM_FRACTIONS.iter().enumerate() {
+        let upper = STRATUM_QUANTILES.get(h).copied().unwrap_or(1.0);
+        share += (upper - lower) * f;
+        lower = upper;
+    }
+    share
+}
+
+/// The lives of a pool of `lives` the work estimate counts: the expected sample, times 2.5 — the
+/// top strata's lives are the costliest (on the design example 1.4 ms a life against 0.55 ms on
+/// average, BENCHMARKS.md), and the pilot that estimates the cost of a life runs plain lives.
+pub fn work_lives(lives: usize) -> usize {
+    ((lives as f64 * expected_share() * 2.5).ceil() as usize).clamp(1, lives.max(1))
+}
+
 /// The storms of a life whose heights at the structure rank it ([`severity`]).
 pub const RANKED_STORMS: usize = 3;
 /// Lives 0..PILOT_LIVES of the stream set the strata's bounds.
