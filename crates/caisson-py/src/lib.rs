@@ -1047,16 +1047,16 @@ fn life_columns() -> Vec<&'static str> {
 /// once, ascending). The lives are joined by the merge rules of `caisson merge`: lives 0..N with
 /// N the largest index + 1, every one given ([`Merge`]): a gap is refused (`ValueError`).
 ///
-/// A stratified design (`[design] sampling = "stratified"`) needs its sample of lives 0..`lives`
+/// A stratified design (`[design] sampling = "stratified"`) needs its sample of lives 0..`pool_lives`
 /// ([`design_sample`]), every one given, and no other.
 #[pyfunction]
-#[pyo3(signature = (sc, columns, life, lives=None))]
+#[pyo3(signature = (sc, columns, life, pool_lives=None))]
 fn design_statistics(
     py: Python<'_>,
     sc: &CoreScenario,
     columns: Bound<'_, PyDict>,
     life: Vec<usize>,
-    lives: Option<usize>,
+    pool_lives: Option<usize>,
 ) -> PyResult<String> {
     let run = designer(py, &sc.sc, None)?;
     let mut rows: Vec<serde_json::Map<String, serde_json::Value>> = Vec::new();
@@ -1117,7 +1117,7 @@ fn design_statistics(
         };
     }
     // A stratified design's pool: the Design's lives.
-    let n = lives.unwrap_or(run.design.lives);
+    let n = pool_lives.unwrap_or(run.design.lives);
     let sample = py.detach(|| run.sample(0..n));
     let lives = match &sample {
         Some(s) => sampled(life, lives, n, &s.pool.indices())?,
