@@ -53,7 +53,8 @@ use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, wi
 use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
 use caisson::analysis::lifetime::{LifeColumn, StormOutcome, LIFE_COLUMNS};
-use caisson::drive::design::{AutoRun, DesignOptions, Designer};
+use caisson::analysis::stratified::TwoPhase;
+use caisson::drive::design::{AutoRun, DesignOptions, Designer, Sample};
 use caisson::report::design::DesignReport;
 use caisson::scenario::{self, Scenario};
 use std::collections::BTreeMap;
@@ -65,15 +66,34 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 /// `lives.csv`: one row per life, its index first.
+/// A life's cells of `lives.csv`, in [`LIFE_COLUMNS`]' order.
+fn life_cells(l: &StormOutcome) -> impl Iterator<Item = String> + '_ {
+    LIFE_COLUMNS.iter().map(move |(_, c)| match c {
+        LifeColumn::Metres(f) | LifeColumn::Radians(f) | LifeColumn::Kilopascals(f) => format!("{:e}", f(l)),
+        LifeColumn::Count(f) => f(l).to_string(),
+    })
+}
+
 fn lives_csv<'a>(lives: impl Iterator<Item = (usize, &'a StormOutcome)>) -> Result<Vec<u8>> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(std::iter::once("life").chain(LIFE_COLUMNS.iter().map(|(name, _)| *name)))?;
     for (i, l) in lives {
-        let cells = LIFE_COLUMNS.iter().map(|(_, c)| match c {
-            LifeColumn::Metres(f) | LifeColumn::Radians(f) | LifeColumn::Kilopascals(f) => format!("{:e}", f(l)),
-            LifeColumn::Count(f) => f(l).to_string(),
-        });
+        let cells = life_cells(l);
         w.write_record(std::iter::once(i.to_string()).chain(cells))?;
+    }
+    Ok(w.into_inner()?)
+}
+
+/// `lives.csv` of a stratified run: its simulated lives (`selected`: index and stratum), each with
+/// its stratum and its weight in the estimates (docs/design.md, "Stratified sampling").
+fn sampled_lives_csv(selected: &[(usize, usize)], lives: &[StormOutcome], weights: &[f64]) -> Result<Vec<u8>> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let names = LIFE_COLUMNS.iter().map(|(name, _)| *name);
+    w.write_record(std::iter::once("life").chain(names).chain(["stratum", "weight"]))?;
+    for ((&(i, h), l), weight) in selected.iter().zip(lives).zip(weights) {
+        let cells = life_cells(l);
+        let tail = [h.to_string(), format!("{weight:e}")];
+        w.write_record(std::iter::once(i.to_string()).chain(cells).chain(tail))?;
     }
     Ok(w.into_inner()?)
 }
@@ -86,7 +106,19 @@ const PLOT_FLOOR_M: f64 = 1e-4;
 /// The histogram of the life totals |S| (dynamic and rigid block; a failed life at the failure
 /// limit, as in the statistics) on log-spaced bins, and their exceedance curves P(|S| > s), both
 /// on logarithmic axes from 0.1 mm, with the failure limit.
-fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64) -> Result<()> {
+///
+/// `est`: a stratified run's estimator of the lives (every share weighted, the band its
+/// intervals; `None`: every life weighs 1/n).
+fn plots(
+    dir: &Path,
+    title: &str,
+    dynamic: &[f64],
+    rigid: &[f64],
+    failure_m: f64,
+    est: Option<&TwoPhase>,
+) -> Result<()> {
+    // A life's share of the lives: its weight, or 1/n.
+    let share = |i: usize, n: usize| est.map_or(1.0 / n.max(1) as f64, |e| e.weights()[i]);
     let max = dynamic.iter().chain(rigid).copied().fold(0.0, f64::max).max(10.0 * PLOT_FLOOR_M);
     let bottom = PLOT_FLOOR_M.log10();
     let bins = ((max.log10().ceil() - bottom) * BINS_PER_DECADE).round().max(1.0) as usize;
@@ -95,15 +127,18 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     // One stepped line per run of non-empty bins (an empty bin has no place on a log axis).
     let hist = |v: &[f64], label: &str, dashed: bool| -> Vec<Series> {
         let mut c = vec![0usize; bins];
-        for &x in v.iter().filter(|&&x| x >= PLOT_FLOOR_M) {
-            c[(((x.log10() - bottom) * BINS_PER_DECADE) as usize).min(bins - 1)] += 1;
+        let mut weight = vec![0.0_f64; bins];
+        for (j, &x) in v.iter().enumerate().filter(|(_, &x)| x >= PLOT_FLOOR_M) {
+            let b = (((x.log10() - bottom) * BINS_PER_DECADE) as usize).min(bins - 1);
+            c[b] += 1;
+            weight[b] += share(j, v.len());
         }
         let mut runs: Vec<Vec<(f64, f64)>> = Vec::new();
         for (i, &n) in c.iter().enumerate() {
             if n == 0 {
                 continue;
             }
-            let y = n as f64 / v.len().max(1) as f64;
+            let y = if est.is_some() { weight[i] } else { n as f64 / v.len().max(1) as f64 };
             match runs.last_mut() {
                 Some(r) if i > 0 && c[i - 1] > 0 => r.extend([(edge(i), y), (edge(i + 1), y)]),
                 _ => runs.push(vec![(edge(i), y), (edge(i + 1), y)]),
@@ -127,7 +162,16 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     // The failed lives make the bar at the limit: the line marks it (and lifts the axis to 1, so
     // the legend does not cover the bars).
     let least = 1.0 / dynamic.len().max(1) as f64;
-    let at_limit = dynamic.iter().filter(|&&x| x >= failure_m).count() as f64 * least;
+    let at_limit = match est {
+        Some(_) => dynamic.iter().enumerate().filter(|(_, &x)| x >= failure_m).map(|(i, _)| share(i, 0)).sum(),
+        None => dynamic.iter().filter(|&&x| x >= failure_m).count() as f64 * least,
+    };
+    let below = |v: &[f64]| -> f64 {
+        match est {
+            Some(_) => v.iter().enumerate().filter(|(_, &x)| x < PLOT_FLOOR_M).map(|(i, _)| share(i, 0)).sum(),
+            None => below(v) as f64 / v.len().max(1) as f64,
+        }
+    };
     series.push(Series::line(
         format!("failure limit {failure_m:.3} m ({:.2} % of lives at it)", 100.0 * at_limit),
         vec![(failure_m, least), (failure_m, 1.0)],
@@ -137,8 +181,8 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
         &format!("Sliding |S| over the design life\n{title}"),
         &format!(
             "|S| at the end of the life (m; a failed life at the limit); not shown: the {:.1} % (dynamic) and {:.1} % (rigid block) of lives below 0.1 mm",
-            100.0 * below(dynamic) as f64 / dynamic.len().max(1) as f64,
-            100.0 * below(rigid) as f64 / rigid.len().max(1) as f64
+            100.0 * below(dynamic),
+            100.0 * below(rigid)
         ),
         &[Panel {
             y_label: "share of lives".into(),
@@ -147,6 +191,20 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
         log,
     )?;
     let exceed = |v: &[f64]| -> Vec<(f64, f64)> {
+        if let Some(e) = est {
+            // P(|S| ≥ x) at each life's x: the weights at and beyond it.
+            let mut order: Vec<usize> = (0..v.len()).collect();
+            order.sort_by(|&a, &b| v[a].total_cmp(&v[b]));
+            let mut tail: f64 = 1.0;
+            let mut points = Vec::new();
+            for &i in &order {
+                if v[i] >= PLOT_FLOOR_M {
+                    points.push((v[i], tail.max(0.0)));
+                }
+                tail -= e.weights()[i];
+            }
+            return points;
+        }
         let mut s = v.to_vec();
         s.sort_by(f64::total_cmp);
         let n = s.len().max(1) as f64;
@@ -156,6 +214,21 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
     // interval of the k = n − i lives at or beyond it (docs/design.md, "Intervals").
     type Curve = Vec<(f64, f64)>;
     let band = |v: &[f64]| -> (Curve, Curve) {
+        if let Some(e) = est {
+            // The stratified proportion's interval at each life's |S|.
+            let mut sorted = v.to_vec();
+            sorted.sort_by(f64::total_cmp);
+            let floor = e.weights().iter().copied().fold(f64::INFINITY, f64::min);
+            return sorted
+                .iter()
+                .filter(|&&x| x >= PLOT_FLOOR_M)
+                .map(|&x| {
+                    let at_or_beyond: Vec<bool> = v.iter().map(|&y| y >= x).collect();
+                    let ci = e.proportion(&at_or_beyond).ci95;
+                    ((x, ci[0].max(floor)), (x, ci[1]))
+                })
+                .unzip();
+        }
         let mut s = v.to_vec();
         s.sort_by(f64::total_cmp);
         let n = s.len().max(1) as u64;
@@ -169,7 +242,8 @@ fn plots(dir: &Path, title: &str, dynamic: &[f64], rigid: &[f64], failure_m: f64
             .unzip()
     };
     let (low, high) = band(dynamic);
-    let floor = 1.0 / dynamic.len().max(1) as f64;
+    let floor =
+        est.map_or(1.0 / dynamic.len().max(1) as f64, |e| e.weights().iter().copied().fold(f64::INFINITY, f64::min));
     panels_scaled(
         &dir.join("exceedance.svg"),
         &format!("Probability that the life's sliding |S| exceeds s\n{title}"),
@@ -292,6 +366,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
     // The lives this run computes: a shard's range, not the scenario's whole count. Its pilots
     // run on the run's threads.
     let estimate = with_threads(args.threads, || run.estimate(range.len()))?;
+    // A stratified run simulates its sample of the range (docs/design.md, "Stratified sampling").
+    let sample = with_threads(args.threads, || run.sample(range.clone()))?;
+    let wanted = run.to_simulate(range.clone(), sample.as_ref());
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = run.fingerprint();
     // Taken before the checkpoint is read or written: a second run on it refuses up front.
@@ -314,19 +391,29 @@ pub fn run(args: DesignArgs) -> Result<()> {
         None => (BTreeMap::new(), None, None),
     };
     // A checkpoint resumed for other lives keeps the lives outside them but does not use them.
-    let outside: BTreeMap<usize, StormOutcome> =
+    let mut outside: BTreeMap<usize, StormOutcome> =
         done.iter().filter(|(i, _)| !range.contains(*i)).map(|(&i, &o)| (i, o)).collect();
+    let mut outside_extra: BTreeMap<usize, StormOutcome> = BTreeMap::new();
     done.retain(|i, _| range.contains(i));
     if slot.is_some() {
         // Ctrl-C: finish the lives in progress, keep them in the checkpoint, exit 130.
         crate::interrupt::graceful();
     }
-    let todo: Vec<usize> = range.clone().filter(|i| !done.contains_key(i)).collect();
+    if sample.is_some() {
+        // A checkpoint of the range may hold lives the sample does not simulate: kept, not used.
+        let kept_aside: Vec<usize> = done.keys().filter(|i| wanted.binary_search(i).is_err()).copied().collect();
+        for i in kept_aside {
+            if let Some(o) = done.remove(&i) {
+                outside_extra.insert(i, o);
+            }
+        }
+    }
+    let todo: Vec<usize> = wanted.iter().copied().filter(|i| !done.contains_key(i)).collect();
     // `lives = "auto"` of a whole run (a shard runs its fixed range: `caisson merge` applies the
     // rule): batches until the target is met, lives 0..max_lives at most.
     let auto = run.auto().is_some() && !shard;
     crate::work::say(note);
-    let pb = progress(range.len() as u64, "lives", "");
+    let pb = progress(wanted.len() as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
     let opening = checkpoint.as_deref().zip(header_line.as_deref()).filter(|_| !args.resume);
@@ -367,8 +454,9 @@ pub fn run(args: DesignArgs) -> Result<()> {
         // lives beyond k: kept in it, not reported).
         (true, Some(_)) => {}
         (true, None) => refuse_incomplete(done.len(), None, &kept())?,
-        (false, _) => refuse_incomplete(done.len(), Some(range.len()), &kept())?,
+        (false, _) => refuse_incomplete(done.len(), Some(wanted.len()), &kept())?,
     }
+    outside.append(&mut outside_extra);
     // The outputs (and the checkpoint, if it is in --out) are one set.
     let _set = args.out.as_deref().map(crate::output::OutSet::open);
     if let (Some(path), Some(header_line)) = (&checkpoint, &header_line) {
@@ -380,7 +468,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     }
     let lives: Vec<StormOutcome> = done.into_values().take(stop.unwrap_or(usize::MAX)).collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
-    report_lives(&run, &lives, args.json, args.out.as_deref(), &keep)
+    report_lives(&run, &lives, sample.as_ref(), args.json, args.out.as_deref(), &keep)
 }
 
 /// The lives `todo` on `threads` workers, each appended to the checkpoint (or kept for it while it
@@ -499,12 +587,14 @@ fn rewrite_checkpoint(
 pub(crate) fn report_lives(
     run: &Designer<'_>,
     lives: &[StormOutcome],
+    sample: Option<&Sample>,
     json: bool,
     out: Option<&Path>,
     keep: &[&Path],
 ) -> Result<()> {
     let failure_m = run.failure_limits().sliding_m;
-    let report = run.report(lives);
+    let report = run.report_sampled(lives, sample);
+    let est = sample.map(|s| s.pool.estimator(&s.strata));
     let doc = report_json(&report, "design")?;
     crate::output::print_warning_lines(&report.warnings);
     if json {
@@ -524,9 +614,16 @@ pub(crate) fn report_lives(
         // set renames them into place together), the first error in this order reported.
         let (json_file, csv_file, plot_files) = std::thread::scope(|s| {
             let json_file = s.spawn(|| write_atomic(&dir.join("design.json"), pretty(&doc)?.as_bytes()));
-            let csv_file = s.spawn(|| write_atomic(&dir.join("lives.csv"), &lives_csv(lives.iter().enumerate())?));
-            let plot_files = plots(dir, title, &dynamic, &rigid, failure_m)
-                .and_then(|()| heel_pressure_plot(dir, title, lives, &report.dynamic.heel_pressure_exceedance));
+            let csv_file = s.spawn(|| {
+                let csv = match (sample, &est) {
+                    (Some(s), Some(e)) => sampled_lives_csv(&s.pool.selected, lives, e.weights())?,
+                    _ => lives_csv(lives.iter().enumerate())?,
+                };
+                write_atomic(&dir.join("lives.csv"), &csv)
+            });
+            let plot_files = plots(dir, title, &dynamic, &rigid, failure_m, est.as_ref()).and_then(|()| {
+                heel_pressure_plot(dir, title, lives, &report.dynamic.heel_pressure_exceedance, est.as_ref())
+            });
             let joined = |h: std::thread::ScopedJoinHandle<'_, Result<()>>| {
                 h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
             };
@@ -568,6 +665,16 @@ fn design_header(r: &DesignReport, t: &mut String) {
         100.0 * r.screened_waves as f64 / r.waves.max(1) as f64,
         if r.screen { "" } else { " (screen off)" }
     );
+    if let Some(s) = &r.sampling {
+        let per: Vec<String> = s.strata.iter().map(|h| format!("{} of {}", h.simulated_lives, h.pool_lives)).collect();
+        let _ = writeln!(
+            t,
+            "stratified sampling: {} of the {} lives simulated, by the severity of their storms (max H_max² F; by stratum, mildest first: {}); every statistic weighted (docs/design.md)",
+            s.simulated_lives,
+            s.pool_lives,
+            per.join(", ")
+        );
+    }
     if let Some(p) = &r.precision {
         let _ = writeln!(t, "{}", precision_text(p));
     }
@@ -778,14 +885,31 @@ fn heel_pressure_plot(
     title: &str,
     lives: &[StormOutcome],
     h: &caisson::analysis::lifetime::HeelPressureExceedance,
+    est: Option<&TwoPhase>,
 ) -> Result<()> {
-    let mut q: Vec<f64> = lives.iter().map(|l| l.max_heel_pressure_kpa).collect();
-    q.sort_by(f64::total_cmp);
-    let n = q.len().max(1) as f64;
-    let curve = |keep: &dyn Fn(f64) -> bool| -> Vec<(f64, f64)> {
-        q.iter().enumerate().filter(|(_, &x)| keep(x)).map(|(i, &x)| (x, 1.0 - i as f64 / n)).collect()
-    };
-    let floor = 1.0 / n;
+    let mut order: Vec<usize> = (0..lives.len()).collect();
+    order.sort_by(|&a, &b| lives[a].max_heel_pressure_kpa.total_cmp(&lives[b].max_heel_pressure_kpa));
+    let n = lives.len().max(1) as f64;
+    // Each life's P(q_heel ≥ its q): 1 − i/n, or a stratified run's weights at and beyond it.
+    let mut tail = 1.0;
+    let points: Vec<(f64, f64)> = order
+        .iter()
+        .enumerate()
+        .map(|(k, &i)| {
+            let p = match est {
+                Some(e) => {
+                    let p = tail;
+                    tail -= e.weights()[i];
+                    p
+                }
+                None => 1.0 - k as f64 / n,
+            };
+            (lives[i].max_heel_pressure_kpa, p)
+        })
+        .collect();
+    let curve =
+        |keep: &dyn Fn(f64) -> bool| -> Vec<(f64, f64)> { points.iter().filter(|(x, _)| keep(*x)).copied().collect() };
+    let floor = est.map_or(1.0 / n, |e| e.weights().iter().copied().fold(f64::INFINITY, f64::min));
     let exact = h.exact_from_kpa;
     let mut series = vec![Series::line(format!("exact (from {exact} kPa)"), curve(&|x| x >= exact))];
     let below = curve(&|x| x < exact);

@@ -168,14 +168,19 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let n = run.design.lives;
     let file = args.scenario.display().to_string();
 
+    // A stratified run's sample of lives 0..N: the lives the shards must hold.
+    let sample = crate::output::with_threads(0, || run.sample(0..n))?;
+    let indices = run.to_simulate(0..n, sample.as_ref());
+    let wanted = sample.as_ref().map(|_| indices.as_slice());
     let lives = match run.auto() {
-        None => read_shards(&shards, &fingerprint, n, &args)?,
+        None => read_shards(&shards, &fingerprint, n, wanted, &args)?,
         Some(_) => auto_lives(&run, read_auto_shards(&shards, &fingerprint, n, &args)?, &shards, &args)?,
     };
     // The header of one run: lives 0..N, or with `lives = "auto"` the budget's range 0..max_lives
     // (holding lives 0..k, as the run's checkpoint does).
     let header_range = 0..n;
-    let n = lives.len();
+    // The lives merged: 0..k (a stratified run: its sample of 0..N).
+    let n = if sample.is_some() { n } else { lives.len() };
 
     // The merged checkpoint: the header and the lines of one run of lives 0..N.
     ensure_dir(&args.out)?;
@@ -183,11 +188,12 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let _lock = CheckpointLock::acquire(&cp_path, "merge")?;
     // The checkpoint and the outputs of report_lives: one set.
     let _set = crate::output::OutSet::open(&args.out);
-    write_merged_checkpoint(&cp_path, &Header::new(fingerprint, &header_range, brute_force).line(), &lives)?;
+    let header = Header::new(fingerprint, &header_range, brute_force).line();
+    write_merged_checkpoint(&cp_path, &header, indices.iter().copied().zip(&lives))?;
     if !args.json {
         crate::sayln!("Merged {} shards: lives 0..{n} of {file}\n", shards.len());
     }
-    report_lives(&run, &lives, args.json, Some(&args.out), &[])
+    report_lives(&run, &lives, sample.as_ref(), args.json, Some(&args.out), &[])
 }
 
 /// Every shard's lives (each life from one shard only), for `lives = "auto"`: the stopping point
@@ -325,7 +331,15 @@ fn check_shards(shards: &[Shard]) -> Result<bool> {
 
 /// Every shard's lives into their places, each life from one shard only (the library's merge
 /// rules, worded here with the shards' names); lives 0..n, in index order.
-fn read_shards(shards: &[Shard], fingerprint: &str, n: usize, args: &MergeArgs) -> Result<Vec<StormOutcome>> {
+///
+/// `wanted`: a stratified run's sample of 0..N (only those lives are needed and returned).
+fn read_shards(
+    shards: &[Shard],
+    fingerprint: &str,
+    n: usize,
+    wanted: Option<&[usize]>,
+    args: &MergeArgs,
+) -> Result<Vec<StormOutcome>> {
     let file = args.scenario.display().to_string();
     let pb = progress(n as u64, "reading the shards", "lives");
     let mut merge = Merge::new(n);
@@ -358,18 +372,26 @@ fn read_shards(shards: &[Shard], fingerprint: &str, n: usize, args: &MergeArgs) 
         merge.add(Some(range), cp.lives).map_err(|e| merge_error(e, shards, (&ranges, &held), n, args))?;
     }
     pb.finish_and_clear();
-    // Every life 0..N in some shard.
-    merge.finish().map_err(|e| merge_error(e, shards, (&ranges, &held), n, args))
+    // Every life 0..N (or of the sample) in some shard.
+    match wanted {
+        Some(w) => merge.finish_sample(w),
+        None => merge.finish(),
+    }
+    .map_err(|e| merge_error(e, shards, (&ranges, &held), n, args))
 }
 
 /// The merged checkpoint: the header and the lines of one run of lives 0..N, written whole or
 /// not at all.
-fn write_merged_checkpoint(cp_path: &Path, header_line: &str, lives: &[StormOutcome]) -> Result<()> {
+fn write_merged_checkpoint<'a>(
+    cp_path: &Path,
+    header_line: &str,
+    lives: impl Iterator<Item = (usize, &'a StormOutcome)>,
+) -> Result<()> {
     let (tmp, f) = TempFile::create(cp_path)?;
     let mut w = std::io::BufWriter::new(f);
     let written = (|| -> std::io::Result<()> {
         writeln!(w, "{header_line}")?;
-        for (i, l) in lives.iter().enumerate() {
+        for (i, l) in lives {
             w.write_all(life_line(header_line, i, l).as_bytes())?;
         }
         w.flush()

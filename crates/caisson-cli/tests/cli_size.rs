@@ -4,24 +4,11 @@
 mod support;
 
 use serde_json::Value;
-use support::{caisson, refused, site, write};
+use support::{caisson, refused, sizing_text, write};
 
-/// A prototype caisson given by its construction (its weight follows its width) under short,
-/// heavy storms, so that a life takes milliseconds and the answer lies inside the range.
+/// The sizing of the tests: [`sizing_text`] over 8-30 m with `criterion`.
 fn size_text(criterion: &str) -> String {
-    let text = site::without(site::SMALL_DESIGN, "caisson", &["weight_in_water_kn"]);
-    let text = site::with(
-        &text,
-        "caisson",
-        "unit_length_m = 20.0\nwall_thickness_m = 0.5\nslab_thickness_m = 0.8\npartition_thickness_m = 0.2\n\
-         cells_across = 4\ncells_along = 4\ncap_height_m = 2.0",
-    );
-    let text = site::without(&text, "foundation", &["mu_dynamic", "damping_mode", "vertical_damping"]);
-    let text = site::with(&text, "solver", "dt_max_s = 0.2");
-    // The seed's impact: its short pushes rock the narrow caissons, so that the dynamic model's
-    // width moves with the allowed sliding (the tests were written for them).
-    let text = site::with(&text, "waves", "breaking_load = \"cuomo-2010\"");
-    site::with(&text, "size", &format!("range_m = [8.0, 30.0]\n{criterion}\ntolerance_m = 0.5\ncurve_points = 4"))
+    sizing_text(&format!("range_m = [8.0, 30.0]\n{criterion}\ntolerance_m = 0.5\ncurve_points = 4"))
 }
 
 fn sized(dir: &std::path::Path, criterion: &str, threads: &str) -> (Vec<u8>, Value) {

@@ -6,26 +6,14 @@
 mod support;
 
 use serde_json::Value;
-use support::{caisson_within, refused, site, write};
+use support::{caisson_within, refused, sizing_text, write};
 
 /// The sizing of `cli_size.rs` (a prototype caisson by its construction, short heavy storms) with
 /// `[size] lives = "auto"` and `extra`.
 fn size_text(extra: &str) -> String {
-    let text = site::without(site::SMALL_DESIGN, "caisson", &["weight_in_water_kn"]);
-    let text = site::with(
-        &text,
-        "caisson",
-        "unit_length_m = 20.0\nwall_thickness_m = 0.5\nslab_thickness_m = 0.8\npartition_thickness_m = 0.2\n\
-         cells_across = 4\ncells_along = 4\ncap_height_m = 2.0",
-    );
-    let text = site::without(&text, "foundation", &["mu_dynamic", "damping_mode", "vertical_damping"]);
-    let text = site::with(&text, "solver", "dt_max_s = 0.2");
-    let text = site::with(&text, "waves", "breaking_load = \"cuomo-2010\"");
-    site::with(
-        &text,
-        "size",
-        &format!("range_m = [8.0, 30.0]\nfailure_probability = 0.2\ntolerance_m = 4.0\ncurve_points = 3\nlives = \"auto\"\n{extra}"),
-    )
+    sizing_text(&format!(
+        "range_m = [8.0, 30.0]\nfailure_probability = 0.2\ntolerance_m = 4.0\ncurve_points = 3\nlives = \"auto\"\n{extra}"
+    ))
 }
 
 fn sized(f: &std::path::Path, args: &[&str]) -> (Vec<u8>, String) {

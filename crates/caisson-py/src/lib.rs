@@ -1046,12 +1046,17 @@ fn life_columns() -> Vec<&'static str> {
 /// order): metres and radians as floats, counts as whole numbers; `life` their indices (each
 /// once, ascending). The lives are joined by the merge rules of `caisson merge`: lives 0..N with
 /// N the largest index + 1, every one given ([`Merge`]): a gap is refused (`ValueError`).
+///
+/// A stratified design (`[design] sampling = "stratified"`) needs its sample of lives 0..`pool_lives`
+/// ([`design_sample`]), every one given, and no other.
 #[pyfunction]
+#[pyo3(signature = (sc, columns, life, pool_lives=None))]
 fn design_statistics(
     py: Python<'_>,
     sc: &CoreScenario,
     columns: Bound<'_, PyDict>,
     life: Vec<usize>,
+    pool_lives: Option<usize>,
 ) -> PyResult<String> {
     let run = designer(py, &sc.sc, None)?;
     let mut rows: Vec<serde_json::Map<String, serde_json::Value>> = Vec::new();
@@ -1111,8 +1116,45 @@ fn design_statistics(
             None => Err(PyValueError::new_err("not lives = \"auto\"")),
         };
     }
-    let lives = merged(life, lives)?;
-    report_json(&run.report(&lives), "design")
+    // A stratified design's pool: the Design's lives.
+    let n = pool_lives.unwrap_or(run.design.lives);
+    let sample = py.detach(|| run.sample(0..n));
+    let lives = match &sample {
+        Some(s) => sampled(life, lives, n, &s.pool.indices())?,
+        None => merged(life, lives)?,
+    };
+    report_json(&run.report_sampled(&lives, sample.as_ref()), "design")
+}
+
+/// The lives a stratified design of `lives` lives simulates (`None` for a plain design: every
+/// life), by the CLI's rule ([`Designer::sample`]).
+#[pyfunction]
+#[pyo3(signature = (sc, lives, threads=1))]
+fn design_sample(py: Python<'_>, sc: &CoreScenario, lives: usize, threads: usize) -> PyResult<Option<Vec<usize>>> {
+    let run = designer(py, &sc.sc, Some(lives))?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| run_error(format!("starting the worker threads: {e}")))?;
+    Ok(py.detach(|| pool.install(|| run.sample(0..lives))).map(|s| s.pool.indices()))
+}
+
+/// The sampled lives `wanted` of a stratified design of `n` lives, from lives (index, outcome):
+/// each wanted life given, refused (`ValueError`) otherwise.
+fn sampled(life: Vec<usize>, lives: Vec<StormOutcome>, n: usize, wanted: &[usize]) -> PyResult<Vec<StormOutcome>> {
+    let mut merge = Merge::new(n);
+    let refuse = |e: MergeError| {
+        PyValueError::new_err(match e {
+            MergeError::Missing { start, missing, .. } => format!(
+                "life {start} of the stratified sample is missing ({missing} of its {} lives): simulate the sample's lives (`Design.simulate_lives()` simulates them all)",
+                wanted.len()
+            ),
+            MergeError::Overlap { life, .. } => format!("life {life} appears more than once"),
+            MergeError::Beyond { life, lives, .. } => format!("life {life} is beyond the lives 0..{lives}"),
+        })
+    };
+    merge.add(None, life.into_iter().zip(lives)).map_err(refuse)?;
+    merge.finish_sample(wanted).map_err(refuse)
 }
 
 /// Lives (index, outcome) joined into lives 0..N, N the largest index + 1, by the merge rules of
@@ -1434,6 +1476,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design_lives, m)?)?;
     m.add_function(wrap_pyfunction!(design_auto, m)?)?;
     m.add_function(wrap_pyfunction!(design_statistics, m)?)?;
+    m.add_function(wrap_pyfunction!(design_sample, m)?)?;
     m.add_function(wrap_pyfunction!(life_columns, m)?)?;
     m.add_function(wrap_pyfunction!(design_fingerprint_of, m)?)?;
     m.add_function(wrap_pyfunction!(fragility, m)?)?;

@@ -15,7 +15,7 @@ use support::imports::{assert_floors, assert_no_circle, module_dirs, module_file
 
 /// The floor of every analysis module; a new module must be placed here (the test fails
 /// otherwise).
-const FLOORS: [(&str, u8); 20] = [
+const FLOORS: [(&str, u8); 21] = [
     // The model pieces: what every driver runs on.
     ("mod", 0), // Structure, Progress
     ("site", 0),
@@ -23,6 +23,7 @@ const FLOORS: [(&str, u8); 20] = [
     ("limits", 0),
     ("closed_form", 0),
     ("estimate", 0),
+    ("stratified", 0),
     ("climate", 0),
     ("stick_bound", 0),
     // The drivers.

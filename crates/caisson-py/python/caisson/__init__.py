@@ -515,7 +515,7 @@ class Design:
         rad. A life ends at the wave that fails it (docs/design.md, "Failure"). Raises
         :class:`ScenarioError` if the lives asked for are over the work budget (:meth:`estimate`):
         ask for fewer at a time."""
-        idx = list(range(self._lives)) if indices is None else self._indices(indices)
+        idx = self.sample() if indices is None else self._indices(indices)
         try:
             cols = _core.design_lives(self._scenario._core, idx, threads, progress)
         except KeyboardInterrupt as e:
@@ -524,6 +524,13 @@ class Design:
                 e.lives = self._frame(e.lives)
             raise
         return self._frame(cols)
+
+    def sample(self, *, threads: int = 1) -> list:
+        """The lives the design simulates: every life, 0 .. lives − 1, or with ``[design]
+        sampling = "stratified"`` the stratified sample of them (docs/design.md, "Stratified
+        sampling"), the lives ``caisson design`` simulates."""
+        idx = _core.design_sample(self._scenario._core, self._lives, threads)
+        return list(range(self._lives)) if idx is None else idx
 
     @property
     def auto(self) -> Optional[float]:
@@ -647,7 +654,9 @@ class Design:
         order = np.argsort(cols.pop("life").astype(np.uint64), kind="stable")
         cols = {c: (v[order].astype(np.float64) if c.endswith(("_m", "_rad", "_kpa")) else v[order].astype(np.uint64)).tolist() for c, v in cols.items()}
         # Joined by `caisson merge`'s rules (in Rust): lives 0 .. N − 1, no gap.
-        return DesignStatistics.of(json.loads(_core.design_statistics(self._scenario._core, cols, life_sorted.tolist())))
+        return DesignStatistics.of(
+            json.loads(_core.design_statistics(self._scenario._core, cols, life_sorted.tolist(), self._lives))
+        )
 
     def run(self, *, threads: int = 1, progress: Progress = None) -> tuple:
         """All lives at once: (:class:`DesignStatistics`, lives DataFrame); with ``[design] lives

@@ -226,7 +226,9 @@ class DesignStatistics(_ReadsAsReport):
     ``waves``, ``simulated_waves`` (the waves drawn and those run through the dynamic model);
     ``heel_pressure_exceedance``: P(q_heel > q_a) of the dynamic model's lives (``allowable_kpa``,
     ``probability``, ``standard_error``, ``lives``, ``exact_from_kpa``, ``largest_kpa``);
-    ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``design.json``.
+    ``warnings``: tuple of :class:`ResultWarning`; ``report``: the dict of ``design.json``;
+    ``sampling``: how a stratified design sampled its lives (``pool_lives``, ``simulated_lives``,
+    ``strata``), ``None`` when every life was simulated.
 
     It also reads as that dict (``stats["dynamic"]["failure"]["probability"]``, ``dict(stats)``,
     ``stats == json.load(open("design.json"))``).
@@ -241,6 +243,7 @@ class DesignStatistics(_ReadsAsReport):
     heel_pressure_exceedance: Mapping
     warnings: tuple
     report: dict
+    sampling: Optional[Mapping] = None
     #: ``[design] lives = "auto"``: how many lives it took, the target, the relative errors
     #: reached and whether the target was met (``lives``, ``max_lives``, ``batch_lives``,
     #: ``target_relative_error``, ``expected_sliding_relative_error``,
@@ -260,6 +263,7 @@ class DesignStatistics(_ReadsAsReport):
             heel_pressure_exceedance=dict(report["dynamic"]["heel_pressure_exceedance"]),
             warnings=ResultWarning.all_of(report),
             report=report,
+            sampling=report.get("sampling"),
             precision=dict(report["precision"]) if "precision" in report else None,
         )
 

@@ -4,7 +4,8 @@
 //! In three floors; a module names only modules of its floor or below, without a circle
 //! (ARCHITECTURE.md; tests/contract_floors.rs):
 //! 0. the model pieces: [`Structure`] (here), [`site`], [`rigid`], [`limits`], [`closed_form`],
-//!    [`climate`], [`stick_bound`], and [`estimate`] (Monte Carlo estimates with their precision);
+//!    [`climate`], [`stick_bound`], [`estimate`] (Monte Carlo estimates with their precision) and
+//!    [`stratified`] (those of a two-phase stratified sample);
 //! 1. the drivers: [`run`], [`envelope`], [`spectrum`], [`train`], [`campaign`], [`lifetime`],
 //!    [`fragility`], [`conventional`], [`sizing`];
 //! 2. the judgement: [`checks`] (plausibility warnings of inputs and results), [`findings`] (the
@@ -33,6 +34,7 @@ pub mod site;
 pub mod sizing;
 pub mod spectrum;
 pub mod stick_bound;
+pub mod stratified;
 pub mod train;
 pub mod work;
 

@@ -42,6 +42,7 @@ use super::fragility::normal_cdf;
 use super::lifetime::{
     capped_statistics, FailureLimits, HeelPressureExceedance, ImpulsiveShare, LifeCounts, StormOutcome,
 };
+use super::stratified::TwoPhase;
 use crate::check::{count, interval};
 use serde::Serialize;
 
@@ -121,6 +122,12 @@ pub struct ModelPoint {
     pub failure_by_heel_pressure_probability: f64,
     /// What the impulsive waves make of the lives.
     pub impulsive: ImpulsiveShare,
+    /// A stratified run's standard errors of P(failure) and of the exceedance (the criteria's
+    /// margins read them); absent: the binomial √(p(1 − p)/n) of the lives.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub failure_probability_standard_error: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub exceedance_probability_standard_error: Option<f64>,
 }
 
 /// Which model a search is for.
@@ -230,6 +237,50 @@ pub fn model_point(
         failure_by_rotation_probability: share(Some(1)),
         failure_by_heel_pressure_probability: share(Some(2)),
         impulsive,
+        failure_probability_standard_error: None,
+        exceedance_probability_standard_error: None,
+    }
+}
+
+/// [`model_point`] of a stratified run's simulated lives, weighted by `est`
+/// ([`crate::analysis::stratified`]): every estimate and interval the two-phase one.
+pub fn model_point_weighted(
+    est: &TwoPhase,
+    magnitudes: &[f64],
+    modes: &[[bool; 3]],
+    limit_m: f64,
+    criteria: &Criteria,
+    impulsive: ImpulsiveShare,
+) -> ModelPoint {
+    let failed: Vec<bool> = modes.iter().map(|m| m.iter().any(|&f| f)).collect();
+    let capped: Vec<f64> = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m }).collect();
+    let mean = est.mean(&capped);
+    let uncapped = est.mean(magnitudes);
+    let pct = |q: f64| est.quantile(&capped, None, q).map_or(0.0, |(v, _)| v);
+    let mode = |k: usize| est.proportion(&modes.iter().map(|m| m[k]).collect::<Vec<bool>>()).value;
+    let failure = est.proportion(&failed);
+    let exceedance = criteria.exceedance.map(|e| {
+        est.proportion(&magnitudes.iter().zip(&failed).map(|(&m, &f)| f || m > e.sliding_m).collect::<Vec<bool>>())
+    });
+    ModelPoint {
+        expected_sliding_m: mean.value,
+        expected_sliding_standard_error_m: mean.standard_error,
+        expected_sliding_ci95_m: mean.ci95,
+        expected_sliding_uncapped_m: uncapped.value,
+        expected_sliding_uncapped_standard_error_m: uncapped.standard_error,
+        expected_sliding_uncapped_ci95_m: uncapped.ci95,
+        p50_m: pct(0.5),
+        p95_m: pct(0.95),
+        exceedance_probability: exceedance.map_or(0.0, |e| e.value),
+        exceedance_probability_ci95: exceedance.map_or([0.0, 0.0], |e| e.ci95),
+        failure_probability: failure.value,
+        failure_probability_ci95: failure.ci95,
+        failure_by_sliding_probability: mode(0),
+        failure_by_rotation_probability: mode(1),
+        failure_by_heel_pressure_probability: mode(2),
+        impulsive,
+        failure_probability_standard_error: Some(failure.standard_error),
+        exceedance_probability_standard_error: exceedance.map(|e| e.standard_error),
     }
 }
 
@@ -269,6 +320,57 @@ pub fn candidate(
     }
 }
 
+/// [`candidate`] of a stratified run: `lives` the simulated lives of its pool (in the pool's
+/// order), weighted by `est`; `lives` of the candidate is the pool's.
+pub fn candidate_sampled(
+    width_m: f64,
+    weight_in_water_n: f64,
+    lives: &[StormOutcome],
+    failure: &FailureLimits,
+    criteria: &Criteria,
+    heel_pa: (f64, f64),
+    est: &TwoPhase,
+) -> Candidate {
+    let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
+    let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
+    let (modes, rigid_modes) = failure_modes(lives, failure);
+    let counts = LifeCounts::of(lives, failure);
+    let w = est.weights();
+    let dynamic_share = ImpulsiveShare::weighted(
+        counts.impulsive.waves,
+        lives
+            .iter()
+            .zip(w)
+            .map(|(l, &w)| (w, (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0))),
+    );
+    let rigid_share = ImpulsiveShare::weighted(
+        counts.rigid_block_impulsive.waves,
+        lives.iter().zip(w).map(|(l, &w)| {
+            let life = (
+                l.rigid_block_sliding_m,
+                l.rigid_block_impulsive_sliding_m,
+                l.rigid_block_failed(failure),
+                l.rigid_block_failing_wave_impulsive != 0,
+            );
+            (w, life)
+        }),
+    );
+    let mut heel = HeelPressureExceedance::of(lives, heel_pa.0, heel_pa.1);
+    let beyond: Vec<bool> = lives.iter().map(|l| l.max_heel_pressure_kpa > heel.allowable_kpa).collect();
+    let e = est.proportion(&beyond);
+    (heel.probability, heel.standard_error, heel.ci95) = (e.value, e.standard_error, e.ci95);
+    Candidate {
+        width_m,
+        weight_in_water_n,
+        lives: est.pool(),
+        dynamic: model_point_weighted(est, &dynamic, &modes, failure.sliding_m, criteria, dynamic_share),
+        rigid_block: model_point_weighted(est, &rigid, &rigid_modes, failure.sliding_m, criteria, rigid_share),
+        heel_pressure_exceedance: heel,
+        life_counts: counts,
+        precision: None,
+    }
+}
+
 impl Criteria {
     /// Whether any criterion is given.
     pub fn any(&self) -> bool {
@@ -290,10 +392,12 @@ impl Criteria {
             });
         }
         if let Some(e) = self.exceedance {
-            out.push((e.probability - p.exceedance_probability, prob_se(p.exceedance_probability)));
+            let se = p.exceedance_probability_standard_error.unwrap_or_else(|| prob_se(p.exceedance_probability));
+            out.push((e.probability - p.exceedance_probability, se));
         }
         if let Some(f) = self.failure_probability {
-            out.push((f - p.failure_probability, prob_se(p.failure_probability)));
+            let se = p.failure_probability_standard_error.unwrap_or_else(|| prob_se(p.failure_probability));
+            out.push((f - p.failure_probability, se));
         }
         out
     }

@@ -22,8 +22,9 @@
 //! `precision-not-met` warning.
 
 use crate::analysis::checks::precision_warning;
+use crate::analysis::lifetime::sampling::{Pool, Strata};
 use crate::analysis::lifetime::{
-    auto_boundaries, run_lives, AutoLives, AutoPrecision, DesignParams, FailureLimits, LifeFailed, StormCase,
+    auto_boundaries, run_lives, AutoLives, AutoPrecision, DesignParams, FailureLimits, LifeFailed, Sampling, StormCase,
     StormOutcome, AUTO_BATCH_LIVES,
 };
 use crate::analysis::site::WaveSetup;
@@ -32,7 +33,7 @@ use crate::dynamics::Stepping;
 use crate::report::design::{design_fingerprint, DesignReport};
 use crate::scenario::{Scenario, ScenarioError};
 use std::collections::BTreeMap;
-use std::ops::ControlFlow;
+use std::ops::{ControlFlow, Range};
 
 /// How a design run departs from the scenario's `[design]`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -49,6 +50,13 @@ pub struct DesignOptions {
 pub fn brute_force(sc: Scenario) -> Result<Scenario, ScenarioError> {
     let solver = crate::dynamics::SolverParams { stepping: Stepping::Fixed, ..sc.solver() };
     sc.with_solver(solver)
+}
+
+/// The lives a stratified run simulates: its strata and its pool.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sample {
+    pub strata: Strata,
+    pub pool: Pool,
 }
 
 /// A design run of a scenario: its `[design]` (with the options applied) and the storms' case.
@@ -82,8 +90,13 @@ impl<'a> Designer<'a> {
         design_fingerprint(&self.case, &self.design)
     }
 
-    /// The work of `lives` lives of this run (a shard's, or the run's own count).
+    /// The work of `lives` lives of this run (a shard's, or the run's own count; a stratified
+    /// run's of the lives it simulates, [`crate::analysis::lifetime::sampling::work_lives`]).
     pub fn estimate(&self, lives: usize) -> WorkEstimate {
+        let lives = match self.design.sampling {
+            Sampling::Stratified => crate::analysis::lifetime::sampling::work_lives(lives),
+            Sampling::Plain => lives,
+        };
         work::design(&self.case, &DesignParams { lives, ..self.design.clone() }, self.waves)
     }
 
@@ -112,6 +125,34 @@ impl<'a> Designer<'a> {
             r.warnings.extend(precision_warning(&p, "the design run"));
         }
         r
+    }
+
+    /// A stratified run's strata and its pool of the lives `range` ([`crate::analysis::lifetime::sampling`],
+    /// on rayon's current pool); `None` for a plain run (every life simulated).
+    pub fn sample(&self, range: Range<usize>) -> Option<Sample> {
+        (self.design.sampling == Sampling::Stratified).then(|| self.sample_of(range))
+    }
+
+    /// The strata and the pool of `range` whatever `[design] sampling` says (the tests compare a
+    /// stratified estimate with a plain one on the same lives).
+    pub fn sample_of(&self, range: Range<usize>) -> Sample {
+        let strata = Strata::pilot(&self.case, &self.design.life, self.design.seed);
+        let pool = Pool::of(&self.case, &self.design.life, self.design.seed, &strata, range);
+        Sample { strata, pool }
+    }
+
+    /// The lives of `range` to simulate: the sample's, or every one.
+    pub fn to_simulate(&self, range: Range<usize>, sample: Option<&Sample>) -> Vec<usize> {
+        sample.map_or_else(|| range.collect(), |s| s.pool.indices())
+    }
+
+    /// The report of the simulated `lives` (in index order) of a run sampled by `sample`
+    /// ([`DesignReport::stratified`]), or of every life ([`Self::report`]).
+    pub fn report_sampled(&self, lives: &[StormOutcome], sample: Option<&Sample>) -> DesignReport {
+        match sample {
+            Some(s) => DesignReport::stratified(&self.design, &self.case, Some(self.waves), lives, &s.strata, &s.pool),
+            None => self.report(lives),
+        }
     }
 
     /// The statistics of `lives` alone ([`DesignReport::statistics`]: no model, no warnings;

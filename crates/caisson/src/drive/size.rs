@@ -22,8 +22,11 @@
 //! never run again.
 
 use crate::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave};
-use crate::analysis::lifetime::{auto_boundaries, run_lives, DesignParams, LifeFailed, StormOutcome};
-use crate::analysis::sizing::{bisection_steps, candidate, curve_widths, size, Candidate, SizeParams};
+use crate::analysis::lifetime::sampling::{work_lives, Pool, Strata};
+use crate::analysis::lifetime::{auto_boundaries, run_lives, DesignParams, LifeFailed, Sampling, StormOutcome};
+use crate::analysis::sizing::{
+    bisection_steps, candidate, candidate_sampled, curve_widths, size, Candidate, SizeParams,
+};
 use crate::analysis::work::{self, WorkEstimate};
 use crate::loads::safety::SafetyFactors;
 use crate::report::design::design_fingerprint;
@@ -83,6 +86,13 @@ impl<'a> Sizer<'a> {
     pub fn new(sc: &'a Scenario, what: &str) -> Result<Self, SizeError> {
         let params = *sc.size_for(what)?;
         let design = sc.design_for(what)?.clone();
+        if design.sampling == Sampling::Stratified && params.auto.is_some() {
+            return Err(SizeError::Scenario(ScenarioError::range(
+                "[design] sampling",
+                "\"stratified\"",
+                "is not yet combined with [size] lives = \"auto\": give [size] lives a number (the pool; about 5 % of them are simulated at each width), or sampling = \"plain\"",
+            )));
+        }
         if sc.caisson_spec().construction().is_none() {
             return Err(SizeError::NoConstruction(what.to_string()));
         }
@@ -107,7 +117,12 @@ impl<'a> Sizer<'a> {
     /// The work of the run, estimated on every width of the grid as a design run of one width's
     /// lives (each must build: a width whose caisson floats is an input error).
     pub fn estimate(&self, what: &str) -> Result<WorkEstimate, SizeError> {
-        let one_width = DesignParams { lives: self.params.lives, ..self.design.clone() };
+        // A stratified design's candidate runs its sample ([`work_lives`]).
+        let lives = match self.design.sampling {
+            Sampling::Stratified => work_lives(self.params.lives),
+            Sampling::Plain => self.params.lives,
+        };
+        let one_width = DesignParams { lives, ..self.design.clone() };
         let mut grid = Vec::new();
         for w in curve_widths(&self.params) {
             let sw = self.at_width(w)?;
@@ -121,7 +136,12 @@ impl<'a> Sizer<'a> {
     /// the candidates holds it).
     pub fn fingerprint(&self) -> Result<String, SizeError> {
         let case = self.sc.storm_case(self.design.screen)?;
-        Ok(crate::report::fingerprint(&(design_fingerprint(&case, &self.design), &self.params)))
+        let lives = design_fingerprint(&case, &self.design);
+        Ok(match self.design.sampling {
+            // A stratified search's candidates are of its sample: not a plain search's.
+            Sampling::Stratified => crate::report::fingerprint(&(lives, &self.params, Sampling::Stratified)),
+            Sampling::Plain => crate::report::fingerprint(&(lives, &self.params)),
+        })
     }
 
     /// Run the search (reusing the candidates `done`) and Goda's width: the report. Lives run on
@@ -129,6 +149,18 @@ impl<'a> Sizer<'a> {
     pub fn run(&self, done: &[Candidate], hooks: Hooks<'_>) -> Result<SizeReport, SizeError> {
         let (p, design) = (&self.params, &self.design);
         let Hooks { width, life, candidate: finished } = hooks;
+        // A stratified design samples the same lives at every width (their storms' severity does
+        // not depend on the caisson: common random numbers, module docs).
+        let sample = match design.sampling {
+            Sampling::Stratified => {
+                let case = self.sc.storm_case(design.screen)?;
+                let strata = Strata::pilot(&case, &design.life, design.seed);
+                let pool = Pool::of(&case, &design.life, design.seed, &strata, 0..p.lives);
+                let est = pool.estimator(&strata);
+                Some((pool.indices(), est))
+            }
+            Sampling::Plain => None,
+        };
         let mut evaluate = |w: f64| -> Result<Candidate, SizeError> {
             if let Some(c) = done.iter().find(|c| c.width_m == w) {
                 width(w, true);
@@ -139,7 +171,11 @@ impl<'a> Sizer<'a> {
             width(w, false);
             let heel_pa = (design.allowable_heel_pressure_pa, design.heel_screen_pa());
             let of = |outcomes: &[StormOutcome]| {
-                candidate(w, sw.caisson().weight_in_water_n, outcomes, &design.failure_limits(w), &p.criteria, heel_pa)
+                let (weight_n, failure) = (sw.caisson().weight_in_water_n, &design.failure_limits(w));
+                match &sample {
+                    Some((_, est)) => candidate_sampled(w, weight_n, outcomes, failure, &p.criteria, heel_pa, est),
+                    None => candidate(w, weight_n, outcomes, failure, &p.criteria, heel_pa),
+                }
             };
             // A fixed number of lives is one batch; "auto" stops at the first boundary where the
             // candidate's statistics meet the target (module docs).
@@ -150,7 +186,10 @@ impl<'a> Sizer<'a> {
             let mut outcomes: Vec<StormOutcome> = Vec::new();
             let mut c = None;
             for k in boundaries {
-                let indices: Vec<usize> = (outcomes.len()..k).collect();
+                let indices: Vec<usize> = match &sample {
+                    Some((sampled, _)) => sampled.clone(),
+                    None => (outcomes.len()..k).collect(),
+                };
                 let lives = run_lives(&case, &design.life, design.seed, &indices, &|_, _| life())
                     .map_err(|source| SizeError::Run { width_m: w, source })?;
                 if lives.len() < indices.len() {

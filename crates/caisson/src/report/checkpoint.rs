@@ -448,6 +448,24 @@ impl Merge {
         Ok(())
     }
 
+    /// The lives `wanted` (ascending: a stratified run's sample of 0..N) in index order, if every
+    /// one is in a shard (the others the shards hold are left out); the missing range is of the
+    /// wanted lives.
+    pub fn finish_sample(mut self, wanted: &[usize]) -> Result<Vec<StormOutcome>, MergeError> {
+        // The lives not wanted count as held, so that only the wanted ones can be missing.
+        let mut needed = vec![false; self.owner.len()];
+        for &i in wanted {
+            needed[i] = true;
+        }
+        for (i, o) in self.owner.iter_mut().enumerate() {
+            if !needed[i] && *o == NONE {
+                *o = NONE - 1;
+            }
+        }
+        let lives = self.finish()?;
+        Ok(wanted.iter().map(|&i| lives[i]).collect())
+    }
+
     /// Lives 0..N in index order, if every one is in a shard.
     pub fn finish(self) -> Result<Vec<StormOutcome>, MergeError> {
         let (owner, n) = (&self.owner, self.owner.len());

@@ -4,12 +4,14 @@ use super::{fingerprint, ModelReport, Provenance};
 use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
 use crate::analysis::estimate::{normal_ci95, percentile_ci95, Estimate};
+use crate::analysis::lifetime::sampling::{Pool, Strata, STRATA};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, FailureLimits,
-    HeelPressureExceedance, ImpulsiveShare, LifeParams, LifeStatistics, StormCase, StormOutcome, WaveDraws,
+    HeelPressureExceedance, ImpulsiveShare, LifeParams, LifeStatistics, Sampling, StormCase, StormOutcome, WaveDraws,
 };
 use crate::analysis::site::WaveSetup;
 use crate::analysis::sizing::failure_modes;
+use crate::analysis::stratified::TwoPhase;
 use crate::analysis::Structure;
 use crate::loads::model::WaveLoadModel;
 use serde::Serialize;
@@ -233,6 +235,132 @@ impl ModelStatistics {
     }
 }
 
+impl ModelStatistics {
+    /// [`Self::new`] of the simulated lives of a stratified run, weighted by `est` (one value per
+    /// simulated life; [`crate::analysis::stratified`]): every mean, proportion and percentile its
+    /// two-phase estimate and interval; the counts are of the simulated lives.
+    fn stratified(
+        est: &TwoPhase,
+        magnitudes: &[f64],
+        modes: &[[bool; 3]],
+        limit_m: f64,
+        thresholds_m: &[f64],
+        years: usize,
+        impulsive: ImpulsiveShare,
+    ) -> Self {
+        let failed: Vec<bool> = modes.iter().map(|m| m.iter().any(|&f| f)).collect();
+        let survived: Vec<bool> = failed.iter().map(|f| !f).collect();
+        let capped: Vec<f64> = magnitudes.iter().zip(&failed).map(|(&m, &f)| if f { limit_m } else { m }).collect();
+        let mean = est.mean(&capped);
+        let uncapped = est.mean(magnitudes);
+        let percentile =
+            |inside: Option<&[bool]>, q: f64| est.quantile(&capped, inside, q).unwrap_or((0.0, [None, None]));
+        let table = |inside: Option<&[bool]>| {
+            let [a, b, c, d] = [0.05, 0.5, 0.95, 0.99].map(|q| percentile(inside, q));
+            (
+                Percentiles { p5: a.0, p50: b.0, p95: c.0, p99: d.0 },
+                PercentileIntervals { p5: a.1, p50: b.1, p95: c.1, p99: d.1 },
+            )
+        };
+        let (percentiles_m, percentiles_ci95_m) = table(None);
+        let (surviving_percentiles, surviving_ci) = table(Some(&survived));
+        let surviving = est.domain_mean(magnitudes, &survived);
+        let fail = est.proportion(&failed);
+        let mode = |k: usize| {
+            let flags: Vec<bool> = modes.iter().map(|m| m[k]).collect();
+            let e = est.proportion(&flags);
+            FailureMode { probability: e.value, probability_ci95: e.ci95, lives: flags.iter().filter(|&&f| f).count() }
+        };
+        let per_year = (mean.value / years as f64, mean.standard_error / years as f64);
+        ModelStatistics {
+            expected_sliding_m: mean.value,
+            expected_sliding_standard_error_m: mean.standard_error,
+            expected_sliding_ci95_m: mean.ci95,
+            expected_sliding_per_year_m: per_year.0,
+            expected_sliding_per_year_standard_error_m: per_year.1,
+            expected_sliding_per_year_ci95_m: normal_ci95(per_year.0, per_year.1),
+            expected_sliding_uncapped_m: uncapped.value,
+            expected_sliding_uncapped_standard_error_m: uncapped.standard_error,
+            expected_sliding_uncapped_ci95_m: uncapped.ci95,
+            percentiles_m,
+            percentiles_ci95_m,
+            exceedance_probability: thresholds_m
+                .iter()
+                .map(|&threshold_m| {
+                    let beyond: Vec<bool> =
+                        magnitudes.iter().zip(&failed).map(|(&m, &f)| f || m > threshold_m).collect();
+                    let e = est.proportion(&beyond);
+                    Exceedance { threshold_m, probability: e.value, ci95: e.ci95 }
+                })
+                .collect(),
+            failure: Failure {
+                probability: fail.value,
+                probability_ci95: fail.ci95,
+                lives: failed.iter().filter(|&&f| f).count(),
+                by_sliding: mode(0),
+                by_rotation: mode(1),
+                by_heel_pressure: mode(2),
+            },
+            surviving: Surviving {
+                lives: survived.iter().filter(|&&s| s).count(),
+                expected_sliding_m: surviving.value,
+                expected_sliding_standard_error_m: surviving.standard_error,
+                expected_sliding_ci95_m: surviving.ci95,
+                percentiles_m: surviving_percentiles,
+                percentiles_ci95_m: surviving_ci,
+            },
+            impulsive,
+        }
+    }
+}
+
+/// How a stratified run sampled its lives (docs/design.md, "Stratified sampling"): the
+/// `sampling` object of `design.json`, absent from a plain run's.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SamplingReport {
+    pub method: Sampling,
+    /// The lives ranked by severity (the run's lives), and those simulated.
+    pub pool_lives: usize,
+    pub simulated_lives: usize,
+    /// The strata, lowest severity first.
+    pub strata: Vec<StratumReport>,
+}
+
+/// One stratum of a stratified run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StratumReport {
+    /// Its upper severity bound max H_max² F, m² (absent for the last).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub severity_up_to_m2: Option<f64>,
+    /// The share of its lives simulated.
+    pub fraction: f64,
+    pub pool_lives: usize,
+    pub simulated_lives: usize,
+}
+
+impl SamplingReport {
+    /// Of a pool and its strata.
+    pub fn new(strata: &Strata, pool: &Pool) -> Self {
+        let mut simulated = [0_usize; STRATA];
+        for &(_, h) in &pool.selected {
+            simulated[h] += 1;
+        }
+        SamplingReport {
+            method: Sampling::Stratified,
+            pool_lives: pool.counts.iter().sum(),
+            simulated_lives: pool.selected.len(),
+            strata: (0..STRATA)
+                .map(|h| StratumReport {
+                    severity_up_to_m2: strata.upper_m2.get(h).copied(),
+                    fraction: strata.fractions[h],
+                    pool_lives: pool.counts[h],
+                    simulated_lives: simulated[h],
+                })
+                .collect(),
+        }
+    }
+}
+
 /// What only the dynamic model tells: the direction of sliding, the largest excursion and
 /// rocking.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -400,6 +528,9 @@ pub struct DesignReport {
     pub simulated_waves: u64,
     pub screened_waves: u64,
     pub screened_share: f64,
+    /// How the lives were sampled (a stratified run's; absent: every life simulated).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sampling: Option<SamplingReport>,
     /// Plausibility warnings of the structure, the lives and the waves ([`DesignReport::new`]).
     pub warnings: Vec<Warning>,
 }
@@ -498,8 +629,103 @@ impl DesignReport {
             simulated_waves: lives.iter().map(|l| l.simulated_waves).sum(),
             screened_waves: screened,
             screened_share: screened as f64 / waves.max(1) as f64,
+            sampling: None,
             warnings: Vec::new(),
         }
+    }
+
+    /// [`Self::new`] of a stratified run: `lives` are the simulated lives of `pool` in its order
+    /// (module [`crate::analysis::lifetime::sampling`]), every statistic their weighted estimate.
+    pub fn stratified(
+        p: &DesignParams,
+        case: &StormCase<'_>,
+        waves: Option<&WaveSetup>,
+        lives: &[StormOutcome],
+        strata: &Strata,
+        pool: &Pool,
+    ) -> Self {
+        let mut report = DesignReport::new(p, case, waves, lives);
+        let failure_sliding_m = report.failure_sliding_m;
+        let stats = DesignReport::stratified_statistics(p, case.rigid_block_mu, failure_sliding_m, lives, strata, pool);
+        report.lives = stats.lives;
+        report.dynamic = stats.dynamic;
+        report.rigid_block = stats.rigid_block;
+        report.sampling = stats.sampling;
+        report
+    }
+
+    /// [`Self::statistics`] of a stratified run's simulated `lives` (in `pool`'s order).
+    pub fn stratified_statistics(
+        p: &DesignParams,
+        rigid_block_mu: f64,
+        failure_sliding_m: f64,
+        lives: &[StormOutcome],
+        strata: &Strata,
+        pool: &Pool,
+    ) -> Self {
+        assert_eq!(lives.len(), pool.selected.len(), "one life per simulated life of the pool");
+        let est = pool.estimator(strata);
+        let mut report = DesignReport::statistics(p, rigid_block_mu, failure_sliding_m, lives);
+        let years = p.life.life_years;
+        let mean = |f: fn(&StormOutcome) -> f64| est.mean(&lives.iter().map(f).collect::<Vec<f64>>()).value;
+        let dynamic: Vec<f64> = lives.iter().map(|l| l.sliding_m.abs()).collect();
+        let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
+        let limits = FailureLimits {
+            sliding_m: failure_sliding_m,
+            rotation_rad: p.failure_rotation_rad,
+            heel_pressure_pa: p.failure_heel_pressure_pa,
+        };
+        let (modes, rigid_modes) = failure_modes(lives, &limits);
+        let w = est.weights();
+        let impulsive = |rigid: bool| {
+            let waves = lives.iter().map(|l| l.impulsive_waves).sum();
+            ImpulsiveShare::weighted(
+                waves,
+                lives.iter().zip(w).map(|(l, &w)| {
+                    let life = if rigid {
+                        (
+                            l.rigid_block_sliding_m,
+                            l.rigid_block_impulsive_sliding_m,
+                            l.rigid_block_failed(&limits),
+                            l.rigid_block_failing_wave_impulsive != 0,
+                        )
+                    } else {
+                        (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0)
+                    };
+                    (w, life)
+                }),
+            )
+        };
+        let d = &mut report.dynamic;
+        d.sliding = ModelStatistics::stratified(
+            &est,
+            &dynamic,
+            &modes,
+            failure_sliding_m,
+            &p.thresholds_m,
+            years,
+            impulsive(false),
+        );
+        d.expected_net_sliding_m = mean(|l| l.sliding_m);
+        d.expected_shoreward_sliding_m = mean(|l| l.shoreward_sliding_m);
+        d.expected_seaward_sliding_m = mean(|l| l.seaward_sliding_m);
+        d.expected_max_excursion_m = mean(|l| l.max_excursion_m);
+        let heel = &mut d.heel_pressure_exceedance;
+        let beyond: Vec<bool> = lives.iter().map(|l| l.max_heel_pressure_kpa > heel.allowable_kpa).collect();
+        let e = est.proportion(&beyond);
+        (heel.probability, heel.standard_error, heel.ci95) = (e.value, e.standard_error, e.ci95);
+        report.rigid_block = ModelStatistics::stratified(
+            &est,
+            &rigid,
+            &rigid_modes,
+            failure_sliding_m,
+            &p.thresholds_m,
+            years,
+            impulsive(true),
+        );
+        report.lives = est.pool();
+        report.sampling = Some(SamplingReport::new(strata, pool));
+        report
     }
 }
 

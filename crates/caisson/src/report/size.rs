@@ -149,7 +149,7 @@ impl SizeReport {
             dynamic: sizing.dynamic,
             rigid_block: sizing.rigid_block,
             goda,
-            lives_simulated: sizing.candidates.iter().map(|c| c.lives).sum(),
+            lives_simulated: sizing.candidates.iter().map(|c| c.life_counts.lives).sum(),
             candidates,
             warnings: Vec::new(),
         };

@@ -2,13 +2,14 @@
 //! end, and the lives of a run in parallel.
 
 use super::outcome::StormOutcome;
-use super::params::{ErrorScope, LifeParams, StormCase, StormInput, STORM_WAVE_WORDS_LOG2};
+use super::params::{ErrorDraw, ErrorScope, LifeParams, StormCase, StormInput, STORM_WAVE_WORDS_LOG2};
 use super::storm::{
     storm_from, toe_depth_m, Settle, StormError, StormRng, StormScratch, StormSite, StormStart, MAX_STILL_WAVES,
     ROTATION_RESERVE,
 };
 use super::wave::{base_heel_pressure_pa, WaveKind, WaveRun};
 use crate::loads::generator::realization_rng;
+use crate::loads::risetime::LoadRng;
 use crate::waves::dispersion::wavenumber;
 use crate::waves::surf_zone::SlopeTerms;
 use rand::Rng;
@@ -38,33 +39,7 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     for year in 0..p.life_years {
         let rise_m = p.climate.sea_level.rise_in_year_m(year);
         for _ in 0..p.climate.storms.storms_in_year(&mut rng) {
-            let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
-            let e = match life_errors {
-                Some(e) => e,
-                None => p.errors.draw(&mut rng),
-            };
-            let phi = 2.0 * PI * rng.gen::<f64>();
-            let h0 = (p.storm_height_m(u) * e.h0).max(1e-3);
-            let period_s = p.period_coefficient * h0.powf(p.period_exponent);
-            let duration_s = p.climate.duration.draw_s(p.storm_duration_s, &mut rng);
-            let angle_rad = p.climate.direction.draw_rad(&mut rng);
-            let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
-            // The dispersion solve at the toe serves the shoaling and the storm's loads.
-            let depth_m = toe_depth_m(st, tide_m);
-            let k_toe = wavenumber(period_s, depth_m);
-            let z = slope.surf_zone_at_wavenumber(h0, period_s, depth_m, k_toe);
-            let storm = StormInput {
-                h13_m: z.h13_m * e.transformation,
-                hmax_m: z.hmax_m * e.transformation,
-                period_s,
-                periods: p.climate.periods,
-                waves: (duration_s / period_s).round().max(1.0) as usize,
-                tide_m,
-                angle_rad,
-                force_factor: e.force,
-                impact_factor: e.impact,
-                friction_factor: e.friction,
-            };
+            let (storm, k_toe) = draw_storm(st, p, &slope, &mut rng, life_errors, rise_m);
             // The storm's waves from their own part of the stream: how many it draws does not move
             // the next storm's numbers (common random numbers across caissons, docs/size.md).
             storm_index += 1;
@@ -97,6 +72,90 @@ pub fn simulate_life(st: &StormCase<'_>, p: &LifeParams, seed: u64, index: usize
     }
     settle_life(st, &mut scratch, &mut life)?;
     life.finite()
+}
+
+/// One storm of a life as drawn from the life's stream (module docs, "One life", steps 1-3), before
+/// its heights at the structure ([`StormDraw::at_structure`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct StormDraw {
+    /// The deep-water H1/3 (with its estimation error), m, and T1/3, s.
+    pub(super) h0_m: f64,
+    pub(super) period_s: f64,
+    duration_s: f64,
+    angle_rad: f64,
+    /// The water level above still water, m.
+    tide_m: f64,
+    pub(super) errors: ErrorDraw,
+}
+
+impl StormDraw {
+    /// The next storm of the life's stream `rng` in year `rise_m`'s sea level. `life_errors`: the
+    /// errors drawn once per life, if so.
+    fn draw(p: &LifeParams, rng: &mut LoadRng, life_errors: Option<ErrorDraw>, rise_m: f64) -> Self {
+        let u: f64 = rng.gen::<f64>().clamp(1e-12, 1.0 - 1e-12);
+        let errors = match life_errors {
+            Some(e) => e,
+            None => p.errors.draw(rng),
+        };
+        let phi = 2.0 * PI * rng.gen::<f64>();
+        let h0_m = (p.storm_height_m(u) * errors.h0).max(1e-3);
+        let period_s = p.period_coefficient * h0_m.powf(p.period_exponent);
+        let duration_s = p.climate.duration.draw_s(p.storm_duration_s, rng);
+        let angle_rad = p.climate.direction.draw_rad(rng);
+        let tide_m = 0.5 * p.tidal_range_m * (1.0 + phi.cos()) + rise_m;
+        StormDraw { h0_m, period_s, duration_s, angle_rad, tide_m, errors }
+    }
+
+    /// The storm at the structure (step 4: Goda's surf-zone heights at the toe, times the
+    /// transformation error) and the wavenumber at the toe (the dispersion solve serves the
+    /// shoaling and the storm's loads).
+    pub(super) fn at_structure(&self, st: &StormCase<'_>, p: &LifeParams, slope: &SlopeTerms) -> (StormInput, f64) {
+        let depth_m = toe_depth_m(st, self.tide_m);
+        let k_toe = wavenumber(self.period_s, depth_m);
+        let z = slope.surf_zone_at_wavenumber(self.h0_m, self.period_s, depth_m, k_toe);
+        let e = &self.errors;
+        let storm = StormInput {
+            h13_m: z.h13_m * e.transformation,
+            hmax_m: z.hmax_m * e.transformation,
+            period_s: self.period_s,
+            periods: p.climate.periods,
+            waves: (self.duration_s / self.period_s).round().max(1.0) as usize,
+            tide_m: self.tide_m,
+            angle_rad: self.angle_rad,
+            force_factor: e.force,
+            impact_factor: e.impact,
+            friction_factor: e.friction,
+        };
+        (storm, k_toe)
+    }
+}
+
+/// One storm of a life from the life's stream: [`StormDraw::draw`], then at the structure.
+fn draw_storm(
+    st: &StormCase<'_>,
+    p: &LifeParams,
+    slope: &SlopeTerms,
+    rng: &mut LoadRng,
+    life_errors: Option<ErrorDraw>,
+    rise_m: f64,
+) -> (StormInput, f64) {
+    StormDraw::draw(p, rng, life_errors, rise_m).at_structure(st, p, slope)
+}
+
+/// The storms of life `index` of the stream `seed` as [`simulate_life`] draws them, before their
+/// heights at the structure and without their waves (each storm's waves come from their own part of
+/// the stream, so the storms do not depend on them), in order. What a stratified design run ranks
+/// a life by ([`super::sampling`]).
+pub(super) fn life_storms(p: &LifeParams, seed: u64, index: usize, storms: &mut Vec<StormDraw>) {
+    storms.clear();
+    let mut rng = realization_rng(seed, index);
+    let life_errors = (p.errors.scope == ErrorScope::Life).then(|| p.errors.draw(&mut rng));
+    for year in 0..p.life_years {
+        let rise_m = p.climate.sea_level.rise_in_year_m(year);
+        for _ in 0..p.climate.storms.storms_in_year(&mut rng) {
+            storms.push(StormDraw::draw(p, &mut rng, life_errors, rise_m));
+        }
+    }
 }
 
 /// Run the still waves of the life's storms whose rotation bound may exceed the life's largest

@@ -19,6 +19,8 @@
 //!   bound's decisions, its run and what it records ([`base_heel_pressure_pa`]);
 //! - `outcome.rs`: [`StormOutcome`], whose fields are the columns of `lives.csv` and of the
 //!   checkpoint lines ([`LIFE_COLUMNS`]);
+//! - `sampling.rs`: [`sampling`], the stratified sampling of a design run's lives by the
+//!   severity of their storms;
 //! - `statistics.rs`: [`capped_statistics`], [`LifeCounts`], [`ImpulsiveShare`],
 //!   [`HeelPressureExceedance`];
 //! - `tests.rs`: the unit tests of the private parts (the equivalences of the fast paths against
@@ -224,6 +226,7 @@
 mod life;
 mod outcome;
 mod params;
+pub mod sampling;
 mod screen;
 mod statistics;
 mod storm;
@@ -233,7 +236,7 @@ pub use life::{run_lives, simulate_life, LifeFailed};
 pub use outcome::{LifeColumn, StormOutcome, LIFE_COLUMNS};
 pub use params::{
     auto_boundaries, failure_rotation_rad, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, Errors,
-    FailureLimits, LifeParams, StormCase, StormDistribution, StormInput, WaveDraws, AUTO_BATCH_LIVES,
+    FailureLimits, LifeParams, Sampling, StormCase, StormDistribution, StormInput, WaveDraws, AUTO_BATCH_LIVES,
     DEFAULT_AUTO_MAX_LIVES, DEFAULT_TARGET_RELATIVE_ERROR, FAILURE_PROBABILITY_FLOOR, MAX_FAILURE_ROTATION_RAD,
     MAX_LIFE_YEARS, MAX_LIVES, MAX_STORM_HEIGHT_M, MAX_TARGET_RELATIVE_ERROR, STANDARD_THRESHOLDS_M,
     STORM_WAVE_WORDS_LOG2,

@@ -442,9 +442,23 @@ pub struct DesignParams {
     /// The heel pressure beyond which a life fails, Pa; `None` (the default): no failure by
     /// heel pressure.
     pub failure_heel_pressure_pa: Option<f64>,
+    /// Which lives are simulated ([`Sampling`]).
+    pub sampling: Sampling,
     /// `lives = "auto"`: run lives in batches until the target precision is met, `lives` being
     /// then the most lives the run may take ([`AutoLives`]); `None`: exactly `lives` lives.
     pub auto: Option<AutoLives>,
+}
+
+/// Which of a design run's lives are simulated (`[design] sampling`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Sampling {
+    /// Every life (plain Monte Carlo; the default).
+    #[default]
+    Plain,
+    /// A share of each stratum of the lives' storm severity, the estimates weighted
+    /// ([`super::sampling`]).
+    Stratified,
 }
 
 /// Lives to a target precision (`[design] lives = "auto"`, and `[size]`'s per candidate;

@@ -129,20 +129,33 @@ pub struct ImpulsiveShare {
 impl ImpulsiveShare {
     /// From each life's (S, S_imp, failed, failing wave impulsive).
     pub(super) fn of(waves: u64, lives: impl Iterator<Item = (f64, f64, bool, bool)>) -> Self {
-        let (mut n, mut imp, mut part, mut total, mut failures, mut impulsive_failures) = (0usize, 0.0, 0.0, 0.0, 0, 0);
-        for (s, s_imp, failed, impulsive) in lives {
-            n += 1;
-            imp += s_imp;
-            part += if s < 0.0 { -s_imp } else { s_imp };
-            total += s.abs();
+        Self::weighted(waves, lives.map(|l| (1.0, l)))
+    }
+
+    /// From each life's weight and (S, S_imp, failed, failing wave impulsive): the sums of the
+    /// module docs weighted (a stratified run's lives, [`super::sampling`]); `failures` counts the
+    /// lives. Weights of 1 give [`Self::of`] to the bit.
+    pub fn weighted(waves: u64, lives: impl Iterator<Item = (f64, (f64, f64, bool, bool))>) -> Self {
+        let (mut n, mut imp, mut part, mut total) = (0.0, 0.0, 0.0, 0.0);
+        let (mut failures, mut failed_weight, mut impulsive_weight) = (0, 0.0, 0.0);
+        for (w, (s, s_imp, failed, impulsive)) in lives {
+            n += w;
+            imp += w * s_imp;
+            part += w * if s < 0.0 { -s_imp } else { s_imp };
+            total += w * s.abs();
             failures += usize::from(failed);
-            impulsive_failures += usize::from(failed && impulsive);
+            if failed {
+                failed_weight += w;
+                if impulsive {
+                    impulsive_weight += w;
+                }
+            }
         }
         ImpulsiveShare {
             waves,
-            sliding_m: imp / n.max(1) as f64,
+            sliding_m: if n > 0.0 { imp / n } else { 0.0 },
             share_of_expected_sliding: if total > 0.0 { part / total } else { 0.0 },
-            share_of_failures: if failures > 0 { impulsive_failures as f64 / failures as f64 } else { 0.0 },
+            share_of_failures: if failed_weight > 0.0 { impulsive_weight / failed_weight } else { 0.0 },
             failures,
         }
     }

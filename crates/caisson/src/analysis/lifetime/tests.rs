@@ -322,6 +322,7 @@ fn life_constructors_name_what_they_refuse() {
         failure_rotation_rad: MAX_FAILURE_ROTATION_RAD,
         allowable_heel_pressure_pa: 500e3,
         failure_heel_pressure_pa: Some(1e7),
+        sampling: Sampling::Plain,
         auto: None,
     };
     assert_eq!(design.thresholds_m, [0.03, 0.05, 0.1, 0.3, 1.0, 3.0]);
