@@ -1123,6 +1123,9 @@ fn what_to_check(code: &str) -> &'static str {
         "dashpot-exceeds-friction" | "rotational-dashpot-moment" => {
             "the foundation's damping placement ([foundation] damping_mode, vertical_damping; the profile)"
         }
+        "precision-not-met" => {
+            "[design] max_lives (or [size] max_lives) against target_relative_error: the budget ran out before the lives reached the target precision"
+        }
         _ => "the inputs the message names",
     }
 }

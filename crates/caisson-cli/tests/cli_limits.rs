@@ -458,7 +458,9 @@ fn design_shard_of_a_ten_million_life_scenario_is_estimated_at_its_own_lives() {
 /// The disk estimate of `run --out` against the files written: at least their bytes (an estimate
 /// below them would let a run past the budget) and at most 35 % more (25 bytes a number against
 /// the 19-21 measured), on two `[load]` runs and on wave trains (realization 0, adaptive steps).
-/// Measured: 1.22 (`table5_triangle`), 1.31 (`fifteen_waves`), 1.32 (`pari_breaking_loads`).
+/// Measured: 1.22 (`table5_triangle`), 1.31 (`fifteen_waves`), 1.74 (`pari_breaking_loads`: 1.32
+/// before the sticking phases' error was held per unit step, results version 25, which shortens
+/// steps that still fall within one output interval, so fewer rows are written than steps).
 #[test]
 fn the_disk_estimate_of_run_out_covers_the_csv_files_written() {
     use caisson::analysis::work::{self, Histories};
@@ -476,8 +478,9 @@ fn the_disk_estimate_of_run_out_covers_the_csv_files_written() {
             None => work::train(&sc.train_case().unwrap(), Histories::Streamed),
         };
         // Adaptive steps (the wave trains) give a row a step where steps are longer than the
-        // output interval: the rows are counted from the pilot's steps (within 15 %), so 50 %.
-        let high = if sc.load.is_some() { 1.35 } else { 1.5 };
+        // output interval: the rows are counted from the pilot's steps (within 15 %) as if none
+        // fell within one interval, an upper bound: 2 (the budget's estimate errs on the safe side).
+        let high = if sc.load.is_some() { 1.35 } else { 2.0 };
         let ratio = e.disk_bytes / written as f64;
         assert!((1.0..high).contains(&ratio), "{name}: estimated {} bytes, wrote {written}", e.disk_bytes);
         if sc.load.is_some() {
