@@ -120,15 +120,9 @@ struct Modes {
     modal_abs: [[f64; 6]; FUNCTIONALS],
     /// The functionals' q rows (u̇_x's is 0: it reads q̇_x).
     rows: [Vector3<f64>; FUNCTIONALS],
-    /// The functionals in modal coordinates, f·w_m (the impulsive waves' bound evaluates the
-    /// free vibration, not only its envelope).
-    modal: [[C64; 6]; FUNCTIONALS],
-    /// K_L⁻¹ and K_L⁻¹ C_L K_L⁻¹: the particular solution of a load linear in time.
-    kinv: Matrix3<f64>,
-    kinv_c_kinv: Matrix3<f64>,
-    /// |λ_m|, and whether λ_m is real (its mode is then monotone in time).
-    lambda_abs: [f64; 6],
-    real: [bool; 6],
+    /// The peak-to-peak gains ‖k_fj‖₁ of the functionals f to the load components j (F_x, F_y,
+    /// M): the impulsive waves' bound ([`impulse::gains`]).
+    gains: impulse::Gains,
 }
 
 /// M, K_L, C_L, k_y and the springs' lowest and highest x and Σx: what [`Modes`] come from.
@@ -167,11 +161,6 @@ pub struct AtPeriod {
     phasor: [C64; INTERVALS + 1],
     decay: [[f64; 6]; INTERVALS + 1],
     half: [C64; 6],
-    /// The period, s; the impulsive waves' first step after a kink, T/(2 INTERVALS 2^DOUBLINGS),
-    /// and the modes' growth e^{λ_m h} over it and its doublings.
-    period_s: f64,
-    h_fine_s: f64,
-    grow: [[C64; 6]; impulse::DOUBLINGS + 1],
 }
 
 /// What the bound leaves of a wave's margins: the smallest normal force at the outer springs
@@ -268,12 +257,9 @@ impl Modes {
         let modal: [[C64; 6]; FUNCTIONALS] = std::array::from_fn(|f| {
             std::array::from_fn(|m| if f == VX { w[(3, m)] } else { (0..3).map(|i| w[(i, m)] * rows[f][i]).sum() })
         });
-        let kinv = k_l.try_inverse()?;
+        let gains = impulse::gains(&lambda, &modal, &winv, &minv);
         Some(Modes {
-            lambda_abs: lambda.map(modulus),
-            real: lambda.map(|l| l.im == 0.0),
-            kinv,
-            kinv_c_kinv: kinv * c_l * kinv,
+            gains,
             mass,
             k_l,
             c_l,
@@ -282,7 +268,6 @@ impl Modes {
             winv_im: std::array::from_fn(|i| std::array::from_fn(|j| winv[(i, j)].im)),
             modal_abs: modal.map(|row: [C64; 6]| row.map(modulus)),
             rows,
-            modal,
         })
     }
 
@@ -331,16 +316,12 @@ impl StickBound {
         let dt = 0.5 * period_s / INTERVALS as f64;
         let step = C64::from_polar(1.0, omega * dt);
         let shrink: [f64; 6] = std::array::from_fn(|m| (md.lambda[m].re * dt).exp());
-        let h_fine_s = dt / (1u32 << impulse::DOUBLINGS) as f64;
         let mut at = AtPeriod {
             zinv: z.try_inverse()?,
             omega,
             phasor: [C64::new(1.0, 0.0); INTERVALS + 1],
             decay: [[1.0; 6]; INTERVALS + 1],
             half: std::array::from_fn(|m| (md.lambda[m] * (0.5 * period_s)).exp()),
-            period_s,
-            h_fine_s,
-            grow: std::array::from_fn(|j| md.lambda.map(|l| (l * (h_fine_s * (1u32 << j) as f64)).exp())),
         };
         for k in 1..=INTERVALS {
             at.phasor[k] = at.phasor[k - 1] * step;
@@ -592,11 +573,5 @@ mod tests {
             }
         }
         assert_eq!(checked, 720 * INTERVALS);
-    }
-}
-impl StickBound {
-    #[doc(hidden)]
-    pub fn debug_lambda(&self) -> [C64; 6] {
-        self.modes.lambda
     }
 }
