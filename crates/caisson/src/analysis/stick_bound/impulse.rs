@@ -44,8 +44,9 @@ pub(super) fn gains(
         })
     });
     let size: [[[f64; 6]; 3]; FUNCTIONALS] = c.map(|cf| cf.map(|cj| cj.map(modulus)));
-    let start: [f64; 6] =
-        std::array::from_fn(|m| (0..FUNCTIONALS).flat_map(|f| (0..3).map(move |j| (f, j))).map(|(f, j)| size[f][j][m]).sum());
+    let start: [f64; 6] = std::array::from_fn(|m| {
+        (0..FUNCTIONALS).flat_map(|f| (0..3).map(move |j| (f, j))).map(|(f, j)| size[f][j][m]).sum()
+    });
     let total: f64 = start.iter().sum();
     let mut sum = [[0.0; 3]; FUNCTIONALS];
     let mut sup = [[0.0; 3]; FUNCTIONALS];
@@ -59,7 +60,8 @@ pub(super) fn gains(
     let (mut t, mut k0) = (0.0, value(0.0));
     for _ in 0..MAX_CELLS {
         let decay: [f64; 6] = lambda.map(|l| (l.re * t).exp());
-        let fastest = (0..6).filter(|&m| start[m] * decay[m] > ALIVE * total).map(|m| modulus(lambda[m])).fold(0.0, f64::max);
+        let fastest =
+            (0..6).filter(|&m| start[m] * decay[m] > ALIVE * total).map(|m| modulus(lambda[m])).fold(0.0, f64::max);
         let mut done = true;
         let tails: [[f64; 3]; FUNCTIONALS] = std::array::from_fn(|f| {
             std::array::from_fn(|j| {
