@@ -50,8 +50,11 @@ pub(super) fn gains(
     let total: f64 = start.iter().sum();
     let mut sum = [[0.0; 3]; FUNCTIONALS];
     let mut sup = [[0.0; 3]; FUNCTIONALS];
-    if !(total > 0.0) {
+    if total == 0.0 {
         return Gains { l1: sum, sup };
+    }
+    if !total.is_finite() {
+        return Gains { l1: [[f64::INFINITY; 3]; FUNCTIONALS], sup: [[f64::INFINITY; 3]; FUNCTIONALS] };
     }
     let value = |t: f64| -> [[f64; 3]; FUNCTIONALS] {
         let e: [C64; 6] = lambda.map(|l| (l * t).exp());
