@@ -89,12 +89,15 @@
 //! screened run gives the same totals to 1 µm per life, `tests/equiv_lifetime.rs`).
 //!
 //! **The stick bound**. The static test lets through many waves that then neither slide nor lift
-//! (its amplifications are bounds for any load shape). A pulsating wave that passes it is then
-//! tested on the all-sticking response itself ([`crate::analysis::stick_bound`]: the exact steady
-//! state of its crest and trough plus the modes' envelopes of the free vibration, at every instant
-//! of the wave): if that leaves the outer springs 5 % of their normal force at rest and the
-//! friction demand within 95 % of μ_s, no spring slips or lifts, the wave's sliding is exactly 0
-//! and it is not run ([`StormCase::stick_bound`]). Impulsive waves are left to the engine.
+//! (its amplifications are bounds for any load shape). A wave that passes it is then tested on
+//! the all-sticking response itself ([`crate::analysis::stick_bound`]: for a pulsating wave the
+//! exact steady state of its crest and trough plus the modes' envelopes of the free vibration, at
+//! every instant of the wave; for an impulsive one the system's peak-to-peak gains times the
+//! largest magnitude and rate of each load component): if that leaves the outer springs 5 % of
+//! their normal force at rest and the friction demand within 95 % of μ_s, no spring slips or
+//! lifts, the wave's sliding is exactly 0 and it is not run ([`StormCase::stick_bound`]). An
+//! impulsive wave so answered still counts as impulsive ("Impulsive waves" below; its sliding is
+//! 0); settled, it runs as a still wave and is not counted again.
 //!
 //! Only such a still wave's rotation θ_w is not known; its bound b_w is above the engine's rotation
 //! on every answered wave measured (docs/history.md), and `ROTATION_RESERVE` r = 1.01 is a margin

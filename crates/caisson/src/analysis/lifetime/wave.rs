@@ -189,8 +189,11 @@ impl WaveRun<'_> {
                 }
                 // Neither slides nor lifts (module docs, "The screen"): its rotation may still be
                 // the storm's (or the life's) largest, which [`Self::settle`] (or
-                // [`settle_life`]) decides, unless a larger one is known already.
+                // [`settle_life`]) decides, unless a larger one is known already. An impulsive
+                // one counts as impulsive all the same (its sliding, 0, adds nothing); settled, it
+                // runs as a still wave, not counted again.
                 out.screened_waves += 1;
+                out.impulsive_waves += u64::from(impulsive);
                 let (floor_rad, storm) = match self.settle {
                     Settle::Storm => (out.max_rotation_rad, 0),
                     Settle::Life { floor_rad, storm } => (floor_rad.max(out.max_rotation_rad), storm),
@@ -227,23 +230,25 @@ impl WaveRun<'_> {
         self.heel.push(StillWave { rotation_rad: heel_pa, storm, height_m: h, deviate: z, period_s });
     }
 
-    /// The bound on the rotation of a pulsating wave that the linear bound shows can neither
-    /// slide nor lift the caisson, nor rotate it near the rocking or failure limits
-    /// ([`crate::analysis::stick_bound`]); `None` for any other wave.
+    /// The bound on the rotation of a wave that the linear bound shows can neither slide nor
+    /// lift the caisson, nor rotate it near the rocking or failure limits
+    /// ([`crate::analysis::stick_bound`]: a pulsating wave's by [`StickBound::margins`], an
+    /// impulsive one's by [`StickBound::impulse_margins`]); `None` for any other wave.
     fn still_rotation_rad(&self, event: &WaveEvent, period_s: f64) -> Option<f64> {
-        if event.impulse.is_some() {
-            return None;
-        }
         let site = self.site;
         let bound = site.stick.get_or_init(|| StickBound::new(site.dyn_model())).as_ref()?;
-        let own;
-        let at = if self.s.periods.is_significant() {
-            self.stick_t13.get_or_init(|| bound.at_period(self.s.period_s)).as_ref()?
+        let m = if event.impulse.is_some() {
+            bound.impulse_margins(event)
         } else {
-            own = bound.at_period(period_s)?;
-            &own
+            let own;
+            let at = if self.s.periods.is_significant() {
+                self.stick_t13.get_or_init(|| bound.at_period(self.s.period_s)).as_ref()?
+            } else {
+                own = bound.at_period(period_s)?;
+                &own
+            };
+            bound.margins(at, event.quasi.total(), event.trough.total())
         };
-        let m = bound.margins(at, event.quasi.total(), event.trough.total());
         let limit_rad = self.st.failure.map_or(ROCKING_LIMIT_RAD, |f| f.rotation_rad.min(ROCKING_LIMIT_RAD));
         (m.still() && m.rotation_rad * ROTATION_RESERVE < limit_rad).then_some(m.rotation_rad)
     }
