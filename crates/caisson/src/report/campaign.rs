@@ -45,7 +45,7 @@ impl ConditionReport {
             impact_horizontal_force_kn_per_m: kn(r.nominal.peak.horizontal_force_n_per_m),
             sliding_m: SpreadReport::scaled(&s.sliding_m, 1.0),
             rigid_block_sliding_m: SpreadReport::scaled(&s.rigid_block_sliding_m, 1.0),
-            max_horizontal_reaction_kn: SpreadReport::scaled(&s.max_horizontal_reaction_n, 1e-3),
+            max_horizontal_reaction_kn: SpreadReport::in_kn(&s.max_horizontal_reaction_n),
             slip_events: SpreadReport::scaled(&s.slip_events, 1.0),
             realization_sliding_m: s.realizations.iter().map(|x| x.sliding_m).collect(),
             sliding_safety_factor: r.safety.sliding,

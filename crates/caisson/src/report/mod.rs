@@ -107,6 +107,12 @@ impl SpreadReport {
     pub fn scaled(s: &Spread, scale: f64) -> Self {
         SpreadReport { mean: s.mean * scale, min: s.min * scale, max: s.max * scale }
     }
+
+    /// A spread of forces in N reported in kN by [`kn`], as each realization's value is: the
+    /// largest realization's value and the spread's `max` are the same number.
+    pub fn in_kn(s: &Spread) -> Self {
+        SpreadReport { mean: kn(s.mean), min: kn(s.min), max: kn(s.max) }
+    }
 }
 
 /// The `foundation` object of the run summaries.

@@ -165,7 +165,7 @@ impl TrainRunReport {
             sliding_m: SpreadReport::scaled(&s.sliding_m, 1.0),
             rigid_block_sliding_m: SpreadReport::scaled(&s.rigid_block_sliding_m, 1.0),
             rigid_block_mu: waves.rigid_block_mu(&structure.foundation),
-            max_horizontal_reaction_kn: SpreadReport::scaled(&s.max_horizontal_reaction_n, 1e-3),
+            max_horizontal_reaction_kn: SpreadReport::in_kn(&s.max_horizontal_reaction_n),
             slip_events: SpreadReport::scaled(&s.slip_events, 1.0),
             regime: waves.regime(),
             waves: TrainReport::from(&waves.train),
