@@ -815,15 +815,15 @@ fn sliding_table(r: &DesignReport, t: &mut String) {
     let (id, ir) = (&sd.impulsive, &sr.impulsive);
     let _ = writeln!(
         t,
-        "impulsive waves: {} (that may slide or lift the caisson); they slid the dynamic model {:.4} m a life ({:.0} % of E|S| as simulated, {:.0} % of its {} failures) and the rigid block {:.4} m ({:.0} %, {:.0} % of {})",
+        "impulsive waves: {} (that may slide or lift the caisson); they slid the dynamic model {:.4} m a life ({} of E|S| as simulated, {} of its {} failures) and the rigid block {:.4} m ({}, {} of {})",
         id.waves,
         id.sliding_m,
-        100.0 * id.share_of_expected_sliding,
-        100.0 * id.share_of_failures,
+        share_text(id.share_of_expected_sliding, id.share_of_expected_sliding_ci95),
+        share_text(id.share_of_failures, id.share_of_failures_ci95),
         id.failures,
         ir.sliding_m,
-        100.0 * ir.share_of_expected_sliding,
-        100.0 * ir.share_of_failures,
+        share_text(ir.share_of_expected_sliding, ir.share_of_expected_sliding_ci95),
+        share_text(ir.share_of_failures, ir.share_of_failures_ci95),
         ir.failures
     );
     let h = &r.dynamic.heel_pressure_exceedance;
@@ -857,6 +857,20 @@ pub(crate) fn fmt_with_interval(value: f64, ci: [Option<f64>; 2]) -> String {
     let d = caisson::supported_decimals(half);
     let end = |e: Option<f64>| e.map_or("…".to_string(), |e| format!("{e:.d$}"));
     format!("{value:.d$} ({}-{})", end(ci[0]), end(ci[1]))
+}
+
+/// A share in per cent with its 95 % interval, to the decimals half its width supports: "15 %
+/// (9-22 %)" (a negative end with a minus sign: "(−3 to 20 %)"); a share without spread (no life
+/// slid) "0 %".
+pub(crate) fn share_text(value: f64, ci: [f64; 2]) -> String {
+    let half = 50.0 * (ci[1] - ci[0]);
+    if half <= 0.0 {
+        return format!("{:.0} %", 100.0 * value);
+    }
+    let d = caisson::supported_decimals(half);
+    let f = |v: f64| format!("{:.d$}", 100.0 * v).replace('-', "−");
+    let sep = if ci[0] < 0.0 { " to " } else { "-" };
+    format!("{} % ({}{sep}{} %)", f(value), f(ci[0]), f(ci[1]))
 }
 
 /// P(q_heel > q_a) with its Wilson interval ([`fmt_with_interval`]).
@@ -951,4 +965,19 @@ fn dynamic_only(r: &DesignReport, t: &mut String) {
         "  lives ending seaward (any amount) {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
         d.seaward_lives, d.rocking_waves, d.large_rotation_waves, d.large_rotation_lives
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::share_text;
+
+    /// The digits follow half the interval's width in per cent (4.5 -> 0 decimals, 0.3 -> 1),
+    /// a negative end reads "to", and a point without spread prints alone.
+    #[test]
+    fn a_share_prints_with_the_digits_its_interval_supports() {
+        assert_eq!(share_text(0.154, [0.109, 0.199]), "15 % (11-20 %)");
+        assert_eq!(share_text(0.004, [0.001, 0.007]), "0.4 % (0.1-0.7 %)");
+        assert_eq!(share_text(0.003, [-0.003, 0.008]), "0.3 % (−0.3 to 0.8 %)");
+        assert_eq!(share_text(0.0, [0.0, 0.0]), "0 %");
+    }
 }

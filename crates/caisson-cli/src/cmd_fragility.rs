@@ -5,6 +5,7 @@
 //! with their fitted curves.
 
 use crate::cli::FragilityArgs;
+use crate::cmd_design::share_text;
 use crate::csv_rows::{to_csv, Plain, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
@@ -158,15 +159,15 @@ fn table_text(
     let (d, b) = (&report.impulsive.dynamic, &report.impulsive.rigid_block);
     let _ = writeln!(
         t,
-        "impulsive waves (all heights): {} that may slide or lift the caisson; {:.0} % of the storms' mean sliding and {:.0} % of the {} failures of the dynamic model (beyond {} m or {} rad), {:.0} % and {:.0} % of the {} of the rigid block",
+        "impulsive waves (all heights): {} that may slide or lift the caisson; {} of the storms' mean sliding and {} of the {} failures of the dynamic model (beyond {} m or {} rad), {} and {} of the {} of the rigid block",
         d.waves,
-        100.0 * d.share_of_expected_sliding,
-        100.0 * d.share_of_failures,
+        share_text(d.share_of_expected_sliding, d.share_of_expected_sliding_ci95),
+        share_text(d.share_of_failures, d.share_of_failures_ci95),
         d.failures,
         p.limits_m.last().copied().unwrap_or(0.0),
         p.failure_rotation_rad,
-        100.0 * b.share_of_expected_sliding,
-        100.0 * b.share_of_failures,
+        share_text(b.share_of_expected_sliding, b.share_of_expected_sliding_ci95),
+        share_text(b.share_of_failures, b.share_of_failures_ci95),
         b.failures
     );
     let _ = writeln!(t);

@@ -3,7 +3,7 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
-use crate::cmd_design::{fmt_plus_minus, fmt_with_interval, heel_probability};
+use crate::cmd_design::{fmt_plus_minus, fmt_with_interval, heel_probability, share_text};
 use crate::csv_rows::{to_csv, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
@@ -416,14 +416,14 @@ fn size_text(r: &SizeReport) -> String {
         let (d, b) = (&k.dynamic.impulsive, &k.rigid_block.impulsive);
         let _ = writeln!(
             t,
-            "\nat B = {:.2} m: impulsive waves {} (that may slide or lift the caisson) make {:.0} % of E|S| as simulated and {:.0} % of the {} failures of the dynamic model, {:.0} % and {:.0} % of the {} of the rigid block; P(q_heel > {} kPa) = {}",
+            "\nat B = {:.2} m: impulsive waves {} (that may slide or lift the caisson) make {} of E|S| as simulated and {} of the {} failures of the dynamic model, {} and {} of the {} of the rigid block; P(q_heel > {} kPa) = {}",
             k.width_m,
             d.waves,
-            100.0 * d.share_of_expected_sliding,
-            100.0 * d.share_of_failures,
+            share_text(d.share_of_expected_sliding, d.share_of_expected_sliding_ci95),
+            share_text(d.share_of_failures, d.share_of_failures_ci95),
             d.failures,
-            100.0 * b.share_of_expected_sliding,
-            100.0 * b.share_of_failures,
+            share_text(b.share_of_expected_sliding, b.share_of_expected_sliding_ci95),
+            share_text(b.share_of_failures, b.share_of_failures_ci95),
             b.failures,
             k.heel_pressure_exceedance.allowable_kpa,
             heel_probability(&k.heel_pressure_exceedance)
@@ -470,7 +470,11 @@ struct CandidateRow {
     dynamic_impulsive_waves: u64,
     dynamic_impulsive_sliding_m: Sci,
     dynamic_impulsive_share_of_expected_sliding: Sci,
+    dynamic_impulsive_share_of_expected_sliding_ci95_low: Sci,
+    dynamic_impulsive_share_of_expected_sliding_ci95_high: Sci,
     dynamic_impulsive_share_of_failures: Sci,
+    dynamic_impulsive_share_of_failures_ci95_low: Sci,
+    dynamic_impulsive_share_of_failures_ci95_high: Sci,
     rigid_block_expected_sliding_m: Sci,
     rigid_block_expected_sliding_standard_error_m: Sci,
     rigid_block_expected_sliding_ci95_low_m: Sci,
@@ -493,13 +497,21 @@ struct CandidateRow {
     rigid_block_impulsive_waves: u64,
     rigid_block_impulsive_sliding_m: Sci,
     rigid_block_impulsive_share_of_expected_sliding: Sci,
+    rigid_block_impulsive_share_of_expected_sliding_ci95_low: Sci,
+    rigid_block_impulsive_share_of_expected_sliding_ci95_high: Sci,
     rigid_block_impulsive_share_of_failures: Sci,
+    rigid_block_impulsive_share_of_failures_ci95_low: Sci,
+    rigid_block_impulsive_share_of_failures_ci95_high: Sci,
     heel_pressure_exceedance_probability: Sci,
     heel_pressure_exceedance_standard_error: Sci,
     heel_pressure_exceedance_ci95_low: Sci,
     heel_pressure_exceedance_ci95_high: Sci,
     dynamic_meets: bool,
     rigid_block_meets: bool,
+    /// `lives = "auto"`: the lives this width took and whether the target was met (empty
+    /// otherwise).
+    precision_lives: Option<usize>,
+    precision_met: Option<bool>,
 }
 
 impl From<&CandidateReport> for CandidateRow {
@@ -534,7 +546,11 @@ impl From<&CandidateReport> for CandidateRow {
             dynamic_impulsive_waves: d.impulsive.waves,
             dynamic_impulsive_sliding_m: Sci(d.impulsive.sliding_m),
             dynamic_impulsive_share_of_expected_sliding: Sci(d.impulsive.share_of_expected_sliding),
+            dynamic_impulsive_share_of_expected_sliding_ci95_low: Sci(d.impulsive.share_of_expected_sliding_ci95[0]),
+            dynamic_impulsive_share_of_expected_sliding_ci95_high: Sci(d.impulsive.share_of_expected_sliding_ci95[1]),
             dynamic_impulsive_share_of_failures: Sci(d.impulsive.share_of_failures),
+            dynamic_impulsive_share_of_failures_ci95_low: Sci(d.impulsive.share_of_failures_ci95[0]),
+            dynamic_impulsive_share_of_failures_ci95_high: Sci(d.impulsive.share_of_failures_ci95[1]),
             rigid_block_expected_sliding_m: Sci(r.expected_sliding_m),
             rigid_block_expected_sliding_standard_error_m: Sci(r.expected_sliding_standard_error_m),
             rigid_block_expected_sliding_ci95_low_m: Sci(r.expected_sliding_ci95_m[0]),
@@ -557,13 +573,21 @@ impl From<&CandidateReport> for CandidateRow {
             rigid_block_impulsive_waves: r.impulsive.waves,
             rigid_block_impulsive_sliding_m: Sci(r.impulsive.sliding_m),
             rigid_block_impulsive_share_of_expected_sliding: Sci(r.impulsive.share_of_expected_sliding),
+            rigid_block_impulsive_share_of_expected_sliding_ci95_low: Sci(r.impulsive.share_of_expected_sliding_ci95[0]),
+            rigid_block_impulsive_share_of_expected_sliding_ci95_high: Sci(
+                r.impulsive.share_of_expected_sliding_ci95[1]
+            ),
             rigid_block_impulsive_share_of_failures: Sci(r.impulsive.share_of_failures),
+            rigid_block_impulsive_share_of_failures_ci95_low: Sci(r.impulsive.share_of_failures_ci95[0]),
+            rigid_block_impulsive_share_of_failures_ci95_high: Sci(r.impulsive.share_of_failures_ci95[1]),
             heel_pressure_exceedance_probability: Sci(k.heel_pressure_exceedance.probability),
             heel_pressure_exceedance_standard_error: Sci(k.heel_pressure_exceedance.standard_error),
             heel_pressure_exceedance_ci95_low: Sci(k.heel_pressure_exceedance.ci95[0]),
             heel_pressure_exceedance_ci95_high: Sci(k.heel_pressure_exceedance.ci95[1]),
             dynamic_meets: k.dynamic_meets,
             rigid_block_meets: k.rigid_block_meets,
+            precision_lives: k.precision.map(|p| p.lives),
+            precision_met: k.precision.map(|p| p.met),
         }
     }
 }

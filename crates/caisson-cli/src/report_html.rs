@@ -15,6 +15,7 @@
 //! Intervals: the standard errors are the design report's (`*_se_m`); the 95 % interval of a mean
 //! is mean ± 1.96 SE, of a proportion Wilson's ([`caisson::analysis::estimate`]).
 
+use crate::cmd_design::share_text;
 use caisson::analysis::estimate::{wilson_ci95, Estimate, Z95};
 use caisson::analysis::lifetime::{DesignParams, StormOutcome};
 use caisson::analysis::sizing::Required;
@@ -890,15 +891,15 @@ fn lifetime(o: &mut String, i: usize, a: &Alternative, d: &DesignPart) {
     let (id, ir) = (&sd.impulsive, &sr.impulsive);
     let _ = writeln!(
         o,
-        "<p>Impulsive waves: {} in all lives (that may slide or lift the caisson). They slid the dynamic model {} m a life, {} % of E|S| as simulated and {} % of its {} failures; the rigid block {} m ({} %, {} % of {}).</p>",
+        "<p>Impulsive waves: {} in all lives (that may slide or lift the caisson). They slid the dynamic model {} m a life, {} of E|S| as simulated and {} of its {} failures; the rigid block {} m ({}, {} of {}).</p>",
         id.waves,
         val(i, "design.dynamic.impulsive.sliding_m", id.sliding_m, 4),
-        num(100.0 * id.share_of_expected_sliding, 0),
-        num(100.0 * id.share_of_failures, 0),
+        share_text(id.share_of_expected_sliding, id.share_of_expected_sliding_ci95),
+        share_text(id.share_of_failures, id.share_of_failures_ci95),
         id.failures,
         num(ir.sliding_m, 4),
-        num(100.0 * ir.share_of_expected_sliding, 0),
-        num(100.0 * ir.share_of_failures, 0),
+        share_text(ir.share_of_expected_sliding, ir.share_of_expected_sliding_ci95),
+        share_text(ir.share_of_failures, ir.share_of_failures_ci95),
         ir.failures
     );
     let h = &r.dynamic.heel_pressure_exceedance;

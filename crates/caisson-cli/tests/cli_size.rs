@@ -184,21 +184,31 @@ fn candidates_csv_is_the_json_candidates_flattened() {
     let cands = j["candidates"].as_array().unwrap();
     let mut r = csv::Reader::from_path(out.join("candidates.csv")).unwrap();
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    // 6 of the width, 12 of each model, 8 of its intervals and 4 of its impulsive waves, 4 of
-    // the heel pressure, 2 verdicts.
-    assert_eq!(header.len(), 58, "{header:?}");
+    // 6 of the width, 12 of each model, 8 of its intervals and 8 of its impulsive waves (4 and
+    // their intervals' ends), 4 of the heel pressure, 2 verdicts, 2 of the precision (empty: a
+    // fixed number of lives).
+    assert_eq!(header.len(), 68, "{header:?}");
     let (mut rows, mut cells, mut empty) = (0, 0, 0);
     for (row, c) in r.records().map(Result::unwrap).zip(cands) {
         for (name, cell) in header.iter().zip(row.iter()) {
+            // A key of `obj`, an interval's end `…_ci95_low…` the first of `…_ci95…`.
+            let flat = |obj: &Value, key: &str| {
+                if key.contains("_ci95_low") {
+                    obj[key.replace("_ci95_low", "_ci95")][0].clone()
+                } else if key.contains("_ci95_high") {
+                    obj[key.replace("_ci95_high", "_ci95")][1].clone()
+                } else {
+                    obj[key].clone()
+                }
+            };
             let model = |m: &str, rest: &str| match rest.strip_prefix("impulsive_") {
-                Some(key) => c[m]["impulsive"][key].clone(),
-                None if rest.contains("_ci95_low") => c[m][rest.replace("_ci95_low", "_ci95")][0].clone(),
-                None if rest.contains("_ci95_high") => c[m][rest.replace("_ci95_high", "_ci95")][1].clone(),
-                None => c[m][rest].clone(),
+                Some(key) => flat(&c[m]["impulsive"], key),
+                None => flat(&c[m], rest),
             };
             let want = match name.split_once('_') {
                 Some((m @ "dynamic", rest)) if c.get(name).is_none() => model(m, rest),
                 Some(("rigid", rest)) if c.get(name).is_none() => model("rigid_block", &rest["block_".len()..]),
+                Some(("precision", key)) => c["precision"][key].clone(),
                 _ => match name.strip_prefix("heel_pressure_exceedance_") {
                     Some("ci95_low") => c["heel_pressure_exceedance"]["ci95"][0].clone(),
                     Some("ci95_high") => c["heel_pressure_exceedance"]["ci95"][1].clone(),
@@ -206,7 +216,8 @@ fn candidates_csv_is_the_json_candidates_flattened() {
                     None => c[name.as_str()].clone(),
                 },
             };
-            assert!(!want.is_null() || name.starts_with("goda_"), "{name}: no such number in the JSON");
+            let may_be_null = name.starts_with("goda_") || name.starts_with("precision_");
+            assert!(!want.is_null() || may_be_null, "{name}: no such number in the JSON");
             match want {
                 Value::Null => {
                     assert_eq!(cell, "", "{name}");
@@ -219,7 +230,7 @@ fn candidates_csv_is_the_json_candidates_flattened() {
         }
         rows += 1;
     }
-    assert_eq!((rows, cells), (cands.len(), 58 * cands.len()), "every cell checked");
+    assert_eq!((rows, cells), (cands.len(), 68 * cands.len()), "every cell checked");
     // The heel pressure is undefined (null) at the narrow widths that would overturn (the resultant
     // outside the base).
     assert!(empty > 0, "an empty cell checked");

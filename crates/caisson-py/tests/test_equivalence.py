@@ -101,6 +101,10 @@ def test_size_candidates_without_a_goda_value_are_the_clis_nulls_and_empty_cells
     assert nan_widths == tipping
     rows = (out / "candidates.csv").read_text().splitlines()
     header = rows[0].split(",")
+    # The frame's columns are the CSV's (the precision's two, empty with a fixed number of lives,
+    # aside), the intervals of the impulsive shares among them.
+    assert set(frame.columns) == set(header) - {"precision_lives", "precision_met"}
+    assert "dynamic_impulsive_share_of_failures_ci95_high" in frame.columns
     col = header.index("goda_heel_pressure_kpa")
     empty = [float(r.split(",")[0]) for r in rows[1:] if r.split(",")[col] == ""]
     assert empty == tipping
@@ -166,7 +170,19 @@ def test_the_breaking_site_design_is_the_clis_with_its_impulsive_shares_heel_pre
     assert assert_same_json(got.report, want) > 100
     assert "impulsive-share" in codes(want)
     for model in ("dynamic", "rigid_block"):
-        assert set(want[model]["impulsive"]) == {"waves", "sliding_m", "share_of_expected_sliding", "share_of_failures", "failures"}
+        i = want[model]["impulsive"]
+        assert set(i) == {
+            "waves",
+            "sliding_m",
+            "share_of_expected_sliding",
+            "share_of_expected_sliding_ci95",
+            "share_of_failures",
+            "share_of_failures_ci95",
+            "failures",
+        }
+        for share in ("share_of_expected_sliding", "share_of_failures"):
+            low, high = i[f"{share}_ci95"]
+            assert low <= i[share] <= high, (model, share, i)
     h = want["dynamic"]["heel_pressure_exceedance"]
     assert (h["allowable_kpa"], h["exact_from_kpa"]) == (400.0, 380.0)
     assert want["failure_heel_pressure_kpa"] == 380.0 and "by_heel_pressure" in want["dynamic"]["failure"]

@@ -137,7 +137,8 @@ class ModelStatistics:
     - ``surviving_lives``, ``surviving_expected_sliding_m`` (with ``…_standard_error_m`` and
       ``…_ci95_m``): the lives that did not fail.
     - ``impulsive``: what the impulsive waves make of the lives (``waves``, ``sliding_m``,
-      ``share_of_expected_sliding``, ``share_of_failures``, ``failures``; docs/design.md).
+      ``share_of_expected_sliding``, ``share_of_failures``, each with its 95 % interval
+      ``…_ci95``, ``failures``; docs/design.md).
     """
 
     expected_sliding_m: float
@@ -325,7 +326,8 @@ class SizeResult(_ReadsAsReport):
       (with ``failure_by_sliding_probability``, ``failure_by_rotation_probability``,
       ``failure_by_heel_pressure_probability``), ``exceedance_probability``, ``p50_m``, ``p95_m``,
       ``impulsive_...`` (``waves``, ``sliding_m``, ``share_of_expected_sliding``,
-      ``share_of_failures``, ``failures``) and ``meets``; ``heel_pressure_exceedance_...``
+      ``share_of_failures``, each with its interval's ``…_ci95_low``/``…_ci95_high``,
+      ``failures``) and ``meets``; ``heel_pressure_exceedance_...``
       (``probability``, ``standard_error``, ...); Goda's safety factors and heel pressure
       (``goda_sliding_safety_factor``, ``goda_overturning_safety_factor``,
       ``goda_heel_pressure_kpa``).
@@ -351,7 +353,11 @@ class SizeResult(_ReadsAsReport):
                 for k, v in (c.get(model) or {}).items():
                     # A group (the impulsive waves') flattened as candidates.csv has it.
                     if isinstance(v, Mapping):
-                        row.update({f"{model}_{k}_{g}": x for g, x in v.items()})
+                        for g, x in v.items():
+                            if isinstance(x, (list, tuple)):
+                                row.update(zip(_interval_columns(f"{model}_{k}_{g}"), x))
+                            else:
+                                row[f"{model}_{k}_{g}"] = x
                     elif isinstance(v, (list, tuple)):
                         row.update(zip(_interval_columns(f"{model}_{k}"), v))
                     else:

@@ -335,26 +335,8 @@ pub fn candidate_sampled(
     let rigid: Vec<f64> = lives.iter().map(|l| l.rigid_block_sliding_m.abs()).collect();
     let (modes, rigid_modes) = failure_modes(lives, failure);
     let counts = LifeCounts::of(lives, failure);
-    let w = est.weights();
-    let dynamic_share = ImpulsiveShare::weighted(
-        counts.impulsive.waves,
-        lives
-            .iter()
-            .zip(w)
-            .map(|(l, &w)| (w, (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0))),
-    );
-    let rigid_share = ImpulsiveShare::weighted(
-        counts.rigid_block_impulsive.waves,
-        lives.iter().zip(w).map(|(l, &w)| {
-            let life = (
-                l.rigid_block_sliding_m,
-                l.rigid_block_impulsive_sliding_m,
-                l.rigid_block_failed(failure),
-                l.rigid_block_failing_wave_impulsive != 0,
-            );
-            (w, life)
-        }),
-    );
+    let dynamic_share = ImpulsiveShare::dynamic_sampled(est, lives);
+    let rigid_share = ImpulsiveShare::rigid_block_sampled(est, lives, failure);
     let mut heel = HeelPressureExceedance::of(lives, heel_pa.0, heel_pa.1);
     let beyond: Vec<bool> = lives.iter().map(|l| l.max_heel_pressure_kpa > heel.allowable_kpa).collect();
     let e = est.proportion(&beyond);

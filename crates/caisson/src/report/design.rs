@@ -676,26 +676,6 @@ impl DesignReport {
             heel_pressure_pa: p.failure_heel_pressure_pa,
         };
         let (modes, rigid_modes) = failure_modes(lives, &limits);
-        let w = est.weights();
-        let impulsive = |rigid: bool| {
-            let waves = lives.iter().map(|l| l.impulsive_waves).sum();
-            ImpulsiveShare::weighted(
-                waves,
-                lives.iter().zip(w).map(|(l, &w)| {
-                    let life = if rigid {
-                        (
-                            l.rigid_block_sliding_m,
-                            l.rigid_block_impulsive_sliding_m,
-                            l.rigid_block_failed(&limits),
-                            l.rigid_block_failing_wave_impulsive != 0,
-                        )
-                    } else {
-                        (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0)
-                    };
-                    (w, life)
-                }),
-            )
-        };
         let d = &mut report.dynamic;
         d.sliding = ModelStatistics::stratified(
             &est,
@@ -704,7 +684,7 @@ impl DesignReport {
             failure_sliding_m,
             &p.thresholds_m,
             years,
-            impulsive(false),
+            ImpulsiveShare::dynamic_sampled(&est, lives),
         );
         d.expected_net_sliding_m = mean(|l| l.sliding_m);
         d.expected_shoreward_sliding_m = mean(|l| l.shoreward_sliding_m);
@@ -721,7 +701,7 @@ impl DesignReport {
             failure_sliding_m,
             &p.thresholds_m,
             years,
-            impulsive(true),
+            ImpulsiveShare::rigid_block_sampled(&est, lives, &limits),
         );
         report.lives = est.pool();
         report.sampling = Some(SamplingReport::new(strata, pool));
@@ -824,6 +804,28 @@ mod tests {
         assert!((id.share_of_expected_sliding - 2.65 / 17.201).abs() < 1e-12);
         assert_eq!((id.share_of_failures, ir.share_of_failures), (0.25, 1.0));
         assert!((ir.share_of_expected_sliding - 4.0 / 8.75).abs() < 1e-12);
+        // Their intervals by hand. The share of E|S|, a ratio R = Σx/Σy of x = (0.15, 2.5, 0, 0,
+        // 0, 0) to y = |S| = (0.2, 3, 6, 0, 0.001, 8): SE = √(Σ (x − R y)² / (6·5)) / (17.201/6).
+        let r = 2.65 / 17.201;
+        let d2 = (0.15 - r * 0.2f64).powi(2)
+            + (2.5 - r * 3.0f64).powi(2)
+            + (r * 6.0f64).powi(2)
+            + (r * 0.001f64).powi(2)
+            + (r * 8.0f64).powi(2);
+        let se = (d2 / 30.0).sqrt() / (17.201 / 6.0);
+        let [lo, hi] = id.share_of_expected_sliding_ci95;
+        assert!((lo - (r - 1.959964 * se)).abs() < 1e-6 && (hi - (r + 1.959964 * se)).abs() < 1e-6, "{lo} {hi}");
+        // Wilson, 1 impulsive failure of 4: centre (p + z²/2n)/(1 + z²/n), half-width
+        // z √(p(1 − p)/n + z²/4n²)/(1 + z²/n); 1 of 1: [1/(1 + z²), 1].
+        let z2 = 1.959964f64.powi(2);
+        let (centre, half) = (
+            (0.25 + z2 / 8.0) / (1.0 + z2 / 4.0),
+            1.959964 * (0.25 * 0.75 / 4.0 + z2 / 64.0).sqrt() / (1.0 + z2 / 4.0),
+        );
+        let [lo, hi] = id.share_of_failures_ci95;
+        assert!((lo - (centre - half)).abs() < 1e-6 && (hi - (centre + half)).abs() < 1e-6, "{lo} {hi}");
+        let [lo, hi] = ir.share_of_failures_ci95;
+        assert!((lo - 1.0 / (1.0 + z2)).abs() < 1e-6 && hi == 1.0, "{lo} {hi}");
         // One life of six above 500 kPa: P = 1/6, SE = √(p(1 − p)/6).
         let h = &d.heel_pressure_exceedance;
         assert_eq!((h.lives, h.probability, h.allowable_kpa, h.largest_kpa), (1, 1.0 / 6.0, 500.0, 620.0));

@@ -3,7 +3,9 @@
 
 use super::outcome::StormOutcome;
 use super::params::FailureLimits;
+use crate::analysis::estimate::{wilson_ci95, Z95};
 use crate::analysis::limits::SEAWARD_REPORT_M;
+use crate::analysis::stratified::{wilson_ci95_at, TwoPhase};
 
 /// Statistics of the life totals.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -119,29 +121,90 @@ pub struct ImpulsiveShare {
     /// sliding and S_imp its impulsive waves' (the part of |S| they made; above 1 where other
     /// waves slid the caisson back); 0 when E|S| = 0.
     pub share_of_expected_sliding: f64,
+    /// Its 95 % interval (module docs, "Impulsive waves"): R ± 1.96 SE with the ratio
+    /// estimator's linearised standard error; [0, 0] when E|S| = 0.
+    pub share_of_expected_sliding_ci95: [f64; 2],
     /// The failed lives whose failing wave was impulsive, over the failed lives (0 when none
     /// failed).
     pub share_of_failures: f64,
+    /// Its Wilson 95 % interval over the failed lives; [0, 1] when none failed.
+    pub share_of_failures_ci95: [f64; 2],
     /// The failed lives.
     pub failures: usize,
 }
 
 impl ImpulsiveShare {
-    /// From each life's (S, S_imp, failed, failing wave impulsive).
+    /// From each life's (S, S_imp, failed, failing wave impulsive), with the intervals of simple
+    /// random sampling (module docs, "Impulsive waves"): the share of E|S| R = Σ x_i / Σ y_i (x_i
+    /// = sign(S_i) S_imp,i, y_i = |S_i|) with SE² = Σ (x_i − R y_i)² / (n (n − 1) ȳ²) (Cochran
+    /// 1977, Eq. 6.13), and Wilson's interval of the k impulsive failures among the failed ones.
     pub(super) fn of(waves: u64, lives: impl Iterator<Item = (f64, f64, bool, bool)>) -> Self {
-        Self::weighted(waves, lives.map(|l| (1.0, l)))
+        let lives: Vec<_> = lives.collect();
+        let mut share = Self::weighted(waves, lives.iter().map(|&l| (1.0, l)));
+        let n = lives.len() as f64;
+        let total: f64 = lives.iter().map(|l| l.0.abs()).sum();
+        if total > 0.0 && lives.len() > 1 {
+            let r = share.share_of_expected_sliding;
+            let d2: f64 = lives.iter().map(|&(s, s_imp, _, _)| (signed_part(s, s_imp) - r * s.abs()).powi(2)).sum();
+            let se = (d2 / (n * (n - 1.0))).sqrt() / (total / n);
+            share.share_of_expected_sliding_ci95 = [r - Z95 * se, r + Z95 * se];
+        } else {
+            share.share_of_expected_sliding_ci95 = [share.share_of_expected_sliding; 2];
+        }
+        let impulsive_failures = lives.iter().filter(|l| l.2 && l.3).count() as u64;
+        share.share_of_failures_ci95 =
+            if share.failures > 0 { wilson_ci95(impulsive_failures, share.failures as u64) } else { [0.0, 1.0] };
+        share
+    }
+
+    /// [`Self::weighted`] of a stratified run's simulated lives weighted by `est` (in its order),
+    /// with the two-phase intervals ([`TwoPhase`]): the share of E|S| linearised, z_i = (x_i − R
+    /// y_i)/ȳ, its variance that of the mean of z (Särndal, Swensson & Wretman 1992, §5.6); the
+    /// share of the failures a domain proportion, Wilson's interval at its effective size
+    /// (p̂(1 − p̂)/V, or Kish's over the failed lives at p̂ = 0 or 1).
+    fn two_phase(waves: u64, est: &TwoPhase, lives: &[(f64, f64, bool, bool)]) -> Self {
+        let w = est.weights();
+        let mut share = Self::weighted(waves, w.iter().zip(lives).map(|(&w, &l)| (w, l)));
+        let mean_y: f64 = w.iter().zip(lives).map(|(w, l)| w * l.0.abs()).sum();
+        if mean_y > 0.0 {
+            let r = share.share_of_expected_sliding;
+            let z: Vec<f64> =
+                lives.iter().map(|&(s, s_imp, _, _)| (signed_part(s, s_imp) - r * s.abs()) / mean_y).collect();
+            let se = est.mean(&z).standard_error;
+            share.share_of_expected_sliding_ci95 = [r - Z95 * se, r + Z95 * se];
+        } else {
+            share.share_of_expected_sliding_ci95 = [0.0, 0.0];
+        }
+        let failed: Vec<bool> = lives.iter().map(|l| l.2).collect();
+        share.share_of_failures_ci95 = if share.failures > 0 {
+            let flags: Vec<f64> = lives.iter().map(|l| f64::from(u8::from(l.3))).collect();
+            let p = share.share_of_failures.clamp(0.0, 1.0);
+            let v = est.domain_mean(&flags, &failed).standard_error.powi(2);
+            let n_eff = if v > 0.0 && p > 0.0 && p < 1.0 {
+                p * (1.0 - p) / v
+            } else {
+                let (sum, sum2) =
+                    w.iter().zip(&failed).filter(|(_, &f)| f).fold((0.0, 0.0), |(a, b), (w, _)| (a + w, b + w * w));
+                sum * sum / sum2
+            };
+            wilson_ci95_at(p, n_eff)
+        } else {
+            [0.0, 1.0]
+        };
+        share
     }
 
     /// From each life's weight and (S, S_imp, failed, failing wave impulsive): the sums of the
     /// module docs weighted (a stratified run's lives, [`super::sampling`]); `failures` counts the
-    /// lives. Weights of 1 give [`Self::of`] to the bit.
-    pub fn weighted(waves: u64, lives: impl Iterator<Item = (f64, (f64, f64, bool, bool))>) -> Self {
+    /// lives. Weights of 1 give [`Self::of`]'s values to the bit. The intervals are left at 0:
+    /// [`Self::of`] and [`Self::two_phase`] set them.
+    fn weighted(waves: u64, lives: impl Iterator<Item = (f64, (f64, f64, bool, bool))>) -> Self {
         let (mut n, mut imp, mut part, mut total) = (0.0, 0.0, 0.0, 0.0);
         let (mut failures, mut failed_weight, mut impulsive_weight) = (0, 0.0, 0.0);
         for (w, (s, s_imp, failed, impulsive)) in lives {
             n += w;
             imp += w * s_imp;
-            part += w * if s < 0.0 { -s_imp } else { s_imp };
+            part += w * signed_part(s, s_imp);
             total += w * s.abs();
             failures += usize::from(failed);
             if failed {
@@ -157,37 +220,63 @@ impl ImpulsiveShare {
             share_of_expected_sliding: if total > 0.0 { part / total } else { 0.0 },
             share_of_failures: if failed_weight > 0.0 { impulsive_weight / failed_weight } else { 0.0 },
             failures,
+            ..Self::default()
         }
     }
 
     /// The dynamic model's.
     pub fn dynamic(lives: &[StormOutcome]) -> Self {
-        let waves = lives.iter().map(|l| l.impulsive_waves).sum();
-        Self::of(
-            waves,
-            lives.iter().map(|l| (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0)),
-        )
+        Self::of(impulsive_waves(lives), lives.iter().map(dynamic_life))
     }
 
     /// The rigid block's (it fails by sliding beyond `failure.sliding_m`).
     pub fn rigid_block(lives: &[StormOutcome], failure: &FailureLimits) -> Self {
-        let waves = lives.iter().map(|l| l.impulsive_waves).sum();
-        Self::of(
-            waves,
-            lives.iter().map(|l| {
-                (
-                    l.rigid_block_sliding_m,
-                    l.rigid_block_impulsive_sliding_m,
-                    l.rigid_block_failed(failure),
-                    l.rigid_block_failing_wave_impulsive != 0,
-                )
-            }),
-        )
+        Self::of(impulsive_waves(lives), lives.iter().map(|l| rigid_block_life(l, failure)))
+    }
+
+    /// [`Self::dynamic`] of a stratified run's simulated lives weighted by `est`.
+    pub fn dynamic_sampled(est: &TwoPhase, lives: &[StormOutcome]) -> Self {
+        Self::two_phase(impulsive_waves(lives), est, &lives.iter().map(dynamic_life).collect::<Vec<_>>())
+    }
+
+    /// [`Self::rigid_block`] of a stratified run's simulated lives weighted by `est`.
+    pub fn rigid_block_sampled(est: &TwoPhase, lives: &[StormOutcome], failure: &FailureLimits) -> Self {
+        let of: Vec<_> = lives.iter().map(|l| rigid_block_life(l, failure)).collect();
+        Self::two_phase(impulsive_waves(lives), est, &of)
     }
 
     /// Whether impulsive waves make more than half of E|S| or of the failures.
     pub fn dominates(&self) -> bool {
         self.share_of_expected_sliding > 0.5 || self.share_of_failures > 0.5
+    }
+}
+
+/// The impulsive waves of all lives.
+fn impulsive_waves(lives: &[StormOutcome]) -> u64 {
+    lives.iter().map(|l| l.impulsive_waves).sum()
+}
+
+/// A life's (S, S_imp, failed, failing wave impulsive) in the dynamic model.
+fn dynamic_life(l: &StormOutcome) -> (f64, f64, bool, bool) {
+    (l.sliding_m, l.impulsive_sliding_m, l.failed(), l.failing_wave_impulsive != 0)
+}
+
+/// A life's (S, S_imp, failed, failing wave impulsive) in the rigid block.
+fn rigid_block_life(l: &StormOutcome, failure: &FailureLimits) -> (f64, f64, bool, bool) {
+    (
+        l.rigid_block_sliding_m,
+        l.rigid_block_impulsive_sliding_m,
+        l.rigid_block_failed(failure),
+        l.rigid_block_failing_wave_impulsive != 0,
+    )
+}
+
+/// The part of a life's |S| its impulsive waves made: sign(S) S_imp.
+fn signed_part(s: f64, s_imp: f64) -> f64 {
+    if s < 0.0 {
+        -s_imp
+    } else {
+        s_imp
     }
 }
 
@@ -235,5 +324,55 @@ impl HeelPressureExceedance {
             exact_from_kpa: exact_from_pa / 1e3,
             largest_kpa: lives.iter().map(|l| l.max_heel_pressure_kpa).fold(0.0, f64::max),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A two-phase sample of one stratum kept whole is simple random sampling: the share of E|S|
+    /// and its interval are [`ImpulsiveShare::of`]'s (the linearised z has mean 0, so its
+    /// variance s_z²/n is Σ (x − R y)²/(n (n − 1) ȳ²)), and the share of the failures has Wilson's
+    /// interval at n_eff = n_D (n − 1)/n (V = p̂(1 − p̂) n/(n_D (n − 1)) for a domain of n_D lives).
+    #[test]
+    fn one_stratum_kept_whole_gives_the_plain_intervals() {
+        // 8 lives: (S, S_imp, failed, failing wave impulsive).
+        let lives = [
+            (0.2, 0.1, false, false),
+            (-1.5, -0.5, true, true),
+            (0.7, 0.0, false, false),
+            (2.5, 1.0, true, false),
+            (0.0, 0.0, false, false),
+            (3.1, 2.0, true, true),
+            (0.05, 0.05, false, false),
+            (2.2, 0.3, true, false),
+        ];
+        let plain = ImpulsiveShare::of(5, lives.iter().copied());
+        let est = TwoPhase::new(&[8], &[(0, 1.0); 8]);
+        let sampled = ImpulsiveShare::two_phase(5, &est, &lives);
+        assert_eq!(
+            (plain.share_of_expected_sliding, plain.share_of_failures),
+            (sampled.share_of_expected_sliding, 0.5)
+        );
+        assert_eq!(sampled.share_of_failures, 0.5);
+        for k in 0..2 {
+            let (a, b) = (plain.share_of_expected_sliding_ci95[k], sampled.share_of_expected_sliding_ci95[k]);
+            assert!((a - b).abs() < 1e-12, "end {k}: {a} against {b}");
+        }
+        // 2 impulsive failures of n_D = 4: Wilson at 4 for the plain run, at 4·7/8 = 3.5 for the
+        // two-phase estimator.
+        assert_eq!(plain.share_of_failures_ci95, wilson_ci95(2, 4));
+        let at = wilson_ci95_at(0.5, 3.5);
+        for k in 0..2 {
+            assert!(
+                (sampled.share_of_failures_ci95[k] - at[k]).abs() < 1e-12,
+                "{:?} against {at:?}",
+                sampled.share_of_failures_ci95
+            );
+        }
+        // The plain interval of the share of E|S| is wider than a point and holds it.
+        let [lo, hi] = plain.share_of_expected_sliding_ci95;
+        assert!(lo < plain.share_of_expected_sliding && plain.share_of_expected_sliding < hi && hi - lo > 0.05);
     }
 }
