@@ -67,8 +67,7 @@ fn a_stratified_run_is_the_same_on_any_thread_count_and_from_shards() {
     // E|S| (capped) by hand from lives.csv: Σ w_i |S_i| with a failed life at the limit.
     let col = |name: &str| header.iter().position(|h| h == name).unwrap();
     let limit = j["failure_sliding_m"].as_f64().unwrap();
-    let mut by_hand = 0.0;
-    let mut weights = 0.0;
+    let (mut by_hand, mut weights, mut p_failed, mut failed_lives) = (0.0, 0.0, 0.0, 0);
     for r in &rows {
         let failed =
             ["failed_by_sliding", "failed_by_rotation", "failed_by_heel_pressure"].iter().any(|c| r[col(c)] != "0");
@@ -76,10 +75,28 @@ fn a_stratified_run_is_the_same_on_any_thread_count_and_from_shards() {
         let w: f64 = r[col("weight")].parse().unwrap();
         by_hand += w * if failed { limit } else { m };
         weights += w;
+        if failed {
+            (p_failed, failed_lives) = (p_failed + w, failed_lives + 1);
+        }
     }
     assert!((weights - 1.0).abs() < 1e-9, "the weights sum to {weights}");
     let e = j["dynamic"]["expected_sliding_m"].as_f64().unwrap();
     assert!((by_hand - e).abs() <= 1e-9 * e.max(1e-9), "E|S| {e} m, by hand {by_hand} m");
+    // The failed-lives warning counts the simulated lives and gives the weighted P(failure) (Σ w
+    // over the failed lives), not their raw share.
+    let warned: Vec<&serde_json::Value> =
+        j["warnings"].as_array().unwrap().iter().filter(|w| w["code"] == "failed-lives").collect();
+    assert_eq!(warned.len(), usize::from(failed_lives > 0), "{:?}", j["warnings"]);
+    if let Some(w) = warned.first() {
+        let p = w["numbers"]["failure_probability"].as_f64().unwrap();
+        assert!((p - p_failed).abs() < 1e-9, "warned P(failure) {p}, by hand {p_failed}");
+        assert!((p - failed_lives as f64 / simulated as f64).abs() > 1e-3, "the raw share of the sample: {p}");
+        let text = w["message"].as_str().unwrap();
+        assert!(
+            text.starts_with(&format!("{failed_lives} of {simulated} simulated lives of a stratified sample")),
+            "{text}"
+        );
+    }
 }
 
 /// A simulated life of a stratified run is the life of a plain run of the same index: the same

@@ -606,13 +606,21 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         ));
     }
     let (sliding_m, rotation_rad) = (failure.sliding_m, failure.rotation_rad);
+    // "of 903 lives", or of a stratified run's simulated lives, which are not the climate's mix.
+    let of = match c.weighted_failure_probability {
+        None => format!("{} lives", c.lives),
+        Some(_) => format!(
+            "{} simulated lives of a stratified sample (the severe storms oversampled; the statistics weight them back)",
+            c.lives
+        ),
+    };
     if c.failed_lives > 0 {
         out.push(Warning::new(
             "failed-lives",
             format!(
-                "{} of {} lives failed: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width), {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad){}; what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit (E|S| as simulated runs it on{}): read the failure probability and the statistics of the surviving lives",
+                "{} of {of} failed{}: {} moved the caisson more than {sliding_m:.3} m from its place ([design] failure_sliding_m, default a quarter of the base width), {} rotated it beyond {rotation_rad} rad ([design] failure_rotation_rad){}; what the model computes after that is outside its validity, so a failed life enters E|S| at the sliding limit (E|S| as simulated runs it on{}): read the failure probability and the statistics of the surviving lives",
                 c.failed_lives,
-                c.lives,
+                c.weighted_failure_probability.map_or(String::new(), |p| format!(" (weighted, P(failure) = {p:.3})")),
                 c.failed_by_sliding_lives,
                 c.failed_by_rotation_lives,
                 failure.heel_pressure_pa.map_or(String::new(), |q| format!(
@@ -636,7 +644,7 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
                 ("failed_by_heel_pressure_lives", c.failed_by_heel_pressure_lives as f64),
                 ("run_on_stopped_lives", c.run_on_stopped_lives as f64),
                 ("lives", n),
-                ("failure_probability", c.failed_lives as f64 / n.max(1.0)),
+                ("failure_probability", c.weighted_failure_probability.unwrap_or(c.failed_lives as f64 / n.max(1.0))),
                 ("failure_sliding_m", sliding_m),
                 ("failure_rotation_rad", rotation_rad),
             ],
@@ -646,8 +654,8 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         out.push(Warning::new(
             "large-rotation-lives",
             format!(
-                "in {} of {} lives a wave rotated the caisson beyond {ROCKING_LIMIT_RAD} rad (the seaward heel lifts by θB/2): the model does not follow overturning (large rotations, the bearing capacity of the mound under the heel), so check overturning and the mound for these waves otherwise (docs/design.md)",
-                c.large_rotation_lives, c.lives
+                "in {} of {of} a wave rotated the caisson beyond {ROCKING_LIMIT_RAD} rad (the seaward heel lifts by θB/2): the model does not follow overturning (large rotations, the bearing capacity of the mound under the heel), so check overturning and the mound for these waves otherwise (docs/design.md)",
+                c.large_rotation_lives
             ),
             &[("large_rotation_lives", c.large_rotation_lives as f64), ("lives", n), ("rotation_limit_rad", ROCKING_LIMIT_RAD)],
         ));
@@ -656,8 +664,8 @@ pub fn counts_warnings(c: &LifeCounts, failure: &FailureLimits, width_m: f64) ->
         out.push(Warning::new(
             "seaward-lives",
             format!(
-                "{} of {} lives ended more than {SEAWARD_REPORT_M} m seaward of their place (up to {:.3} m): the wave pushes shoreward, so these displacements come from the caisson rocking and landing (docs/design.md); the statistics use the magnitude |S|",
-                c.seaward_lives, c.lives, c.largest_seaward_sliding_m
+                "{} of {of} ended more than {SEAWARD_REPORT_M} m seaward of their place (up to {:.3} m): the wave pushes shoreward, so these displacements come from the caisson rocking and landing (docs/design.md); the statistics use the magnitude |S|",
+                c.seaward_lives, c.largest_seaward_sliding_m
             ),
             &[
                 ("seaward_lives", c.seaward_lives as f64),

@@ -341,14 +341,16 @@ pub fn candidate_sampled(
     let beyond: Vec<bool> = lives.iter().map(|l| l.max_heel_pressure_kpa > heel.allowable_kpa).collect();
     let e = est.proportion(&beyond);
     (heel.probability, heel.standard_error, heel.ci95) = (e.value, e.standard_error, e.ci95);
+    let dynamic = model_point_weighted(est, &dynamic, &modes, failure.sliding_m, criteria, dynamic_share);
     Candidate {
         width_m,
         weight_in_water_n,
         lives: est.pool(),
-        dynamic: model_point_weighted(est, &dynamic, &modes, failure.sliding_m, criteria, dynamic_share),
         rigid_block: model_point_weighted(est, &rigid, &rigid_modes, failure.sliding_m, criteria, rigid_share),
         heel_pressure_exceedance: heel,
-        life_counts: counts,
+        // The warnings count the simulated lives and give the weighted P(failure) beside them.
+        life_counts: LifeCounts { weighted_failure_probability: Some(dynamic.failure_probability), ..counts },
+        dynamic,
         precision: None,
     }
 }

@@ -1,13 +1,14 @@
 //! `caisson design`: `design.json` (keys in docs/design.md).
 
 use super::{fingerprint, ModelReport, Provenance};
-use crate::analysis::checks::{impulsive_warnings, life_warnings, structure_warnings, wave_load_warnings, Warning};
+use crate::analysis::checks::{counts_warnings, impulsive_warnings, structure_warnings, wave_load_warnings, Warning};
 use crate::analysis::climate::{SeaLevelRise, StormDuration, StormModel, WaveDirection, WavePeriods};
 use crate::analysis::estimate::{normal_ci95, percentile_ci95, Estimate};
 use crate::analysis::lifetime::sampling::{Pool, Strata, STRATA};
 use crate::analysis::lifetime::{
     capped_statistics, life_statistics, AutoLives, AutoPrecision, DesignParams, ErrorModel, ErrorScope, FailureLimits,
-    HeelPressureExceedance, ImpulsiveShare, LifeParams, LifeStatistics, Sampling, StormCase, StormOutcome, WaveDraws,
+    HeelPressureExceedance, ImpulsiveShare, LifeCounts, LifeParams, LifeStatistics, Sampling, StormCase, StormOutcome,
+    WaveDraws,
 };
 use crate::analysis::site::WaveSetup;
 use crate::analysis::sizing::failure_modes;
@@ -541,18 +542,29 @@ impl DesignReport {
     /// caisson's width, and the warnings of the structure, the lives and the waves. What
     /// `caisson design`, `caisson merge` and Python's `Design.statistics` report.
     pub fn new(p: &DesignParams, case: &StormCase<'_>, waves: Option<&WaveSetup>, lives: &[StormOutcome]) -> Self {
-        let width_m = case.structure.caisson.width_m;
-        let failure = p.failure_limits(width_m);
-        let mut report = DesignReport::statistics(p, case.rigid_block_mu, failure.sliding_m, lives);
-        report.model = Some(ModelReport::new(case.structure, waves));
-        report.warnings = structure_warnings(case.structure);
-        report.warnings.extend(life_warnings(lives, &failure, width_m));
-        let shares = [&report.dynamic.sliding.impulsive, &report.rigid_block.impulsive];
-        report.warnings.extend(impulsive_warnings(shares, case.model, waves));
+        let failure = p.failure_limits(case.structure.caisson.width_m);
+        let report = DesignReport::statistics(p, case.rigid_block_mu, failure.sliding_m, lives);
+        report.with_warnings(case, waves, &LifeCounts::of(lives, &failure), &failure)
+    }
+
+    /// These statistics with the model and the warnings of the structure, of the lives (from
+    /// `counts`), of their impulsive shares (as reported) and of the waves.
+    fn with_warnings(
+        mut self,
+        case: &StormCase<'_>,
+        waves: Option<&WaveSetup>,
+        counts: &LifeCounts,
+        failure: &FailureLimits,
+    ) -> Self {
+        self.model = Some(ModelReport::new(case.structure, waves));
+        self.warnings = structure_warnings(case.structure);
+        self.warnings.extend(counts_warnings(counts, failure, case.structure.caisson.width_m));
+        let shares = [&self.dynamic.sliding.impulsive, &self.rigid_block.impulsive];
+        self.warnings.extend(impulsive_warnings(shares, case.model, waves));
         if let Some(ws) = waves {
-            report.warnings.extend(wave_load_warnings(case.structure, ws));
+            self.warnings.extend(wave_load_warnings(case.structure, ws));
         }
-        report
+        self
     }
 
     /// The rule of `lives = "auto"` ([`AutoLives::judge`]) on these statistics: the dynamic
@@ -644,14 +656,16 @@ impl DesignReport {
         strata: &Strata,
         pool: &Pool,
     ) -> Self {
-        let mut report = DesignReport::new(p, case, waves, lives);
-        let failure_sliding_m = report.failure_sliding_m;
-        let stats = DesignReport::stratified_statistics(p, case.rigid_block_mu, failure_sliding_m, lives, strata, pool);
-        report.lives = stats.lives;
-        report.dynamic = stats.dynamic;
-        report.rigid_block = stats.rigid_block;
-        report.sampling = stats.sampling;
-        report
+        let failure = p.failure_limits(case.structure.caisson.width_m);
+        let report =
+            DesignReport::stratified_statistics(p, case.rigid_block_mu, failure.sliding_m, lives, strata, pool);
+        // The warnings count the simulated lives and give the weighted P(failure) beside them; the
+        // impulsive warnings read the weighted shares.
+        let counts = LifeCounts {
+            weighted_failure_probability: Some(report.dynamic.sliding.failure.probability),
+            ..LifeCounts::of(lives, &failure)
+        };
+        report.with_warnings(case, waves, &counts, &failure)
     }
 
     /// [`Self::statistics`] of a stratified run's simulated `lives` (in `pool`'s order).

@@ -79,6 +79,11 @@ pub struct LifeCounts {
     /// What the impulsive waves make of each model's lives.
     pub impulsive: ImpulsiveShare,
     pub rigid_block_impulsive: ImpulsiveShare,
+    /// A stratified run's estimate of P(failure) (its lives weighted): the counts above are of
+    /// its simulated lives, which hold the severe storms more often than the climate does, so the
+    /// warnings say so and give this; `None` when every life was simulated.
+    #[serde(default)]
+    pub weighted_failure_probability: Option<f64>,
 }
 
 impl LifeCounts {
@@ -104,6 +109,7 @@ impl LifeCounts {
             run_on_stopped_lives: count(&|l| l.run_on_stopped != 0),
             impulsive: ImpulsiveShare::dynamic(lives),
             rigid_block_impulsive: ImpulsiveShare::rigid_block(lives, failure),
+            weighted_failure_probability: None,
         }
     }
 }
