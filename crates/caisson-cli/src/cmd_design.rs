@@ -860,11 +860,11 @@ pub(crate) fn fmt_with_interval(value: f64, ci: [Option<f64>; 2]) -> String {
 }
 
 /// A share in per cent with its 95 % interval, to the decimals half its width supports: "15 %
-/// (9-22 %)" (a negative end with a minus sign: "(−3 to 20 %)"); a share without spread (no life
-/// slid) "0 %".
+/// (9-22 %)" (a negative end with a minus sign: "(−3 to 20 %)"); a share of nothing (no life slid:
+/// [0, 0]; no life failed: [0, 1]) "0 %".
 pub(crate) fn share_text(value: f64, ci: [f64; 2]) -> String {
     let half = 50.0 * (ci[1] - ci[0]);
-    if half <= 0.0 {
+    if half <= 0.0 || (value == 0.0 && ci == [0.0, 1.0]) {
         return format!("{:.0} %", 100.0 * value);
     }
     let d = caisson::supported_decimals(half);
@@ -979,5 +979,7 @@ mod tests {
         assert_eq!(share_text(0.004, [0.001, 0.007]), "0.4 % (0.1-0.7 %)");
         assert_eq!(share_text(0.003, [-0.003, 0.008]), "0.3 % (−0.3 to 0.8 %)");
         assert_eq!(share_text(0.0, [0.0, 0.0]), "0 %");
+        assert_eq!(share_text(0.0, [0.0, 1.0]), "0 %");
+        assert_eq!(share_text(0.0, [0.0, 0.011]), "0.0 % (0.0-1.1 %)");
     }
 }

@@ -201,6 +201,7 @@ table.meta th { width: 22%; }
 #lifetime, #candidates, #comparison, #paired-differences { font-size: 8.5pt; }
 #lifetime td:first-child { width: 24%; }
 #paired-differences td.n, #paired-differences th.n { white-space: normal; }
+#candidates th { white-space: normal; }
 td.f { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 figure { margin: 3mm 0; break-inside: avoid; page-break-inside: avoid; }
 figure svg { display: block; width: 100%; height: auto; }
