@@ -57,6 +57,7 @@ use caisson::analysis::stratified::TwoPhase;
 use caisson::drive::design::{AutoRun, DesignOptions, Designer, Sample};
 use caisson::report::design::DesignReport;
 use caisson::scenario::{self, Scenario};
+use caisson::share_text;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::Write;
@@ -859,20 +860,6 @@ pub(crate) fn fmt_with_interval(value: f64, ci: [Option<f64>; 2]) -> String {
     format!("{value:.d$} ({}-{})", end(ci[0]), end(ci[1]))
 }
 
-/// A share in per cent with its 95 % interval, to the decimals half its width supports: "15 %
-/// (9-22 %)" (a negative end with a minus sign: "(−3 to 20 %)"); a share of nothing (no life slid:
-/// [0, 0]; no life failed: [0, 1]) "0 %".
-pub(crate) fn share_text(value: f64, ci: [f64; 2]) -> String {
-    let half = 50.0 * (ci[1] - ci[0]);
-    if half <= 0.0 || (value == 0.0 && ci == [0.0, 1.0]) {
-        return format!("{:.0} %", 100.0 * value);
-    }
-    let d = caisson::supported_decimals(half);
-    let f = |v: f64| format!("{:.d$}", 100.0 * v).replace('-', "−");
-    let sep = if ci[0] < 0.0 { " to " } else { "-" };
-    format!("{} % ({}{sep}{} %)", f(value), f(ci[0]), f(ci[1]))
-}
-
 /// P(q_heel > q_a) with its Wilson interval ([`fmt_with_interval`]).
 pub(crate) fn heel_probability(h: &caisson::analysis::lifetime::HeelPressureExceedance) -> String {
     fmt_with_interval(h.probability, h.ci95.map(Some))
@@ -965,21 +952,4 @@ fn dynamic_only(r: &DesignReport, t: &mut String) {
         "  lives ending seaward (any amount) {}; waves lifting part of the base {}; waves rotating it beyond 0.01 rad {} (in {} lives)",
         d.seaward_lives, d.rocking_waves, d.large_rotation_waves, d.large_rotation_lives
     );
-}
-
-#[cfg(test)]
-mod tests {
-    use super::share_text;
-
-    /// The digits follow half the interval's width in per cent (4.5 -> 0 decimals, 0.3 -> 1),
-    /// a negative end reads "to", and a point without spread prints alone.
-    #[test]
-    fn a_share_prints_with_the_digits_its_interval_supports() {
-        assert_eq!(share_text(0.154, [0.109, 0.199]), "15 % (11-20 %)");
-        assert_eq!(share_text(0.004, [0.001, 0.007]), "0.4 % (0.1-0.7 %)");
-        assert_eq!(share_text(0.003, [-0.003, 0.008]), "0.3 % (−0.3 to 0.8 %)");
-        assert_eq!(share_text(0.0, [0.0, 0.0]), "0 %");
-        assert_eq!(share_text(0.0, [0.0, 1.0]), "0 %");
-        assert_eq!(share_text(0.0, [0.0, 0.011]), "0.0 % (0.0-1.1 %)");
-    }
 }

@@ -5,7 +5,6 @@
 //! with their fitted curves.
 
 use crate::cli::FragilityArgs;
-use crate::cmd_design::share_text;
 use crate::csv_rows::{to_csv, Plain, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, pretty, progress, report_json, with_threads, write_atomic};
@@ -18,6 +17,7 @@ use caisson::analysis::site::WaveSetup;
 use caisson::analysis::Structure;
 use caisson::report::fragility::FragilityReport;
 use caisson::scenario;
+use caisson::share_text;
 use std::fmt::Write;
 use std::path::Path;
 

@@ -3,7 +3,7 @@
 //! and Goda's deterministic widths beside it.
 
 use crate::cli::SizeArgs;
-use crate::cmd_design::{fmt_plus_minus, fmt_with_interval, heel_probability, share_text};
+use crate::cmd_design::{fmt_plus_minus, fmt_with_interval, heel_probability};
 use crate::csv_rows::{to_csv, Sci};
 use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, with_threads, write_atomic};
@@ -16,6 +16,7 @@ use caisson::drive::size::{Hooks, SizeError, Sizer};
 use caisson::report::checkpoint::{candidate_line, SizeHeader};
 use caisson::report::size::{CandidateReport, GodaWidth, SizeReport};
 use caisson::scenario;
+use caisson::share_text;
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::Path;

@@ -15,7 +15,6 @@
 //! Intervals: the standard errors are the design report's (`*_se_m`); the 95 % interval of a mean
 //! is mean ± 1.96 SE, of a proportion Wilson's ([`caisson::analysis::estimate`]).
 
-use crate::cmd_design::share_text;
 use caisson::analysis::estimate::{wilson_ci95, Estimate, Z95};
 use caisson::analysis::lifetime::{DesignParams, StormOutcome};
 use caisson::analysis::sizing::Required;
@@ -25,6 +24,7 @@ use caisson::report::fragility::FragilityReport;
 use caisson::report::loads::LoadsReport;
 use caisson::report::size::SizeReport;
 use caisson::report::{FoundationReport, ModelReport};
+use caisson::share_text;
 use caisson::structure::Caisson;
 use std::fmt::Write as _;
 

@@ -132,6 +132,20 @@ pub fn supported_decimals(half_width: f64) -> usize {
     (-half_width.log10().floor()).clamp(0.0, 6.0) as usize
 }
 
+/// A share in per cent with its 95 % interval, to the decimals half its width supports: "15 %
+/// (9-22 %)" (a negative end with a minus sign: "(−3 to 20 %)"); a share of nothing (no life slid:
+/// [0, 0]; no life failed: [0, 1]) "0 %".
+pub fn share_text(value: f64, ci: [f64; 2]) -> String {
+    let half = 50.0 * (ci[1] - ci[0]);
+    if half <= 0.0 || (value == 0.0 && ci == [0.0, 1.0]) {
+        return format!("{:.0} %", 100.0 * value);
+    }
+    let d = supported_decimals(half);
+    let f = |v: f64| format!("{:.d$}", 100.0 * v).replace('-', "−");
+    let sep = if ci[0] < 0.0 { " to " } else { "-" };
+    format!("{} % ({}{sep}{} %)", f(value), f(ci[0]), f(ci[1]))
+}
+
 /// A parameter outside what the model allows: the quantity (as named in its parameter type, SI
 /// units), its value and what is allowed. The [`scenario`] module reports it under the name of
 /// the file key, in the key's unit.
@@ -271,6 +285,19 @@ pub(crate) mod check {
 
 #[cfg(test)]
 mod tests {
+    use super::share_text;
+
+    /// The digits follow half the interval's width in per cent (4.5 -> 0 decimals, 0.3 -> 1),
+    /// a negative end reads "to", and a point without spread prints alone.
+    #[test]
+    fn a_share_prints_with_the_digits_its_interval_supports() {
+        assert_eq!(share_text(0.154, [0.109, 0.199]), "15 % (11-20 %)");
+        assert_eq!(share_text(0.004, [0.001, 0.007]), "0.4 % (0.1-0.7 %)");
+        assert_eq!(share_text(0.003, [-0.003, 0.008]), "0.3 % (−0.3 to 0.8 %)");
+        assert_eq!(share_text(0.0, [0.0, 0.0]), "0 %");
+        assert_eq!(share_text(0.0, [0.0, 1.0]), "0 %");
+        assert_eq!(share_text(0.0, [0.0, 0.011]), "0.0 % (0.0-1.1 %)");
+    }
     use super::supported_decimals;
 
     /// The decimals of a figure end at the first significant digit of its uncertainty, by hand:
