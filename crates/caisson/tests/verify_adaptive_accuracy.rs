@@ -456,7 +456,7 @@ fn grazing_toe_meets_converged_fixed_steps() {
 /// text, its profile and a one-line description.
 fn family_case(rng: &mut rand_chacha::ChaCha8Rng, k: usize) -> (String, String) {
     use rand::Rng;
-    let profile = if k % 2 == 0 { "consistent" } else { "seed-2011" };
+    let profile = if k.is_multiple_of(2) { "consistent" } else { "seed-2011" };
     let springs = rng.gen_range(2..=40usize);
     let mu_s: f64 = rng.gen_range(0.5..0.8);
     let mu_d = mu_s - rng.gen_range(0.1..0.3);
