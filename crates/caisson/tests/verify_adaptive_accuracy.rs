@@ -452,45 +452,26 @@ fn grazing_toe_meets_converged_fixed_steps() {
     assert_eq!(checked, 3);
 }
 
-/// A random family of held-out cases (seeded, so the same cases every run): the PARI flume
-/// caisson (B = 1 m, W' 8.24 kN, m 1464 kg) under both profiles, 2 to 40 springs, μ_s from 0.5 to
-/// 0.8 with μ_d 0.1 to 0.3 below it, K_x 1.5e5 and K_y 1.4e5 kN/m, undamped or with C = 20 kN·s/m,
-/// without added mass; a triangle impulsive (rise 5 to 30 ms) or pulsating (0.1 to 0.4 s), 1.1 to
-/// 2.0 times μ_s W' (impulsive) or 1.0 to 1.4 (pulsating), at 0.1 to 0.8 m, with uplift of 0.1
-/// to 0.25 of it or none. Adaptive stepping at its defaults against fixed steps of dt0/16 =
-/// 6.25e-6 s (dt0/32 within 0.04 % of it on every case beyond the bound): the permanent sliding
-/// and the peak u_x within max(1 µm, 1 %). Knife's edges of the model
-/// (`pari_two_springs_is_a_knife_edge_of_the_model`) can fall in such a family; the count of
-/// cases beyond the bound is held at what was measured (a ratchet: the test fails if it grows),
-/// and every case is printed with its errors. Measured: 13 of 40 before the sticking steps were
-/// held per unit step (results version 24: seven of them `seed-2011` cases whose slip onset
-/// moved with Newmark's phase lag of the sticking vibration, up to 11 % and 16 %; module docs of
-/// `caisson::dynamics`), 3 after: three undamped cases of the consistent profile that rock on
-/// part of their base (1.5 %, 2.0 % and 12.7 % in the sliding), where a slip onset or a lift of
-/// a toe spring that converged steps find in a short excursion is found or not.
-#[test]
-fn random_family_meets_converged_fixed_steps() {
-    use rand::{Rng, SeedableRng};
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(34);
-    // Most missed and worst ratio of the error to the bound (sliding or peak).
-    let (mut checked, mut missed, mut worst) = (0, 0, 0.0f64);
-    for k in 0..FAMILY_CASES {
-        let profile = if k % 2 == 0 { "consistent" } else { "seed-2011" };
-        let springs = rng.gen_range(2..=40usize);
-        let mu_s: f64 = rng.gen_range(0.5..0.8);
-        let mu_d = mu_s - rng.gen_range(0.1..0.3);
-        let damping = if rng.gen_bool(0.5) { 0.0 } else { 20.0 };
-        let impulsive = rng.gen_bool(0.5);
-        let (rise, factor) = if impulsive {
-            (rng.gen_range(0.005..0.03), rng.gen_range(1.1..2.0))
-        } else {
-            (rng.gen_range(0.1..0.4), rng.gen_range(1.0..1.4))
-        };
-        let peak = factor * mu_s * 8.24;
-        let lever: f64 = rng.gen_range(0.1..0.8);
-        let uplift = if rng.gen_bool(0.5) { rng.gen_range(0.1..0.25) * peak } else { 0.0 };
-        let text = format!(
-            r#"
+/// Family case `k` drawn from `rng` (the draws in order: every case draws them all): its scenario
+/// text, its profile and a one-line description.
+fn family_case(rng: &mut rand_chacha::ChaCha8Rng, k: usize) -> (String, String) {
+    use rand::Rng;
+    let profile = if k.is_multiple_of(2) { "consistent" } else { "seed-2011" };
+    let springs = rng.gen_range(2..=40usize);
+    let mu_s: f64 = rng.gen_range(0.5..0.8);
+    let mu_d = mu_s - rng.gen_range(0.1..0.3);
+    let damping = if rng.gen_bool(0.5) { 0.0 } else { 20.0 };
+    let impulsive = rng.gen_bool(0.5);
+    let (rise, factor) = if impulsive {
+        (rng.gen_range(0.005..0.03), rng.gen_range(1.1..2.0))
+    } else {
+        (rng.gen_range(0.1..0.4), rng.gen_range(1.0..1.4))
+    };
+    let peak = factor * mu_s * 8.24;
+    let lever: f64 = rng.gen_range(0.1..0.8);
+    let uplift = if rng.gen_bool(0.5) { rng.gen_range(0.1..0.25) * peak } else { 0.0 };
+    let text = format!(
+        r#"
 [model]
 profile = "{profile}"
 [caisson]
@@ -517,8 +498,70 @@ horizontal_lever_m = {lever}
 peak_uplift_kn = {uplift}
 duration_s = {d}
 "#,
-            d = 2.0 * rise + 0.3
-        );
+        d = 2.0 * rise + 0.3
+    );
+    let about = format!(
+        "{profile}, {springs} springs, μ {mu_s:.2}/{mu_d:.2}, C {damping}, rise {rise:.3} s, {peak:.2} kN at {lever:.2} m, uplift {uplift:.2} kN"
+    );
+    (text, about)
+}
+
+/// A random family of held-out cases (seeded, so the same cases every run): the PARI flume
+/// caisson (B = 1 m, W' 8.24 kN, m 1464 kg) under both profiles, 2 to 40 springs, μ_s from 0.5 to
+/// 0.8 with μ_d 0.1 to 0.3 below it, K_x 1.5e5 and K_y 1.4e5 kN/m, undamped or with C = 20 kN·s/m,
+/// without added mass; a triangle impulsive (rise 5 to 30 ms) or pulsating (0.1 to 0.4 s), 1.1 to
+/// 2.0 times μ_s W' (impulsive) or 1.0 to 1.4 (pulsating), at 0.1 to 0.8 m, with uplift of 0.1
+/// to 0.25 of it or none. Adaptive stepping at its defaults against fixed steps of dt0/16 =
+/// 6.25e-6 s (dt0/32 within 0.04 % of it on every case beyond the bound): the permanent sliding
+/// and the peak u_x within max(1 µm, 1 %). Knife's edges of the model
+/// (`pari_two_springs_is_a_knife_edge_of_the_model`) can fall in such a family; the count of
+/// cases beyond the bound is held at what was measured (a ratchet: the test fails if it grows),
+/// and every case is printed with its errors. Measured: 13 of 40 before the sticking steps were
+/// held per unit step (results version 24: seven of them `seed-2011` cases whose slip onset
+/// moved with Newmark's phase lag of the sticking vibration, up to 11 % and 16 %; module docs of
+/// `caisson::dynamics`), 3 after: three undamped cases of the consistent profile that rock on
+/// part of their base (1.5 %, 2.0 % and 12.7 % in the sliding), where a slip onset or a lift of
+/// a toe spring that converged steps find in a short excursion is found or not.
+///
+/// Diagnosed (issue 34 item 4; `diagnose_family_case`, run with `CAISSON_CASE=k`; results
+/// version 24): no step kind or quantity that the error estimate ignores stands out, and no fix
+/// was made. Each run traced step by step against fixed steps of 6.25e-6 s; first step end where a
+/// quantity departs by more than 1e-3 of its largest magnitude over the run:
+/// - case 28 (21 springs, μ 0.68/0.56, a 0.35 s pulsating triangle at 0.79 m): u_x, u_y and θ
+///   agree to 1e-3 until 0.8715 s (u_x first: a Newmark step of 9.1e-5 s while the caisson rocks
+///   on part of its base after its one slip episode, 0.8486-0.8631 s in both runs). From 0.8789 s
+///   (adaptive; 0.8792 s converged) to the run's end, 0.9915 s, no spring is in contact: the
+///   caisson is airborne, 3.2 cm up, tumbling at θ̇ = −0.3242 rad/s (converged −0.3237: 0.16 %),
+///   so its "permanent sliding" is the base centre's u_x in flight, which grows at v_x,G + h_G θ̇,
+///   3.60e-3 m/s (converged 3.12e-3), the difference of two terms of 0.18 m/s: a 0.16 % error of
+///   θ̇ becomes 15 % of that rate and the 12.7 %. Smaller steps move it: +2.7 % at a tenth of the
+///   tolerance, +0.79 % at a hundredth, +3.1 % at dt_max/5; with the exact sticking steps off
+///   +5.9 %, +8.7 %, +2.4 %, +6.7 %. The case measures a flight, not a permanent sliding.
+/// - case 12 (12 springs, impulsive, no uplift): θ departs first, at 0.0190 s (a Newmark step of
+///   5.1e-4 s in the main slide, 0.0145-0.054 s), then the rocking that follows lags: θ's upward
+///   zero crossings 0.12, 0.32, 0.69 and 1.2 ms behind at 0.096, 0.167, 0.237 and 0.306 s (a
+///   period of about 70 ms; mostly exact partial-contact steps there), and the toe springs' slips
+///   move (adaptive 0.0835-0.0846 and 0.1415-0.1437 s, converged 0.1117-0.1128 s instead).
+///   +1.52 % at the default tolerance, +0.87 % and +0.92 % at 1/10 and 1/100 of it, −0.01 % at
+///   1/1000; +0.43 % at dt_max/5; exact steps off +0.19 %, +0.96 %, +0.95 %, +0.24 %, +1.36 %.
+/// - case 16 (6 springs, impulsive, uplift): u_x departs at 0.1322 s (a Newmark step of 6.9e-4 s
+///   in the third slip episode); the second episode starts 0.23 ms late and lasts 1.03 ms
+///   against 0.81 ms. −2.25 % at the default tolerance, −1.21 % at 1/10, +0.09 % at 1/100;
+///   −1.26 % at dt_max/5; exact steps off −1.21 %, −0.16 %, +0.08 %, −1.21 %.
+///
+/// Undamped rocking with friction: the answers jump between branches as the tolerance shrinks
+/// (not monotone in it, with the exact steps on or off), as on a knife's edge. The exact steps
+/// make all three worse at the default tolerance (exact steps off: +0.19 %, −1.21 %, +5.9 %) but
+/// case 28 better at 1/10 of it, so switching them off is no fix. A previous diagnosis sampled
+/// the cubic Hermite of the accepted steps and found no margin dipping below zero inside a step.
+#[test]
+fn random_family_meets_converged_fixed_steps() {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(34);
+    // Most missed and worst ratio of the error to the bound (sliding or peak).
+    let (mut checked, mut missed, mut worst) = (0, 0, 0.0f64);
+    for k in 0..FAMILY_CASES {
+        let (text, about) = family_case(&mut rng, k);
         let s = support::scenario(&text);
         let (adaptive, converged) = adaptive_and_converged(&s, 1e-4);
         let err = [(adaptive[0] - converged[0]).abs(), (adaptive[1] - converged[1]).abs()];
@@ -527,8 +570,12 @@ duration_s = {d}
         let miss = err[0] > bound[0] || err[1] > bound[1];
         missed += usize::from(miss);
         println!(
-            "case {k}: {profile}, {springs} springs, μ {mu_s:.2}/{mu_d:.2}, C {damping}, rise {rise:.3} s, {peak:.2} kN at {lever:.2} m, uplift {uplift:.2} kN: sliding {:.4e} m (converged {:.4e}), peak {:.4e} m ({:.4e}){}",
-            adaptive[0], converged[0], adaptive[1], converged[1], if miss { "  MISS" } else { "" }
+            "case {k}: {about}: sliding {:.4e} m (converged {:.4e}), peak {:.4e} m ({:.4e}){}",
+            adaptive[0],
+            converged[0],
+            adaptive[1],
+            converged[1],
+            if miss { "  MISS" } else { "" }
         );
         checked += 1;
     }
@@ -540,3 +587,135 @@ duration_s = {d}
 /// The family's size, and the cases beyond the bound measured on it (the ratchet).
 const FAMILY_CASES: usize = 40;
 const FAMILY_MISSES: usize = 3;
+
+/// One committed step of a traced run: time, whether it was an exact sticking step (no Newton
+/// iteration), u = (u_x, u_y, θ), the least normal force of the springs, N, the least friction
+/// margin μ_s N − |F| of the springs in contact, N, and whether any spring slips.
+type TraceRow = (f64, bool, [f64; 3], f64, f64, bool);
+
+struct Trace {
+    mu_s: f64,
+    rows: Vec<TraceRow>,
+}
+
+impl caisson::dynamics::Observer for Trace {
+    fn observe(&mut self, v: &caisson::dynamics::StepView<'_>) {
+        let least_n = v.springs.iter().map(|r| r.normal_n).fold(f64::INFINITY, f64::min);
+        let margin = v
+            .springs
+            .iter()
+            .filter(|r| r.normal_n > 0.0)
+            .map(|r| self.mu_s * r.normal_n - r.shear_n.abs())
+            .fold(f64::INFINITY, f64::min);
+        let sliding = v.state.springs.iter().any(|s| s.sliding);
+        self.rows.push((v.t_s, v.iterations == 0, v.state.u, least_n, margin, sliding));
+    }
+}
+
+/// Diagnosis of the family's case `CAISSON_CASE` (28 by default): the adaptive run at its
+/// defaults and fixed steps of 6.25e-6 s traced step by step; prints the scenario, and for each
+/// quantity the first adaptive step end where it differs from the converged run (interpolated
+/// linearly between its steps) by more than 1e-3 of the quantity's largest magnitude over the
+/// run, with the step's kind and length there. Slow (a fixed run of 6.25e-6 s): ignored.
+#[test]
+#[ignore]
+fn diagnose_family_case() {
+    use caisson::dynamics::Simulation;
+    use rand::SeedableRng;
+    let want: usize = std::env::var("CAISSON_CASE").ok().and_then(|s| s.parse().ok()).unwrap_or(28);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(34);
+    let (mut text, mut about) = (String::new(), String::new());
+    for k in 0..=want {
+        (text, about) = family_case(&mut rng, k);
+    }
+    println!("case {want}: {about}\n{text}");
+    let mu_s: f64 = text.lines().find_map(|l| l.strip_prefix("mu_static = ")).unwrap().trim().parse().unwrap();
+    let s = support::scenario(&text);
+    let trace = |stepping: Stepping, dt_s: f64| {
+        let solver = SolverParams { dt_s, stepping, ..s.solver() };
+        let load = s.load.clone().unwrap();
+        let mut sim = Simulation::new(s.structure().model(), solver, &load);
+        let mut t = Trace { mu_s, rows: Vec::new() };
+        sim.run_until(s.duration_s, &load, &mut t).unwrap();
+        println!("{stepping:?}: {:?}", sim.stats);
+        t.rows
+    };
+    let adaptive = trace(Stepping::Adaptive(AdaptiveParams::for_first_step(1e-4)), 1e-4);
+    let fixed = trace(Stepping::Fixed, 6.25e-6);
+    let q = |r: &TraceRow| [r.2[0], r.2[1], r.2[2], r.3.min(1e9), r.4.min(1e9)];
+    let names = ["u_x", "u_y", "theta", "least N", "least margin"];
+    let scale: Vec<f64> = (0..5)
+        .map(|i| fixed.iter().map(|r| q(r)[i].abs()).filter(|x| x.is_finite() && *x < 1e9).fold(0.0, f64::max))
+        .collect();
+    let at = |t: f64| {
+        let j = fixed.partition_point(|r| r.0 < t).clamp(1, fixed.len() - 1);
+        let (a, b) = (&fixed[j - 1], &fixed[j]);
+        let w = ((t - a.0) / (b.0 - a.0)).clamp(0.0, 1.0);
+        let (qa, qb) = (q(a), q(b));
+        (0..5).map(|i| qa[i] + w * (qb[i] - qa[i])).collect::<Vec<_>>()
+    };
+    let mut first = [None::<usize>; 5];
+    for (n, r) in adaptive.iter().enumerate() {
+        let c = at(r.0);
+        for i in 0..5 {
+            if first[i].is_none() && (q(r)[i] - c[i]).abs() > 1e-3 * scale[i] {
+                first[i] = Some(n);
+            }
+        }
+    }
+    for i in 0..5 {
+        if let Some(n) = first[i] {
+            let r = &adaptive[n];
+            let h = r.0 - adaptive[n.saturating_sub(1)].0;
+            println!(
+                "{}: first beyond 1e-3 of {:.4e} at t {:.6} s (step {n}, {} h {:.3e} s, sliding {}): adaptive {:.6e}, converged {:.6e}",
+                names[i],
+                scale[i],
+                r.0,
+                if r.1 { "exact" } else { "newmark" },
+                h,
+                r.5,
+                q(r)[i],
+                at(r.0)[i]
+            );
+        }
+    }
+    if let Ok(path) = std::env::var("CAISSON_TRACE_DIR") {
+        for (what, rows) in [("adaptive", &adaptive), ("fixed", &fixed)] {
+            let mut out = String::from("t,exact,ux,uy,theta,least_n,least_margin,sliding\n");
+            for r in rows {
+                out +=
+                    &format!("{},{},{},{},{},{},{},{}\n", r.0, r.1 as u8, r.2[0], r.2[1], r.2[2], r.3, r.4, r.5 as u8);
+            }
+            std::fs::write(std::path::Path::new(&path).join(format!("{what}.csv")), out).unwrap();
+        }
+    }
+    // The permanent sliding: adaptive with and without the exact sticking steps, and converged.
+    let sliding = |exact: bool, stepping: Stepping, dt_s: f64| {
+        let solver = SolverParams {
+            dt_s,
+            stepping,
+            accel: caisson::dynamics::Accel { exact_sticking: exact, ..s.solver().accel },
+            ..s.solver()
+        };
+        sliding_m(&s.clone().with_solver(solver).unwrap(), stepping, dt_s)
+    };
+    let converged = sliding(true, Stepping::Fixed, 6.25e-6);
+    let d = AdaptiveParams::for_first_step(1e-4);
+    for (tolerance_m, dt_max_s) in [
+        (d.tolerance_m, d.dt_max_s),
+        (d.tolerance_m / 10.0, d.dt_max_s),
+        (d.tolerance_m / 100.0, d.dt_max_s),
+        (d.tolerance_m, d.dt_max_s / 5.0),
+    ] {
+        for exact in [true, false] {
+            let p = AdaptiveParams { tolerance_m, dt_max_s, ..d };
+            let a = sliding(exact, Stepping::Adaptive(p), 1e-4);
+            println!(
+                "tolerance {tolerance_m:e} m, dt_max {dt_max_s:e} s, exact sticking {exact}: adaptive {a:.6e} m, converged {converged:.6e} m ({:+.2} %)",
+                100.0 * (a / converged - 1.0)
+            );
+        }
+    }
+    assert!(!adaptive.is_empty() && !fixed.is_empty());
+}
