@@ -183,12 +183,28 @@ impl TwoPhase {
         let y: Vec<f64> = flags.iter().map(|&f| f64::from(u8::from(f))).collect();
         let (p, v) = self.mean_and_variance(&y);
         let p = p.clamp(0.0, 1.0);
-        let n_eff = if v > 0.0 && p > 0.0 && p < 1.0 {
-            p * (1.0 - p) / v
-        } else {
-            1.0 / self.weight.iter().map(|w| w * w).sum::<f64>()
-        };
-        Estimate { value: p, standard_error: v.sqrt(), ci95: wilson_ci95_at(p, n_eff) }
+        Estimate {
+            value: p,
+            standard_error: v.sqrt(),
+            ci95: wilson_ci95_at(p, effective_size(p, v, || kish(&self.weight))),
+        }
+    }
+
+    /// The proportion of `flags` among the kept units in the domain `inside` (a [`Self::domain_mean`]
+    /// of an indicator) with Wilson's interval at its effective size (module docs, "Proportion",
+    /// Kish's over the domain's weights); of an empty domain 0 within [0, 1].
+    pub fn domain_proportion(&self, flags: &[bool], inside: &[bool]) -> Estimate {
+        let y: Vec<f64> = flags.iter().map(|&f| f64::from(u8::from(f))).collect();
+        let e = self.domain_mean(&y, inside);
+        let weights: Vec<f64> = self.weight.iter().zip(inside).filter(|(_, &d)| d).map(|(&w, _)| w).collect();
+        let share: f64 = weights.iter().sum();
+        if weights.is_empty() {
+            return Estimate { value: 0.0, standard_error: 0.0, ci95: [0.0, 1.0] };
+        }
+        let p = e.value.clamp(0.0, 1.0);
+        // Kish's size of the domain's weights, rescaled to sum to 1.
+        let n_eff = effective_size(p, e.standard_error.powi(2), || share * share * kish(&weights));
+        Estimate { value: p, standard_error: e.standard_error, ci95: wilson_ci95_at(p, n_eff) }
     }
 
     /// The mean of `y` over the kept units in the domain `inside` (module docs, "Domain mean"); 0
@@ -236,6 +252,21 @@ impl TwoPhase {
         let high = (q + s < 1.0).then(|| inverse(q + s));
         Some((xi, [low, high]))
     }
+}
+
+/// The effective sample size of a proportion `p` estimated with variance `v` (module docs,
+/// "Proportion"): p(1 − p)/V, or at p = 0 or 1 (V = 0) Kish's, `kish()`.
+fn effective_size(p: f64, v: f64, kish: impl FnOnce() -> f64) -> f64 {
+    if v > 0.0 && p > 0.0 && p < 1.0 {
+        p * (1.0 - p) / v
+    } else {
+        kish()
+    }
+}
+
+/// Kish's effective size 1/Σ w² of units whose weights sum to 1.
+fn kish(weights: &[f64]) -> f64 {
+    1.0 / weights.iter().map(|w| w * w).sum::<f64>()
 }
 
 /// Wilson's score 95 % interval of a proportion `p` at a (real) sample size `n` > 0

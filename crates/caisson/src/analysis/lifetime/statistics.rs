@@ -5,7 +5,7 @@ use super::outcome::StormOutcome;
 use super::params::FailureLimits;
 use crate::analysis::estimate::{wilson_ci95, Z95};
 use crate::analysis::limits::SEAWARD_REPORT_M;
-use crate::analysis::stratified::{wilson_ci95_at, TwoPhase};
+use crate::analysis::stratified::TwoPhase;
 
 /// Statistics of the life totals.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -181,22 +181,8 @@ impl ImpulsiveShare {
         } else {
             share.share_of_expected_sliding_ci95 = [0.0, 0.0];
         }
-        let failed: Vec<bool> = lives.iter().map(|l| l.2).collect();
-        share.share_of_failures_ci95 = if share.failures > 0 {
-            let flags: Vec<f64> = lives.iter().map(|l| f64::from(u8::from(l.3))).collect();
-            let p = share.share_of_failures.clamp(0.0, 1.0);
-            let v = est.domain_mean(&flags, &failed).standard_error.powi(2);
-            let n_eff = if v > 0.0 && p > 0.0 && p < 1.0 {
-                p * (1.0 - p) / v
-            } else {
-                let (sum, sum2) =
-                    w.iter().zip(&failed).filter(|(_, &f)| f).fold((0.0, 0.0), |(a, b), (w, _)| (a + w, b + w * w));
-                sum * sum / sum2
-            };
-            wilson_ci95_at(p, n_eff)
-        } else {
-            [0.0, 1.0]
-        };
+        let (failed, impulsive): (Vec<bool>, Vec<bool>) = lives.iter().map(|l| (l.2, l.3)).unzip();
+        share.share_of_failures_ci95 = est.domain_proportion(&impulsive, &failed).ci95;
         share
     }
 
@@ -336,6 +322,7 @@ impl HeelPressureExceedance {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analysis::stratified::wilson_ci95_at;
 
     /// A two-phase sample of one stratum kept whole is simple random sampling: the share of E|S|
     /// and its interval are [`ImpulsiveShare::of`]'s (the linearised z has mean 0, so its
