@@ -309,13 +309,13 @@ fn exact_sticking_follows_the_profile() {
 
 /// Adaptive stepping at its defaults (first step 1e-4 s) and fixed steps of dt0/16 = 6.25e-6 s
 /// on a held-out scenario file of `tests/data/accuracy/`, with the first step replaced by
-/// `dt0_s`: (permanent sliding, peak u_x) of each, m.
-fn adaptive_and_converged(s: &Scenario, dt0_s: f64) -> ([f64; 2], [f64; 2]) {
+/// `dt0_s`: (permanent sliding m, peak u_x m, largest |θ| rad) of each.
+fn adaptive_and_converged(s: &Scenario, dt0_s: f64) -> ([f64; 3], [f64; 3]) {
     let one = |stepping: Stepping, dt_s: f64| {
         let solver = SolverParams { dt_s, stepping, ..s.solver() };
         let s = s.clone().with_solver(solver).unwrap();
         let r = run(s.structure(), s.load.as_ref().unwrap(), s.duration_s, false).unwrap().summary;
-        [r.permanent_sliding_m, r.max_horizontal_displacement_m]
+        [r.permanent_sliding_m, r.max_horizontal_displacement_m, r.max_rotation_rad]
     };
     (one(Stepping::Adaptive(AdaptiveParams::for_first_step(dt0_s)), dt0_s), one(Stepping::Fixed, 6.25e-6))
 }
@@ -513,7 +513,10 @@ duration_s = {d}
 /// 2.0 times μ_s W' (impulsive) or 1.0 to 1.4 (pulsating), at 0.1 to 0.8 m, with uplift of 0.1
 /// to 0.25 of it or none. Adaptive stepping at its defaults against fixed steps of dt0/16 =
 /// 6.25e-6 s (dt0/32 within 0.04 % of it on every case beyond the bound): the permanent sliding
-/// and the peak u_x within max(1 µm, 1 %). Knife's edges of the model
+/// and the peak u_x within max(1 µm, 1 %). A case whose converged run rotates the caisson beyond
+/// the model's small rotations (`ROCKING_LIMIT_RAD`, 0.01 rad: the `rocking` warning tells a user
+/// the model does not hold there) is printed but not held to the bound: two of the 40 (case 28,
+/// 0.078 rad, which ends airborne, below; case 35, 0.015 rad, within the bound). Knife's edges of the model
 /// (`pari_two_springs_is_a_knife_edge_of_the_model`) can fall in such a family; the count of
 /// cases beyond the bound is held at what was measured (a ratchet: the test fails if it grows),
 /// and every case is printed with its errors. Measured: 13 of 40 before the sticking steps were
@@ -536,7 +539,9 @@ duration_s = {d}
 ///   3.60e-3 m/s (converged 3.12e-3), the difference of two terms of 0.18 m/s: a 0.16 % error of
 ///   θ̇ becomes 15 % of that rate and the 12.7 %. Smaller steps move it: +2.7 % at a tenth of the
 ///   tolerance, +0.79 % at a hundredth, +3.1 % at dt_max/5; with the exact sticking steps off
-///   +5.9 %, +8.7 %, +2.4 %, +6.7 %. The case measures a flight, not a permanent sliding.
+///   +5.9 %, +8.7 %, +2.4 %, +6.7 %. The case measures a flight, not a permanent sliding (and
+///   it rotates up to 0.078 rad, beyond the model's validity: not held since issue 34's third
+///   session).
 /// - case 12 (12 springs, impulsive, no uplift): θ departs first, at 0.0190 s (a Newmark step of
 ///   5.1e-4 s in the main slide, 0.0145-0.054 s), then the rocking that follows lags: θ's upward
 ///   zero crossings 0.12, 0.32, 0.69 and 1.2 ms behind at 0.096, 0.167, 0.237 and 0.306 s (a
@@ -556,37 +561,55 @@ duration_s = {d}
 /// the cubic Hermite of the accepted steps and found no margin dipping below zero inside a step.
 #[test]
 fn random_family_meets_converged_fixed_steps() {
+    use caisson::analysis::limits::ROCKING_LIMIT_RAD;
     use rand::SeedableRng;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(34);
-    // Most missed and worst ratio of the error to the bound (sliding or peak).
-    let (mut checked, mut missed, mut worst) = (0, 0, 0.0f64);
+    // Cases held to the bound, those beyond it, those outside the model's validity, and the
+    // worst ratio of the error to the bound (sliding or peak) of those held.
+    let (mut checked, mut missed, mut outside, mut worst) = (0, 0, 0, 0.0f64);
     for k in 0..FAMILY_CASES {
         let (text, about) = family_case(&mut rng, k);
         let s = support::scenario(&text);
         let (adaptive, converged) = adaptive_and_converged(&s, 1e-4);
         let err = [(adaptive[0] - converged[0]).abs(), (adaptive[1] - converged[1]).abs()];
         let bound = [(1e-6f64).max(0.01 * converged[0].abs()), (1e-6f64).max(0.01 * converged[1].abs())];
-        worst = worst.max(err[0] / bound[0]).max(err[1] / bound[1]);
-        let miss = err[0] > bound[0] || err[1] > bound[1];
-        missed += usize::from(miss);
+        let beyond = err[0] > bound[0] || err[1] > bound[1];
+        // Rotated beyond the model's small rotations (the `rocking` warning): not held.
+        let invalid = converged[2] > ROCKING_LIMIT_RAD;
         println!(
-            "case {k}: {about}: sliding {:.4e} m (converged {:.4e}), peak {:.4e} m ({:.4e}){}",
+            "case {k}: {about}: sliding {:.4e} m (converged {:.4e}), peak {:.4e} m ({:.4e}), |θ| up to {:.2e} rad{}",
             adaptive[0],
             converged[0],
             adaptive[1],
             converged[1],
-            if miss { "  MISS" } else { "" }
+            converged[2],
+            match (invalid, beyond) {
+                (true, _) => "  OUTSIDE the model's validity (rocking beyond 0.01 rad): not held",
+                (false, true) => "  MISS",
+                (false, false) => "",
+            }
         );
+        if invalid {
+            outside += 1;
+            continue;
+        }
+        worst = worst.max(err[0] / bound[0]).max(err[1] / bound[1]);
+        missed += usize::from(beyond);
         checked += 1;
     }
-    println!("{missed} of {checked} beyond max(1 µm, 1 %); worst error {worst:.2} times the bound");
-    assert_eq!(checked, FAMILY_CASES);
+    println!(
+        "{missed} of {checked} beyond max(1 µm, 1 %), {outside} outside the model's validity; worst error {worst:.2} times the bound"
+    );
+    assert_eq!((checked, outside), (FAMILY_CASES - FAMILY_OUTSIDE, FAMILY_OUTSIDE));
     assert!(missed <= FAMILY_MISSES, "{missed} of {checked} cases beyond max(1 µm, 1 %)");
 }
 
-/// The family's size, and the cases beyond the bound measured on it (the ratchet).
+/// The family's size, the cases whose converged run rotates beyond the model's validity
+/// (`ROCKING_LIMIT_RAD`, 0.01 rad: cases 28 and 35), and the cases held to the bound that are
+/// beyond it, measured (the ratchet).
 const FAMILY_CASES: usize = 40;
-const FAMILY_MISSES: usize = 3;
+const FAMILY_OUTSIDE: usize = 2;
+const FAMILY_MISSES: usize = 2;
 
 /// One committed step of a traced run: time, whether it was an exact sticking step (no Newton
 /// iteration), u = (u_x, u_y, θ), the least normal force of the springs, N, the least friction
