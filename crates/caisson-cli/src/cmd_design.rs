@@ -52,7 +52,8 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, pretty, progress, report_json, with_threads, write_atomic};
 use crate::plot::{panels_scaled, Panel, Scales, Series};
 use anyhow::{Context, Result};
-use caisson::analysis::lifetime::{LifeColumn, StormOutcome, LIFE_COLUMNS};
+use caisson::analysis::lifetime::sampling::expected_share;
+use caisson::analysis::lifetime::{LifeColumn, Sampling, StormOutcome, LIFE_COLUMNS};
 use caisson::analysis::stratified::TwoPhase;
 use caisson::drive::design::{AutoRun, DesignOptions, Designer, Sample};
 use caisson::report::design::DesignReport;
@@ -367,8 +368,12 @@ pub fn run(args: DesignArgs) -> Result<()> {
     // The lives this run computes: a shard's range, not the scenario's whole count. Its pilots
     // run on the run's threads.
     let estimate = with_threads(args.threads, || run.estimate(range.len()))?;
-    // A stratified run simulates its sample of the range (docs/design.md, "Stratified sampling").
-    let sample = with_threads(args.threads, || run.sample(range.clone()))?;
+    // `lives = "auto"` of a whole run (a shard runs its fixed range: `caisson merge` applies the
+    // rule): batches until the target is met, lives 0..max_lives at most.
+    let auto = run.auto().is_some() && !shard;
+    // A stratified run simulates its sample of the range (docs/design.md, "Stratified sampling");
+    // with `lives = "auto"`, of each batch as it comes ([`Designer::run_auto`]).
+    let sample = if auto { None } else { with_threads(args.threads, || run.sample(range.clone()))? };
     let wanted = run.to_simulate(range.clone(), sample.as_ref());
     let note = crate::work::check("design", &estimate, &crate::work::DESIGN)?;
     let fingerprint = run.fingerprint();
@@ -410,11 +415,14 @@ pub fn run(args: DesignArgs) -> Result<()> {
         }
     }
     let todo: Vec<usize> = wanted.iter().copied().filter(|i| !done.contains_key(i)).collect();
-    // `lives = "auto"` of a whole run (a shard runs its fixed range: `caisson merge` applies the
-    // rule): batches until the target is met, lives 0..max_lives at most.
-    let auto = run.auto().is_some() && !shard;
     crate::work::say(note);
-    let pb = progress(wanted.len() as u64, "lives", "");
+    // With `lives = "auto"` the bar counts to the budget's lives (a stratified run's expected
+    // sample of them): the run may stop before.
+    let bar_lives = match (auto, run.design.sampling) {
+        (true, Sampling::Stratified) => (wanted.len() as f64 * expected_share()).ceil() as usize,
+        _ => wanted.len(),
+    };
+    let pb = progress(bar_lives as u64, "lives", "");
     pb.set_position(done.len() as u64);
     let stop_after = args.stop_after.unwrap_or(usize::MAX);
     let opening = checkpoint.as_deref().zip(header_line.as_deref()).filter(|_| !args.resume);
@@ -439,6 +447,7 @@ pub fn run(args: DesignArgs) -> Result<()> {
     // The checkpoint's own error first: the run stopped because of it.
     opened?;
     let (results, stop) = computed?;
+    let (stop, auto_sample) = stop.map_or((None, None), |(k, s)| (Some(k), s));
     let lines = match slot {
         Some(slot) => {
             let mut slot = slot.into_inner().unwrap_or_else(|e| e.into_inner());
@@ -467,8 +476,13 @@ pub fn run(args: DesignArgs) -> Result<()> {
         let dir = args.out.as_deref().expect("--life-range requires --out");
         return write_shard(dir, &done, &range, &args.scenario, checkpoint.as_deref(), &kept());
     }
-    let lives: Vec<StormOutcome> = done.into_values().take(stop.unwrap_or(usize::MAX)).collect();
     let keep: Vec<&Path> = checkpoint.iter().map(|p| p.as_path()).collect();
+    if let Some(s) = auto_sample {
+        // A stratified `lives = "auto"` run: its sample of lives 0..k.
+        let lives: Vec<StormOutcome> = s.pool.indices().iter().map(|i| done[i]).collect();
+        return report_lives(&run, &lives, Some(&s), args.json, args.out.as_deref(), &keep);
+    }
+    let lives: Vec<StormOutcome> = done.into_values().take(stop.unwrap_or(usize::MAX)).collect();
     report_lives(&run, &lives, sample.as_ref(), args.json, args.out.as_deref(), &keep)
 }
 
@@ -498,9 +512,13 @@ fn compute_lives(
 /// Lives run, by index.
 type Lives = Vec<(usize, StormOutcome)>;
 
+/// Where `lives = "auto"` stopped: lives 0..k, and a stratified run's sample of them.
+type AutoStop = (usize, Option<Sample>);
+
 /// `lives = "auto"` ([`Designer::run_auto`]) on `threads` workers, the lives `done` reused, each
 /// life run appended to the checkpoint as [`compute_lives`] does; returns the lives run and where
-/// the rule stopped (lives 0..k), `None` if the run was stopped first.
+/// the rule stopped (lives 0..k, with a stratified run's sample of them), `None` if the run was
+/// stopped first.
 fn compute_auto(
     run: &Designer<'_>,
     done: &BTreeMap<usize, StormOutcome>,
@@ -508,7 +526,7 @@ fn compute_auto(
     pb: &indicatif::ProgressBar,
     threads: usize,
     stop_after: usize,
-) -> Result<(Lives, Option<usize>)> {
+) -> Result<(Lives, Option<AutoStop>)> {
     let finished_now = AtomicUsize::new(0);
     let write_error: Mutex<Option<anyhow::Error>> = Mutex::new(None);
     let on_life = on_life_hook(slot, pb, &finished_now, &write_error, stop_after);
@@ -519,7 +537,11 @@ fn compute_auto(
         return Err(e);
     }
     Ok(match ran {
-        AutoRun::Done { lives, computed, .. } => (computed, Some(lives.len())),
+        AutoRun::Done { lives, computed, sample: Some(s), .. } => {
+            debug_assert_eq!(lives.len(), s.pool.selected.len());
+            (computed, Some((s.pool.counts.iter().sum(), Some(*s))))
+        }
+        AutoRun::Done { lives, computed, sample: None, .. } => (computed, Some((lives.len(), None))),
         AutoRun::Stopped { computed } => (computed, None),
     })
 }

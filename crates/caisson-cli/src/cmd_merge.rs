@@ -45,6 +45,7 @@ use crate::input_err;
 use crate::output::{check_out_dir, ensure_dir, process_running, progress, TempFile};
 use anyhow::{Context, Result};
 use caisson::analysis::lifetime::StormOutcome;
+use caisson::drive::design::Sample;
 use caisson::report::checkpoint::{Merge, MergeError};
 use std::io::Write;
 use std::ops::Range;
@@ -168,19 +169,22 @@ pub fn run(args: MergeArgs) -> Result<()> {
     let n = run.design.lives;
     let file = args.scenario.display().to_string();
 
-    // A stratified run's sample of lives 0..N: the lives the shards must hold.
-    let sample = crate::output::with_threads(0, || run.sample(0..n))?;
-    let indices = run.to_simulate(0..n, sample.as_ref());
-    let wanted = sample.as_ref().map(|_| indices.as_slice());
-    let lives = match run.auto() {
-        None => read_shards(&shards, &fingerprint, n, wanted, &args)?,
+    // The lives merged (a stratified run: its sample of lives 0..N, or with `lives = "auto"` of
+    // lives 0..k), their indices, the sample, and N or k.
+    let (lives, indices, sample, merged) = match run.auto() {
+        None => {
+            // A stratified run's sample of lives 0..N: the lives the shards must hold.
+            let sample = crate::output::with_threads(0, || run.sample(0..n))?;
+            let indices = run.to_simulate(0..n, sample.as_ref());
+            let wanted = sample.as_ref().map(|_| indices.as_slice());
+            (read_shards(&shards, &fingerprint, n, wanted, &args)?, indices, sample, n)
+        }
         Some(_) => auto_lives(&run, read_auto_shards(&shards, &fingerprint, n, &args)?, &shards, &args)?,
     };
     // The header of one run: lives 0..N, or with `lives = "auto"` the budget's range 0..max_lives
     // (holding lives 0..k, as the run's checkpoint does).
     let header_range = 0..n;
-    // The lives merged: 0..k (a stratified run: its sample of 0..N).
-    let n = if sample.is_some() { n } else { lives.len() };
+    let n = merged;
 
     // The merged checkpoint: the header and the lines of one run of lives 0..N.
     ensure_dir(&args.out)?;
@@ -260,20 +264,26 @@ fn read_auto_shards(
     Ok(all)
 }
 
+/// The lives merged, their indices, a stratified run's sample, and the lives 0..N (or 0..k) they
+/// stand for.
+type Merged = (Vec<StormOutcome>, Vec<usize>, Option<Sample>, usize);
+
 /// The lives where `lives = "auto"` stops on the lives the shards hold
 /// ([`Designer::stopping_point`](caisson::drive::design::Designer::stopping_point): the rule over
-/// the batch boundaries in order), or the refusal that names the lives still needed.
+/// the batch boundaries in order), with their indices, a stratified run's sample of lives 0..k,
+/// and k; or the refusal that names the lives still needed.
 fn auto_lives(
     run: &caisson::drive::design::Designer<'_>,
     held: std::collections::BTreeMap<usize, StormOutcome>,
     shards: &[Shard],
     args: &MergeArgs,
-) -> Result<Vec<StormOutcome>> {
+) -> Result<Merged> {
     use caisson::drive::design::Stopping;
     let file = args.scenario.display();
-    match run.stopping_point(&held).expect("lives = \"auto\"") {
-        Stopping::At(k, p) => {
-            let beyond = held.range(k..).count();
+    match crate::output::with_threads(0, || run.stopping_point(&held))?.expect("lives = \"auto\"") {
+        Stopping::At(k, p, sample) => {
+            let indices: Vec<usize> = sample.as_ref().map_or_else(|| (0..k).collect(), |s| s.pool.indices());
+            let beyond = held.len() - indices.len();
             if !args.json {
                 let met = if p.met { "met" } else { "not met: the budget ran out first" };
                 let unused = if beyond > 0 { format!("; {beyond} lives beyond it not used") } else { String::new() };
@@ -283,17 +293,14 @@ fn auto_lives(
                     p.batch_lives
                 );
             }
-            Ok(held.into_values().take(k).collect())
+            let lives = indices.iter().map(|i| held[i]).collect();
+            Ok((lives, indices, sample.map(|s| *s), k))
         }
-        Stopping::NotReached { held: m, last_boundary } => {
-            let next =
-                held.keys().find(|&&i| i >= m).map_or(String::new(), |&i| format!(" (the next life held is {i})"));
-            Err(input_err(format!(
-                "lives = \"auto\": the {} shards hold lives 0..{m} without a gap{next}, and the target relative error {} is met at no batch boundary up to {last_boundary}: the shards do not reach the stopping point; run more lives from {m} (`caisson design {file} --life-range {m}..END --out DIR`) and merge that shard too",
-                shards.len(),
-                run.auto().map_or(0.0, |a| a.target_relative_error)
-            )))
-        }
+        Stopping::NotReached { missing, last_boundary } => Err(input_err(format!(
+            "lives = \"auto\": the {} shards hold lives 0..{missing} (of those the run simulates; life {missing} is in none), and the target relative error {} is met at no batch boundary up to {last_boundary}: the shards do not reach the stopping point; run more lives from {missing} (`caisson design {file} --life-range {missing}..END --out DIR`) and merge that shard too",
+            shards.len(),
+            run.auto().map_or(0.0, |a| a.target_relative_error)
+        ))),
     }
 }
 

@@ -132,7 +132,10 @@ fn alternative(path: &Path, sc: &Scenario, threads: usize) -> Result<Alternative
         Err(e) => alt.one_wave_error = Some(format!("{e:#}")),
     }
     if sc.design.is_some() {
-        let run = Designer::new(sc, "`caisson report`", DesignOptions::default()).map_err(input_err)?;
+        let mut run = Designer::new(sc, "`caisson report`", DesignOptions::default()).map_err(input_err)?;
+        // The note's curves and paired comparisons read every life, unweighted: a stratified
+        // `[design]` runs plain here (the very lives of a plain run of its seed).
+        run.design.sampling = caisson::analysis::lifetime::Sampling::Plain;
         let design = &run.design;
         let estimate = with_threads(threads, || run.estimate(design.lives))?;
         crate::work::say(crate::work::check("design", &estimate, &crate::work::DESIGN)?);

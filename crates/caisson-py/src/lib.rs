@@ -1006,7 +1006,11 @@ fn design_auto<'py>(
     })?;
     let lives = match ran {
         Some(r) => match r.map_err(|e| run_error(format!("{e}: {}", e.source)))? {
-            caisson::drive::design::AutoRun::Done { lives, .. } => lives.into_iter().enumerate().collect(),
+            caisson::drive::design::AutoRun::Done { lives, sample, .. } => match sample {
+                // A stratified design: its sample of lives 0..k.
+                Some(s) => s.pool.indices().into_iter().zip(lives).collect(),
+                None => lives.into_iter().enumerate().collect(),
+            },
             caisson::drive::design::AutoRun::Stopped { computed } => computed,
         },
         None => Vec::new(),
@@ -1104,13 +1108,15 @@ fn design_statistics(
         if held.len() < given {
             return Err(PyValueError::new_err("a life appears more than once"));
         }
-        return match run.stopping_point(&held) {
-            Some(caisson::drive::design::Stopping::At(k, _)) => {
-                let lives: Vec<StormOutcome> = held.into_values().take(k).collect();
-                report_json(&run.report(&lives), "design")
+        return match py.detach(|| run.stopping_point(&held)) {
+            Some(caisson::drive::design::Stopping::At(k, _, sample)) => {
+                // The lives 0..k, or a stratified design's sample of them.
+                let indices: Vec<usize> = sample.as_ref().map_or_else(|| (0..k).collect(), |s| s.pool.indices());
+                let lives: Vec<StormOutcome> = indices.iter().map(|i| held[i]).collect();
+                report_json(&run.report_sampled(&lives, sample.as_deref()), "design")
             }
-            Some(caisson::drive::design::Stopping::NotReached { held: m, last_boundary }) => Err(PyValueError::new_err(format!(
-                "lives = \"auto\": the lives given hold lives 0..{m} without a gap, and the target relative error {} is met at no batch boundary up to {last_boundary}: they do not reach the stopping point; simulate more lives from {m} (`Design.simulate_lives(range({m}, END))`) and add them",
+            Some(caisson::drive::design::Stopping::NotReached { missing, last_boundary }) => Err(PyValueError::new_err(format!(
+                "lives = \"auto\": the lives given hold lives 0..{missing} (of those the design simulates; life {missing} is not given), and the target relative error {} is met at no batch boundary up to {last_boundary}: they do not reach the stopping point; simulate more lives from {missing} (`Design.simulate_lives(range({missing}, END))`) and add them",
                 run.auto().map_or(0.0, |a| a.target_relative_error)
             ))),
             None => Err(PyValueError::new_err("not lives = \"auto\"")),

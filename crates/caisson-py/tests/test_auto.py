@@ -55,6 +55,31 @@ def test_simulate_auto_is_the_clis_run_on_any_thread_count_and_from_shards(tmp_p
         design.statistics(parts[0])
 
 
+def test_stratified_simulate_auto_is_the_clis_run(tmp_path):
+    # Target 0.2 within 6000 lives of the pool, stratified: the CLI stops at 3000
+    # (tests/cli_design_auto.rs); the lives are the sample's of 0..k, not 0..k.
+    f = tmp_path / "strat.toml"
+    f.write_text(auto_text('target_relative_error = 0.2\nmax_lives = 6000\nsampling = "stratified"'))
+    design = caisson.Design(caisson.Scenario.from_toml(f))
+    one = design.simulate_auto(threads=1)
+    two = design.simulate_auto(threads=2)
+    pd.testing.assert_frame_equal(one, two, check_exact=True)
+    out = tmp_path / "cli"
+    cli("design", f, "--out", out)
+    want = json.loads((out / "design.json").read_text())
+    k = want["precision"]["lives"]
+    sample = [i for i in design.sample() if i < k]
+    assert list(one["life"]) == sample and len(sample) < k / 5, (len(sample), k)
+    stats = design.statistics(one)
+    assert assert_same_json(stats.report, want) > 70
+    assert stats.precision == want["precision"] and want["precision"]["met"] is True
+    # Shards of the sample past the stopping point stop at k; short of it, refused.
+    parts = [design.simulate_lives([i for i in sample if i < 1000]), design.simulate_lives([i for i in design.sample() if 1000 <= i < k + 500])]
+    assert assert_same_json(design.statistics(parts).report, want) > 70
+    with pytest.raises(ValueError, match=r"do not reach the stopping point"):
+        design.statistics(parts[0])
+
+
 def test_bad_auto_keys_are_refused_naming_the_key(tmp_path):
     cases = [
         (SMALL.replace("\nlives = 12\n", '\nlives = "many"\n'), "[design] lives"),

@@ -542,7 +542,9 @@ class Design:
         """``[design] lives = "auto"`` (docs/design.md, "Lives to a target precision"): lives
         0 .. k − 1 in batches of 500, k the first batch boundary where the relative standard
         errors of E|S| and of P(failure) meet ``target_relative_error``, or the budget
-        ``max_lives``: the same lives as ``caisson design`` on any thread count.
+        ``max_lives``: the same lives as ``caisson design`` on any thread count. With ``[design]
+        sampling = "stratified"`` the batches are of the pool and the lives returned its sample
+        of 0 .. k − 1 (the rule reading the weighted estimates; docs/design.md).
         :meth:`statistics` of them is ``design.json``, with its ``precision``. Shards of
         :meth:`simulate_lives` given to :meth:`statistics` stop at the same k (the rule of
         ``caisson merge``). Raises ``ValueError`` for a scenario with a number of lives."""

@@ -12,20 +12,23 @@
 //! what is theirs: the checkpoint file, the progress, stopping, the outputs.
 //!
 //! **Lives to a target precision** (`[design] lives = "auto"`, [`AutoLives`]; docs/design.md):
-//! [`Designer::run_auto`] runs lives in batches of [`AUTO_BATCH_LIVES`] in index order and stops
+//! [`Designer::run_auto`] runs lives in batches of
+//! [`AUTO_BATCH_LIVES`](crate::analysis::lifetime::AUTO_BATCH_LIVES) in index order and stops
 //! at the first batch boundary k where the rule, read from the report's statistics of lives 0..k
 //! ([`DesignReport::judge`]), is met, or at the budget (`max_lives`, the design's `lives`). A
 //! stopping point depends only on lives 0..k, so threads, resumes and shards find the same one;
 //! shards run fixed ranges, and [`Designer::stopping_point`] applies the rule over the boundaries
 //! of the lives they hold, in order (what `caisson merge` does). The report of lives 0..k carries
 //! the rule's verdict ([`DesignReport::precision`]) and, if the budget ran out first, the
-//! `precision-not-met` warning.
+//! `precision-not-met` warning. A stratified run (`sampling = "stratified"`) batches its pool: each
+//! batch's pool appended ([`Pool::append`]) and its sample simulated, the rule reading the weighted
+//! estimates ([`Designer::judge_sampled`]).
 
 use crate::analysis::checks::precision_warning;
 use crate::analysis::lifetime::sampling::{Pool, Strata};
 use crate::analysis::lifetime::{
     auto_boundaries, run_lives, AutoLives, AutoPrecision, DesignParams, FailureLimits, LifeFailed, Sampling, StormCase,
-    StormOutcome, AUTO_BATCH_LIVES,
+    StormOutcome,
 };
 use crate::analysis::site::WaveSetup;
 use crate::analysis::work::{self, WorkEstimate};
@@ -150,7 +153,15 @@ impl<'a> Designer<'a> {
     /// ([`DesignReport::stratified`]), or of every life ([`Self::report`]).
     pub fn report_sampled(&self, lives: &[StormOutcome], sample: Option<&Sample>) -> DesignReport {
         match sample {
-            Some(s) => DesignReport::stratified(&self.design, &self.case, Some(self.waves), lives, &s.strata, &s.pool),
+            Some(s) => {
+                let mut r =
+                    DesignReport::stratified(&self.design, &self.case, Some(self.waves), lives, &s.strata, &s.pool);
+                if let Some(p) = self.judge_sampled(lives, s) {
+                    r.precision = Some(p);
+                    r.warnings.extend(precision_warning(&p, "the design run"));
+                }
+                r
+            }
             None => self.report(lives),
         }
     }
@@ -173,21 +184,82 @@ impl<'a> Designer<'a> {
         Some(r.judge(&auto, self.design.lives))
     }
 
+    /// The rule of `lives = "auto"` on the simulated `lives` (in index order) of a stratified run
+    /// sampled by `s` (its pool, lives 0..k): the weighted E|S| with its two-phase standard error
+    /// and the weighted P(failure) with its standard error and Wilson interval at the effective
+    /// size ([`AutoLives::judge_estimates`]); `lives` counts the pool. `None` with a fixed number
+    /// of lives.
+    pub fn judge_sampled(&self, lives: &[StormOutcome], s: &Sample) -> Option<AutoPrecision> {
+        let auto = self.design.auto?;
+        let failure_m = self.failure_limits().sliding_m;
+        let r = DesignReport::stratified_statistics(
+            &self.design,
+            self.case.rigid_block_mu,
+            failure_m,
+            lives,
+            &s.strata,
+            &s.pool,
+        );
+        let failed: Vec<bool> = lives.iter().map(StormOutcome::failed).collect();
+        let failure = s.pool.estimator(&s.strata).proportion(&failed);
+        let es = &r.dynamic.sliding;
+        let mean = (es.expected_sliding_m, es.expected_sliding_standard_error_m);
+        Some(auto.judge_estimates(mean, &failure, r.lives, self.design.lives))
+    }
+
+    /// [`Self::judge`] of a plain run, [`Self::judge_sampled`] of a stratified one.
+    fn judge_of(&self, lives: &[StormOutcome], sample: Option<&Sample>) -> Option<AutoPrecision> {
+        match sample {
+            Some(s) => self.judge_sampled(lives, s),
+            None => self.judge(lives),
+        }
+    }
+
+    /// The strata of a stratified run, its pool empty (lives 0..0); `None` for a plain run.
+    fn empty_sample(&self) -> Option<Sample> {
+        (self.design.sampling == Sampling::Stratified).then(|| Sample {
+            strata: Strata::pilot(&self.case, &self.design.life, self.design.seed),
+            pool: Pool::default(),
+        })
+    }
+
+    /// The lives `start..k` of a batch that the run simulates: every one, or (stratified) the
+    /// batch's pool's sample, the pool appended to `sample`'s.
+    fn batch(&self, start: usize, k: usize, sample: Option<&mut Sample>) -> Vec<usize> {
+        match sample {
+            Some(s) => {
+                let pool = Pool::of(&self.case, &self.design.life, self.design.seed, &s.strata, start..k);
+                let indices = pool.indices();
+                s.pool.append(pool);
+                indices
+            }
+            None => (start..k).collect(),
+        }
+    }
+
     /// Where `lives = "auto"` stops on the lives `held` (any indices, e.g. the shards' of a
-    /// merge): the first batch boundary k, over the boundaries whose lives 0..k are all held, in
-    /// order, at which the rule is met, or the budget's end. `None` with a fixed number of lives.
+    /// merge): the first batch boundary k, over the boundaries whose lives 0..k that the run
+    /// simulates (every one, or a stratified run's sample) are all held, in order, at which the
+    /// rule is met, or the budget's end. `None` with a fixed number of lives.
     pub fn stopping_point(&self, held: &BTreeMap<usize, StormOutcome>) -> Option<Stopping> {
         self.design.auto?;
-        // The lives 0..m held without a gap.
-        let m = held.keys().enumerate().take_while(|(k, &i)| *k == i).count().min(self.design.lives);
-        let prefix: Vec<StormOutcome> = held.values().take(m).copied().collect();
-        for k in auto_boundaries(self.design.lives).take_while(|&k| k <= m) {
-            let p = self.judge(&prefix[..k]).expect("auto");
+        let mut sample = self.empty_sample();
+        let mut lives: Vec<StormOutcome> = Vec::new();
+        let mut start = 0;
+        for k in auto_boundaries(self.design.lives) {
+            for i in self.batch(start, k, sample.as_mut()) {
+                match held.get(&i) {
+                    Some(o) => lives.push(*o),
+                    None => return Some(Stopping::NotReached { missing: i, last_boundary: start }),
+                }
+            }
+            start = k;
+            let p = self.judge_of(&lives, sample.as_ref()).expect("auto");
             if p.met || k == self.design.lives {
-                return Some(Stopping::At(k, p));
+                return Some(Stopping::At(k, p, sample.map(Box::new)));
             }
         }
-        Some(Stopping::NotReached { held: m, last_boundary: m / AUTO_BATCH_LIVES * AUTO_BATCH_LIVES })
+        unreachable!("the last boundary is the budget")
     }
 
     /// `lives = "auto"` (module docs): batch after batch, the lives not in `done` run
@@ -199,15 +271,17 @@ impl<'a> Designer<'a> {
         done: &BTreeMap<usize, StormOutcome>,
         on_life: &(dyn Fn(usize, &StormOutcome) -> ControlFlow<()> + Sync),
     ) -> Result<AutoRun, LifeFailed> {
+        let mut sample = self.empty_sample();
         let mut computed: Vec<(usize, StormOutcome)> = Vec::new();
         let mut lives: Vec<StormOutcome> = Vec::new();
         let mut start = 0;
         for k in auto_boundaries(self.design.lives) {
-            let todo: Vec<usize> = (start..k).filter(|i| !done.contains_key(i)).collect();
+            let batch = self.batch(start, k, sample.as_mut());
+            let todo: Vec<usize> = batch.iter().copied().filter(|i| !done.contains_key(i)).collect();
             let ran = self.run(&todo, on_life)?;
             let stopped = ran.len() < todo.len();
             let mut ran = ran.into_iter().peekable();
-            for i in start..k {
+            for i in batch {
                 match done.get(&i) {
                     Some(o) => lives.push(*o),
                     None => {
@@ -223,13 +297,9 @@ impl<'a> Designer<'a> {
                 return Ok(AutoRun::Stopped { computed });
             }
             start = k;
-            match self.judge(&lives) {
-                Some(p) if p.met || k == self.design.lives => {
-                    return Ok(AutoRun::Done { lives, computed, precision: Some(p) })
-                }
-                Some(_) => {}
-                None if k == self.design.lives => return Ok(AutoRun::Done { lives, computed, precision: None }),
-                None => {}
+            let precision = self.judge_of(&lives, sample.as_ref());
+            if k == self.design.lives || precision.is_some_and(|p| p.met) {
+                return Ok(AutoRun::Done { lives, computed, precision, sample: sample.map(Box::new) });
             }
         }
         unreachable!("the last boundary is the budget")
@@ -239,19 +309,26 @@ impl<'a> Designer<'a> {
 /// Where `lives = "auto"` stops on the lives a merge holds ([`Designer::stopping_point`]).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Stopping {
-    /// At lives 0..k, with the rule's verdict there (met, or the budget's end).
-    At(usize, AutoPrecision),
-    /// Lives 0..`held` are held without a gap and the rule is met at no boundary up to
-    /// `last_boundary`: the lives beyond are needed.
-    NotReached { held: usize, last_boundary: usize },
+    /// At lives 0..k, with the rule's verdict there (met, or the budget's end) and, for a
+    /// stratified run, its sample of lives 0..k (the lives simulated are its pool's).
+    At(usize, AutoPrecision, Option<Box<Sample>>),
+    /// Life `missing` (of the lives the run simulates) is not held and the rule is met at no
+    /// boundary up to `last_boundary`, where the lives held end: the lives from there are needed.
+    NotReached { missing: usize, last_boundary: usize },
 }
 
 /// What [`Designer::run_auto`] ran.
 #[derive(Debug, Clone, PartialEq)]
 pub enum AutoRun {
-    /// Lives 0..k (those of `done` and those run), the lives this call ran (index, outcome) and
-    /// the rule's verdict at k.
-    Done { lives: Vec<StormOutcome>, computed: Vec<(usize, StormOutcome)>, precision: Option<AutoPrecision> },
+    /// The lives of 0..k the run simulates (every one, or a stratified run's sample of them;
+    /// those of `done` and those run, in index order), the lives this call ran (index, outcome),
+    /// the rule's verdict at k and, for a stratified run, its sample of lives 0..k.
+    Done {
+        lives: Vec<StormOutcome>,
+        computed: Vec<(usize, StormOutcome)>,
+        precision: Option<AutoPrecision>,
+        sample: Option<Box<Sample>>,
+    },
     /// `on_life` stopped the run: the lives it ran before it stopped.
     Stopped { computed: Vec<(usize, StormOutcome)> },
 }
@@ -266,6 +343,7 @@ impl Designer<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analysis::lifetime::AUTO_BATCH_LIVES;
     use std::path::Path;
 
     /// The small design of the tests' data.
@@ -367,7 +445,7 @@ mod tests {
         let lives: Vec<StormOutcome> = held.values().copied().collect();
         let p500 = run.judge(&lives[..500]).unwrap();
         assert!((p500.failure_relative_error.unwrap() - (0.9f64 / 50.0).sqrt()).abs() < 1e-12 && !p500.met, "{p500:?}");
-        let Some(Stopping::At(k, p)) = run.stopping_point(&held) else { panic!("a stopping point") };
+        let Some(Stopping::At(k, p, None)) = run.stopping_point(&held) else { panic!("a stopping point") };
         assert_eq!(k, 1000);
         assert!((p.failure_relative_error.unwrap() - (0.89f64 / 110.0).sqrt()).abs() < 1e-12 && p.met, "{p:?}");
         // E|S| by hand from the capped values of lives 0..1000.
@@ -380,15 +458,50 @@ mod tests {
         assert_eq!(run.statistics(&lives[..1000]).precision, Some(p));
         let mut gap = held.clone();
         gap.remove(&700);
-        assert_eq!(run.stopping_point(&gap), Some(Stopping::NotReached { held: 700, last_boundary: 500 }));
+        assert_eq!(run.stopping_point(&gap), Some(Stopping::NotReached { missing: 700, last_boundary: 500 }));
         run.design.lives = 700;
-        let Some(Stopping::At(k, p)) = run.stopping_point(&held) else { panic!("the budget's end") };
+        let Some(Stopping::At(k, p, None)) = run.stopping_point(&held) else { panic!("the budget's end") };
         assert_eq!((k, p.met, p.max_lives), (700, false, 700));
         assert!((p.failure_relative_error.unwrap() - ((1.0 - 80.0 / 700.0) / 80.0f64).sqrt()).abs() < 1e-12);
         let r = run.report(&lives[..700]);
         assert!(r.warnings.iter().any(|w| w.code == "precision-not-met"), "{:?}", r.warnings);
         run.design.auto = None;
         assert_eq!(run.stopping_point(&held), None);
+    }
+
+    /// A stratified `lives = "auto"` run (t = 0.3, a budget of 3000 lives): batch by batch the
+    /// pool of lives 0..k is the pool `Pool::of` gives of 0..k at once, the lives simulated are
+    /// its sample's, the run stops at the first boundary where the rule on the weighted
+    /// estimates is met (checked at every boundary up to it), and `stopping_point` on the lives
+    /// it ran finds the same k, verdict and sample.
+    #[test]
+    fn stratified_auto_stops_where_the_weighted_estimates_meet_the_target() {
+        let sc = small_design();
+        let mut run = Designer::new(&sc, "test", DesignOptions::default()).unwrap();
+        run.design.sampling = Sampling::Stratified;
+        run.design.auto = Some(AutoLives { target_relative_error: 0.3 });
+        run.design.lives = 3000;
+        let AutoRun::Done { lives, computed, precision: Some(p), sample: Some(sample) } =
+            run.run_auto(&BTreeMap::new(), &|_, _| ControlFlow::Continue(())).unwrap()
+        else {
+            panic!("a stratified run to its stopping point")
+        };
+        let k: usize = sample.pool.counts.iter().sum();
+        assert_eq!(*sample, run.sample_of(0..k));
+        assert_eq!(computed.iter().map(|(i, _)| *i).collect::<Vec<_>>(), sample.pool.indices());
+        assert_eq!(lives, computed.iter().map(|(_, o)| *o).collect::<Vec<_>>());
+        assert!(p.met && p.lives == k && k > AUTO_BATCH_LIVES && k < 3000, "{p:?}");
+        let mut checked = 0;
+        for b in auto_boundaries(3000).take_while(|&b| b < k) {
+            let earlier = run.sample_of(0..b);
+            let held: Vec<StormOutcome> =
+                earlier.pool.indices().iter().map(|i| lives[sample.pool.indices().binary_search(i).unwrap()]).collect();
+            assert!(!run.judge_sampled(&held, &earlier).unwrap().met, "met at {b} already");
+            checked += 1;
+        }
+        assert_eq!(checked, k / AUTO_BATCH_LIVES - 1);
+        let held: BTreeMap<usize, StormOutcome> = computed.into_iter().collect();
+        assert_eq!(run.stopping_point(&held), Some(Stopping::At(k, p, Some(sample))));
     }
 
     /// A scenario without `[design]` is refused naming the front-end.

@@ -330,13 +330,6 @@ pub(super) fn validate_design(file: &ScenarioFile) -> R<DesignParams> {
         )?,
         auto,
     };
-    if params.sampling == Sampling::Stratified && params.auto.is_some() {
-        return Err(ScenarioError::range(
-            "[design] sampling",
-            "\"stratified\"",
-            "is not yet combined with lives = \"auto\": give a number of lives (the pool; about 5 % of them are simulated), or sampling = \"plain\"",
-        ));
-    }
     params.checked().map_err(|e| match e.quantity {
         // Shown in hours, as read (the rule's bounds in seconds, shown in hours).
         "storm_duration_s" => ScenarioError::range(

@@ -550,14 +550,28 @@ impl AutoLives {
 
     /// The rule (type docs) on E|S| = `mean` with standard error `se`, and `failures` failed
     /// lives of `lives`; `max_lives` is reported beside.
-    pub fn judge(&self, (mean, se): (f64, f64), failures: usize, lives: usize, max_lives: usize) -> AutoPrecision {
+    pub fn judge(&self, es: (f64, f64), failures: usize, lives: usize, max_lives: usize) -> AutoPrecision {
+        let failure = crate::analysis::estimate::Estimate::proportion(failures as u64, lives as u64);
+        self.judge_estimates(es, &failure, lives, max_lives)
+    }
+
+    /// The rule on estimates: E|S| = `mean` with standard error `se`, and P(failure) `failure`
+    /// (its value, standard error and 95 % interval, whose upper end is held to the floor) of
+    /// `lives` lives — the binomial proportion of a plain run ([`Self::judge`]), or a stratified
+    /// run's weighted proportion with its two-phase standard error and its Wilson interval at
+    /// the effective size ([`crate::analysis::stratified::TwoPhase::proportion`]).
+    pub fn judge_estimates(
+        &self,
+        (mean, se): (f64, f64),
+        failure: &crate::analysis::estimate::Estimate,
+        lives: usize,
+        max_lives: usize,
+    ) -> AutoPrecision {
         let t = self.target_relative_error;
         let es = if se == 0.0 { 0.0 } else { se / mean };
-        let n = lives.max(1) as f64;
-        let p = failures as f64 / n;
-        let failure_relative_error = (failures > 0).then(|| (p * (1.0 - p) / n).sqrt() / p);
-        let upper =
-            if lives == 0 { 1.0 } else { crate::analysis::estimate::wilson_ci95(failures as u64, lives as u64)[1] };
+        let p = failure.value;
+        let failure_relative_error = (p > 0.0).then(|| failure.standard_error / p);
+        let upper = if lives == 0 { 1.0 } else { failure.ci95[1] };
         let expected_sliding_met = lives > 0 && es <= t;
         let failure_met =
             lives > 0 && (failure_relative_error.is_some_and(|r| r <= t) || upper < FAILURE_PROBABILITY_FLOOR);

@@ -159,6 +159,16 @@ impl Pool {
         pool
     }
 
+    /// The pool of this range followed by `next`'s (the range just after it): the pool of the
+    /// two ranges, as [`Self::of`] gives it of their union (each life's stratum and selection
+    /// are its own).
+    pub fn append(&mut self, next: Pool) {
+        for (c, n) in self.counts.iter_mut().zip(next.counts) {
+            *c += n;
+        }
+        self.selected.extend(next.selected);
+    }
+
     /// The simulated lives' indices.
     pub fn indices(&self) -> Vec<usize> {
         self.selected.iter().map(|&(i, _)| i).collect()
