@@ -102,9 +102,14 @@
 //! 300 lives before, 17 168 after; every output but the counts the same to the bit,
 //! `tests/equiv_lifetime.rs`, BENCHMARKS.md). A still impulsive wave's rotation bound enters the
 //! settling of the largest rotation as a pulsating one's (`lifetime`'s module docs): a looser
-//! bound only settles more waves.
+//! bound only settles more waves, so a life's end sharpens the bounds of the waves it may settle
+//! ([`StickBound::rotation_under_history_rad`], `history.rs`: the response followed through the
+//! wave's own load, piece by piece in closed form).
 
+mod history;
 mod impulse;
+
+pub use history::TOLERANCE as HISTORY_TOLERANCE;
 
 use crate::dynamics::Model;
 use crate::loads::WaveForce;
@@ -159,6 +164,9 @@ struct Modes {
     /// The peak-to-peak gains ‖k_fj‖₁ of the functionals f to the load components j (F_x, F_y,
     /// M): the impulsive waves' bound ([`impulse::gains`]).
     gains: impulse::Gains,
+    /// The modes of θ's response to the load, a conjugate pair as one: the rotation under a
+    /// wave's own load history ([`history`]).
+    theta: history::ThetaModes,
 }
 
 /// M, K_L, C_L, k_y and the springs' lowest and highest x and Σx: what [`Modes`] come from.
@@ -294,8 +302,10 @@ impl Modes {
             std::array::from_fn(|m| if f == VX { w[(3, m)] } else { (0..3).map(|i| w[(i, m)] * rows[f][i]).sum() })
         });
         let gains = impulse::gains(&lambda, &modal, &winv, &minv);
+        let theta = history::ThetaModes::new(&lambda, &modal[THETA], &winv, &minv);
         Some(Modes {
             gains,
+            theta,
             mass,
             k_l,
             c_l,
