@@ -109,7 +109,7 @@
 mod history;
 mod impulse;
 
-pub use history::TOLERANCE as HISTORY_TOLERANCE;
+pub use history::{TOE_RESERVE, TOLERANCE as HISTORY_TOLERANCE};
 
 use crate::dynamics::Model;
 use crate::loads::WaveForce;
@@ -167,6 +167,10 @@ struct Modes {
     /// The modes of θ's response to the load, a conjugate pair as one: the rotation under a
     /// wave's own load history ([`history`]).
     theta: history::ThetaModes,
+    /// Those of ΣΔN_i and of Σ x_i ΔN_i (the heel pressure's), and Σ x_i, m.
+    normal: history::ThetaModes,
+    moment: history::ThetaModes,
+    sum_x_m: f64,
 }
 
 /// M, K_L, C_L, k_y and the springs' lowest and highest x and Σx: what [`Modes`] come from.
@@ -303,9 +307,16 @@ impl Modes {
         });
         let gains = impulse::gains(&lambda, &modal, &winv, &minv);
         let theta = history::ThetaModes::new(&lambda, &modal[THETA], &winv, &minv);
+        let sum_x2: f64 = model.x_m.iter().map(|x| x * x).sum();
+        let moment_row = Vector3::new(0.0, -ky * sum_x, ky * sum_x2);
+        let in_modes =
+            |row: &Vector3<f64>| -> [C64; 6] { std::array::from_fn(|m| (0..3).map(|i| w[(i, m)] * row[i]).sum()) };
         Some(Modes {
             gains,
             theta,
+            normal: history::ThetaModes::new(&lambda, &modal[TOTAL], &winv, &minv),
+            moment: history::ThetaModes::new(&lambda, &in_modes(&moment_row), &winv, &minv),
+            sum_x_m: sum_x,
             mass,
             k_l,
             c_l,

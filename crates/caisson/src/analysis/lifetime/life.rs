@@ -3,6 +3,7 @@
 
 use super::outcome::StormOutcome;
 use super::params::{ErrorDraw, ErrorScope, LifeParams, StormCase, StormInput, STORM_WAVE_WORDS_LOG2};
+use super::screen::ScreenModes;
 use super::storm::{
     storm_from, toe_depth_m, Settle, StillWave, StormError, StormRng, StormScratch, StormSite, StormStart,
     MAX_STILL_WAVES, ROTATION_RESERVE,
@@ -179,40 +180,50 @@ pub(super) fn settle_life(
     heel.retain(|w| w.rotation_rad > 1e3 * life.max_heel_pressure_kpa);
     still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
     heel.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
-    // The sites of the storms whose waves may run, and their loads at T1/3 when first needed.
-    let mut sites: Vec<Option<StormSite>> = storms.iter().map(|_| None).collect();
-    for w in still.iter().chain(heel.iter()) {
-        sites[w.storm].get_or_insert_with(|| StormSite::new(st, &storms[w.storm], modes));
-    }
+    // The sites of the storms whose waves are sharpened or run, and their loads at T1/3, each
+    // built when first needed.
+    let sites: Vec<OnceCell<StormSite>> = storms.iter().map(|_| OnceCell::new()).collect();
     let loads: Vec<OnceCell<PeriodLoads<'_>>> = storms.iter().map(|_| OnceCell::new()).collect();
-    let mut settler = Settler { st, storms, sites: &sites, loads: &loads, train };
-    settler.still_waves(still, life)?;
-    for w in heel.iter() {
-        if w.rotation_rad <= 1e3 * life.max_heel_pressure_kpa {
-            break;
-        }
-        let event = settler.event(w);
-        settler.run(w, event, WaveKind::HeelOnly, life)?;
-    }
+    let mut settler = Settler { st, storms, sites: &sites, loads: &loads, train, modes };
+    settler.kept_waves(still, WaveKind::Pulsating, life)?;
+    settler.kept_waves(heel, WaveKind::HeelOnly, life)?;
     still.clear();
     heel.clear();
     Ok(())
 }
+
+/// Whether a kept wave of `kind` whose bound is `bound` may still raise the life's largest
+/// rotation (a still wave: `bound` times [`ROTATION_RESERVE`] above it) or heel pressure (a
+/// deferred wave: `bound`, Pa, above it), and must run.
+fn needed(kind: WaveKind, bound: f64, life: &StormOutcome) -> bool {
+    if kind == WaveKind::HeelOnly {
+        bound > 1e3 * life.max_heel_pressure_kpa
+    } else {
+        bound * ROTATION_RESERVE > life.max_rotation_rad
+    }
+}
+
+/// The margin on the rise of a deferred wave's heel pressure over the rest under its own load
+/// history ([`StickBound::heel_under_history_pa`]) for what the all-sticking response leaves out
+/// (the shear's departure R, the engine's steps): the engine's rise was at most 1.0005 times the
+/// bound's on 215 waves (`tests/verify_stick_bound.rs`).
+pub(super) const HEEL_RESERVE: f64 = 1.01;
 
 /// What runs a life's kept waves at its end ([`settle_life`]): the life's storms, the sites of
 /// those whose waves may run and their loads at T1/3.
 struct Settler<'s, 'a> {
     st: &'s StormCase<'a>,
     storms: &'s [StormInput],
-    sites: &'s [Option<StormSite>],
+    sites: &'s [OnceCell<StormSite>],
     loads: &'s [OnceCell<PeriodLoads<'s>>],
     train: &'s mut WaveTrain,
+    modes: ScreenModes,
 }
 
 impl<'s> Settler<'s, '_> {
     fn site(&self, w: &StillWave) -> &'s StormSite {
-        let sites: &'s [Option<StormSite>] = self.sites;
-        sites[w.storm].as_ref().expect("the site of a kept wave's storm")
+        let sites: &'s [OnceCell<StormSite>] = self.sites;
+        sites[w.storm].get_or_init(|| StormSite::new(self.st, &self.storms[w.storm], self.modes))
     }
 
     /// The loads at T1/3 of the storm of the kept wave `w`.
@@ -227,41 +238,33 @@ impl<'s> Settler<'s, '_> {
         wave_event(s, site, self.loads_t13(w), (w.height_m, w.deviate, w.period_s))
     }
 
-    /// The still waves `still` (sorted by their bounds, largest first), largest bound first until
-    /// the next is at most the life's largest rotation over [`ROTATION_RESERVE`], each bound
-    /// sharpened to the all-sticking response under the wave's own load history
-    /// ([`StickBound::rotation_under_history_rad`]) when it is the largest left: a wave's sharper
-    /// bound is at most its bound, so the largest sharpened one at or above every bound not yet
-    /// sharpened is the largest of all, and the wave to run next, or to stop at.
-    fn still_waves(&mut self, still: &[StillWave], life: &mut StormOutcome) -> Result<(), StormError> {
+    /// The kept waves `kept` of `kind` (sorted by their bounds, largest first: the still waves'
+    /// rotations, or the deferred waves' heel pressures), largest bound first until the next is
+    /// not [`needed`], each bound sharpened ([`Self::sharper`]) when it is the largest left: a
+    /// wave's sharper bound is at most its bound, so the largest sharpened one at or above every
+    /// bound not yet sharpened is the largest of all, and the wave to run next, or to stop at.
+    fn kept_waves(&mut self, kept: &[StillWave], kind: WaveKind, life: &mut StormOutcome) -> Result<(), StormError> {
         let mut sharpened: Vec<(f64, usize, WaveEvent)> = Vec::new();
         let mut next = 0;
         loop {
-            let unsharpened = still
+            let unsharpened = kept
                 .get(next)
-                .filter(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad)
+                .filter(|w| needed(kind, w.rotation_rad, life))
                 .map_or(f64::NEG_INFINITY, |w| w.rotation_rad);
             let best = (0..sharpened.len()).max_by(|&a, &b| sharpened[a].0.total_cmp(&sharpened[b].0));
             match best {
                 Some(b) if sharpened[b].0 >= unsharpened => {
                     let (bound, i, event) = sharpened.swap_remove(b);
-                    if bound * ROTATION_RESERVE <= life.max_rotation_rad {
+                    if !needed(kind, bound, life) {
                         break;
                     }
-                    self.run(&still[i], event, WaveKind::Pulsating, life)?;
+                    self.run(&kept[i], event, kind, life)?;
                 }
                 _ if unsharpened > f64::NEG_INFINITY => {
-                    let w = &still[next];
+                    let w = &kept[next];
                     let event = self.event(w);
-                    let floor_rad = life.max_rotation_rad / ROTATION_RESERVE;
-                    let site = self.site(w);
-                    let sharper = site
-                        .stick
-                        .get_or_init(|| StickBound::new(site.dyn_model()))
-                        .as_ref()
-                        .and_then(|b| b.rotation_under_history_rad(&event, floor_rad));
-                    let bound = sharper.map_or(w.rotation_rad, |r| r.min(w.rotation_rad));
-                    if bound * ROTATION_RESERVE > life.max_rotation_rad {
+                    let bound = self.sharper(w, &event, kind, life).map_or(w.rotation_rad, |b| b.min(w.rotation_rad));
+                    if needed(kind, bound, life) {
                         sharpened.push((bound, next, event));
                     }
                     next += 1;
@@ -270,6 +273,33 @@ impl<'s> Settler<'s, '_> {
             }
         }
         Ok(())
+    }
+
+    /// A sharper bound of the kept wave `w` of loads `event`: a still wave's rotation under its
+    /// own load history ([`StickBound::rotation_under_history_rad`]); a deferred one's heel
+    /// pressure likewise ([`StickBound::heel_under_history_pa`], its rise over the rest times
+    /// [`HEEL_RESERVE`]) if the stick bound shows the wave neither slips nor lifts a spring
+    /// (the all-sticking response is then the engine's). Each is asked only to show it is not
+    /// [`needed`] where it can.
+    fn sharper(&self, w: &StillWave, event: &WaveEvent, kind: WaveKind, life: &StormOutcome) -> Option<f64> {
+        let site = self.site(w);
+        let bound = site.stick.get_or_init(|| StickBound::new(site.dyn_model())).as_ref()?;
+        if kind != WaveKind::HeelOnly {
+            return bound.rotation_under_history_rad(event, life.max_rotation_rad / ROTATION_RESERVE);
+        }
+        let still = if event.impulse.is_some() {
+            bound.impulse_margins(event).still()
+        } else {
+            let at = bound.at_period(w.period_s)?;
+            bound.margins(&at, event.quasi.total(), event.trough.total()).still()
+        };
+        if !still {
+            return None;
+        }
+        let rest_pa = bound.heel_at_rest_pa(site.width_m, site.length_m);
+        let floor_pa = rest_pa + (1e3 * life.max_heel_pressure_kpa - rest_pa) / HEEL_RESERVE;
+        let heel_pa = bound.heel_under_history_pa(event, site.width_m, site.length_m, floor_pa)?;
+        Some(rest_pa + HEEL_RESERVE * (heel_pa - rest_pa).max(0.0))
     }
 
     /// Run the kept wave `w` of loads `event` as `kind` (a still wave as pulsating: it is not

@@ -30,8 +30,13 @@
 //! most the floor asked for, or within [`TOLERANCE`] of the largest |θ| evaluated, is closed,
 //! any other one halved. The bound is the largest over the closed intervals: it covers every
 //! instant of [0, T] (the engine's run of the wave), up to rounding (a relative 1e-9 is added).
-//! Against the engine: `tests/verify_stick_bound.rs`
-//! (`the_rotation_under_the_load_history_holds_the_engines`).
+//! The same pieces bound the heel pressure of the springs' resultant (V = W' + ΣΔN_i, M = Σ x_i
+//! N_i; Goda's p_e): while the toe's linear pressure (V/B − 6M/B²)/l stays positive (its lowest
+//! value bounded likewise, kept [`TOE_RESERVE`] of its rest value above 0), the resultant is within
+//! the middle third and p_e = (V/B + 6M/B²)/l, linear in the state
+//! ([`StickBound::heel_under_history_pa`]). Against the engine: `tests/verify_stick_bound.rs`
+//! (`the_rotation_under_the_load_history_holds_the_engines`: 226 waves for the rotation, 215 for
+//! the heel pressure).
 
 use super::{modulus, StickBound, C64};
 use crate::loads::history::WaveEvent;
@@ -42,6 +47,9 @@ use std::f64::consts::PI;
 
 /// The bound is within this share of the largest |θ| evaluated (unless the floor is higher).
 pub const TOLERANCE: f64 = 0.005;
+/// The share of the toe's linear pressure at rest the heel pressure's bound keeps
+/// ([`StickBound::heel_under_history_pa`]).
+pub const TOE_RESERVE: f64 = 0.1;
 /// The most evaluations of θ: past them, the open intervals are closed at their bounds.
 const MAX_EVALUATIONS: usize = 400;
 /// The most pieces of a wave's load: the seed's crest half has 0, t_r, 2 t_r, T/2 and at most two
@@ -238,6 +246,14 @@ impl ThetaModes {
         t
     }
 
+    /// The functional a f + b g of this one (f) and `other` (g), built from the same eigenvalues.
+    pub(super) fn combined(&self, a: f64, other: &ThetaModes, b: f64) -> ThetaModes {
+        ThetaModes {
+            c: std::array::from_fn(|m| std::array::from_fn(|j| self.c[m][j] * a + other.c[m][j] * b)),
+            ..*self
+        }
+    }
+
     /// e^{λ_m s}.
     #[inline]
     fn exp(&self, m: usize, s: f64) -> C64 {
@@ -311,8 +327,8 @@ impl PieceTheta {
         v
     }
 
-    /// A bound of |θ| on [s1, s2] from its ends' values `f1`, `f2` (module docs).
-    fn bound(&self, md: &ThetaModes, (s1, s2): (f64, f64), (f1, f2): (f64, f64)) -> f64 {
+    /// A bound of `measure`(θ) on [s1, s2] from its ends' values `f1`, `f2` (module docs).
+    fn bound(&self, md: &ThetaModes, (s1, s2): (f64, f64), (f1, f2): (f64, f64), measure: Measure) -> f64 {
         let (g, w) = (self.g_abs, self.omega);
         let (mut k1, mut k2, mut k0) = (self.b.abs() + g * w, g * w * w, g);
         for m in 0..md.n {
@@ -326,10 +342,63 @@ impl PieceTheta {
             k2 += env * n * n;
         }
         let h = s2 - s1;
-        let ends = f1.abs().max(f2.abs());
-        let terms = (self.a + self.b * s1).abs().max((self.a + self.b * s2).abs()) + k0;
+        let ends = measure.of(f1).max(measure.of(f2));
+        let terms = measure.of(self.a + self.b * s1).max(measure.of(self.a + self.b * s2)) + k0;
         (ends + (0.125 * k2 * h * h).min(0.5 * k1 * h)).min(terms)
     }
+}
+
+/// What is bounded of a functional: its magnitude, or its value, or its negative.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Measure {
+    Abs,
+    Up,
+    Down,
+}
+
+impl Measure {
+    #[inline]
+    fn of(self, x: f64) -> f64 {
+        match self {
+            Measure::Abs => x.abs(),
+            Measure::Up => x,
+            Measure::Down => -x,
+        }
+    }
+}
+
+/// A bound on the largest `measure` of the functional of `md` over the pieces `ps` of a wave's
+/// load from rest (module docs), within [`TOLERANCE`] of the largest evaluated unless it is at
+/// most `floor` (then only shown to be at most that).
+fn largest(md: &ThetaModes, ps: &[Piece], floor: f64, measure: Measure) -> f64 {
+    let mut z = [C64::new(0.0, 0.0); 6];
+    let thetas: Vec<PieceTheta> = ps.iter().map(|p| PieceTheta::new(md, p, &mut z)).collect();
+    let mut lo = f64::NEG_INFINITY;
+    let mut open: Vec<(usize, f64, f64, f64, f64)> = Vec::with_capacity(64);
+    let mut evaluations = 0;
+    for (i, th) in thetas.iter().enumerate() {
+        let (f1, f2) = (th.value(md, 0.0), th.value(md, th.len));
+        evaluations += 2;
+        lo = lo.max(measure.of(f1)).max(measure.of(f2));
+        open.push((i, 0.0, th.len, f1, f2));
+    }
+    let mut upper = f64::NEG_INFINITY;
+    while let Some((i, s1, s2, f1, f2)) = open.pop() {
+        let th = &thetas[i];
+        let b = th.bound(md, (s1, s2), (f1, f2), measure);
+        let enough = floor.max(lo + TOLERANCE * lo.abs());
+        if b <= enough || evaluations >= MAX_EVALUATIONS || s2 - s1 <= 1e-9 * th.len {
+            upper = upper.max(b);
+            continue;
+        }
+        let mid = 0.5 * (s1 + s2);
+        let fm = th.value(md, mid);
+        evaluations += 1;
+        lo = lo.max(measure.of(fm));
+        open.push((i, s1, mid, f1, fm));
+        open.push((i, mid, s2, fm, f2));
+    }
+    upper + 1e-9 * upper.abs()
 }
 
 impl StickBound {
@@ -337,36 +406,43 @@ impl StickBound {
     /// docs of `history.rs`), within [`TOLERANCE`] of it unless it is at most `floor_rad` (then it
     /// is only shown to be at most that); `None` for a load shape it does not follow.
     pub fn rotation_under_history_rad(&self, event: &WaveEvent, floor_rad: f64) -> Option<f64> {
-        let md = &self.modes.theta;
         let mut ps = Vec::with_capacity(MAX_PIECES);
         pieces(event, &mut ps)?;
-        let mut z = [C64::new(0.0, 0.0); 6];
-        let thetas: Vec<PieceTheta> = ps.iter().map(|p| PieceTheta::new(md, p, &mut z)).collect();
-        let mut lo = 0.0_f64;
-        let mut open: Vec<(usize, f64, f64, f64, f64)> = Vec::with_capacity(64);
-        let mut evaluations = 0;
-        for (i, th) in thetas.iter().enumerate() {
-            let (f1, f2) = (th.value(md, 0.0), th.value(md, th.len));
-            evaluations += 2;
-            lo = lo.max(f1.abs()).max(f2.abs());
-            open.push((i, 0.0, th.len, f1, f2));
+        Some(largest(&self.modes.theta, &ps, floor_rad, Measure::Abs))
+    }
+
+    /// A bound on the largest heel pressure of the all-sticking response to `event` over [0, T]
+    /// on a base `width_m` wide and `length_m` long, Pa (the lifetime's [`base_heel_pressure_pa`]
+    /// of the springs' resultant V = W' + ΣΔN_i, M = Σ x_i N_i): while the resultant is within
+    /// the middle third, the toe's linear pressure (V/B − 6M/B²)/l ≥ 0, the heel's is linear in
+    /// the state, (V/B + 6M/B²)/l, and bounded as θ is (module docs). `None` where the toe's
+    /// pressure's bound comes within [`TOE_RESERVE`] of its value at rest of 0 (the base may
+    /// open: the heel pressure is not linear there), or for a load shape it does not follow.
+    ///
+    /// [`base_heel_pressure_pa`]: crate::analysis::lifetime::base_heel_pressure_pa
+    pub fn heel_under_history_pa(&self, event: &WaveEvent, width_m: f64, length_m: f64, floor_pa: f64) -> Option<f64> {
+        let mut ps = Vec::with_capacity(MAX_PIECES);
+        pieces(event, &mut ps)?;
+        let md = &self.modes;
+        let (v, b) = (1.0 / (length_m * width_m), 6.0 / (length_m * width_m * width_m));
+        let moment_rest = self.n_ref * md.sum_x_m;
+        let toe_rest = v * self.weight_n - b * moment_rest;
+        if toe_rest <= 0.0 || toe_rest.is_nan() {
+            return None;
         }
-        let mut upper = 0.0_f64;
-        while let Some((i, s1, s2, f1, f2)) = open.pop() {
-            let th = &thetas[i];
-            let b = th.bound(md, (s1, s2), (f1, f2));
-            if b <= floor_rad.max(lo * (1.0 + TOLERANCE)) || evaluations >= MAX_EVALUATIONS || s2 - s1 <= 1e-9 * th.len
-            {
-                upper = upper.max(b);
-                continue;
-            }
-            let mid = 0.5 * (s1 + s2);
-            let fm = th.value(md, mid);
-            evaluations += 1;
-            lo = lo.max(fm.abs());
-            open.push((i, s1, mid, f1, fm));
-            open.push((i, mid, s2, fm, f2));
+        let toe = md.normal.combined(v, &md.moment, -b);
+        if largest(&toe, &ps, (1.0 - TOE_RESERVE) * toe_rest, Measure::Down) >= (1.0 - TOE_RESERVE) * toe_rest {
+            return None;
         }
-        Some(upper * (1.0 + 1e-9))
+        let heel_rest = self.heel_at_rest_pa(width_m, length_m);
+        let heel = md.normal.combined(v, &md.moment, b);
+        Some(heel_rest + largest(&heel, &ps, floor_pa - heel_rest, Measure::Up))
+    }
+
+    /// The heel pressure at rest of the springs' resultant (W', N̄ Σ x_i) on a base `width_m` wide
+    /// and `length_m` long, Pa: where [`Self::heel_under_history_pa`] starts from.
+    pub fn heel_at_rest_pa(&self, width_m: f64, length_m: f64) -> f64 {
+        let (v, b) = (1.0 / (length_m * width_m), 6.0 / (length_m * width_m * width_m));
+        v * self.weight_n + b * self.n_ref * self.modes.sum_x_m
     }
 }
