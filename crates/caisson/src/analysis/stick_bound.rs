@@ -102,9 +102,14 @@
 //! 300 lives before, 17 168 after; every output but the counts the same to the bit,
 //! `tests/equiv_lifetime.rs`, BENCHMARKS.md). A still impulsive wave's rotation bound enters the
 //! settling of the largest rotation as a pulsating one's (`lifetime`'s module docs): a looser
-//! bound only settles more waves.
+//! bound only settles more waves, so a life's end sharpens the bounds of the waves it may settle
+//! ([`StickBound::rotation_under_history_rad`], `history.rs`: the response followed through the
+//! wave's own load, piece by piece in closed form).
 
+mod history;
 mod impulse;
+
+pub use history::{TOE_RESERVE, TOLERANCE as HISTORY_TOLERANCE};
 
 use crate::dynamics::Model;
 use crate::loads::WaveForce;
@@ -159,6 +164,13 @@ struct Modes {
     /// The peak-to-peak gains ‖k_fj‖₁ of the functionals f to the load components j (F_x, F_y,
     /// M): the impulsive waves' bound ([`impulse::gains`]).
     gains: impulse::Gains,
+    /// The modes of θ's response to the load, a conjugate pair as one: the rotation under a
+    /// wave's own load history ([`history`]).
+    theta: history::ThetaModes,
+    /// Those of ΣΔN_i and of Σ x_i ΔN_i (the heel pressure's), and Σ x_i, m.
+    normal: history::ThetaModes,
+    moment: history::ThetaModes,
+    sum_x_m: f64,
 }
 
 /// M, K_L, C_L, k_y and the springs' lowest and highest x and Σx: what [`Modes`] come from.
@@ -294,8 +306,17 @@ impl Modes {
             std::array::from_fn(|m| if f == VX { w[(3, m)] } else { (0..3).map(|i| w[(i, m)] * rows[f][i]).sum() })
         });
         let gains = impulse::gains(&lambda, &modal, &winv, &minv);
+        let theta = history::ThetaModes::new(&lambda, &modal[THETA], &winv, &minv);
+        let sum_x2: f64 = model.x_m.iter().map(|x| x * x).sum();
+        let moment_row = Vector3::new(0.0, -ky * sum_x, ky * sum_x2);
+        let in_modes =
+            |row: &Vector3<f64>| -> [C64; 6] { std::array::from_fn(|m| (0..3).map(|i| w[(i, m)] * row[i]).sum()) };
         Some(Modes {
             gains,
+            theta,
+            normal: history::ThetaModes::new(&lambda, &modal[TOTAL], &winv, &minv),
+            moment: history::ThetaModes::new(&lambda, &in_modes(&moment_row), &winv, &minv),
+            sum_x_m: sum_x,
             mass,
             k_l,
             c_l,

@@ -3,12 +3,16 @@
 
 use super::outcome::StormOutcome;
 use super::params::{ErrorDraw, ErrorScope, LifeParams, StormCase, StormInput, STORM_WAVE_WORDS_LOG2};
+use super::screen::ScreenModes;
 use super::storm::{
-    storm_from, toe_depth_m, Settle, StormError, StormRng, StormScratch, StormSite, StormStart, MAX_STILL_WAVES,
-    ROTATION_RESERVE,
+    storm_from, toe_depth_m, Settle, StillWave, StormError, StormRng, StormScratch, StormSite, StormStart,
+    MAX_STILL_WAVES, ROTATION_RESERVE,
 };
-use super::wave::{base_heel_pressure_pa, WaveKind, WaveRun};
+use super::wave::{base_heel_pressure_pa, wave_event, WaveKind, WaveRun};
+use crate::analysis::stick_bound::StickBound;
 use crate::loads::generator::realization_rng;
+use crate::loads::history::{WaveEvent, WaveTrain};
+use crate::loads::model::PeriodLoads;
 use crate::loads::risetime::LoadRng;
 use crate::waves::dispersion::wavenumber;
 use crate::waves::surf_zone::SlopeTerms;
@@ -160,9 +164,11 @@ pub(super) fn life_storms(p: &LifeParams, seed: u64, index: usize, storms: &mut 
 
 /// Run the still waves of the life's storms whose rotation bound may exceed the life's largest
 /// rotation, largest bound first, until the bound of the next is below it (module docs, "The
-/// screen"): the life's largest rotation is then what running every wave gives. Each wave run
-/// moves from the screened to the simulated count; it neither slides nor lifts (its bound says
-/// so), so only the rotation and the counts can move. Empties `scratch.still`.
+/// stick bound"): the life's largest rotation is then what running every wave gives. The bounds
+/// are sharpened lazily ([`Settler::still_waves`]). Each wave run moves from the screened to the
+/// simulated count; it neither slides nor lifts (its bound says so), so only the rotation and the
+/// counts can move. Then the deferred waves for the heel pressure likewise (module docs, "Heel
+/// pressure"). Empties `scratch.still` and `scratch.heel`.
 pub(super) fn settle_life(
     st: &StormCase<'_>,
     scratch: &mut StormScratch,
@@ -170,35 +176,149 @@ pub(super) fn settle_life(
 ) -> Result<(), StormError> {
     let modes = scratch.modes(st);
     let StormScratch { train, still, heel, storms, .. } = scratch;
+    still.retain(|w| w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad);
+    heel.retain(|w| w.rotation_rad > 1e3 * life.max_heel_pressure_kpa);
     still.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
     heel.sort_unstable_by(|a, b| b.rotation_rad.total_cmp(&a.rotation_rad));
-    // The site of the storm whose waves run (the waves of a storm are mostly together).
-    let mut site: Option<(usize, StormSite)> = None;
-    let (mut none, mut no_heel) = (Vec::new(), Vec::new());
-    // The still waves for the rotation, then the deferred waves for the heel pressure (module
-    // docs, "Heel pressure"): each list while its next bound may exceed the life's largest.
-    let pending = still.iter().map(|w| (w, WaveKind::Pulsating)).chain(heel.iter().map(|w| (w, WaveKind::HeelOnly)));
-    for (w, kind) in pending {
-        let needed = match kind {
-            WaveKind::HeelOnly => w.rotation_rad > 1e3 * life.max_heel_pressure_kpa,
-            _ => w.rotation_rad * ROTATION_RESERVE > life.max_rotation_rad,
-        };
-        if !needed {
-            if kind == WaveKind::HeelOnly {
-                break;
+    // The sites of the storms whose waves are sharpened or run, and their loads at T1/3, each
+    // built when first needed.
+    let sites: Vec<OnceCell<StormSite>> = storms.iter().map(|_| OnceCell::new()).collect();
+    let loads: Vec<OnceCell<PeriodLoads<'_>>> = storms.iter().map(|_| OnceCell::new()).collect();
+    let mut settler = Settler { st, storms, sites: &sites, loads: &loads, train, modes };
+    settler.kept_waves(still, WaveKind::Pulsating, life)?;
+    settler.kept_waves(heel, WaveKind::HeelOnly, life)?;
+    still.clear();
+    heel.clear();
+    Ok(())
+}
+
+/// Whether a kept wave of `kind` whose bound is `bound` may still raise the life's largest
+/// rotation (a still wave: `bound` times [`ROTATION_RESERVE`] above it) or heel pressure (a
+/// deferred wave: `bound`, Pa, above it), and must run.
+fn needed(kind: WaveKind, bound: f64, life: &StormOutcome) -> bool {
+    if kind == WaveKind::HeelOnly {
+        bound > 1e3 * life.max_heel_pressure_kpa
+    } else {
+        bound * ROTATION_RESERVE > life.max_rotation_rad
+    }
+}
+
+/// The margin on the rise of a deferred wave's heel pressure over the rest under its own load
+/// history ([`StickBound::heel_under_history_pa`]) for what the all-sticking response leaves out
+/// (the shear's departure R, the engine's steps): the engine's rise was at most 1.0005 times the
+/// bound's on 215 waves (`tests/verify_stick_bound.rs`).
+pub(super) const HEEL_RESERVE: f64 = 1.01;
+
+/// What runs a life's kept waves at its end ([`settle_life`]): the life's storms, the sites of
+/// those whose waves may run and their loads at T1/3.
+struct Settler<'s, 'a> {
+    st: &'s StormCase<'a>,
+    storms: &'s [StormInput],
+    sites: &'s [OnceCell<StormSite>],
+    loads: &'s [OnceCell<PeriodLoads<'s>>],
+    train: &'s mut WaveTrain,
+    modes: ScreenModes,
+}
+
+impl<'s> Settler<'s, '_> {
+    fn site(&self, w: &StillWave) -> &'s StormSite {
+        let sites: &'s [OnceCell<StormSite>] = self.sites;
+        sites[w.storm].get_or_init(|| StormSite::new(self.st, &self.storms[w.storm], self.modes))
+    }
+
+    /// The loads at T1/3 of the storm of the kept wave `w`.
+    fn loads_t13(&self, w: &StillWave) -> &'s PeriodLoads<'s> {
+        let (loads, site): (&'s [OnceCell<PeriodLoads<'s>>], _) = (self.loads, self.site(w));
+        loads[w.storm].get_or_init(|| site.model.at_period(self.storms[w.storm].period_s))
+    }
+
+    /// The loads of the kept wave `w`.
+    fn event(&self, w: &StillWave) -> WaveEvent {
+        let (s, site) = (&self.storms[w.storm], self.site(w));
+        wave_event(s, site, self.loads_t13(w), (w.height_m, w.deviate, w.period_s))
+    }
+
+    /// The kept waves `kept` of `kind` (sorted by their bounds, largest first: the still waves'
+    /// rotations, or the deferred waves' heel pressures), largest bound first until the next is
+    /// not [`needed`], each bound sharpened ([`Self::sharper`]) when it is the largest left: a
+    /// wave's sharper bound is at most its bound, so the largest sharpened one at or above every
+    /// bound not yet sharpened is the largest of all, and the wave to run next, or to stop at.
+    fn kept_waves(&mut self, kept: &[StillWave], kind: WaveKind, life: &mut StormOutcome) -> Result<(), StormError> {
+        let mut sharpened: Vec<(f64, usize, WaveEvent)> = Vec::new();
+        let mut next = 0;
+        loop {
+            let unsharpened = kept
+                .get(next)
+                .filter(|w| needed(kind, w.rotation_rad, life))
+                .map_or(f64::NEG_INFINITY, |w| w.rotation_rad);
+            let best = (0..sharpened.len()).max_by(|&a, &b| sharpened[a].0.total_cmp(&sharpened[b].0));
+            match best {
+                Some(b) if sharpened[b].0 >= unsharpened => {
+                    let (bound, i, event) = sharpened.swap_remove(b);
+                    if !needed(kind, bound, life) {
+                        break;
+                    }
+                    self.run(&kept[i], event, kind, life)?;
+                }
+                _ if unsharpened > f64::NEG_INFINITY => {
+                    let w = &kept[next];
+                    let event = self.event(w);
+                    let bound = self.sharper(w, &event, kind, life).map_or(w.rotation_rad, |b| b.min(w.rotation_rad));
+                    if needed(kind, bound, life) {
+                        sharpened.push((bound, next, event));
+                    }
+                    next += 1;
+                }
+                _ => break,
             }
-            continue;
         }
-        let s = &storms[w.storm];
-        if site.as_ref().is_none_or(|(i, _)| *i != w.storm) {
-            site = Some((w.storm, StormSite::new(st, s, modes)));
+        Ok(())
+    }
+
+    /// A sharper bound of the kept wave `w` of loads `event`: a still wave's rotation under its
+    /// own load history ([`StickBound::rotation_under_history_rad`]); a deferred one's heel
+    /// pressure likewise ([`StickBound::heel_under_history_pa`], its rise over the rest times
+    /// [`HEEL_RESERVE`]) if the stick bound shows the wave neither slips nor lifts a spring
+    /// (the all-sticking response is then the engine's). Each is asked only to show it is not
+    /// [`needed`] where it can.
+    fn sharper(&self, w: &StillWave, event: &WaveEvent, kind: WaveKind, life: &StormOutcome) -> Option<f64> {
+        let site = self.site(w);
+        let bound = site.stick.get_or_init(|| StickBound::new(site.dyn_model())).as_ref()?;
+        if kind != WaveKind::HeelOnly {
+            return bound.rotation_under_history_rad(event, life.max_rotation_rad / ROTATION_RESERVE);
         }
-        let site = &site.as_ref().expect("the wave's storm's site").1;
+        let still = if event.impulse.is_some() {
+            bound.impulse_margins(event).still()
+        } else {
+            let at = bound.at_period(w.period_s)?;
+            bound.margins(&at, event.quasi.total(), event.trough.total()).still()
+        };
+        if !still {
+            return None;
+        }
+        let rest_pa = bound.heel_at_rest_pa(site.width_m, site.length_m);
+        let floor_pa = rest_pa + (1e3 * life.max_heel_pressure_kpa - rest_pa) / HEEL_RESERVE;
+        let heel_pa = bound.heel_under_history_pa(event, site.width_m, site.length_m, floor_pa)?;
+        Some(rest_pa + HEEL_RESERVE * (heel_pa - rest_pa).max(0.0))
+    }
+
+    /// Run the kept wave `w` of loads `event` as `kind` (a still wave as pulsating: it is not
+    /// counted as impulsive again; a deferred one for its heel pressure), and move it from the
+    /// screened to the simulated count.
+    fn run(
+        &mut self,
+        w: &StillWave,
+        event: WaveEvent,
+        kind: WaveKind,
+        life: &mut StormOutcome,
+    ) -> Result<(), StormError> {
+        let (st, s, site, loads_t13) = (self.st, &self.storms[w.storm], self.site(w), self.loads_t13(w));
+        let (mut none, mut no_heel) = (Vec::new(), Vec::new());
         let mut run = WaveRun {
             st,
             s,
             site,
-            loads_t13: &site.model.at_period(s.period_s),
+            loads_t13,
             bound_t13: site.bound(s.period_s),
             start_m: 0.0,
             // A still wave can fail no life (module docs, "The stick bound"), nor can a deferred
@@ -210,34 +330,31 @@ pub(super) fn settle_life(
             rigid_failed: true,
             heel_floor_kpa: 0.0,
             sim: None,
-            train,
+            train: self.train,
             stick_t13: OnceCell::new(),
             still: &mut none,
             heel: &mut no_heel,
             settle: Settle::Storm,
         };
-        let (event, _) = run.event(w.height_m, w.deviate, w.period_s);
         let mut o = StormOutcome::default();
         run.simulate(event, w.height_m, w.period_s, kind, &mut o)?;
         if o.simulated_waves == 0 {
             // It did not converge, in a failed life: it stays screened.
-            continue;
+            return Ok(());
         }
         life.simulated_waves += 1;
         life.screened_waves -= 1;
         if kind == WaveKind::HeelOnly {
             life.max_heel_pressure_kpa = life.max_heel_pressure_kpa.max(o.max_heel_pressure_kpa);
-            continue;
+            return Ok(());
         }
         life.rocking_waves += o.rocking_waves;
         life.large_rotation_waves += o.large_rotation_waves;
         life.max_rotation_rad = life.max_rotation_rad.max(o.max_rotation_rad);
         #[cfg(test)]
         super::tests::SETTLED.with(|n| n.set(n.get() + 1));
+        Ok(())
     }
-    still.clear();
-    heel.clear();
-    Ok(())
 }
 
 /// A life that could not be simulated.

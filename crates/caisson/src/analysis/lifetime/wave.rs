@@ -69,6 +69,34 @@ pub fn base_heel_pressure_pa(normal_n: f64, moment_nm: f64, width_m: f64, length
     }
     heel_pressure_pa(normal_n / length_m, 0.5 * width_m - moment_nm / normal_n, width_m)
 }
+/// The loads of the wave of height `h` (clamped), rise-time deviate `z` and period `period_s` of
+/// storm `s` at `site`, times the storm's errors; `loads_t13`: the loads at the storm's T1/3.
+pub(super) fn wave_event(
+    s: &StormInput,
+    site: &StormSite,
+    loads_t13: &PeriodLoads<'_>,
+    (h, z, period_s): (f64, f64, f64),
+) -> WaveEvent {
+    let own;
+    let loads_at = if s.periods.is_significant() {
+        loads_t13
+    } else {
+        own = site.model.at_period(period_s);
+        &own
+    };
+    // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
+    let e = match loads_at.event(h, site.model.options.regime, z) {
+        Ok(e) => e,
+        Err(_) => loads_at.event(h, RegimeChoice::Auto, z).expect("the automatic regime always applies"),
+    };
+    WaveEvent {
+        quasi: e.quasi.scaled(s.force_factor),
+        trough: e.trough.scaled(s.force_factor),
+        impact: e.impact.scaled(s.impact_factor),
+        ..e
+    }
+}
+
 /// One wave through both models (module docs, step 6): its loads at its own period tested against
 /// the screen's bound at that period, then the rigid block, then the dynamic model (unless the
 /// stick bound answers it).
@@ -111,25 +139,8 @@ impl WaveRun<'_> {
     /// `period_s`, times the storm's errors, and the screen's bound at its period.
     pub(super) fn event(&self, h: f64, z: f64, period_s: f64) -> (WaveEvent, ScreenBound) {
         let (s, site) = (self.s, self.site);
-        let own;
-        let (loads_at, bound) = if s.periods.is_significant() {
-            (self.loads_t13, self.bound_t13)
-        } else {
-            own = site.model.at_period(period_s);
-            (&own, site.bound(period_s))
-        };
-        // A forced regime the wave contradicts (non-breaking above the limit): the criterion decides.
-        let e = match loads_at.event(h, site.model.options.regime, z) {
-            Ok(e) => e,
-            Err(_) => loads_at.event(h, RegimeChoice::Auto, z).expect("the automatic regime always applies"),
-        };
-        let event = WaveEvent {
-            quasi: e.quasi.scaled(s.force_factor),
-            trough: e.trough.scaled(s.force_factor),
-            impact: e.impact.scaled(s.impact_factor),
-            ..e
-        };
-        (event, bound)
+        let bound = if s.periods.is_significant() { self.bound_t13 } else { site.bound(period_s) };
+        (wave_event(s, site, self.loads_t13, (h, z, period_s)), bound)
     }
 
     /// Wave of height `h` (clamped), rise-time deviate `z` and period `period_s`.
