@@ -350,8 +350,10 @@ fn accuracy_case(name: &str) -> Scenario {
 /// `Simulation::correct_onset_jumps`). Corrected: within 0.01 % on all six (measured 9e-5 at
 /// most); at loads from −3e-3 to +3e-3 of the case's (11 loads, 66 runs) within 0.03 % but at
 /// +1e-3, where all six agree to 0.01 % and are 1.43 % below the converged run (fixed steps of
-/// 6.25e-6 to 1.5625e-6 s within 0.006 % of one another there; not diagnosed); before, 33 of the
-/// 66 runs were beyond 1 %. The peak within 0.2 %.
+/// 6.25e-6 to 1.5625e-6 s within 0.006 % of one another there): the same toe slip, marginal
+/// there, found 0.19 ms late and 0.25 ms long against 0.73 ms, the second toe spring's missed
+/// (met at a tenth of the tolerance, not at a quarter); before, 33 of the 66 runs were beyond
+/// 1 %. The peak within 0.2 %.
 #[test]
 fn pari_ten_springs_meets_converged_fixed_steps() {
     let s = accuracy_case("pari_ten_springs.toml");
