@@ -1189,29 +1189,40 @@ impl Simulation {
     /// What remains at that onset is its time: the adaptive run finds it 5 µs before fixed steps
     /// of 1.5625e-6 s, its u_x 1e-8 m (two tolerances) ahead while u̇_x is 2.7 mm/s, and u̇_x is
     /// 34 µm/s off after it (130 µm/s without the correction).
-    fn correct_onset_jumps(&mut self, h: f64, mut c: Converged) -> Converged {
-        if self.fast.iterate.is_some() || !self.trial_slips || self.model.mu_dynamic == self.model.mu_static {
-            return c;
+    #[inline(always)]
+    fn correct_onset_jumps(&mut self, h: f64, c: &mut Converged) {
+        // A spring slips at the step's end (`trial_slips`), by the general path, and μ_d ≠ μ_s.
+        if self.trial_slips && self.fast.iterate.is_none() && self.model.mu_dynamic != self.model.mu_static {
+            self.correct_onset_jumps_at(h, c);
         }
+    }
+
+    /// [`Self::correct_onset_jumps`] past its first tests.
+    fn correct_onset_jumps_at(&mut self, h: f64, c: &mut Converged) {
+        // The springs that stuck at the step's start and slip at its end, in contact.
+        let starts = |(s, r): (&SpringState, &SpringResponse)| !s.sliding && r.state.sliding && r.normal_n > 0.0;
+        let Some(first) = self.state.springs.iter().zip(&self.trial).position(starts) else {
+            return;
+        };
         let law = self.model.law;
         let c_prime = 2.0 * self.model.spring_dashpot_ns_per_m / h;
         let (mut d_x, mut k_x) = (0.0, 0.0);
-        for i in 0..self.model.x_m.len() {
-            let (s, r) = (self.state.springs[i], self.trial[i]);
-            if s.sliding || !r.state.sliding || r.normal_n <= 0.0 {
+        for i in first..self.model.x_m.len() {
+            let (s, r) = (&self.state.springs[i], &self.trial[i]);
+            if !starts((s, r)) {
                 continue;
             }
-            let (g0, g1) = self.event_margins(EventKind::Onset, i, h, &c);
+            let (g0, g1) = self.event_margins(EventKind::Onset, i, h, c);
             if !(g0 > 0.0 && g1 <= 0.0) {
                 continue;
             }
             let w = 2.0 * g0 / (g0 - g1) - 1.0;
             let kn = law.kappa_per_m * r.normal_n;
-            d_x += w * (r.shear_n - (kn * law.limit_m(s)).copysign(r.shear_n));
+            d_x += w * (r.shear_n - (kn * law.limit_m(*s)).copysign(r.shear_n));
             k_x += w.max(0.0) * (kn + c_prime);
         }
         if d_x == 0.0 {
-            return c;
+            return;
         }
         let (beta, gamma) = (self.solver.beta, self.solver.gamma);
         let (c1, c2) = (1.0 / (beta * h * h), 1.0 / (beta * h));
@@ -1219,7 +1230,7 @@ impl Simulation {
         k[(0, 0)] += k_x;
         let d = Vector3::new(d_x, 0.0, 0.0);
         let (Some(delta), Some(m_inv_d)) = (solve3::lu_solve(&k, &d), solve3::lu_solve(&self.model.mass, &d)) else {
-            return c;
+            return;
         };
         for j in 0..3 {
             c.u[j] += delta[j];
@@ -1230,7 +1241,6 @@ impl Simulation {
         for r in self.trial.iter_mut().filter(|r| r.state.sliding || r.normal_n <= 0.0) {
             r.state.slip_m += delta[0];
         }
-        c
     }
 
     /// M⁻¹ ΔF, ΔF the jump of the vertical dashpots (`springs` form) of the springs whose
