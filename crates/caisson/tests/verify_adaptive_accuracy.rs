@@ -337,11 +337,23 @@ fn accuracy_case(name: &str) -> Scenario {
 /// 4.722 mm). With λ |Δu_x| in the slip positions' estimate (`slip_error_m`), measured 4.895 to
 /// 4.983 mm: within max(1 µm, 1.5 %) on all six (1.4 % at 5e-4 s, the others within 0.4 %),
 /// and the peak u_x within 0.2 %. With the sticking steps held per unit step (results version
-/// 24): −1.34 %, −1.31 %, +0.23 %, −1.34 %, −0.11 %, −0.06 % (first steps 1e-3 to 1e-5 s), the
-/// peak within 0.18 %: the issue's 1 % is not met. The runs 1.3 % off step over a slip of two
-/// toe springs at 0.186 s, 1 ms long while the caisson stands on five springs, that fixed steps
-/// of dt0/16 and dt0/32 find (its margin dips below zero between two step ends that are both
-/// sticking), and slide back less after it.
+/// 24): −1.34 %, −1.31 %, +0.23 %, −1.34 %, −0.11 %, −0.06 % (first steps 1e-3 to 1e-5 s): the
+/// runs 1.3 % off missed a slip of two toe springs at 0.186 s (1 ms, the caisson on five
+/// springs) that the converged run has. Not a step over it: the steps there are 25-50 µs, and the
+/// elastic displacement of the toe spring peaks at 0.986 e_s instead of e_s, the state being
+/// already off by 1-3 µm in the springs' u_x − s_i (u_x 7 µm off from 0.1 s on; tolerance /2 and
+/// /4 missed the slip on all six first steps, /10 and /100 met it). The error was born at the
+/// slip onsets: with μ_d < μ_s the friction drops at an onset, and the step landed on it had
+/// weighed the drop by h/2 in its trapezoidal velocity (the 31 µs step to the onset of all ten
+/// springs at 0.0111 s left u̇_x 102 µm/s off, 1 % of it), a first-order error that the
+/// flights and landings after it grew (module docs of `caisson::dynamics`, "Events";
+/// `Simulation::correct_onset_jumps`). Corrected: within 0.01 % on all six (measured 9e-5 at
+/// most); at loads from −3e-3 to +3e-3 of the case's (11 loads, 66 runs) within 0.03 % but at
+/// +1e-3, where all six agree to 0.01 % and are 1.43 % below the converged run (fixed steps of
+/// 6.25e-6 to 1.5625e-6 s within 0.006 % of one another there): the same toe slip, marginal
+/// there, found 0.19 ms late and 0.25 ms long against 0.73 ms, the second toe spring's missed
+/// (met at a tenth of the tolerance, not at a quarter); before, 33 of the 66 runs were beyond
+/// 1 %. The peak within 0.2 %.
 #[test]
 fn pari_ten_springs_meets_converged_fixed_steps() {
     let s = accuracy_case("pari_ten_springs.toml");
@@ -353,7 +365,7 @@ fn pari_ten_springs_meets_converged_fixed_steps() {
         let (adaptive, _) = adaptive_and_converged(&s, dt0_s);
         let rel = (adaptive[0] - converged[0]).abs() / converged[0];
         worst = worst.max(rel);
-        assert!(rel <= 0.015, "first step {dt0_s} s: adaptive {} m, converged {} m", adaptive[0], converged[0]);
+        assert!(rel <= 0.01, "first step {dt0_s} s: adaptive {} m, converged {} m", adaptive[0], converged[0]);
         assert!((adaptive[1] - converged[1]).abs() <= 2e-3 * converged[1], "first step {dt0_s} s: peak {:?}", adaptive);
         checked += 1;
     }
@@ -524,7 +536,14 @@ duration_s = {d}
 /// moved with Newmark's phase lag of the sticking vibration, up to 11 % and 16 %; module docs of
 /// `caisson::dynamics`), 3 after: three undamped cases of the consistent profile that rock on
 /// part of their base (1.5 %, 2.0 % and 12.7 % in the sliding), where a slip onset or a lift of
-/// a toe spring that converged steps find in a short excursion is found or not.
+/// a toe spring that converged steps find in a short excursion is found or not. With the
+/// friction's jump at slip onsets taken out of the adaptive steps (`correct_onset_jumps`, module
+/// docs of `caisson::dynamics`, "Events"), still 3: case 12 met (sliding +1.52 % → +0.96 %, peak
+/// +0.41 % → +0.83 %), case 16 closer (sliding −2.25 % → +0.71 %, peak −1.80 % → +1.27 %), case
+/// 28 as before (+12.7 % → +11.6 %, below), and case 22 (37 springs, sliding 39 µm) now beyond
+/// the 1 µm floor (+0.88 µm → +1.60 µm, its peak −0.63 % → −0.03 %); case 2, the most sensitive
+/// (+0.03 % at the default tolerance but +0.96 % at 1/10 and +1.55 % at dt_max 1 ms before),
+/// −0.05 %.
 ///
 /// Diagnosed (issue 34 item 4; `diagnose_family_case`, run with `CAISSON_CASE=k`; results
 /// version 24): no step kind or quantity that the error estimate ignores stands out, and no fix

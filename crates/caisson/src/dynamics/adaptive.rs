@@ -228,6 +228,8 @@ impl Simulation {
                     Verdict::RestartedAtStart => {}
                     Verdict::Narrowed(s) | Verdict::EventFound(s) | Verdict::Rejected(s) => self.run.h_next = s,
                     Verdict::Accepted { ratio } => {
+                        let mut c = c;
+                        self.correct_onset_jumps(plan.h, &mut c);
                         self.commit_observed(plan.h, c, t1, w, obs);
                         self.run.h_next = ctl.accepted(&plan, ratio);
                     }
