@@ -27,8 +27,12 @@ def load(name: str) -> caisson.Scenario:
 
 def interrupted(call, after_s: float = 0.5):
     """Run `call()` in this (the main) thread with a SIGINT sent `after_s` later: (the
-    KeyboardInterrupt raised, seconds from the signal to the raise)."""
+    KeyboardInterrupt raised, seconds from the signal to the raise). Python's own SIGINT handler
+    is installed for the call (and the one found restored): a library an earlier test started
+    (Dask's or Ray's workers) may leave another in place, and then a Ctrl-C raises nothing —
+    once in CI both Ctrl-C tests ran their calls to the end ("ended before the signal")."""
     sent = []
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
 
     def ctrl_c():
         sent.append(time.monotonic())
@@ -42,7 +46,8 @@ def interrupted(call, after_s: float = 0.5):
         return e, time.monotonic() - sent[0]
     finally:
         timer.cancel()
-    pytest.fail("the call ended before the signal: make it longer")
+        signal.signal(signal.SIGINT, previous)
+    pytest.fail(f"the call ended before the signal (sent: {bool(sent)}): make it longer")
 
 
 # Ctrl-C within a second. Each call would take far longer (tens of seconds to minutes).
