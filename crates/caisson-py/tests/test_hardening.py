@@ -28,9 +28,10 @@ def load(name: str) -> caisson.Scenario:
 def interrupted(call, after_s: float = 0.5):
     """Run `call()` in this (the main) thread with a SIGINT sent `after_s` later: (the
     KeyboardInterrupt raised, seconds from the signal to the raise). Python's own SIGINT handler
-    is installed for the call (and the one found restored): a library an earlier test started
-    (Dask's or Ray's workers) may leave another in place, and then a Ctrl-C raises nothing —
-    once in CI both Ctrl-C tests ran their calls to the end ("ended before the signal")."""
+    is installed for the call (and the one found restored). It may not be in place: a Python
+    started as a background job of a shell without job control (`.ci/run &`, as POSIX asks)
+    inherits SIGINT ignored and keeps it ignored, and then a Ctrl-C raises nothing; both Ctrl-C
+    tests ran their calls to the end that way ("ended before the signal")."""
     sent = []
     previous = signal.signal(signal.SIGINT, signal.default_int_handler)
 
