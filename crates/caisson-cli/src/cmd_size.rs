@@ -114,13 +114,27 @@ pub fn run(args: SizeArgs) -> Result<()> {
         None => (None, Vec::new()),
     };
     let resumed = finished.len();
-    let pb = progress((sizer.candidates() * p.lives) as u64, "candidates", "lives");
+    let pb = progress((sizer.candidates() * sizer.simulated_lives()) as u64, "candidates", "lives");
     if !args.json {
+        let lives = match p.auto {
+            Some(auto) => format!(
+                "lives per candidate to a target relative error {} (batches of {}, at most {})",
+                auto.target_relative_error,
+                caisson::analysis::lifetime::AUTO_BATCH_LIVES,
+                p.lives
+            ),
+            None => format!("{} lives per candidate", p.lives),
+        };
+        let sampled = match sizer.design.sampling {
+            caisson::analysis::lifetime::Sampling::Stratified => {
+                ", stratified: about 5 % of them simulated, the same at every width"
+            }
+            caisson::analysis::lifetime::Sampling::Plain => "",
+        };
         crate::sayln!(
-            "Sizing the width over {} .. {} m: {} lives per candidate{}",
+            "Sizing the width over {} .. {} m: {lives}{sampled}{}",
             p.range_m.0,
             p.range_m.1,
-            p.lives,
             if resumed > 0 { format!(" ({resumed} widths from the checkpoint)") } else { String::new() }
         );
     }

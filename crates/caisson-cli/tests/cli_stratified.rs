@@ -127,8 +127,7 @@ fn a_bad_sampling_is_refused() {
 
 /// `caisson size` with a stratified `[design]`: the same lives at every width (their storms'
 /// severity does not depend on the caisson), each candidate the stratified estimate of `caisson
-/// design` at its width, and the same size.json on 1 and 2 threads; `[size] lives = "auto"` beside
-/// it is refused.
+/// design` at its width, and the same size.json on 1 and 2 threads.
 #[test]
 fn a_stratified_sizing_is_the_design_at_each_width() {
     let dir = tempfile::tempdir().unwrap();
@@ -165,8 +164,63 @@ fn a_stratified_sizing_is_the_design_at_each_width() {
         }
     }
     assert_eq!(compared, 4);
-    let auto = support::sizing_text("range_m = [8.0, 30.0]\nexpected_sliding_m = 0.05\nlives = \"auto\"");
-    let auto = site::with(&auto, "design", "sampling = \"stratified\"");
-    let f = write(dir.path(), "auto.toml", &auto);
-    refused(&["size", s(&f)], &["[design] sampling", "[size] lives = \"auto\""]);
+}
+
+/// `caisson size` with a stratified `[design]` and `[size] lives = "auto"`: each candidate is
+/// `caisson design` at its width with `[design] lives = "auto"` and the same target and budget —
+/// the same batches of the pool, the same stopping boundary, the same weighted E|S| and
+/// P(failure) — and size.json is the same on 1 and 2 threads and resumed from a checkpoint.
+#[test]
+fn a_stratified_auto_sizing_is_the_auto_design_at_each_width() {
+    let dir = tempfile::tempdir().unwrap();
+    let rule = "target_relative_error = 0.15\nmax_lives = 4000";
+    let keys = format!("range_m = [8.0, 30.0]\nexpected_sliding_m = 0.05\ntolerance_m = 4.0\ncurve_points = 3\nlives = \"auto\"\n{rule}");
+    let text = site::with(&support::sizing_text(&keys), "design", "sampling = \"stratified\"");
+    let file = write(dir.path(), "s.toml", &text);
+    let out = dir.path().join("out");
+    let size = |args: &[&str]| {
+        let o = caisson().args(["size", s(&file), "--json"]).args(args).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    let one = size(&["--threads", "1", "--out", s(&out)]);
+    assert!(one == size(&["--threads", "2"]), "size.json differs between 1 and 2 threads");
+    let j: serde_json::Value = serde_json::from_slice(&one).unwrap();
+    let candidates = j["candidates"].as_array().unwrap();
+    assert!(candidates.len() >= 3, "{}", candidates.len());
+    let mut compared = 0;
+    let mut boundaries = std::collections::BTreeSet::new();
+    for c in candidates.iter().take(3) {
+        let w = c["width_m"].as_f64().unwrap();
+        let at = site::with(&site::without(&text, "caisson", &["width_m"]), "caisson", &format!("width_m = {w}"));
+        let at = site::with(&site::without(&at, "design", &["lives"]), "design", &format!("lives = \"auto\"\n{rule}"));
+        let f = write(dir.path(), "w.toml", &at);
+        let o = caisson().args(["design", s(&f), "--json"]).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let d: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let (p, q) = (&c["precision"], &d["precision"]);
+        assert_eq!((p["lives"].as_u64(), p["met"].as_bool()), (q["lives"].as_u64(), q["met"].as_bool()), "{w} m");
+        assert_eq!(d["sampling"]["pool_lives"].as_u64(), p["lives"].as_u64(), "{w} m");
+        boundaries.insert(p["lives"].as_u64().unwrap());
+        let pairs = [
+            (c["dynamic"]["expected_sliding_m"].as_f64(), d["dynamic"]["expected_sliding_m"].as_f64()),
+            (c["dynamic"]["failure_probability"].as_f64(), d["dynamic"]["failure"]["probability"].as_f64()),
+            (p["expected_sliding_relative_error"].as_f64(), q["expected_sliding_relative_error"].as_f64()),
+        ];
+        for (got, want) in pairs {
+            let (got, want) = (got.unwrap(), want.unwrap());
+            // The same lives and weights summed in the same order: equal to rounding.
+            assert!((got - want).abs() <= 1e-12 * want.abs().max(1e-12), "{w} m: size {got}, design {want}");
+            compared += 1;
+        }
+    }
+    assert_eq!(compared, 9);
+    // The widths took different numbers of lives: the rule reads each width's own estimates.
+    assert!(boundaries.len() >= 2, "every width stopped at {boundaries:?}: choose a target that tells them apart");
+    // Resumed from a checkpoint holding the first two candidates: the same size.json.
+    let cp = out.join("size_checkpoint.jsonl");
+    let text = std::fs::read_to_string(&cp).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    std::fs::write(&cp, format!("{}\n{}\n{}\n", lines[0], lines[1], lines[2])).unwrap();
+    assert!(size(&["--out", s(&out), "--resume"]) == one, "a resumed run reports the same");
 }

@@ -162,20 +162,29 @@ pub struct Candidate {
 impl Candidate {
     /// The rule of `lives = "auto"` ([`crate::analysis::lifetime::AutoLives::judge`]) on this
     /// candidate's statistics: the dynamic model's capped E|S| with its standard error and its
-    /// failed lives, as the candidate reports them — the one place the sizing reads them for the
-    /// rule. `max_lives`: the budget, reported beside.
+    /// P(failure), as the candidate reports them — the one place the sizing reads them for the
+    /// rule. P(failure) is the binomial proportion of the failed lives of a plain run, or a
+    /// stratified run's weighted proportion with its two-phase standard error and Wilson interval
+    /// ([`crate::analysis::lifetime::AutoLives::judge_estimates`]); `lives` is the pool's then.
+    /// `max_lives`: the budget, reported beside.
     pub fn judge(
         &self,
         auto: &crate::analysis::lifetime::AutoLives,
         max_lives: usize,
     ) -> crate::analysis::lifetime::AutoPrecision {
         let d = &self.dynamic;
-        auto.judge(
-            (d.expected_sliding_m, d.expected_sliding_standard_error_m),
-            self.life_counts.failed_lives,
-            self.lives,
-            max_lives,
-        )
+        let es = (d.expected_sliding_m, d.expected_sliding_standard_error_m);
+        match d.failure_probability_standard_error {
+            Some(standard_error) => {
+                let failure = crate::analysis::estimate::Estimate {
+                    value: d.failure_probability,
+                    standard_error,
+                    ci95: d.failure_probability_ci95,
+                };
+                auto.judge_estimates(es, &failure, self.lives, max_lives)
+            }
+            None => auto.judge(es, self.life_counts.failed_lives, self.lives, max_lives),
+        }
     }
 
     pub fn point(&self, m: SizedModel) -> &ModelPoint {

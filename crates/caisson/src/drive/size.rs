@@ -16,6 +16,11 @@
 //! max_lives`: each width takes the lives it needs (lives 0..k of the seed, common random numbers
 //! over the widths' common lives), and the candidate records the verdict (`precision`).
 //!
+//! A stratified `[design]` ([`crate::analysis::lifetime::sampling`]) simulates the same sample at
+//! every width: the strata and each batch's pool are drawn once, when a width first needs them
+//! (`Sample`), and every width weighs its lives by the pool of lives 0..k — with "auto" the rule
+//! reads the weighted estimates, as `caisson design` does.
+//!
 //! The front-ends keep what is theirs through [`Hooks`]: the progress, stopping (Ctrl-C), and
 //! the checkpoint of the finished candidates (the CLI's file; its codec is
 //! [`crate::report::checkpoint`]): candidates read back from it are passed in `done` and reused,
@@ -23,10 +28,13 @@
 
 use crate::analysis::conventional::{conventional_width, static_check, ChecksAtWidth, DesignWave};
 use crate::analysis::lifetime::sampling::{work_lives, Pool, Strata};
-use crate::analysis::lifetime::{auto_boundaries, run_lives, DesignParams, LifeFailed, Sampling, StormOutcome};
+use crate::analysis::lifetime::{
+    auto_boundaries, run_lives, DesignParams, LifeFailed, Sampling, StormCase, StormOutcome,
+};
 use crate::analysis::sizing::{
     bisection_steps, candidate, candidate_sampled, curve_widths, size, Candidate, SizeParams,
 };
+use crate::analysis::stratified::TwoPhase;
 use crate::analysis::work::{self, WorkEstimate};
 use crate::loads::safety::SafetyFactors;
 use crate::report::design::design_fingerprint;
@@ -86,13 +94,6 @@ impl<'a> Sizer<'a> {
     pub fn new(sc: &'a Scenario, what: &str) -> Result<Self, SizeError> {
         let params = *sc.size_for(what)?;
         let design = sc.design_for(what)?.clone();
-        if design.sampling == Sampling::Stratified && params.auto.is_some() {
-            return Err(SizeError::Scenario(ScenarioError::range(
-                "[design] sampling",
-                "\"stratified\"",
-                "is not yet combined with [size] lives = \"auto\": give [size] lives a number (the pool; about 5 % of them are simulated at each width), or sampling = \"plain\"",
-            )));
-        }
         if sc.caisson_spec().construction().is_none() {
             return Err(SizeError::NoConstruction(what.to_string()));
         }
@@ -114,15 +115,19 @@ impl<'a> Sizer<'a> {
         grid + 2 * bisection_steps(p, (p.range_m.1 - p.range_m.0) / (grid - 1) as f64)
     }
 
+    /// The lives a candidate simulates at most: `[size] lives` (with "auto" its budget), of a
+    /// stratified design their expected sample ([`work_lives`]).
+    pub fn simulated_lives(&self) -> usize {
+        match self.design.sampling {
+            Sampling::Stratified => work_lives(self.params.lives),
+            Sampling::Plain => self.params.lives,
+        }
+    }
+
     /// The work of the run, estimated on every width of the grid as a design run of one width's
     /// lives (each must build: a width whose caisson floats is an input error).
     pub fn estimate(&self, what: &str) -> Result<WorkEstimate, SizeError> {
-        // A stratified design's candidate runs its sample ([`work_lives`]).
-        let lives = match self.design.sampling {
-            Sampling::Stratified => work_lives(self.params.lives),
-            Sampling::Plain => self.params.lives,
-        };
-        let one_width = DesignParams { lives, ..self.design.clone() };
+        let one_width = DesignParams { lives: self.simulated_lives(), ..self.design.clone() };
         let mut grid = Vec::new();
         for w in curve_widths(&self.params) {
             let sw = self.at_width(w)?;
@@ -150,15 +155,14 @@ impl<'a> Sizer<'a> {
         let (p, design) = (&self.params, &self.design);
         let Hooks { width, life, candidate: finished } = hooks;
         // A stratified design samples the same lives at every width (their storms' severity does
-        // not depend on the caisson: common random numbers, module docs).
-        let sample = match design.sampling {
-            Sampling::Stratified => {
-                let case = self.sc.storm_case(design.screen)?;
-                let strata = Strata::pilot(&case, &design.life, design.seed);
-                let pool = Pool::of(&case, &design.life, design.seed, &strata, 0..p.lives);
-                let est = pool.estimator(&strata);
-                Some((pool.indices(), est))
-            }
+        // not depend on the caisson: common random numbers, module docs): the strata, and the
+        // pool of each batch of lives with the lives it simulates, are drawn once.
+        let boundaries: Vec<usize> = match p.auto {
+            Some(_) => auto_boundaries(p.lives).collect(),
+            None => vec![p.lives],
+        };
+        let mut sample = match design.sampling {
+            Sampling::Stratified => Some(Sample::new(self.sc.storm_case(design.screen)?, design)),
             Sampling::Plain => None,
         };
         let mut evaluate = |w: f64| -> Result<Candidate, SizeError> {
@@ -170,25 +174,25 @@ impl<'a> Sizer<'a> {
             let case = sw.storm_case(design.screen)?;
             width(w, false);
             let heel_pa = (design.allowable_heel_pressure_pa, design.heel_screen_pa());
-            let of = |outcomes: &[StormOutcome]| {
+            let of = |outcomes: &[StormOutcome], est: Option<&TwoPhase>| {
                 let (weight_n, failure) = (sw.caisson().weight_in_water_n, &design.failure_limits(w));
-                match &sample {
-                    Some((_, est)) => candidate_sampled(w, weight_n, outcomes, failure, &p.criteria, heel_pa, est),
+                match est {
+                    Some(est) => candidate_sampled(w, weight_n, outcomes, failure, &p.criteria, heel_pa, est),
                     None => candidate(w, weight_n, outcomes, failure, &p.criteria, heel_pa),
                 }
             };
             // A fixed number of lives is one batch; "auto" stops at the first boundary where the
-            // candidate's statistics meet the target (module docs).
-            let boundaries: Vec<usize> = match p.auto {
-                Some(_) => auto_boundaries(p.lives).collect(),
-                None => vec![p.lives],
-            };
+            // candidate's statistics meet the target (module docs). A stratified batch runs the
+            // lives its pool samples and is weighted by the pool of lives 0..k.
             let mut outcomes: Vec<StormOutcome> = Vec::new();
             let mut c = None;
-            for k in boundaries {
-                let indices: Vec<usize> = match &sample {
-                    Some((sampled, _)) => sampled.clone(),
-                    None => (outcomes.len()..k).collect(),
+            for (b, &k) in boundaries.iter().enumerate() {
+                let (indices, est): (Vec<usize>, Option<&TwoPhase>) = match &mut sample {
+                    Some(s) => {
+                        let (indices, est) = s.batch(b, &boundaries);
+                        (indices.clone(), Some(est))
+                    }
+                    None => ((outcomes.len()..k).collect(), None),
                 };
                 let lives = run_lives(&case, &design.life, design.seed, &indices, &|_, _| life())
                     .map_err(|source| SizeError::Run { width_m: w, source })?;
@@ -196,7 +200,7 @@ impl<'a> Sizer<'a> {
                     return Err(SizeError::Stopped { width_m: w });
                 }
                 outcomes.extend(lives.into_iter().map(|(_, o)| o));
-                let mut at_k = of(&outcomes);
+                let mut at_k = of(&outcomes, est);
                 at_k.precision = p.auto.map(|auto| at_k.judge(&auto, p.lives));
                 let met = at_k.precision.is_none_or(|q| q.met);
                 c = Some(at_k);
@@ -225,5 +229,38 @@ impl<'a> Sizer<'a> {
             (design.failure_limit_m(c.width_m), checks)
         };
         Ok(SizeReport::new(p, design, (self.sc.structure(), self.sc.waves.as_ref()), &sizing, goda, &extra))
+    }
+}
+
+/// A stratified search's sample: its strata, and batch after batch the pool of the lives
+/// 0..k and the lives it simulates, drawn when a width first needs the batch and kept for the
+/// other widths (the same lives at every width).
+struct Sample<'c> {
+    case: StormCase<'c>,
+    design: &'c DesignParams,
+    strata: Strata,
+    pool: Pool,
+    /// Per batch drawn: the lives it simulates, and the estimator of the pool up to its end.
+    drawn: Vec<(Vec<usize>, TwoPhase)>,
+}
+
+impl<'c> Sample<'c> {
+    fn new(case: StormCase<'c>, design: &'c DesignParams) -> Self {
+        let strata = Strata::pilot(&case, &design.life, design.seed);
+        Sample { case, design, strata, pool: Pool::default(), drawn: Vec::new() }
+    }
+
+    /// Batch `b` (lives `boundaries[b - 1]..boundaries[b]`, from 0 for the first), the batches
+    /// before it drawn first.
+    fn batch(&mut self, b: usize, boundaries: &[usize]) -> &(Vec<usize>, TwoPhase) {
+        while self.drawn.len() <= b {
+            let d = self.drawn.len();
+            let start = if d == 0 { 0 } else { boundaries[d - 1] };
+            let next = Pool::of(&self.case, &self.design.life, self.design.seed, &self.strata, start..boundaries[d]);
+            let indices = next.indices();
+            self.pool.append(next);
+            self.drawn.push((indices, self.pool.estimator(&self.strata)));
+        }
+        &self.drawn[b]
     }
 }
