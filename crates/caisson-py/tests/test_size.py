@@ -41,6 +41,23 @@ def test_size_is_caisson_size_bit_for_bit(tmp_path):
     assert caisson.size(caisson.Scenario.from_toml(p)) == got
 
 
+def test_a_stratified_auto_size_is_the_clis(tmp_path):
+    """`[design] sampling = "stratified"` with `[size] lives = "auto"`: caisson.size gives the CLI's
+    size.json, each candidate with its verdict (the rule read on the weighted estimates)."""
+    sc = caisson.Scenario.from_toml(short_size_toml(tmp_path)).replace(
+        design={"sampling": "stratified"},
+        size={"lives": "auto", "target_relative_error": 0.2, "max_lives": 3000},
+    )
+    p = tmp_path / "stratified_auto.toml"
+    p.write_text(sc.to_toml())
+    want = cli_json("size", p, "--threads", "2")
+    got = caisson.size(caisson.Scenario.from_toml(p), threads=2)
+    n = assert_same_json(got.report, want)
+    assert n > 100
+    verdicts = [c["precision"] for c in want["candidates"]]
+    assert len(verdicts) >= 4 and all(v["lives"] % 500 == 0 or v["lives"] == 3000 for v in verdicts), verdicts
+
+
 def test_size_refuses_a_scenario_without_size_as_the_cli_does(tmp_path):
     p = EXAMPLES / "design_breakwater.toml"
     refused = cli("size", p, check=False)
