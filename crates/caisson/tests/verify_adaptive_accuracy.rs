@@ -573,6 +573,31 @@ duration_s = {d}
 ///   against 0.81 ms. −2.25 % at the default tolerance, −1.21 % at 1/10, +0.09 % at 1/100;
 ///   −1.26 % at dt_max/5; exact steps off −1.21 %, −0.16 %, +0.08 %, −1.21 %.
 ///
+/// Issue 34 item 4, results version 28 (the exact step's error estimate with the velocity over ω_x:
+/// module docs of `caisson::dynamics::exact`): each step of cases 16 and 22 integrated again from
+/// its start by fixed steps of 2.5e-7 s (its true local error), against the error estimate. The
+/// exact sticking steps' estimate (R's interpolation in the middle) was within 30 % of the true
+/// error of the end's displacement, but the true velocity error over ω_x was 10 and 5 times it at
+/// dt_max/8 and dt_max/4 (2/(ω_x h): a force error through the step's middle moves the velocity by
+/// 2/h times the displacement), and in the rocking phases of both cases the exact steps left the
+/// most of that error (case 22 up to 0.0556 s, the Euclidean norm of the six: 3.1e-7 m summed over
+/// 23 full-contact exact steps, 1.2e-7 m over 24 partial ones, 2.4e-7 m over 69 Newmark steps in
+/// partial contact). Case 16 met: sliding +0.71 % → −0.21 %, peak +1.27 % → +0.02 % (at tolerances
+/// 2.5e-9 to 5e-11 m within 0.27 %), for more steps on these undamped rocking cases (case 16 739 →
+/// 1 569, case 22 911 → 1 396; design_500 0.26 % fewer instructions). Case 22 (37 springs,
+/// undamped, sliding 39 µm) still beyond the 1 µm floor (+1.60 µm → +1.99 µm) and a knife's edge:
+/// the converged run is converged (fixed steps of 6.25e-6, 3.125e-6 and 1.5625e-6 s: 39.3716,
+/// 39.3730, 39.3732 µm), but adaptive stepping at tolerances from 5e-9 to 5e-10 m gives 41.36,
+/// 41.39, 41.32, 41.28 µm, and 39.40 µm at 5e-11 m (before: 40.97 µm at 5e-9 m, 39.44 µm at 5e-10
+/// m): two branches, not a convergence. The branch is a slip of one toe spring at 0.2550-0.2556 s
+/// (0.44 µm) in the converged run that the adaptive run does not have, then the last slip episode
+/// (0.265-0.270 s) 9.2 µm against 11.1 µm. The state's difference before it is not the adaptive
+/// steps' own: it grows from 4e-7 to 1.7e-6 m (the Euclidean norm of u_x, u_y, θ B/2 and their
+/// rates over ω_x) from 0.228 to 0.234 s, a sequence of touch-downs of heel springs, while fixed
+/// steps of 6.25e-6 s from the adaptive state at 0.2279 s meet the adaptive one at 0.2349 s within
+/// 6e-9 m (its rates 2.5e-5 m/s): the touch-downs amplify the difference carried into them fourfold
+/// in 6 ms (and the slip episode at 0.057 s sixfold before the fix). Held at one miss.
+///
 /// Undamped rocking with friction: the answers jump between branches as the tolerance shrinks
 /// (not monotone in it, with the exact steps on or off), as on a knife's edge. The exact steps
 /// make all three worse at the default tolerance (exact steps off: +0.19 %, −1.21 %, +5.9 %) but
@@ -625,10 +650,11 @@ fn random_family_meets_converged_fixed_steps() {
 
 /// The family's size, the cases whose converged run rotates beyond the model's validity
 /// (`ROCKING_LIMIT_RAD`, 0.01 rad: cases 28 and 35), and the cases held to the bound that are
-/// beyond it (cases 16 and 22 of the 38 held, results version 27), measured (the ratchet).
+/// beyond it (case 22 of the 38 held, the knife's edge above; case 16 too before results version
+/// 28), measured (the ratchet).
 const FAMILY_CASES: usize = 40;
 const FAMILY_OUTSIDE: usize = 2;
-const FAMILY_MISSES: usize = 2;
+const FAMILY_MISSES: usize = 1;
 
 /// One committed step of a traced run: time, whether it was an exact sticking step (no Newton
 /// iteration), u = (u_x, u_y, θ), the least normal force of the springs, N, the least friction

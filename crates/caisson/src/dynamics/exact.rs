@@ -39,7 +39,19 @@
 //! the middle y(h/2) follows exactly from the same interpolated force (the blocks of the
 //! exponential for h/2), R there against its interpolation there, δR, is a force through
 //! σ = 0, h/2, h vanishing at the ends, which moves the end by δR times the middle value's
-//! weights (the largest of the u_x, u_y and θ B/2 rows, m). The load's own interpolation error
+//! weights (the largest of the u_x, u_y and θ B/2 rows, m, and of their rates over ω_x = 2π/T_x,
+//! `Model::natural_period_s`: results version 28). A force error through the middle of a step
+//! moves the end's velocity by about 2/h times its displacement, and a velocity error δv
+//! becomes a displacement of amplitude δv/ω a quarter period later, so that the end's
+//! displacement alone saw 1/5 to 1/10 of the error a step of dt_max/4 to dt_max/8 left:
+//! measured on the random family of `tests/verify_adaptive_accuracy.rs` (case 22, every exact
+//! step also integrated from its start by fixed steps of 2.5e-7 s) the estimate was within 30 %
+//! of the true error of the end's displacement and the true velocity error over ω_x was 10 and
+//! 5 times it (2/(ω_x h)); summed over the rocking phases of case 16 (6 springs, undamped,
+//! lifted and re-contacting), that left the state 1e-7 m and 1e-4 m/s off the converged run at
+//! its main slip, and its peak 1.27 % over it; now 0.02 % (design_500: 3 267 068 387 →
+//! 3 258 499 253 instructions, E|S| moved by 8e-10 m; the 15-wave test, under `seed-2011`,
+//! takes no exact step). The load's own interpolation error
 //! is not held to the tolerance, only guarded (results version 23, [`LOAD_GUARD`]): through the
 //! previous step's start, a fourth point of the load is known without evaluating it (the start of
 //! the step before that one, or its middle), the cubic through the four departs from the
@@ -142,6 +154,9 @@ pub(super) struct Propagator {
     /// The largest of the u_x, u_y and θ rows of each column of the middle value's weights
     /// (`middle[1]`): a bound of the load guard's deviation without the rows.
     middle_max: [f64; 3],
+    /// The error estimate's weights of R's departure from its interpolation in the middle: of
+    /// u_x, u_y and their rates over ω_x, m/N, and of θ and its rate over ω_x, rad/N.
+    r_weight: [f64; 2],
     /// e^{hA/2}, column by column: to the step's middle.
     half_e0: [[f64; 6]; 6],
     /// The weights of c_0, c_1 and c_2 (g = c_0 + c_1 σ + c_2 σ²) at σ = h/2.
@@ -398,7 +413,29 @@ impl Propagator {
             std::array::from_fn(|i| 2.0 * e(2, i, 0) / h2),
         ];
         let middle_max = middle[1].map(|w| w[0].abs().max(w[1].abs()).max(w[2].abs()));
-        Some(Propagator { e0, before, middle, hermite_x, middle_max, half_e0, half_c, quarters, minv, k_l, c_l })
+        // The error estimate's weights of R's departure in the middle (module docs, the error
+        // estimate): the end's displacement, and its velocity over ω_x (M and K_x are in the
+        // cache's key), the amplitude of the displacement that a velocity error becomes.
+        let w = &middle[1][0];
+        let inv_omega = model.natural_period_s() / (2.0 * std::f64::consts::PI);
+        let r_weight = [
+            w[0].abs().max(w[1].abs()).max(inv_omega * w[3].abs().max(w[4].abs())),
+            w[2].abs().max(inv_omega * w[5].abs()),
+        ];
+        Some(Propagator {
+            e0,
+            before,
+            middle,
+            hermite_x,
+            middle_max,
+            r_weight,
+            half_e0,
+            half_c,
+            quarters,
+            minv,
+            k_l,
+            c_l,
+        })
     }
 }
 
@@ -700,8 +737,7 @@ impl Simulation {
         // The error estimate: R in the middle against its interpolation there, as a force through
         // σ = 0, h/2, h that is 0 at the ends, moves the step's end by the middle's weights.
         let dr = rem.at(&qm) - r_mid;
-        let w = &pr.middle[1][0];
-        let err = dr.abs() * w[0].abs().max(w[1].abs()).max(w[2].abs() * 0.5 * self.model.width_m);
+        let err = dr.abs() * pr.r_weight[0].max(pr.r_weight[1] * 0.5 * self.model.width_m);
         // Through the previous step's start, the load's own interpolation guarded too.
         let err = match (third, prev) {
             (Third::Before(pb), Some(p)) => {
