@@ -92,12 +92,15 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
             cuts[1] = t_star;
         }
     }
+    // g at the cuts, each taken once (t* ends one bracket and starts the other).
+    let mut at_cuts = [None; 3];
+    let mut g_cut = |i: usize| *at_cuts[i].get_or_insert_with(|| g(cuts[i]));
     for k in 0..2 {
         let (mut a, mut b) = (cuts[k], cuts[k + 1]);
         if b <= a {
             continue;
         }
-        let (ga, gb) = (g(a), g(b));
+        let (ga, gb) = (g_cut(k), g_cut(k + 1));
         if ga * gb >= 0.0 || ga.is_nan() || gb.is_nan() {
             continue;
         }
@@ -145,7 +148,9 @@ fn pieces(event: &WaveEvent, out: &mut Vec<Piece>) -> Option<()> {
     if !(tr > 0.0 && 2.0 * tr <= half) {
         return None;
     }
-    let mut cuts = vec![0.0, tr, 2.0 * tr, half];
+    // The triangle's corners, T/2 and at most two crossings per axis and side.
+    let mut cuts = Vec::with_capacity(12);
+    cuts.extend([0.0, tr, 2.0 * tr, half]);
     let axes = [
         (event.impact.x, event.quasi.x, event.impact.x.fx_n, event.quasi.x.fx_n),
         (event.impact.y, event.quasi.y, event.impact.y.fy_n, event.quasi.y.fy_n),
