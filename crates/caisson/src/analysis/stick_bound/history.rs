@@ -100,11 +100,18 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
         if b <= a {
             continue;
         }
-        let (ga, gb) = (g_cut(k), g_cut(k + 1));
-        if ga * gb >= 0.0 || ga.is_nan() || gb.is_nan() {
+        // A bracket from a zero of g (the rising side's start) holds no crossing inside it.
+        let ga = g_cut(k);
+        if ga == 0.0 || ga.is_nan() {
             continue;
         }
-        let mut t = 0.5 * (a + b);
+        let gb = g_cut(k + 1);
+        if ga * gb >= 0.0 || gb.is_nan() {
+            continue;
+        }
+        // Newton's iteration from the secant's root (g is convex or concave on the bracket).
+        let secant = a - ga * (b - a) / (gb - ga);
+        let mut t = if secant > a && secant < b { secant } else { 0.5 * (a + b) };
         for _ in 0..100 {
             // g and g' at t from one sine and cosine (the same bits as `g(t)`, `dg(t)`).
             let (sin, cos) = (omega * t).sin_cos();
