@@ -100,7 +100,8 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
         if b <= a {
             continue;
         }
-        // A bracket from a zero of g (the rising side's start) holds no crossing inside it.
+        // A bracket from a zero of g (the rising side's start: g monotone between the cuts) holds
+        // no crossing inside it and is skipped, as ga·gb ≥ 0 skips it, without its far end.
         let ga = g_cut(k);
         if ga == 0.0 || ga.is_nan() {
             continue;
@@ -113,7 +114,7 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
         let secant = a - ga * (b - a) / (gb - ga);
         let mut t = if secant > a && secant < b { secant } else { 0.5 * (a + b) };
         for _ in 0..100 {
-            // g and g' at t from one sine and cosine (the same bits as `g(t)`, `dg(t)`).
+            // g and g' at t (the same bits as `g(t)` and its derivative's closed form).
             let (sin, cos) = (omega * t).sin_cos();
             let gt = f_i * (c0 + slope * t) - f_q * sin;
             if gt == 0.0 {
