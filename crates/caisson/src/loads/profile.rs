@@ -60,21 +60,7 @@ impl Profile {
     /// Pressure at depth z: linear between points; outside the first/last point, the end value
     /// is held (the callers clip the profile to the wetted face first).
     pub fn at(&self, z: f64) -> f64 {
-        let pts = self.points();
-        match pts.len() {
-            0 => 0.0,
-            _ if z <= pts[0].0 => pts[0].1,
-            n if z >= pts[n - 1].0 => pts[n - 1].1,
-            _ => {
-                let j = pts.partition_point(|q| q.0 <= z);
-                let (a, b) = (pts[j - 1], pts[j]);
-                if b.0 == a.0 {
-                    b.1
-                } else {
-                    a.1 + (b.1 - a.1) * (z - a.0) / (b.0 - a.0)
-                }
-            }
-        }
+        at_points(self.points(), z)
     }
 
     /// The same pressure restricted to z_top ≤ z ≤ z_bottom (values held beyond the ends, so
@@ -96,21 +82,51 @@ impl Profile {
 
     /// Force ∫ p dz, N/m (positive shoreward).
     pub fn force(&self) -> f64 {
-        self.points().windows(2).map(|w| (w[1].0 - w[0].0) * 0.5 * (w[0].1 + w[1].1)).sum()
+        force_of(self.points())
     }
 
     /// Moment ∫ p (z_ref − z) dz about the depth `z_ref` (the base), N·m/m.
     pub fn moment_about(&self, z_ref: f64) -> f64 {
-        self.points()
-            .windows(2)
-            .map(|w| {
-                let (za, pa) = w[0];
-                let (zb, pb) = w[1];
-                let (ya, yb) = (z_ref - za, z_ref - zb);
-                (zb - za) * (pa * (2.0 * ya + yb) + pb * (ya + 2.0 * yb)) / 6.0
-            })
-            .sum()
+        moment_of(self.points(), z_ref)
     }
+}
+
+/// [`Profile::at`] on the points `pts` (sorted by z).
+#[inline]
+pub(crate) fn at_points(pts: &[(f64, f64)], z: f64) -> f64 {
+    match pts.len() {
+        0 => 0.0,
+        _ if z <= pts[0].0 => pts[0].1,
+        n if z >= pts[n - 1].0 => pts[n - 1].1,
+        _ => {
+            let j = pts.partition_point(|q| q.0 <= z);
+            let (a, b) = (pts[j - 1], pts[j]);
+            if b.0 == a.0 {
+                b.1
+            } else {
+                a.1 + (b.1 - a.1) * (z - a.0) / (b.0 - a.0)
+            }
+        }
+    }
+}
+
+/// [`Profile::force`] on the points `pts`.
+#[inline]
+pub(crate) fn force_of(pts: &[(f64, f64)]) -> f64 {
+    pts.windows(2).map(|w| (w[1].0 - w[0].0) * 0.5 * (w[0].1 + w[1].1)).sum()
+}
+
+/// [`Profile::moment_about`] on the points `pts`.
+#[inline]
+pub(crate) fn moment_of(pts: &[(f64, f64)], z_ref: f64) -> f64 {
+    pts.windows(2)
+        .map(|w| {
+            let (za, pa) = w[0];
+            let (zb, pb) = w[1];
+            let (ya, yb) = (z_ref - za, z_ref - zb);
+            (zb - za) * (pa * (2.0 * ya + yb) + pb * (ya + 2.0 * yb)) / 6.0
+        })
+        .sum()
 }
 
 #[cfg(test)]

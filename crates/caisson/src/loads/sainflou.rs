@@ -33,7 +33,7 @@
 //! Signs: the trough results are stored with their physical signs (seaward force < 0, suction
 //! < 0). The time histories use their magnitudes as F_qs− (docs/model.md §10 item 16).
 
-use super::profile::Profile;
+use super::profile::{at_points, force_of, moment_of, Profile};
 use crate::G_M_PER_S2;
 use std::f64::consts::PI;
 
@@ -151,9 +151,55 @@ impl SainflouPeriod {
 
     /// The trough's loads of [`Self::at`] for the incident height `height_m`, bit for bit,
     /// without the crest (what a wave's load event takes from Sainflou).
+    ///
+    /// Where the trough's profile keeps its three points (finite, in order) and its clipped
+    /// profile its every point, the clipped profile's points are taken on the stack, as
+    /// [`Profile::clipped`] would take them, and integrated by the same functions (the same bits,
+    /// without building the two profiles: the test `trough_alone_is_at_bit_for_bit`); otherwise
+    /// through [`Profile`].
     pub fn trough(&self, height_m: f64) -> SainflouTrough {
         let (h0, pb) = self.clapotis(height_m);
-        self.trough_of(height_m, h0, pb).loads
+        let i = &self.input;
+        let (h, hp) = (i.depth_m, i.base_depth_m);
+        let gw = i.rho_w * G_M_PER_S2;
+        let zt = height_m - h0;
+        // `trough_of`'s points and the top of its clipped profile.
+        let full = if zt >= 0.0 {
+            [(0.0, 0.0), (zt, -gw * zt), (h, -pb)]
+        } else {
+            let p0 = (gw * h - pb) * (-zt) / (h - zt);
+            [(zt, 0.0), (0.0, p0), (h, -pb)]
+        };
+        let top = if zt >= 0.0 { 0.0 } else { zt.max(-i.crest_freeboard_m) };
+        let kept = full.iter().all(|&(z, p)| z.is_finite() && p.is_finite())
+            && full[0].0 <= full[1].0
+            && full[1].0 <= full[2].0;
+        if !(kept && hp > top && top.is_finite() && hp.is_finite()) {
+            return self.trough_of(height_m, h0, pb).loads;
+        }
+        let (p_top, pt_base) = (at_points(&full, top), at_points(&full, hp));
+        if !(p_top.is_finite() && pt_base.is_finite()) {
+            return self.trough_of(height_m, h0, pb).loads;
+        }
+        // `Profile::clipped(top, hp)`: every push kept (finite, in order, at most 5 points).
+        let mut pts = [(0.0, 0.0); 5];
+        pts[0] = (top, p_top);
+        let mut n = 1;
+        for &(z, p) in &full {
+            if z > top && z < hp {
+                pts[n] = (z, p);
+                n += 1;
+            }
+        }
+        pts[n] = (hp, pt_base);
+        let pts = &pts[..n + 1];
+        let (tf, tm) = (force_of(pts), moment_of(pts, hp));
+        SainflouTrough {
+            force_n_per_m: tf,
+            lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
+            suction_n_per_m: 0.5 * pt_base * i.width_m,
+            suction_from_heel_m: 2.0 * i.width_m / 3.0,
+        }
     }
 
     /// h0 and p_b: [`clapotis_quantities`] with the height-independent tanh and cosh.
@@ -282,6 +328,42 @@ mod tests {
         let expected = -1000.0 * G_M_PER_S2 * 0.04 / 2.0;
         assert!((r.trough_force_n_per_m - expected).abs() < 1e-12 * expected.abs());
         assert!((r.trough_base_pressure_pa + 1000.0 * G_M_PER_S2 * 0.2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn trough_alone_is_at_bit_for_bit() {
+        // The trough's fast path (points on the stack) against `at` (through `Profile`), bit for
+        // bit: heights from 0 to past breaking, bases above, at and below the trough and at the
+        // seabed, crests below and above the trough's top, and a depth of 0 (the fallback).
+        let mut cases = 0;
+        for depth in [0.0_f64, 0.4, 1.14, 10.0] {
+            for base_share in [0.0, 0.2, 0.7, 1.0, 1.3] {
+                for freeboard in [0.0, 0.05, 0.32, 5.0] {
+                    let l = wavelength_m(3.04, depth.max(0.1));
+                    let input = SainflouInput {
+                        height_m: 0.0,
+                        wavelength_m: l,
+                        depth_m: depth,
+                        base_depth_m: base_share * depth,
+                        crest_freeboard_m: freeboard,
+                        width_m: 0.78,
+                        rho_w: 1025.0,
+                    };
+                    let period = SainflouPeriod::new(&input);
+                    for k in 0..=60 {
+                        let hw = 0.05 * k as f64 * depth.max(0.1);
+                        let (fast, full) = (period.trough(hw), period.at(hw));
+                        let bits = |x: f64| x.to_bits();
+                        assert_eq!(bits(fast.force_n_per_m), bits(full.trough_force_n_per_m), "{input:?} {hw}");
+                        assert_eq!(bits(fast.lever_m), bits(full.trough_lever_m), "{input:?} {hw}");
+                        assert_eq!(bits(fast.suction_n_per_m), bits(full.suction_uplift_n_per_m), "{input:?} {hw}");
+                        assert_eq!(bits(fast.suction_from_heel_m), bits(full.suction_from_heel_m), "{input:?} {hw}");
+                        cases += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(cases, 4 * 5 * 4 * 61);
     }
 
     #[test]

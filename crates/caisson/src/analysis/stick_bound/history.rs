@@ -84,7 +84,6 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
         return;
     }
     let g = |t: f64| f_i * (c0 + slope * t) - f_q * (omega * t).sin();
-    let dg = |t: f64| f_i * slope - f_q * omega * (omega * t).cos();
     let x = f_i * slope / (f_q * omega);
     let mut cuts = [lo, hi, hi];
     if x.abs() < 1.0 {
@@ -93,18 +92,31 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
             cuts[1] = t_star;
         }
     }
+    // g at the cuts, each taken once (t* ends one bracket and starts the other).
+    let mut at_cuts = [None; 3];
+    let mut g_cut = |i: usize| *at_cuts[i].get_or_insert_with(|| g(cuts[i]));
     for k in 0..2 {
         let (mut a, mut b) = (cuts[k], cuts[k + 1]);
         if b <= a {
             continue;
         }
-        let (ga, gb) = (g(a), g(b));
-        if ga * gb >= 0.0 || ga.is_nan() || gb.is_nan() {
+        // A bracket from a zero of g (the rising side's start: g monotone between the cuts) holds
+        // no crossing inside it and is skipped, as ga·gb ≥ 0 skips it, without its far end.
+        let ga = g_cut(k);
+        if ga == 0.0 || ga.is_nan() {
             continue;
         }
-        let mut t = 0.5 * (a + b);
+        let gb = g_cut(k + 1);
+        if ga * gb >= 0.0 || gb.is_nan() {
+            continue;
+        }
+        // Newton's iteration from the secant's root (g is convex or concave on the bracket).
+        let secant = a - ga * (b - a) / (gb - ga);
+        let mut t = if secant > a && secant < b { secant } else { 0.5 * (a + b) };
         for _ in 0..100 {
-            let gt = g(t);
+            // g and g' at t (the same bits as `g(t)` and its derivative's closed form).
+            let (sin, cos) = (omega * t).sin_cos();
+            let gt = f_i * (c0 + slope * t) - f_q * sin;
             if gt == 0.0 {
                 break;
             }
@@ -113,7 +125,7 @@ fn crossings(f_i: f64, f_q: f64, (c0, slope): (f64, f64), omega: f64, (lo, hi): 
             } else {
                 b = t;
             }
-            let d = dg(t);
+            let d = f_i * slope - f_q * omega * cos;
             let newton = t - gt / d;
             t = if d != 0.0 && newton > a && newton < b { newton } else { 0.5 * (a + b) };
             if b - a <= 1e-13 * hi || (gt / d).abs() <= 1e-14 * hi {
@@ -144,7 +156,9 @@ fn pieces(event: &WaveEvent, out: &mut Vec<Piece>) -> Option<()> {
     if !(tr > 0.0 && 2.0 * tr <= half) {
         return None;
     }
-    let mut cuts = vec![0.0, tr, 2.0 * tr, half];
+    // The triangle's corners, T/2 and at most two crossings per axis and side.
+    let mut cuts = Vec::with_capacity(12);
+    cuts.extend([0.0, tr, 2.0 * tr, half]);
     let axes = [
         (event.impact.x, event.quasi.x, event.impact.x.fx_n, event.quasi.x.fx_n),
         (event.impact.y, event.quasi.y, event.impact.y.fy_n, event.quasi.y.fy_n),
@@ -266,6 +280,49 @@ impl ThetaModes {
     }
 }
 
+/// The factors of θ at an instant s of a piece: e^{iΩs}, e^{λ_m s} and its modulus e^{Re λ_m s}
+/// (the bound's decay), each the same bits as computed alone.
+#[derive(Debug, Clone, Copy)]
+struct Factors {
+    rot: C64,
+    exp: [C64; 6],
+    decay: [f64; 6],
+}
+
+impl Factors {
+    fn at(md: &ThetaModes, omega: f64, s: f64) -> Self {
+        let mut f = Factors { rot: C64::from_polar(1.0, omega * s), exp: [C64::new(0.0, 0.0); 6], decay: [0.0; 6] };
+        for m in 0..md.n {
+            let l = md.lambda[m];
+            let x = l.re * s;
+            let r = x.exp();
+            f.decay[m] = r;
+            // `ThetaModes::exp`: a complex mode's e^{λs} is `Complex::exp`, from_polar(e^{Re λs},
+            // Im λs) where Re λs is finite.
+            f.exp[m] = if md.real[m] {
+                C64::new(r, 0.0)
+            } else if x.is_finite() {
+                C64::from_polar(r, l.im * s)
+            } else {
+                md.exp(m, s)
+            };
+        }
+        f
+    }
+}
+
+/// A wave's pieces with the factors at their ends ([`Factors`] at s = len), shared by every
+/// functional built from the same eigenvalues (the rotation, the toe's and the heel's pressures).
+struct PieceEnds {
+    ends: Vec<Factors>,
+}
+
+impl PieceEnds {
+    fn new(md: &ThetaModes, ps: &[Piece]) -> Self {
+        PieceEnds { ends: ps.iter().map(|p| Factors::at(md, p.omega, p.len)).collect() }
+    }
+}
+
 /// θ on one piece (module docs): A + B s + Re(G e^{iΩs}) + Re Σ_m E_m e^{λ_m s}, and |E_m|.
 #[derive(Debug, Clone, Copy)]
 struct PieceTheta {
@@ -280,11 +337,12 @@ struct PieceTheta {
 }
 
 impl PieceTheta {
-    /// The piece `p` from the modal coordinates `z` at its start, which are moved to its end.
-    fn new(md: &ThetaModes, p: &Piece, z: &mut [C64; 6]) -> Self {
+    /// The piece `p` from the modal coordinates `z` at its start, which are moved to its end
+    /// (`end`: the factors at s = len).
+    fn new(md: &ThetaModes, p: &Piece, end: &Factors, z: &mut [C64; 6]) -> Self {
         let zero = C64::new(0.0, 0.0);
         let iw = C64::new(0.0, p.omega);
-        let (end_rot, len) = (C64::from_polar(1.0, p.omega * p.len), p.len);
+        let (end_rot, len) = (end.rot, p.len);
         let harmonic = p.h.iter().any(|h| *h != zero);
         let mut th =
             PieceTheta { len, a: 0.0, b: 0.0, g: zero, g_abs: 0.0, omega: p.omega, e: [zero; 6], e_abs: [0.0; 6] };
@@ -307,36 +365,43 @@ impl PieceTheta {
             let e = *zm - (constant + hp + hm);
             th.e[m] = e;
             th.e_abs[m] = modulus(e);
-            *zm = constant + linear * len + hp * end_rot + hm * end_rot.conj() + e * md.exp(m, len);
+            *zm = constant + linear * len + hp * end_rot + hm * end_rot.conj() + e * end.exp[m];
         }
         th.g_abs = modulus(th.g);
         th
     }
 
-    fn value(&self, md: &ThetaModes, s: f64) -> f64 {
+    /// θ at s with the factors `f` at s ([`Factors::at`]).
+    fn value(&self, md: &ThetaModes, s: f64, f: &Factors) -> f64 {
         let mut v = self.a + self.b * s;
         if self.g_abs != 0.0 {
-            v += (self.g * C64::from_polar(1.0, self.omega * s)).re;
+            v += (self.g * f.rot).re;
         }
         for m in 0..md.n {
             if self.e_abs[m] != 0.0 {
-                v +=
-                    if md.real[m] { self.e[m].re * (md.lambda[m].re * s).exp() } else { (self.e[m] * md.exp(m, s)).re };
+                v += if md.real[m] { self.e[m].re * f.exp[m].re } else { (self.e[m] * f.exp[m]).re };
             }
         }
         v
     }
 
-    /// A bound of `measure`(θ) on [s1, s2] from its ends' values `f1`, `f2` (module docs).
-    fn bound(&self, md: &ThetaModes, (s1, s2): (f64, f64), (f1, f2): (f64, f64), measure: Measure) -> f64 {
+    /// A bound of `measure`(θ) on [s1, s2] from its ends' values `f1`, `f2` (module docs), with
+    /// e^{Re λ_m s1} `decay1` ([`Factors`]).
+    fn bound(
+        &self,
+        md: &ThetaModes,
+        (s1, s2): (f64, f64),
+        (f1, f2): (f64, f64),
+        decay1: &[f64; 6],
+        measure: Measure,
+    ) -> f64 {
         let (g, w) = (self.g_abs, self.omega);
         let (mut k1, mut k2, mut k0) = (self.b.abs() + g * w, g * w * w, g);
-        for m in 0..md.n {
-            if self.e_abs[m] == 0.0 {
+        for ((&e_abs, &decay), &n) in self.e_abs.iter().zip(decay1).zip(&md.size).take(md.n) {
+            if e_abs == 0.0 {
                 continue;
             }
-            let env = self.e_abs[m] * (md.lambda[m].re * s1).exp();
-            let n = md.size[m];
+            let env = e_abs * decay;
             k0 += env;
             k1 += env * n;
             k2 += env * n * n;
@@ -370,33 +435,42 @@ impl Measure {
 /// A bound on the largest `measure` of the functional of `md` over the pieces `ps` of a wave's
 /// load from rest (module docs), within [`TOLERANCE`] of the largest evaluated unless it is at
 /// most `floor` (then only shown to be at most that).
-fn largest(md: &ThetaModes, ps: &[Piece], floor: f64, measure: Measure) -> f64 {
+///
+/// `ends` are the factors at the pieces' ends ([`PieceEnds::new`] of the same eigenvalues): θ at a
+/// piece's start and end, and the bound's decay at its start, are read from them and from the
+/// factors at s = 0 rather than evaluated again (the same bits); only the midpoints take new
+/// exponentials, and an interval keeps e^{Re λ_m s} at its start for its bound.
+fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, floor: f64, measure: Measure) -> f64 {
     let mut z = [C64::new(0.0, 0.0); 6];
-    let thetas: Vec<PieceTheta> = ps.iter().map(|p| PieceTheta::new(md, p, &mut z)).collect();
+    let thetas: Vec<PieceTheta> =
+        ps.iter().zip(&ends.ends).map(|(p, end)| PieceTheta::new(md, p, end, &mut z)).collect();
     let mut lo = f64::NEG_INFINITY;
-    let mut open: Vec<(usize, f64, f64, f64, f64)> = Vec::with_capacity(64);
+    let mut open: Vec<(usize, f64, f64, f64, f64, [f64; 6])> = Vec::with_capacity(64);
     let mut evaluations = 0;
+    // The factors at s = 0 are the same on every piece (Ω·0 = 0).
+    let start = Factors::at(md, 1.0, 0.0);
     for (i, th) in thetas.iter().enumerate() {
-        let (f1, f2) = (th.value(md, 0.0), th.value(md, th.len));
+        let (f1, f2) = (th.value(md, 0.0, &start), th.value(md, th.len, &ends.ends[i]));
         evaluations += 2;
         lo = lo.max(measure.of(f1)).max(measure.of(f2));
-        open.push((i, 0.0, th.len, f1, f2));
+        open.push((i, 0.0, th.len, f1, f2, start.decay));
     }
     let mut upper = f64::NEG_INFINITY;
-    while let Some((i, s1, s2, f1, f2)) = open.pop() {
+    while let Some((i, s1, s2, f1, f2, decay1)) = open.pop() {
         let th = &thetas[i];
-        let b = th.bound(md, (s1, s2), (f1, f2), measure);
+        let b = th.bound(md, (s1, s2), (f1, f2), &decay1, measure);
         let enough = floor.max(lo + TOLERANCE * lo.abs());
         if b <= enough || evaluations >= MAX_EVALUATIONS || s2 - s1 <= 1e-9 * th.len {
             upper = upper.max(b);
             continue;
         }
         let mid = 0.5 * (s1 + s2);
-        let fm = th.value(md, mid);
+        let at_mid = Factors::at(md, th.omega, mid);
+        let fm = th.value(md, mid, &at_mid);
         evaluations += 1;
         lo = lo.max(measure.of(fm));
-        open.push((i, s1, mid, f1, fm));
-        open.push((i, mid, s2, fm, f2));
+        open.push((i, s1, mid, f1, fm, decay1));
+        open.push((i, mid, s2, fm, f2, at_mid.decay));
     }
     upper + 1e-9 * upper.abs()
 }
@@ -408,7 +482,8 @@ impl StickBound {
     pub fn rotation_under_history_rad(&self, event: &WaveEvent, floor_rad: f64) -> Option<f64> {
         let mut ps = Vec::with_capacity(MAX_PIECES);
         pieces(event, &mut ps)?;
-        Some(largest(&self.modes.theta, &ps, floor_rad, Measure::Abs))
+        let ends = PieceEnds::new(&self.modes.theta, &ps);
+        Some(largest(&self.modes.theta, &ps, &ends, floor_rad, Measure::Abs))
     }
 
     /// A bound on the largest heel pressure of the all-sticking response to `event` over [0, T]
@@ -431,12 +506,14 @@ impl StickBound {
             return None;
         }
         let toe = md.normal.combined(v, &md.moment, -b);
-        if largest(&toe, &ps, (1.0 - TOE_RESERVE) * toe_rest, Measure::Down) >= (1.0 - TOE_RESERVE) * toe_rest {
+        // The toe's and the heel's functionals share their eigenvalues, so the pieces' ends.
+        let ends = PieceEnds::new(&toe, &ps);
+        if largest(&toe, &ps, &ends, (1.0 - TOE_RESERVE) * toe_rest, Measure::Down) >= (1.0 - TOE_RESERVE) * toe_rest {
             return None;
         }
         let heel_rest = self.heel_at_rest_pa(width_m, length_m);
         let heel = md.normal.combined(v, &md.moment, b);
-        Some(heel_rest + largest(&heel, &ps, floor_pa - heel_rest, Measure::Up))
+        Some(heel_rest + largest(&heel, &ps, &ends, floor_pa - heel_rest, Measure::Up))
     }
 
     /// The heel pressure at rest of the springs' resultant (W', N̄ Σ x_i) on a base `width_m` wide
