@@ -133,6 +133,8 @@ enum Verdict {
 struct Estimate {
     err_m: f64,
     per_unit_step: bool,
+    /// A sticking step whose estimate is a touch-down's (`seed-2011`), not Newmark's.
+    touch_down: bool,
 }
 
 impl Estimate {
@@ -350,12 +352,39 @@ impl Simulation {
             self.stats.rejected_steps += 1;
             let shrink = est.shrink(p.tolerance_m);
             ctl.landing = None;
-            return Verdict::Rejected((h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s));
+            let mut next = (h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s);
+            if est.touch_down {
+                if let Some(s) = self.before_touch_down(h, c, p.tolerance_m).filter(|&s| s >= p.dt_min_s) {
+                    next = s;
+                }
+            }
+            return Verdict::Rejected(next);
         }
         if err > p.tolerance_m {
             self.stats.forced_min_steps += 1;
         }
         Verdict::Accepted { ratio }
+    }
+
+    /// After a sticking try `c` of length `h` rejected for a touch-down's error (`seed-2011`: a
+    /// spring that touches down at the fraction λ_i takes u_x,n as its slip position, an error
+    /// λ_i |Δu_x| ≈ u̇_x τ_i, τ_i from the step's start to the touch, the same for any step that
+    /// holds the touch): the step that ends just short of the first touch whose error is over the
+    /// tolerance `tol_m` (θ (1 − EVENT_LEAD) h), so that the next step starts at it; `None` if
+    /// none is (the estimate was another spring's).
+    fn before_touch_down(&self, h: f64, c: &Converged, tol_m: f64) -> Option<f64> {
+        let (un, du) = (self.state.u, (c.u[0] - self.state.u[0]).abs());
+        let mut first = f64::INFINITY;
+        for &x in &self.model.x_m {
+            let (uy_start, uy_end) = (un[1] - un[2] * x, c.u[1] - c.u[2] * x);
+            if uy_start >= 0.0 && uy_end < 0.0 {
+                let lambda = uy_start / (uy_start - uy_end);
+                if lambda * du > tol_m {
+                    first = first.min(lambda);
+                }
+            }
+        }
+        first.is_finite().then_some(first * h * (1.0 - EVENT_LEAD))
     }
 
     /// The error estimate of the converged try `c` of length `h`: the local error, m, the
@@ -386,12 +415,12 @@ impl Simulation {
             // the step: grazing springs drove the steps to dt_min, accepted over the tolerance.
             let per_unit_m = newmark_m * (ctl.coherent_s / h);
             if per_unit_m >= slip_m {
-                Estimate { err_m: per_unit_m, per_unit_step: true }
+                Estimate { err_m: per_unit_m, per_unit_step: true, touch_down: false }
             } else {
-                Estimate { err_m: slip_m, per_unit_step: false }
+                Estimate { err_m: slip_m, per_unit_step: false, touch_down: !self.solver.locate_contact }
             }
         } else {
-            Estimate { err_m: newmark_m.max(slip_m), per_unit_step: false }
+            Estimate { err_m: newmark_m.max(slip_m), per_unit_step: false, touch_down: false }
         }
     }
 }

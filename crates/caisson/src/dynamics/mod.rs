@@ -47,7 +47,10 @@
 //! tolerance (docs/model.md §9.1, "Sticking phases per unit step"); a touch-down's error (the
 //! only slip position's error such a step can have) is once per event, held per step, e the
 //! larger of the two (scaled too, that one, ∝ h, did not shrink with the step: grazing springs
-//! of the 15-wave test drove the steps to dt_min, 16 of them accepted over the tolerance). There
+//! of the 15-wave test drove the steps to dt_min, 16 of them accepted over the tolerance). That
+//! error, about u̇_x times the time from the step's start to the touch, is the same for every
+//! step that holds the touch: a step rejected for it is retaken to end just short of the first
+//! touch over the tolerance (`before_touch_down`), not shortened by the estimate's ratio. There
 //! the response is the quasi-static path plus a vibration on the springs, and Newmark's error is a
 //! lag of that vibration's phase that every step adds with the same sign: held per step, the
 //! sum over a phase of hundreds of steps reached 100 tolerances (5e-7 m against a vibration of
