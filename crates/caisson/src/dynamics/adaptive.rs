@@ -126,12 +126,15 @@ enum Verdict {
 
 /// The error estimate of a converged Newmark try, m, and how it grows with the step: as h³ (the
 /// local error), or as h² where a step that ends with every spring in contact and sticking is
-/// held to the tolerance per `StepControl::coherent_s` of time (its local error times
-/// coherent_s/h: module docs of [`crate::dynamics`], "Adaptive stepping").
+/// held to the tolerance per `StepControl::coherent_s` of time (its Zienkiewicz-Xie estimate
+/// times coherent_s/h: module docs of [`crate::dynamics`], "Adaptive stepping"), unless a
+/// touch-down's error, held per step, is the larger.
 #[derive(Debug, Clone, Copy)]
 struct Estimate {
     err_m: f64,
     per_unit_step: bool,
+    /// A sticking step whose estimate is a touch-down's (`seed-2011`), not Newmark's.
+    touch_down: bool,
 }
 
 impl Estimate {
@@ -349,7 +352,13 @@ impl Simulation {
             self.stats.rejected_steps += 1;
             let shrink = est.shrink(p.tolerance_m);
             ctl.landing = None;
-            return Verdict::Rejected((h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s));
+            let mut next = (h * shrink.clamp(0.1, 0.9)).max(p.dt_min_s);
+            if est.touch_down {
+                if let Some(s) = self.before_touch_down(h, c, p.tolerance_m).filter(|&s| s >= p.dt_min_s) {
+                    next = s;
+                }
+            }
+            return Verdict::Rejected(next);
         }
         if err > p.tolerance_m {
             self.stats.forced_min_steps += 1;
@@ -357,17 +366,40 @@ impl Simulation {
         Verdict::Accepted { ratio }
     }
 
+    /// After a sticking try `c` of length `h` rejected for a touch-down's error (`seed-2011`: a
+    /// spring that touches down at the fraction λ_i takes u_x,n as its slip position, an error
+    /// λ_i |Δu_x| ≈ u̇_x τ_i, τ_i from the step's start to the touch, the same for any step that
+    /// holds the touch): the step that ends just short of the first touch whose error is over the
+    /// tolerance `tol_m` (θ (1 − EVENT_LEAD) h), so that the next step starts at it; `None` if
+    /// none is (the estimate was another spring's).
+    fn before_touch_down(&self, h: f64, c: &Converged, tol_m: f64) -> Option<f64> {
+        let (un, du) = (self.state.u, (c.u[0] - self.state.u[0]).abs());
+        let mut first = f64::INFINITY;
+        for &x in &self.model.x_m {
+            let (uy_start, uy_end) = (un[1] - un[2] * x, c.u[1] - c.u[2] * x);
+            if uy_start >= 0.0 && uy_end < 0.0 {
+                let lambda = uy_start / (uy_start - uy_end);
+                if lambda * du > tol_m {
+                    first = first.min(lambda);
+                }
+            }
+        }
+        first.is_finite().then_some(first * h * (1.0 - EVENT_LEAD))
+    }
+
     /// The error estimate of the converged try `c` of length `h`: the local error, m, the
     /// Zienkiewicz-Xie estimate of each row (θ as θ B/2) and the springs' slip positions'
     /// (`slip_error_m`); where every spring is in contact and sticks at the step's end and the
-    /// step is shorter than `coherent_s`, that times coherent_s/h, the error per unit step
+    /// step is shorter than `coherent_s`, the Zienkiewicz-Xie estimate times coherent_s/h, the
+    /// error per unit step, or, if larger, `slip_error_m`'s (there a touch-down's), per step
     /// ([`Estimate`]).
     #[inline(always)]
     fn error_estimate_m(&self, ctl: &StepControl, h: f64, c: &Converged) -> Estimate {
         let an = self.state.a;
         let da = [(c.a[0] - an[0]).abs(), (c.a[1] - an[1]).abs(), (c.a[2] - an[2]).abs() * ctl.half_b];
         let ux_err = ctl.c_err * h * h * da[0];
-        let err_m = (ctl.c_err * h * h * da[0].max(da[1]).max(da[2])).max(self.slip_error_m(h, c, ux_err));
+        let newmark_m = ctl.c_err * h * h * da[0].max(da[1]).max(da[2]);
+        let slip_m = self.slip_error_m(h, c, ux_err);
         // A sticking phase, whose Newmark error is the phase lag of its vibration: every spring
         // in contact and sticking at the step's end (the all-sticking iterate, or the general
         // one with none slipping and none lifted), or, without located contact (`seed-2011`),
@@ -377,9 +409,18 @@ impl Simulation {
         let sticking = self.fast.iterate.is_some()
             || (!self.trial_slips && (!self.solver.locate_contact || self.trial.iter().all(|r| r.normal_n > 0.0)));
         if sticking && h < ctl.coherent_s {
-            Estimate { err_m: err_m * (ctl.coherent_s / h), per_unit_step: true }
+            // Only Newmark's error is a lag that every step adds: in a sticking phase no spring
+            // slips, and what `slip_error_m` sees is a touch-down's (`seed-2011`), once per
+            // event, held per step. Scaled by coherent_s/h, that one (∝ h) did not shrink with
+            // the step: grazing springs drove the steps to dt_min, accepted over the tolerance.
+            let per_unit_m = newmark_m * (ctl.coherent_s / h);
+            if per_unit_m >= slip_m {
+                Estimate { err_m: per_unit_m, per_unit_step: true, touch_down: false }
+            } else {
+                Estimate { err_m: slip_m, per_unit_step: false, touch_down: !self.solver.locate_contact }
+            }
         } else {
-            Estimate { err_m, per_unit_step: false }
+            Estimate { err_m: newmark_m.max(slip_m), per_unit_step: false, touch_down: false }
         }
     }
 }
