@@ -50,7 +50,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// The version of the results: raised whenever a change moves any number the tool reports for
 /// the same input (a model, a default, a random stream). Outputs and checkpoints record it, so
 /// results of different versions are never mixed.
-pub const RESULTS_VERSION: u32 = 27;
+pub const RESULTS_VERSION: u32 = 28;
 
 /// The largest magnitude of a number in a scenario file or a force series: beyond it a value in
 /// kN or kPa overflows to infinity once converted to SI, and the messages could only say `inf`.
