@@ -109,7 +109,7 @@
 mod history;
 mod impulse;
 
-pub use history::{TOE_RESERVE, TOLERANCE as HISTORY_TOLERANCE};
+pub use history::{Ask, TOE_RESERVE, TOLERANCE as HISTORY_TOLERANCE};
 
 use crate::dynamics::Model;
 use crate::loads::WaveForce;

@@ -9,7 +9,7 @@ use super::storm::{
     MAX_STILL_WAVES, ROTATION_RESERVE,
 };
 use super::wave::{base_heel_pressure_pa, wave_event, WaveKind, WaveRun};
-use crate::analysis::stick_bound::StickBound;
+use crate::analysis::stick_bound::{Ask, StickBound};
 use crate::loads::generator::realization_rng;
 use crate::loads::history::{WaveEvent, WaveTrain};
 use crate::loads::model::PeriodLoads;
@@ -280,12 +280,23 @@ impl<'s> Settler<'s, '_> {
     /// pressure likewise ([`StickBound::heel_under_history_pa`], its rise over the rest times
     /// [`HEEL_RESERVE`]) if the stick bound shows the wave neither slips nor lifts a spring
     /// (the all-sticking response is then the engine's). Each is asked only to show it is not
-    /// [`needed`] where it can.
+    /// [`needed`] where it can ([`Ask::AtMost`]: it gives up as soon as it sees the response above
+    /// what would show it, and the heel pressure's bound is asked before the stick bound's test,
+    /// which it then spares: on the design example 2 070 heel-pressure bounds a 200 lives, most
+    /// of them given up).
     fn sharper(&self, w: &StillWave, event: &WaveEvent, kind: WaveKind, life: &StormOutcome) -> Option<f64> {
         let site = self.site(w);
         let bound = site.stick.get_or_init(|| StickBound::new(site.dyn_model())).as_ref()?;
         if kind != WaveKind::HeelOnly {
-            return bound.rotation_under_history_rad(event, life.max_rotation_rad / ROTATION_RESERVE);
+            return bound.rotation_under_history_rad(event, Ask::AtMost(life.max_rotation_rad / ROTATION_RESERVE));
+        }
+        // The heel pressure's bound first: where a value above the floor is seen it stops at once
+        // (nothing to show), the stick bound's test is not needed.
+        let rest_pa = bound.heel_at_rest_pa(site.width_m, site.length_m);
+        let floor_pa = rest_pa + (1e3 * life.max_heel_pressure_kpa - rest_pa) / HEEL_RESERVE;
+        let heel_pa = bound.heel_under_history_pa(event, site.width_m, site.length_m, Ask::AtMost(floor_pa))?;
+        if heel_pa == f64::INFINITY {
+            return None;
         }
         let still = if event.impulse.is_some() {
             bound.impulse_margins(event).still()
@@ -293,13 +304,7 @@ impl<'s> Settler<'s, '_> {
             let at = bound.at_period(w.period_s)?;
             bound.margins(&at, event.quasi.total(), event.trough.total()).still()
         };
-        if !still {
-            return None;
-        }
-        let rest_pa = bound.heel_at_rest_pa(site.width_m, site.length_m);
-        let floor_pa = rest_pa + (1e3 * life.max_heel_pressure_kpa - rest_pa) / HEEL_RESERVE;
-        let heel_pa = bound.heel_under_history_pa(event, site.width_m, site.length_m, floor_pa)?;
-        Some(rest_pa + HEEL_RESERVE * (heel_pa - rest_pa).max(0.0))
+        still.then(|| rest_pa + HEEL_RESERVE * (heel_pa - rest_pa).max(0.0))
     }
 
     /// Run the kept wave `w` of loads `event` as `kind` (a still wave as pulsating: it is not

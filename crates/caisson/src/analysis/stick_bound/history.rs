@@ -432,15 +432,31 @@ impl Measure {
     }
 }
 
+/// What a sharpened bound is asked for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Ask {
+    /// The bound, within [`TOLERANCE`] of the largest value evaluated.
+    Tight,
+    /// Only whether the largest value is at most this: a bound at most it where that is shown,
+    /// +∞ as soon as a value above it is evaluated (nothing can be shown then), else the bound as
+    /// [`Ask::Tight`] gives it.
+    AtMost(f64),
+}
+
 /// A bound on the largest `measure` of the functional of `md` over the pieces `ps` of a wave's
-/// load from rest (module docs), within [`TOLERANCE`] of the largest evaluated unless it is at
-/// most `floor` (then only shown to be at most that).
+/// load from rest (module docs), as `ask` asks for it.
 ///
 /// `ends` are the factors at the pieces' ends ([`PieceEnds::new`] of the same eigenvalues): θ at a
 /// piece's start and end, and the bound's decay at its start, are read from them and from the
 /// factors at s = 0 rather than evaluated again (the same bits); only the midpoints take new
 /// exponentials, and an interval keeps e^{Re λ_m s} at its start for its bound.
-fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, floor: f64, measure: Measure) -> f64 {
+fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, ask: Ask, measure: Measure) -> f64 {
+    let floor = match ask {
+        Ask::Tight => f64::NEG_INFINITY,
+        Ask::AtMost(floor) => floor,
+    };
+    // A value evaluated above what is asked: nothing to show.
+    let seen_above = |lo: f64| ask != Ask::Tight && lo > floor;
     let mut z = [C64::new(0.0, 0.0); 6];
     let thetas: Vec<PieceTheta> =
         ps.iter().zip(&ends.ends).map(|(p, end)| PieceTheta::new(md, p, end, &mut z)).collect();
@@ -454,6 +470,9 @@ fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, floor: f64, measure:
         evaluations += 2;
         lo = lo.max(measure.of(f1)).max(measure.of(f2));
         open.push((i, 0.0, th.len, f1, f2, start.decay));
+    }
+    if seen_above(lo) {
+        return f64::INFINITY;
     }
     let mut upper = f64::NEG_INFINITY;
     while let Some((i, s1, s2, f1, f2, decay1)) = open.pop() {
@@ -469,6 +488,9 @@ fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, floor: f64, measure:
         let fm = th.value(md, mid, &at_mid);
         evaluations += 1;
         lo = lo.max(measure.of(fm));
+        if seen_above(lo) {
+            return f64::INFINITY;
+        }
         open.push((i, s1, mid, f1, fm, decay1));
         open.push((i, mid, s2, fm, f2, at_mid.decay));
     }
@@ -477,13 +499,13 @@ fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, floor: f64, measure:
 
 impl StickBound {
     /// A bound on the largest |θ| of the all-sticking response to `event` over [0, T] (module
-    /// docs of `history.rs`), within [`TOLERANCE`] of it unless it is at most `floor_rad` (then it
-    /// is only shown to be at most that); `None` for a load shape it does not follow.
-    pub fn rotation_under_history_rad(&self, event: &WaveEvent, floor_rad: f64) -> Option<f64> {
+    /// docs of `history.rs`), as `ask` asks for it (rad); `None` for a load shape it does not
+    /// follow.
+    pub fn rotation_under_history_rad(&self, event: &WaveEvent, ask: Ask) -> Option<f64> {
         let mut ps = Vec::with_capacity(MAX_PIECES);
         pieces(event, &mut ps)?;
         let ends = PieceEnds::new(&self.modes.theta, &ps);
-        Some(largest(&self.modes.theta, &ps, &ends, floor_rad, Measure::Abs))
+        Some(largest(&self.modes.theta, &ps, &ends, ask, Measure::Abs))
     }
 
     /// A bound on the largest heel pressure of the all-sticking response to `event` over [0, T]
@@ -495,7 +517,7 @@ impl StickBound {
     /// open: the heel pressure is not linear there), or for a load shape it does not follow.
     ///
     /// [`base_heel_pressure_pa`]: crate::analysis::lifetime::base_heel_pressure_pa
-    pub fn heel_under_history_pa(&self, event: &WaveEvent, width_m: f64, length_m: f64, floor_pa: f64) -> Option<f64> {
+    pub fn heel_under_history_pa(&self, event: &WaveEvent, width_m: f64, length_m: f64, ask: Ask) -> Option<f64> {
         let mut ps = Vec::with_capacity(MAX_PIECES);
         pieces(event, &mut ps)?;
         let md = &self.modes;
@@ -508,12 +530,17 @@ impl StickBound {
         let toe = md.normal.combined(v, &md.moment, -b);
         // The toe's and the heel's functionals share their eigenvalues, so the pieces' ends.
         let ends = PieceEnds::new(&toe, &ps);
-        if largest(&toe, &ps, &ends, (1.0 - TOE_RESERVE) * toe_rest, Measure::Down) >= (1.0 - TOE_RESERVE) * toe_rest {
+        let toe_floor = (1.0 - TOE_RESERVE) * toe_rest;
+        if largest(&toe, &ps, &ends, Ask::AtMost(toe_floor), Measure::Down) >= toe_floor {
             return None;
         }
         let heel_rest = self.heel_at_rest_pa(width_m, length_m);
         let heel = md.normal.combined(v, &md.moment, b);
-        Some(heel_rest + largest(&heel, &ps, &ends, floor_pa - heel_rest, Measure::Up))
+        let ask = match ask {
+            Ask::AtMost(pa) => Ask::AtMost(pa - heel_rest),
+            Ask::Tight => Ask::Tight,
+        };
+        Some(heel_rest + largest(&heel, &ps, &ends, ask, Measure::Up))
     }
 
     /// The heel pressure at rest of the springs' resultant (W', N̄ Σ x_i) on a base `width_m` wide
