@@ -617,6 +617,27 @@ duration_s = {d}
 /// 6e-9 m (its rates 2.5e-5 m/s): the touch-downs amplify the difference carried into them fourfold
 /// in 6 ms (and the slip episode at 0.057 s sixfold before the fix). Held at one miss.
 ///
+/// Case 22 met (results version 28: the Newmark steps with springs lifted held per unit step where
+/// the vibration outlives half its period; module docs of `caisson::dynamics::adaptive`,
+/// `coherent_partial_s`): sliding +1.99 µm → +0.04 µm (39.41 µm against 39.37; 39.41 and 39.39 µm
+/// at tolerances 1.6e-9 and 5e-10 m, where they were 41.36 and 41.28: converging now), its
+/// steps 1 396 → 2 094 (every such step held per unit step: 2 478, and 5.4 % more instructions
+/// on design_500). Diagnosed: every adaptive step integrated again from its start by fixed
+/// steps of 2.5e-7 s; no step kind's error departs from the tolerance by a fixed amount (no
+/// threshold), but the 437 Newmark steps taken among springs lifted before 0.228 s (the exact
+/// path declined them while it bracketed touch-downs and lift-offs) were held per step: each
+/// within the tolerance (their displacement errors summed to 4.8e-7 m, as their estimates did),
+/// the state's difference from the converged run 4e-7 to 5e-7 m from 0.06 s on (the difference
+/// the touch-downs at 0.228 s amplify), and 2.8e-7 m still at a tenth of the tolerance, 8e-8 at a
+/// hundredth (against 1e-7 m for fixed steps of 5e-5 s, which meet the converged sliding). Their
+/// velocity error over ω_x was 1.5 times the estimate in the median, up to 37 times (the first
+/// such step 0.021358-0.021850 s, h 4.9e-4 s after an exact step: estimate 2.8e-9 m, true
+/// error 6.5e-9 m and 1.47e-5 m/s, 4.6e-8 m over ω_x, where ü_x changes sign and Δü over the
+/// step is small): an estimate of it from the previous step's acceleration catches that step
+/// but not those landed on events, and left the run on the other branch (41.38 µm). Case 28
+/// (outside the model's validity) +12.4 → +0.4 times the bound, case 24 0.39 → 0.08, case 16
+/// 0.21 → 0.48; worst of those held 0.92 (case 12).
+///
 /// Undamped rocking with friction: the answers jump between branches as the tolerance shrinks
 /// (not monotone in it, with the exact steps on or off), as on a knife's edge. The exact steps
 /// make all three worse at the default tolerance (exact steps off: +0.19 %, −1.21 %, +5.9 %) but
@@ -664,16 +685,17 @@ fn random_family_meets_converged_fixed_steps() {
         "{missed} of {checked} beyond max(1 µm, 1 %), {outside} outside the model's validity; worst error {worst:.2} times the bound"
     );
     assert_eq!((checked, outside), (FAMILY_CASES - FAMILY_OUTSIDE, FAMILY_OUTSIDE));
-    assert!(missed <= FAMILY_MISSES, "{missed} of {checked} cases beyond max(1 µm, 1 %)");
+    // The ratchet at 0 (`FAMILY_MISSES`): `missed <= FAMILY_MISSES` is `==` there.
+    assert_eq!(missed, FAMILY_MISSES, "{missed} of {checked} cases beyond max(1 µm, 1 %)");
 }
 
 /// The family's size, the cases whose converged run rotates beyond the model's validity
 /// (`ROCKING_LIMIT_RAD`, 0.01 rad: cases 28 and 35), and the cases held to the bound that are
-/// beyond it (case 22 of the 38 held, the knife's edge above; case 16 too before results version
-/// 28), measured (the ratchet).
+/// beyond it, measured (the ratchet): none of the 38 held since results version 28 (case 22
+/// before, and case 16 too before results version 28; above).
 const FAMILY_CASES: usize = 40;
 const FAMILY_OUTSIDE: usize = 2;
-const FAMILY_MISSES: usize = 1;
+const FAMILY_MISSES: usize = 0;
 
 /// One committed step of a traced run: time, whether it was an exact sticking step (no Newton
 /// iteration), u = (u_x, u_y, θ), the least normal force of the springs, N, the least friction

@@ -41,7 +41,9 @@
 //! such a spring takes u_x,n as its slip position, λ |Δu_x|). The largest is e. **In a sticking
 //! phase** (a step that ends with every spring in contact and sticking; without
 //! [`SolverParams::locate_contact`], the `seed-2011` profile, also one that ends with every
-//! spring in contact sticking, some lifted) Newmark's error is held per unit step: the
+//! spring in contact sticking, some lifted; with it, such a step that neither lands on an event
+//! nor changes the contact set, where the horizontal vibration outlives T_x/2: `adaptive`,
+//! `coherent_partial_s`) Newmark's error is held per unit step: the
 //! Zienkiewicz-Xie estimate times T_x/(2h) if h < T_x/2, T_x the horizontal mode's natural period
 //! ([`Model::natural_period_s`]), so that the error summed over each half period is within the
 //! tolerance (docs/model.md §9.1, "Sticking phases per unit step"); a touch-down's error (the
