@@ -159,10 +159,17 @@ fn a_slender_caisson_finishes_its_lives_failed_by_rotation() {
     caisson_within(120).args(["design", s(&f), "--life-range", "1898..1900", "--out", s(&shard)]).assert().success();
     assert_eq!(finite_rows(&shard), 2);
     let csv = std::fs::read_to_string(shard.join("lives.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no {name}"));
+    let (rotation, by_rotation) = (column("max_rotation_rad"), column("failed_by_rotation"));
+    let mut checked = 0;
     for line in csv.lines().skip(1) {
-        let rotation: f64 = line.rsplit(',').next().unwrap().parse().unwrap();
-        assert!(rotation > 0.01, "failed by rotation: {line}");
+        let cells: Vec<&str> = line.split(',').collect();
+        let max_rotation_rad: f64 = cells[rotation].parse().unwrap();
+        assert!(max_rotation_rad > 0.01 && cells[by_rotation] == "1", "failed by rotation: {line}");
+        checked += 1;
     }
+    assert_eq!(checked, 2);
 }
 
 /// Item 4: `storm_shape` from 0.1 put the 50-year storm near 10⁵ m; such a tail is refused.
