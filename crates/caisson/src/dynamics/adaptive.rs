@@ -204,7 +204,7 @@ impl Simulation {
             p,
             c_err: (self.solver.beta - 1.0 / 6.0).abs(),
             half_b: 0.5 * self.model.width_m,
-            coherent_s: Some(0.5 * self.model.natural_period_s()).filter(|t| t.is_finite()).unwrap_or(0.0),
+            coherent_s: self.half_period_s(),
             coherent_partial_s: self.coherent_partial_s(),
             level: 0,
             events: 0,
@@ -393,10 +393,15 @@ impl Simulation {
         first.is_finite().then_some(first * h * (1.0 - EVENT_LEAD))
     }
 
+    /// [`StepControl::coherent_s`]: T_x/2, 0 if the period is not finite.
+    fn half_period_s(&self) -> f64 {
+        Some(0.5 * self.model.natural_period_s()).filter(|t| t.is_finite()).unwrap_or(0.0)
+    }
+
     /// [`StepControl::coherent_partial_s`]: T_x/2 if 2 m_x/c_x ≥ T_x/2 (c_x the linear
     /// horizontal dashpot and those beside the springs), else 0.
     fn coherent_partial_s(&self) -> f64 {
-        let half_period_s = Some(0.5 * self.model.natural_period_s()).filter(|t| t.is_finite()).unwrap_or(0.0);
+        let half_period_s = self.half_period_s();
         let c_x = self.model.damping[(0, 0)] + self.model.x_m.len() as f64 * self.model.spring_dashpot_ns_per_m;
         if 2.0 * self.model.horizontal_mass_kg() >= half_period_s * c_x {
             half_period_s

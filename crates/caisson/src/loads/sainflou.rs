@@ -159,18 +159,8 @@ impl SainflouPeriod {
     /// through [`Profile`].
     pub fn trough(&self, height_m: f64) -> SainflouTrough {
         let (h0, pb) = self.clapotis(height_m);
-        let i = &self.input;
-        let (h, hp) = (i.depth_m, i.base_depth_m);
-        let gw = i.rho_w * G_M_PER_S2;
-        let zt = height_m - h0;
-        // `trough_of`'s points and the top of its clipped profile.
-        let full = if zt >= 0.0 {
-            [(0.0, 0.0), (zt, -gw * zt), (h, -pb)]
-        } else {
-            let p0 = (gw * h - pb) * (-zt) / (h - zt);
-            [(zt, 0.0), (0.0, p0), (h, -pb)]
-        };
-        let top = if zt >= 0.0 { 0.0 } else { zt.max(-i.crest_freeboard_m) };
+        let hp = self.input.base_depth_m;
+        let (full, top) = self.trough_points(height_m, h0, pb);
         let kept = full.iter().all(|&(z, p)| z.is_finite() && p.is_finite())
             && full[0].0 <= full[1].0
             && full[1].0 <= full[2].0;
@@ -193,7 +183,28 @@ impl SainflouPeriod {
         }
         pts[n] = (hp, pt_base);
         let pts = &pts[..n + 1];
-        let (tf, tm) = (force_of(pts), moment_of(pts, hp));
+        self.trough_loads(force_of(pts), moment_of(pts, hp), pt_base)
+    }
+
+    /// The trough's profile before clipping (three points: the clapotis' trough at the height
+    /// `hw`) and the top it is clipped at.
+    fn trough_points(&self, hw: f64, h0: f64, pb: f64) -> ([(f64, f64); 3], f64) {
+        let i = &self.input;
+        let h = i.depth_m;
+        let gw = i.rho_w * G_M_PER_S2;
+        let zt = hw - h0;
+        if zt >= 0.0 {
+            ([(0.0, 0.0), (zt, -gw * zt), (h, -pb)], 0.0)
+        } else {
+            let p0 = (gw * h - pb) * (-zt) / (h - zt);
+            ([(zt, 0.0), (0.0, p0), (h, -pb)], zt.max(-i.crest_freeboard_m))
+        }
+    }
+
+    /// The trough's loads of its clipped profile's force `tf` and moment `tm` about the base and
+    /// its pressure at the base `pt_base`.
+    fn trough_loads(&self, tf: f64, tm: f64, pt_base: f64) -> SainflouTrough {
+        let i = &self.input;
         SainflouTrough {
             force_n_per_m: tf,
             lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
@@ -212,27 +223,13 @@ impl SainflouPeriod {
     /// The trough's profile and loads for height `hw` with its `h0` and `pb`.
     #[inline(always)]
     fn trough_of(&self, hw: f64, h0: f64, pb: f64) -> TroughParts {
-        let i = &self.input;
-        let (h, hp) = (i.depth_m, i.base_depth_m);
-        let gw = i.rho_w * G_M_PER_S2;
-        let zt = hw - h0;
-        let trough_full = if zt >= 0.0 {
-            Profile::new(&[(0.0, 0.0), (zt, -gw * zt), (h, -pb)])
-        } else {
-            let p0 = (gw * h - pb) * (-zt) / (h - zt);
-            Profile::new(&[(zt, 0.0), (0.0, p0), (h, -pb)])
-        };
-        let trough_top = if zt >= 0.0 { 0.0 } else { zt.max(-i.crest_freeboard_m) };
+        let hp = self.input.base_depth_m;
+        let (points, trough_top) = self.trough_points(hw, h0, pb);
+        let trough_full = Profile::new(&points);
         let profile = trough_full.clipped(trough_top, hp);
         let pt_base = trough_full.at(hp);
-        let tf = profile.force();
         let tm = profile.moment_about(hp);
-        let loads = SainflouTrough {
-            force_n_per_m: tf,
-            lever_m: if tf != 0.0 { tm / tf } else { 0.0 },
-            suction_n_per_m: 0.5 * pt_base * i.width_m,
-            suction_from_heel_m: 2.0 * i.width_m / 3.0,
-        };
+        let loads = self.trough_loads(profile.force(), tm, pt_base);
         TroughParts { profile, pt_base, moment: tm, loads }
     }
 }
