@@ -451,12 +451,12 @@ pub enum Ask {
 /// factors at s = 0 rather than evaluated again (the same bits); only the midpoints take new
 /// exponentials, and an interval keeps e^{Re λ_m s} at its start for its bound.
 fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, ask: Ask, measure: Measure) -> f64 {
-    let floor = match ask {
-        Ask::Tight => f64::NEG_INFINITY,
-        Ask::AtMost(floor) => floor,
+    // Intervals whose bound is at most `floor` are not refined; a value evaluated above
+    // `give_up` leaves nothing to show.
+    let (floor, give_up) = match ask {
+        Ask::Tight => (f64::NEG_INFINITY, f64::INFINITY),
+        Ask::AtMost(x) => (x, x),
     };
-    // A value evaluated above what is asked: nothing to show.
-    let seen_above = |lo: f64| ask != Ask::Tight && lo > floor;
     let mut z = [C64::new(0.0, 0.0); 6];
     let thetas: Vec<PieceTheta> =
         ps.iter().zip(&ends.ends).map(|(p, end)| PieceTheta::new(md, p, end, &mut z)).collect();
@@ -471,7 +471,7 @@ fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, ask: Ask, measure: M
         lo = lo.max(measure.of(f1)).max(measure.of(f2));
         open.push((i, 0.0, th.len, f1, f2, start.decay));
     }
-    if seen_above(lo) {
+    if lo > give_up {
         return f64::INFINITY;
     }
     let mut upper = f64::NEG_INFINITY;
@@ -488,7 +488,7 @@ fn largest(md: &ThetaModes, ps: &[Piece], ends: &PieceEnds, ask: Ask, measure: M
         let fm = th.value(md, mid, &at_mid);
         evaluations += 1;
         lo = lo.max(measure.of(fm));
-        if seen_above(lo) {
+        if lo > give_up {
             return f64::INFINITY;
         }
         open.push((i, s1, mid, f1, fm, decay1));
