@@ -3,7 +3,9 @@
 //! errors are drawn and how the still-water level rises over the life (docs/design.md, "Climate").
 //! Every default is today's model ([`Climate::default`]: one storm a year, a fixed duration,
 //! head-on waves, errors per storm, no rise), and a default climate draws no number: a run with
-//! the defaults gives the results of results version 11 bit for bit.
+//! the defaults is Shimosako & Takahashi's model alone, and a file without climate keys keeps its
+//! checkpoint fingerprint (`tests/verify_climate.rs`,
+//! `default_climate_leaves_the_fingerprint_unchanged`).
 //!
 //! **Storms** ([`StormModel`]). Annual maxima (the default): one storm a year, its deep-water H0 the
 //! annual maximum of `[design] storm_distribution`. Peaks over threshold (the partial-duration

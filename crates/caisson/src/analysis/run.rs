@@ -10,8 +10,8 @@
 //!   moment, so no rotation), so unless a spring slips while the caisson settles this is exactly
 //!   where it comes to rest (the stuck springs' forces κ N̄ (u_x − s_i) cancel), free of any
 //!   residual vibration or rocking. Weighting s_i by the instantaneous normal forces instead
-//!   (results version 1) moved with the rocking whenever the s_i differed (after lifted springs
-//!   re-contacted at a displaced u_x): up to 0.4 mm per wave on the design example.
+//!   would move with the rocking whenever the s_i differ (after lifted springs re-contact at a
+//!   displaced u_x): up to 0.4 mm per wave on the design example.
 //! * **Effective horizontal reaction**: the horizontal force the foundation carries (springs +
 //!   horizontal dashpot); its peak is the "effective design load" of the seed.
 //! * **Static sliding resistance** (seed Eq. 9): μ_s (W' − F_y(t)).

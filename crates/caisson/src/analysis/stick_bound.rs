@@ -62,12 +62,11 @@
 //! slides or lifts). The reserves cover what the bound
 //! leaves out: R's dynamic part and its coupling into the rocking through the mass matrix, and
 //! the engine's own time-stepping error (tolerance 1e-6 m). Measured on the design example's
-//! 216 329 simulated pulsating waves (results version 20, every functional on the fine bound):
-//! every wave that lifted or slipped had a bound of N_min ≤ 0.0006 N̄ (none of those the reserves
-//! would answer), and the engine's largest rotation was 95.8-99.9 % of the bound's. With the
-//! bound as it is, the design, fragility and sizing examples give every output of version 20 to
-//! the bit (`scripts/same-numbers.sh`); `tests/verify_stick_bound.rs` and
-//! `tests/equiv_lifetime.rs` check it on other waves and storms.
+//! pulsating waves simulated without the bound (216 329 of them, every functional on the fine
+//! bound): every wave that lifted or slipped had a bound of N_min ≤ 0.0006 N̄ (none of those the
+//! reserves would answer), and the engine's largest rotation was 95.8-99.9 % of the bound's.
+//! `tests/verify_stick_bound.rs` and `tests/equiv_lifetime.rs` check the bound on other waves and
+//! storms.
 //!
 //! **Impulsive waves** ([`StickBound::impulse_margins`], `impulse.rs`). A breaking wave's load
 //! (`loads::shapes`: the seed's larger of a triangle and the sine per axis, or a Table 2 shape)

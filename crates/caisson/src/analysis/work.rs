@@ -511,8 +511,7 @@ fn design_wave(waves: &WaveSetup) -> (f64, f64) {
 }
 
 /// Lives of the screen pilot of a design run, and storms per pilot life, and waves per storm
-/// (128: with 16 the 2048 waves of the design example's pilot held about 3 simulated ones, and
-/// its first lives under results version 9 none).
+/// (128: with 16, the 2048 waves of the design example's pilot held about 3 simulated ones).
 const PILOT_LIVES: usize = 16;
 const PILOT_STORMS: usize = 8;
 const PILOT_WAVES_PER_STORM: f64 = 128.0;

@@ -175,7 +175,7 @@ struct StepControl {
     /// The same span for a Newmark step with springs lifted, located contact, and every spring
     /// in contact sticking: `coherent_s` if the horizontal mode's vibration outlives it (its
     /// decay time 2 m_x/c_x, c_x the horizontal dashpots, at least T_x/2: damping ratio at most
-    /// 1/π), else 0, held per step (results version 28; `Simulation::error_estimate_m`).
+    /// 1/π), else 0, held per step (`Simulation::error_estimate_m`).
     coherent_partial_s: f64,
     /// Halvings in a row after Newton failures.
     level: usize,
@@ -439,9 +439,10 @@ impl Simulation {
         // `tests/verify_adaptive_accuracy.rs`) the 437 Newmark steps with springs lifted before
         // 0.228 s (these and those landed on events) each within the tolerance, their
         // displacement errors summed to 4.8e-7 m and the run took the other
-        // branch of a toe's slip (+1.99 µm, 5 %; now +0.04 µm). Where the horizontal dashpots
-        // damp the vibration within the span (the design example: decay time 0.11 s, T_x/2 0.20
-        // s) nothing changes: holding them there cost 3 % to 5 % more instructions.
+        // branch of a toe's slip (+1.99 µm, 5 %; held per unit step, +0.04 µm). Where the
+        // horizontal dashpots damp the vibration within the span (the design example: decay time
+        // 0.11 s, T_x/2 0.20 s) nothing changes: holding them there costs 3 % to 5 % more
+        // instructions.
         let partial = !sticking
             && !self.trial_slips
             && !ctl.at_event

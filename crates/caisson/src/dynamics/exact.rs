@@ -40,59 +40,50 @@
 //! exponential for h/2), R there against its interpolation there, δR, is a force through
 //! σ = 0, h/2, h vanishing at the ends, which moves the end by δR times the middle value's
 //! weights (the largest of the u_x, u_y and θ B/2 rows, m, and of their rates over ω_x = 2π/T_x,
-//! `Model::natural_period_s`: results version 28). A force error through the middle of a step
-//! moves the end's velocity by about 2/h times its displacement, and a velocity error δv
+//! `Model::natural_period_s`). The rates count because a force error through the middle of a
+//! step moves the end's velocity by about 2/h times its displacement, and a velocity error δv
 //! becomes a displacement of amplitude δv/ω a quarter period later, so that the end's
-//! displacement alone saw 1/5 to 1/10 of the error a step of dt_max/4 to dt_max/8 left:
+//! displacement alone sees 1/5 to 1/10 of the error a step of dt_max/4 to dt_max/8 leaves:
 //! measured on the random family of `tests/verify_adaptive_accuracy.rs` (case 22, every exact
 //! step also integrated from its start by fixed steps of 2.5e-7 s) the estimate was within 30 %
 //! of the true error of the end's displacement and the true velocity error over ω_x was 10 and
 //! 5 times it (2/(ω_x h)); summed over the rocking phases of case 16 (6 springs, undamped,
-//! lifted and re-contacting), that left the state 1e-7 m and 1e-4 m/s off the converged run at
-//! its main slip, and its peak 1.27 % over it; now 0.02 % (design_500: 3 267 068 387 →
-//! 3 258 499 253 instructions, E|S| moved by 8e-10 m; the 15-wave test, under `seed-2011`,
-//! takes no exact step). The load's own interpolation error
-//! is not held to the tolerance, only guarded (results version 23, [`LOAD_GUARD`]): through the
+//! lifted and re-contacting), an estimate of the displacement alone leaves the state 1e-7 m and
+//! 1e-4 m/s off the converged run at its main slip, and its peak 1.27 % over it, the estimate
+//! with the rates 0.02 % (`random_family_meets_converged_fixed_steps`). The load's own
+//! interpolation error is not held to the tolerance, only guarded ([`LOAD_GUARD`]): through the
 //! previous step's start, a fourth point of the load is known without evaluating it (the start of
 //! the step before that one, or its middle), the cubic through the four departs from the
 //! quadratic in the middle by −(3/8) h³ times their divided difference, and that with δR, through
-//! the same weights, refuses the step beyond 30 tolerances: a load the step cannot follow
-//! (measured: held to one tolerance, 24 % more instructions on the design example for 6e-6 m in
-//! E|S|). Otherwise the Newmark step is taken from the same state (which locates the onset of
-//! slip).
+//! the same weights, refuses the step beyond 30 tolerances: a load the step cannot follow (held
+//! to one tolerance, the design example takes 24 % more instructions for 6e-6 m in E|S|).
+//! Otherwise the Newmark step is taken from the same state (which locates the onset of slip).
 //! Its end is committed as an all-sticking Newmark step would be.
 //!
-//! **The ladder** (results version 17; four rungs since results version 22): the step lengths
-//! are h_k = dt_max/2^k, k = 0 … 3 ([`RUNGS`]). A step tries the rung its predecessor chose (the
-//! longest at a run's start and when full contact is entered, dt_max/4 when a set with springs
-//! lifted is: [`PARTIAL_ENTRY_RUNG`]), or the longest rung that ends by the load's next
-//! breakpoint (and by the run's end): the gap left before a breakpoint, shorter than dt_max/8,
-//! is one Newmark step. The rung follows the error estimate ε of the last step tried, as a
-//! fraction of the tolerance (results version 23, [`CLIMB`] = 2): after an accepted step the
-//! next climbs one rung, n rungs if ε ≤ 2^−n; a step refused by its estimate is retried one
-//! rung shorter, n + 1 rungs if ε > 2^n (before: one rung up after every
-//! accepted step, one down after every refusal). A step refused because a spring slips, lifts or
-//! touches down in it is retried on the next shorter rung, and until its end the steps go at most
-//! half the way to it ([`Ladder`]'s ceiling), so that the event is bracketed by halving in exact
-//! steps (results version 22: measured on the design example, one rung more and this refusal
-//! rule take 9 % fewer instructions than Newmark from h/2 of the refused step on three rungs).
-//! A step refused on the shortest rung is taken by Newmark from the same state, starting at h/2,
-//! and no exact step is tried again in the same contact set before the refused step's end (the
-//! Newmark steps locate the event). **The hand-over back** (results version 23): once the event
-//! has come, a spring slipping at a committed step or the contact set changed, that wait and the
-//! ceiling end, so the first committed state after it in which every spring in contact sticks
-//! is advanced exactly again (before, the Newmark steps went on to the refused step's end and
-//! until half the way to the ceiling was a whole rung: on the design example's lifting waves
-//! 22.1 Newmark steps a wave, now 17.5; design_500 2.971 G → 2.721 G instructions together with
-//! the rung rules above, 2.765 G with the load guard below). Shorter rungs (dt_max/16 … dt_max/128) were
-//! measured and do not pay: used for the gap before a breakpoint, +8 % instructions; for the
-//! steps under the ceiling, +4 %; to bracket an event one rung further, +0.8 %; entered after an
-//! event at the rung of the Newmark step, +0.4 %. Before (results versions 14-16) only dt_max was exact: the
-//! stretch between the last step of dt_max and a breakpoint, and every step after a refused
-//! one, were Newmark steps from the stepper's last Newmark length (at a wave's start the first
-//! step, 1 ms), which then doubled step by step.
+//! **The ladder**: the step lengths are h_k = dt_max/2^k, k = 0 … 3 ([`RUNGS`]). A step tries the
+//! rung its predecessor chose (the longest at a run's start and when full contact is entered,
+//! dt_max/4 when a set with springs lifted is: [`PARTIAL_ENTRY_RUNG`]), or the longest rung that
+//! ends by the load's next breakpoint (and by the run's end): the gap left before a breakpoint,
+//! shorter than dt_max/8, is one Newmark step. The rung follows the error estimate ε of the last
+//! step tried, as a fraction of the tolerance ([`CLIMB`] = 2): after an accepted step the next
+//! climbs one rung, n rungs if ε ≤ 2^−n; a step refused by its estimate is retried one rung
+//! shorter, n + 1 rungs if ε > 2^n. A step refused because a spring slips, lifts or touches down
+//! in it is retried on the next shorter rung, and until its end the steps go at most half the way
+//! to it ([`Ladder`]'s ceiling), so that the event is bracketed by halving in exact steps (on the
+//! design example, the fourth rung and this refusal rule take 9 % fewer instructions than three
+//! rungs and Newmark steps from h/2 of the refused step). A step refused on the shortest rung is
+//! taken by Newmark from the same state, starting at h/2, and no exact step is tried again in the
+//! same contact set before the refused step's end (the Newmark steps locate the event). **The
+//! hand-over back**: once the event has come, a spring slipping at a committed step or the
+//! contact set changed, that wait and the ceiling end, so the first committed state after it in
+//! which every spring in contact sticks is advanced exactly again
+//! (`exact_steps_resume_as_soon_as_a_slip_ends`): the Newmark steps end with the event, not at
+//! the refused step's end (fewer Newmark steps a lifting wave: docs/history.md). Shorter rungs
+//! (dt_max/16 … dt_max/128) do not pay on the design example: used for the gap before a
+//! breakpoint, +8 % instructions; for the steps under the ceiling, +4 %; to bracket an event one
+//! rung further, +0.8 %; entered after an event at the rung of the Newmark step, +0.4 %.
 //!
-//! **Partial contact** (results version 22; docs/model.md §9.1): a lifted spring carries nothing
+//! **Partial contact** (docs/model.md §9.1): a lifted spring carries nothing
 //! (no force, no dashpot) and its slip position follows u_x, so with springs lifted and every
 //! spring in contact sticking the equations above hold with the sums over the springs in contact
 //! C only, m = |C|:
@@ -238,18 +229,18 @@ pub(super) struct Ladder {
     ratio: Cell<f64>,
 }
 
-/// The rung a set with springs lifted is entered on: dt_max/4 (measured on the design example,
-/// design_500 on a build with the rules switchable: 2.7808 G instructions against 2.7862 G from
-/// dt_max/2 and 2.8049 G from dt_max/8).
+/// The rung a set with springs lifted is entered on: dt_max/4, which takes the fewest
+/// instructions on the design example (0.2 % more from dt_max/2, 0.9 % more from dt_max/8; the
+/// counts in docs/history.md).
 const PARTIAL_ENTRY_RUNG: usize = 2;
 
 /// The error estimate's growth per doubling of the step assumed by the rung choice: an accepted
 /// step climbs one rung, n rungs if its estimate is within CLIMB^−n of the tolerance; a refused
 /// one descends one rung, n + 1 rungs if its estimate exceeds CLIMB^n tolerances (module docs,
 /// "The ladder"). The estimate grows as h⁵ where the force is smooth, but the design example
-/// measures best with a factor 2 (design_500 on a build with the rules switchable: 2.7626 G
-/// instructions; 4: 2.7680 G; 32, nearly always one rung as before: 2.7808 G; never climbing
-/// while the estimate is above 1/32 of the tolerance: 9 % more).
+/// takes the fewest instructions with a factor 2 (with 4, 0.2 % more; with 32, nearly always one
+/// rung, 0.7 % more; never climbing while the estimate is above 1/32 of the tolerance, 9 % more;
+/// the counts in docs/history.md).
 const CLIMB: f64 = 2.0;
 
 /// The exact step's error estimate with the load's interpolation error in it refuses a step only
@@ -1128,16 +1119,6 @@ mod tests {
         assert_eq!(checked, 2);
     }
 
-    /// A sticking phase from rest to the end of a wave is crossed in exact steps, but for the gap
-    /// before each of the wave's two breakpoints (T/2 and T: one Newmark step each, where the
-    /// stepper once restarted from its first step and doubled): the Table 5 caisson with a
-    /// diagonal mass matrix under a pulsating wave through its base centre (R = 0, so no error
-    /// estimate refuses a step) reaching a fifth of μ W', T = 2.03 s, dt_max = 50 ms. Counted:
-    /// 20 steps of dt_max and one of dt_max/4 to T/2 = 1.015 s, the 2.5 ms left in one Newmark
-    /// step; after it one step of dt_max/4, whose error estimate (0: R = 0) lets the next climb
-    /// to the top (results version 23; one rung a step before: dt_max/2, then 19 steps of
-    /// dt_max), 20 steps of dt_max to 2.0275 s, and one Newmark step of 2.5 ms to T: 42 exact
-    /// steps; no spring slips.
     /// One pulsating wave of period `period_s` pushing the caisson of `sim` shoreward with a peak
     /// of `share` μ W′ (μ = 0.6), its resultant at the levers of the tests below.
     fn push_wave(sim: &Simulation, share: f64, period_s: f64) -> crate::loads::history::WaveTrain {
@@ -1147,6 +1128,14 @@ mod tests {
         WaveTrain::new(vec![wave]).unwrap()
     }
 
+    /// A sticking phase from rest to the end of a wave is crossed in exact steps, but for the gap
+    /// before each of the wave's two breakpoints (T/2 and T: one Newmark step each): the Table 5
+    /// caisson with a diagonal mass matrix under a pulsating wave through its base centre (R = 0,
+    /// so no error estimate refuses a step) reaching a fifth of μ W', T = 2.03 s, dt_max = 50 ms.
+    /// Counted: 20 steps of dt_max and one of dt_max/4 to T/2 = 1.015 s, the 2.5 ms left in one
+    /// Newmark step; after it one step of dt_max/4, whose error estimate (0: R = 0) lets the next
+    /// climb to the top, 20 steps of dt_max to 2.0275 s, and one Newmark step of 2.5 ms to T: 42
+    /// exact steps; no spring slips.
     #[test]
     fn a_sticking_wave_takes_exact_steps_to_its_breakpoints() {
         let (dt_max, period) = (0.05, 2.03);
@@ -1165,12 +1154,12 @@ mod tests {
         assert!(sim.state.springs.iter().all(|c| c.slip_m == 0.0 && !c.sliding), "no spring slips");
     }
 
-    /// The hand-over back to exact steps after a slip (results version 23, module docs, "The
-    /// ladder"): the Table 5 caisson (diagonal mass matrix) under a pulsating wave through its
-    /// base centre reaching 1.2 μ W' (T = 2.03 s, dt_max = 50 ms, tolerance 1e-6 m) slides 55 mm
-    /// in one episode near the crest (0.32 s to 0.895 s, Newmark steps). The committed state that
-    /// ends the slip is advanced by an exact step at once (counted: the one episode, 0 Newmark
-    /// steps between its end and the next exact step; 32 exact steps of 85). The run agrees with
+    /// The hand-over back to exact steps after a slip (module docs, "The ladder"): the Table 5
+    /// caisson (diagonal mass matrix) under a pulsating wave through its base centre reaching
+    /// 1.2 μ W' (T = 2.03 s, dt_max = 50 ms, tolerance 1e-6 m) slides 55 mm in one episode near
+    /// the crest (0.32 s to 0.895 s, Newmark steps). The committed state that ends the slip is
+    /// advanced by an exact step at once (counted: the one episode, 0 Newmark steps between its
+    /// end and the next exact step; 32 exact steps of 85). The run agrees with
     /// Newmark steps alone at a 100 times tighter tolerance (1e-8 m, the oracle) within 0.5 % of
     /// the slip (measured 0.21 %, 1.1e-4 m: the Newmark steps of the slip at 1e-6 m).
     #[test]

@@ -22,10 +22,10 @@ pub struct AdaptiveParams {
     pub dt_min_s: f64,
     /// Largest step, s.
     pub dt_max_s: f64,
-    /// Allowed local displacement error per step, m (rotation counted as θ·B/2). Default 5e-9 m
-    /// (1e-8 m before results version 19): an undamped caisson rocking for hundreds of steps
-    /// sums their errors of one sign, 1.05 % of its sliding at 1e-8 m on the worst case of
-    /// `tests/verify_adaptive_accuracy.rs`, 0.54 % at 5e-9 m (docs/model.md §9.1).
+    /// Allowed local displacement error per step, m (rotation counted as θ·B/2). Default 5e-9 m:
+    /// an undamped caisson rocking for hundreds of steps sums their errors of one sign, 1.05 % of
+    /// its sliding at 1e-8 m on the worst case of `tests/verify_adaptive_accuracy.rs`, 0.54 % at
+    /// 5e-9 m (docs/model.md §9.1).
     pub tolerance_m: f64,
 }
 
@@ -48,9 +48,9 @@ impl AdaptiveParams {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Predictor {
-    /// The displacement of the last step, δ = 0 (Chopra's u^(1) = u_i; results version 4 and
-    /// before). About two corrections per step on the design example, where the spring shear
-    /// κ N e is bilinear in the displacements.
+    /// The displacement of the last step, δ = 0 (Chopra's u^(1) = u_i; the plain path's,
+    /// [`Accel::none`]). About two corrections per step on the design example, where the spring
+    /// shear κ N e is bilinear in the displacements.
     LastDisplacement,
     /// The acceleration of the last step carried over, q̈_{n+1} = q̈_n: δ = h q̇_n + h²/2 q̈_n.
     /// About one correction per step on the design example (the default).

@@ -29,11 +29,10 @@
 //! Whether every spring sticks is decided spring by spring by the spring law's own test
 //! ([`SpringLaw::sticks`], the same operations as its `sticking` branch), so the path
 //! is taken exactly when the general one would find every spring in contact and sticking; the
-//! sums are then the same quantities added in another order (results equal to rounding before
-//! the direct step below, results version 6). The per-spring responses of an all-sticking step
-//! ([`Simulation::springs`]) are built only when asked for: for an observer that reads them
-//! ([`super::Observer::reads_springs`]), and at the end of a run; its base reaction
-//! ([`Simulation::reaction`]) is the closed form.
+//! sums are then the same quantities added in another order (equal to rounding). The per-spring
+//! responses of an all-sticking step ([`Simulation::springs`]) are built only when asked for: for
+//! an observer that reads them ([`super::Observer::reads_springs`]), and at the end of a run; its
+//! base reaction ([`Simulation::reaction`]) is the closed form.
 //!
 //! **The all-sticking step solved directly** ([`Simulation::direct_sticking_step`], docs/model.md
 //! §9.1): after a step that left every spring in contact and sticking, the next step is first

@@ -28,7 +28,7 @@ pub struct AddedMass {
 /// Translation is 14ζ(3)/π³. The series (`series`) summed once and kept as constants, to the
 /// bit as summed here (x86-64, glibc's sin and cos; `coefficients_are_the_series_summed`): its
 /// 20 000 terms' sines and cosines cost 3.4 M instructions (callgrind), a quarter of loading the
-/// 15-wave test's scenario, and every foundation built summed them again.
+/// 15-wave test's scenario, for every foundation built.
 pub fn coefficients() -> (f64, f64, f64) {
     (0.5427545143602056, 0.21787492335089592, 0.10307829110287506)
 }
